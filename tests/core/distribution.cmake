@@ -1,0 +1,1 @@
+glint_test(test_core_distribution test_distribution.cpp)
