@@ -1,0 +1,32 @@
+#pragma once
+// A plain multichannel float image: what the film resolves to and what image I/O reads
+// and writes. Channel names follow OpenEXR layer naming ("R", "albedo.R", "depth.Z").
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+struct Image {
+    int width = 0, height = 0;
+    std::vector<std::string> channels;
+    /// Interleaved channels, row-major, top row first: (y * width + x) * channels + c.
+    std::vector<float> pixels;
+
+    int num_channels() const { return static_cast<int>(channels.size()); }
+    std::size_t index(int x, int y, int c) const {
+        return (static_cast<std::size_t>(y) * static_cast<std::size_t>(width) +
+                static_cast<std::size_t>(x)) *
+                   channels.size() +
+               static_cast<std::size_t>(c);
+    }
+    float& at(int x, int y, int c) { return pixels[index(x, y, c)]; }
+    float at(int x, int y, int c) const { return pixels[index(x, y, c)]; }
+    /// Position of the channel called `name`, or -1 if the image has none.
+    int channel_index(const std::string& name) const;
+};
+
+/// A zero-filled image; throws glint::Error for negative sizes or no channels.
+Image make_image(int width, int height, std::vector<std::string> channels);
+
+}  // namespace glint

@@ -1,0 +1,42 @@
+#pragma once
+// Reading and writing images through OpenImageIO, and the relative-MSE comparison the
+// tests and `glint compare` use. OpenImageIO is confined to this file's .cpp.
+#include <glint/film/image.h>
+
+#include <array>
+#include <string>
+
+namespace glint {
+
+struct WriteOptions {
+    float exposure = 0.0f;  ///< stops; scales linear values by 2^exposure, PNG only
+};
+
+/// Writes by extension (case-insensitive): ".exr" stores every channel as 32-bit float;
+/// ".png" stores 8-bit sRGB-encoded R, G, B (or one channel as grey), linear values
+/// scaled by 2^exposure, clamped to [0, 1] and correctly rounded. Anything else throws.
+/// The image goes to a temporary file beside `path` that is renamed over it, so `path`
+/// is never left half-written; on failure the temporary is removed and glint::Error
+/// names the path and the reason.
+void write_image(const std::string& path, const Image& image, const WriteOptions& options = {});
+
+/// Reads any format OpenImageIO knows, all channels as float with the file's channel
+/// names. Integer files tagged sRGB (PNG, JPEG) are decoded to linear, alpha excepted,
+/// so read_image(write_image(x)) gives x back up to 8-bit quantisation. EXR channel
+/// order is the file's (OpenEXR sorts layers by name): look channels up by name.
+/// Throws glint::Error naming the path if the file cannot be read.
+Image read_image(const std::string& path);
+
+struct CompareResult {
+    double rel_mse;                   ///< mean of (t - r)^2 / (r^2 + 1e-2)
+    double rmse;                      ///< sqrt of the mean of (t - r)^2
+    std::array<double, 3> test_mean;  ///< per-channel means of R, G, B
+    std::array<double, 3> ref_mean;
+};
+
+/// Compares the R, G, B channels (found by name) of two images of the same size, over
+/// all pixels and the three channels. Throws glint::Error on a size mismatch or a
+/// missing channel.
+CompareResult compare_images(const Image& test, const Image& reference);
+
+}  // namespace glint
