@@ -1,0 +1,97 @@
+#include <glint/film/film.h>
+
+#include <glint/core/error.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+Film::Film(int width, int height, bool with_aovs)
+    : m_width(width), m_height(height), m_with_aovs(with_aovs) {
+    if (width <= 0 || height <= 0) {
+        throw Error(
+            fmt::format("film size {}x{}; expected positive width and height", width, height));
+    }
+    const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
+    m_pixels.resize(count);
+    if (with_aovs) m_aovs.resize(count);
+}
+
+void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov) {
+    // A stray index would silently corrupt a neighbour's accumulator; the test is one
+    // well-predicted branch per sample.
+    if (pixel.x < 0 || pixel.y < 0 || pixel.x >= m_width || pixel.y >= m_height) {
+        throw Error(fmt::format("film: pixel ({}, {}) outside the {}x{} film", pixel.x, pixel.y,
+                                m_width, m_height));
+    }
+    const std::size_t i = static_cast<std::size_t>(pixel.y) * static_cast<std::size_t>(m_width) +
+                          static_cast<std::size_t>(pixel.x);
+    Pixel& p = m_pixels[i];
+    if (L.is_finite() && std::isfinite(weight)) {
+        // Dropping the weight too, not only the radiance, keeps one NaN path from
+        // darkening the pixel: the mean is over the samples that could be measured.
+        p.weight_sum += weight;
+        for (int c = 0; c < 3; ++c) p.rgb[c] += static_cast<double>(weight) * L[c];
+    } else {
+        ++p.non_finite;
+    }
+
+    if (!m_with_aovs || aov == nullptr) return;
+    const float w = std::abs(weight);
+    if (!std::isfinite(w) || !aov->albedo.is_finite() || !is_finite(aov->normal) ||
+        !std::isfinite(aov->depth)) {
+        return;
+    }
+    AovPixel& a = m_aovs[i];
+    a.weight_sum += w;
+    for (int c = 0; c < 3; ++c) {
+        a.albedo[c] += static_cast<double>(w) * aov->albedo[c];
+        a.normal[c] += static_cast<double>(w) * aov->normal[c];
+    }
+    a.depth += static_cast<double>(w) * aov->depth;
+}
+
+Image Film::resolve() const {
+    std::vector<std::string> channels = {"R", "G", "B"};
+    if (m_with_aovs) {
+        channels.insert(channels.end(), {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y",
+                                         "normal.Z", "depth.Z"});
+    }
+    Image image = make_image(m_width, m_height, std::move(channels));
+    for (int y = 0; y < m_height; ++y) {
+        for (int x = 0; x < m_width; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_width) +
+                                  static_cast<std::size_t>(x);
+            const Pixel& p = m_pixels[i];
+            // Mitchell's negative lobes can cancel the positive weights exactly; such a
+            // pixel has no defined mean and resolves to black rather than infinity.
+            const double inv = p.weight_sum != 0.0 ? 1.0 / p.weight_sum : 0.0;
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<float>(p.rgb[c] * inv);
+            if (!m_with_aovs) continue;
+            const AovPixel& a = m_aovs[i];
+            const double ainv = a.weight_sum > 0.0 ? 1.0 / a.weight_sum : 0.0;
+            for (int c = 0; c < 3; ++c) {
+                image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c] * ainv);
+                image.at(x, y, 6 + c) = static_cast<float>(a.normal[c] * ainv);
+            }
+            image.at(x, y, 9) = static_cast<float>(a.depth * ainv);
+        }
+    }
+    return image;
+}
+
+uint64_t Film::non_finite_samples() const {
+    uint64_t total = 0;
+    for (const Pixel& p : m_pixels) total += p.non_finite;
+    return total;
+}
+
+void Film::clear() {
+    std::fill(m_pixels.begin(), m_pixels.end(), Pixel{});
+    std::fill(m_aovs.begin(), m_aovs.end(), AovPixel{});
+}
+
+}  // namespace glint

@@ -1,0 +1,132 @@
+#include <glint/core/error.h>
+#include <glint/film/film.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace glint {
+namespace {
+
+TEST(Film, ChannelsAndSize) {
+    const Film plain(4, 3, false);
+    EXPECT_EQ(plain.width(), 4);
+    EXPECT_EQ(plain.height(), 3);
+    EXPECT_FALSE(plain.has_aovs());
+    const Image a = plain.resolve();
+    EXPECT_EQ(a.width, 4);
+    EXPECT_EQ(a.height, 3);
+    EXPECT_EQ(a.channels, (std::vector<std::string>{"R", "G", "B"}));
+    EXPECT_EQ(a.pixels.size(), 4u * 3u * 3u);
+
+    const Film with(2, 2, true);
+    const Image b = with.resolve();
+    EXPECT_EQ(b.channels,
+              (std::vector<std::string>{"R", "G", "B", "albedo.R", "albedo.G", "albedo.B",
+                                        "normal.X", "normal.Y", "normal.Z", "depth.Z"}));
+    EXPECT_THROW(Film(0, 5, false), Error);
+}
+
+TEST(Film, WeightedMeanPerPixel) {
+    Film film(3, 2, false);
+    film.add_sample({1, 0}, Spectrum(1.0f, 2.0f, 3.0f), 1.0f, nullptr);
+    film.add_sample({1, 0}, Spectrum(4.0f, 0.0f, 1.0f), 3.0f, nullptr);
+    // Negative weights (Mitchell lobes) enter the same mean.
+    film.add_sample({2, 1}, Spectrum(2.0f), 2.0f, nullptr);
+    film.add_sample({2, 1}, Spectrum(5.0f), -0.5f, nullptr);
+    const Image img = film.resolve();
+    EXPECT_FLOAT_EQ(img.at(1, 0, 0), (1.0f + 12.0f) / 4.0f);
+    EXPECT_FLOAT_EQ(img.at(1, 0, 1), 2.0f / 4.0f);
+    EXPECT_FLOAT_EQ(img.at(1, 0, 2), (3.0f + 3.0f) / 4.0f);
+    EXPECT_FLOAT_EQ(img.at(2, 1, 0), (4.0f - 2.5f) / 1.5f);
+    // Untouched pixels and pixels whose weights cancel are black, not NaN.
+    EXPECT_EQ(img.at(0, 0, 0), 0.0f);
+    Film cancel(1, 1, false);
+    cancel.add_sample({0, 0}, Spectrum(3.0f), 1.0f, nullptr);
+    cancel.add_sample({0, 0}, Spectrum(3.0f), -1.0f, nullptr);
+    EXPECT_EQ(cancel.resolve().at(0, 0, 1), 0.0f);
+}
+
+TEST(Film, RowMajorTopRowFirst) {
+    Film film(2, 2, false);
+    film.add_sample({1, 0}, Spectrum(7.0f), 1.0f, nullptr);
+    const Image img = film.resolve();
+    EXPECT_EQ(img.pixels[(0 * 2 + 1) * 3], 7.0f);
+}
+
+TEST(Film, NonFiniteSamplesAreSkippedAndCounted) {
+    Film film(2, 1, false);
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const float inf = std::numeric_limits<float>::infinity();
+    film.add_sample({0, 0}, Spectrum(2.0f), 1.0f, nullptr);
+    film.add_sample({0, 0}, Spectrum(nan, 1.0f, 1.0f), 1.0f, nullptr);
+    film.add_sample({0, 0}, Spectrum(1.0f, inf, 1.0f), 1.0f, nullptr);
+    film.add_sample({0, 0}, Spectrum(1.0f), nan, nullptr);
+    film.add_sample({1, 0}, Spectrum(-inf), 1.0f, nullptr);
+    const Image img = film.resolve();
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_EQ(img.at(0, 0, c), 2.0f);
+        EXPECT_EQ(img.at(1, 0, c), 0.0f);
+    }
+    EXPECT_EQ(film.non_finite_samples(), 4u);
+    film.clear();
+    EXPECT_EQ(film.non_finite_samples(), 0u);
+    EXPECT_EQ(film.resolve().at(0, 0, 0), 0.0f);
+}
+
+TEST(Film, AovsUseAbsoluteWeights) {
+    Film film(1, 1, true);
+    const AovSample first{Spectrum(0.2f, 0.4f, 0.6f), Vec3(0.0f, 0.0f, 1.0f), 2.0f};
+    const AovSample second{Spectrum(1.0f), Vec3(1.0f, 0.0f, 0.0f), 6.0f};
+    film.add_sample({0, 0}, Spectrum(1.0f), 3.0f, &first);
+    film.add_sample({0, 0}, Spectrum(1.0f), -1.0f, &second);
+    // A sample without features still counts towards radiance only.
+    film.add_sample({0, 0}, Spectrum(1.0f), 1.0f, nullptr);
+    const Image img = film.resolve();
+    const auto at = [&](const char* name) { return img.at(0, 0, img.channel_index(name)); };
+    EXPECT_FLOAT_EQ(at("R"), 1.0f);
+    EXPECT_FLOAT_EQ(at("albedo.R"), (3 * 0.2f + 1.0f) / 4);
+    EXPECT_FLOAT_EQ(at("albedo.G"), (3 * 0.4f + 1.0f) / 4);
+    EXPECT_FLOAT_EQ(at("albedo.B"), (3 * 0.6f + 1.0f) / 4);
+    EXPECT_FLOAT_EQ(at("normal.X"), 0.25f);
+    EXPECT_FLOAT_EQ(at("normal.Y"), 0.0f);
+    EXPECT_FLOAT_EQ(at("normal.Z"), 0.75f);
+    EXPECT_FLOAT_EQ(at("depth.Z"), 3.0f);
+}
+
+TEST(Film, AovIgnoredWithoutAovChannels) {
+    Film film(1, 1, false);
+    const AovSample aov{Spectrum(1.0f), Vec3(0.0f, 1.0f, 0.0f), 1.0f};
+    film.add_sample({0, 0}, Spectrum(0.5f), 1.0f, &aov);
+    const Image img = film.resolve();
+    EXPECT_EQ(img.channels.size(), 3u);
+    EXPECT_EQ(img.at(0, 0, 0), 0.5f);
+}
+
+TEST(Film, RejectsPixelsOutside) {
+    Film film(2, 2, false);
+    EXPECT_THROW(film.add_sample({2, 0}, Spectrum(1.0f), 1.0f, nullptr), Error);
+    EXPECT_THROW(film.add_sample({0, -1}, Spectrum(1.0f), 1.0f, nullptr), Error);
+}
+
+TEST(Film, OrderOfPixelsDoesNotMatter) {
+    // What thread-count independence rests on: pixels are independent accumulators, so
+    // filling them in another order (as other tile schedules would) gives the same bits.
+    Film forward(8, 8, false), backward(8, 8, false);
+    const auto value = [](int x, int y, int s) {
+        return Spectrum(0.1f * x + 0.37f * s, 0.01f * y * s, 1.0f / (1 + x + y + s));
+    };
+    for (int y = 0; y < 8; ++y)
+        for (int x = 0; x < 8; ++x)
+            for (int s = 0; s < 5; ++s)
+                forward.add_sample({x, y}, value(x, y, s), 0.3f + s, nullptr);
+    for (int y = 7; y >= 0; --y)
+        for (int x = 7; x >= 0; --x)
+            for (int s = 0; s < 5; ++s)
+                backward.add_sample({x, y}, value(x, y, s), 0.3f + s, nullptr);
+    EXPECT_EQ(forward.resolve().pixels, backward.resolve().pixels);
+}
+
+}  // namespace
+}  // namespace glint
