@@ -1,0 +1,195 @@
+// The `glint` command: render, info and compare. The only place that catches glint::Error.
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <glint/film/image_io.h>
+#include <glint/geometry/accel.h>
+#include <glint/integrator/integrator.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <filesystem>
+#include <optional>
+
+namespace {
+
+using namespace glint;
+
+constexpr int kExitInputError = 1;
+constexpr int kExitUsageError = 2;
+
+struct RenderOptions {
+    std::string scene;
+    std::vector<std::string> outputs;
+    std::optional<int> spp;
+    std::string resolution;
+    std::optional<int> threads;
+    std::optional<uint64_t> seed;
+    std::string integrator;
+    std::optional<float> exposure;
+    bool aovs = false;
+    bool quiet = false;
+};
+
+Vec2i parse_resolution(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+        w < 1 || h < 1) {
+        throw CLI::ValidationError("--res", fmt::format("'{}' is not WIDTHxHEIGHT, e.g. 512x512", text));
+    }
+    return Vec2i(w, h);
+}
+
+void check_output_path(const std::string& path) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    if (ext != ".exr" && ext != ".png") {
+        throw Error(fmt::format("output '{}': unsupported format (use .exr or .png)", path));
+    }
+}
+
+RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options) {
+    RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
+    if (options.spp) settings.spp = *options.spp;
+    if (!options.resolution.empty()) {
+        const Vec2i res = parse_resolution(options.resolution);
+        settings.width = res.x;
+        settings.height = res.y;
+    }
+    if (options.threads) settings.threads = *options.threads;
+    if (options.seed) settings.seed = *options.seed;
+    if (!options.integrator.empty()) settings.integrator = options.integrator;
+    if (options.exposure) settings.exposure = *options.exposure;
+    if (options.aovs) settings.aovs = true;
+    if (!options.outputs.empty()) settings.outputs = options.outputs;
+    if (settings.outputs.empty()) {
+        settings.outputs = {std::filesystem::path(options.scene).stem().string() + ".exr"};
+    }
+    return settings;
+}
+
+int run_render(const RenderOptions& options) {
+    const SceneDesc desc = load_scene_file(options.scene);
+    const RenderSettings settings = settings_for(desc, options);
+    for (const std::string& path : settings.outputs) check_output_path(path);
+    const auto scene = build_scene(desc, settings);
+    auto integrator = make_integrator(settings);
+
+    const int threads = settings.threads > 0 ? settings.threads
+                                             : tbb::this_task_arena::max_concurrency();
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    Film film(settings.width, settings.height, settings.aovs);
+    Progress progress("rendering", static_cast<uint64_t>(settings.width) * settings.height * settings.spp,
+                      options.quiet);
+    const RenderStats stats = integrator->render(*scene, film, progress);
+    progress.finish();
+
+    const Image image = film.resolve();
+    for (const std::string& path : settings.outputs) write_image(path, image, WriteOptions{settings.exposure});
+    if (!options.quiet) {
+        fmt::print(stderr, "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
+                   settings.width, settings.height, settings.spp, threads, stats.seconds,
+                   stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
+        for (const std::string& path : settings.outputs) fmt::print(stderr, "wrote {}\n", path);
+    }
+    if (film.non_finite_samples() > 0) {
+        fmt::print(stderr, "warning: {} samples were not finite and were skipped\n", film.non_finite_samples());
+    }
+    return 0;
+}
+
+int run_info(const std::string& scene_path) {
+    const SceneDesc desc = load_scene_file(scene_path);
+    const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
+    const auto scene = build_scene(desc, settings);
+    const SceneStats& s = scene->stats();
+    fmt::print("scene:      {}\n", scene_path);
+    fmt::print("shapes:     {}\n", s.shapes);
+    fmt::print("triangles:  {}\n", s.triangles);
+    fmt::print("lights:     {}\n", s.lights);
+    fmt::print("groups:     {} ({} instances)\n", s.groups, s.instances);
+    fmt::print("materials:  {}\n", desc.materials.size());
+    if (s.bounds.is_empty()) {
+        fmt::print("bounds:     empty\n");
+    } else {
+        fmt::print("bounds:     ({:g}, {:g}, {:g}) to ({:g}, {:g}, {:g})\n", s.bounds.min.x, s.bounds.min.y,
+                   s.bounds.min.z, s.bounds.max.x, s.bounds.max.y, s.bounds.max.z);
+    }
+    fmt::print("render:     {}x{}, {} spp, integrator {}\n", settings.width, settings.height, settings.spp,
+               settings.integrator);
+    return 0;
+}
+
+int run_compare(const std::string& test_path, const std::string& reference_path,
+                std::optional<double> threshold) {
+    const CompareResult r = compare_images(read_image(test_path), read_image(reference_path));
+    fmt::print("relative MSE: {:.6g}\n", r.rel_mse);
+    fmt::print("RMSE:         {:.6g}\n", r.rmse);
+    fmt::print("test mean:    ({:.6g}, {:.6g}, {:.6g})\n", r.test_mean[0], r.test_mean[1], r.test_mean[2]);
+    fmt::print("ref mean:     ({:.6g}, {:.6g}, {:.6g})\n", r.ref_mean[0], r.ref_mean[1], r.ref_mean[2]);
+    if (threshold && r.rel_mse > *threshold) {
+        fmt::print(stderr, "relative MSE {:.6g} exceeds the threshold {:.6g}\n", r.rel_mse, *threshold);
+        return kExitInputError;
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"glint: a physically based renderer driven by Lua scenes"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", fmt::format("glint 0.1.0 (Embree {})", Accel::embree_version()));
+
+    RenderOptions render;
+    CLI::App* render_cmd = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
+    render_cmd->add_option("scene", render.scene, "Scene script (.lua)")->required();
+    render_cmd->add_option("-o,--output", render.outputs, "Output image, .exr or .png (repeatable)");
+    render_cmd->add_option("--spp", render.spp, "Samples per pixel")->check(CLI::PositiveNumber);
+    render_cmd->add_option("--res", render.resolution, "Resolution WIDTHxHEIGHT");
+    render_cmd->add_option("--threads", render.threads, "Worker threads (default: all cores)")
+        ->check(CLI::PositiveNumber);
+    render_cmd->add_option("--seed", render.seed, "Random seed");
+    render_cmd->add_option("--integrator", render.integrator, "Light transport algorithm, e.g. path");
+    render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
+    render_cmd->add_flag("--aovs", render.aovs, "Add albedo, normal and depth channels to EXR output");
+    render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
+
+    std::string info_scene;
+    CLI::App* info_cmd = app.add_subcommand("info", "Print counts of shapes, triangles, lights and bounds");
+    info_cmd->add_option("scene", info_scene, "Scene script (.lua)")->required();
+
+    std::string test_image, reference_image;
+    std::optional<double> threshold;
+    CLI::App* compare_cmd = app.add_subcommand("compare", "Compare an image with a reference");
+    compare_cmd->add_option("test", test_image, "Image to check (.exr)")->required();
+    compare_cmd->add_option("reference", reference_image, "Converged reference (.exr)")->required();
+    compare_cmd->add_option("--threshold", threshold, "Exit with 1 when the relative MSE exceeds this");
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        const int code = app.exit(e);
+        return code == 0 ? 0 : kExitUsageError;
+    }
+
+    try {
+        if (render_cmd->parsed()) return run_render(render);
+        if (info_cmd->parsed()) return run_info(info_scene);
+        if (compare_cmd->parsed()) return run_compare(test_image, reference_image, threshold);
+    } catch (const CLI::ValidationError& e) {
+        fmt::print(stderr, "glint: error: {}\n", e.what());
+        return kExitUsageError;
+    } catch (const glint::Error& e) {
+        fmt::print(stderr, "glint: error: {}\n", e.what());
+        return kExitInputError;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "glint: internal error: {}\n", e.what());
+        return kExitInputError;
+    }
+    return kExitUsageError;
+}

@@ -1,0 +1,61 @@
+#pragma once
+// What a ray hit: position, geometric and shading frames, surface parameterisation, and
+// the material and area light attached to the surface.
+#include <glint/core/ray.h>
+#include <glint/math/frame.h>
+
+#include <bit>
+#include <cstring>
+
+namespace glint {
+
+class Material;
+class Light;
+
+struct SurfaceInteraction {
+    Vec3 p;             // world-space hit point
+    Vec3 ng;            // geometric normal, unit length, pointing to the shape's outside
+    Frame shading;      // shading frame, normal on the same side as ng
+    Vec2 uv;
+    Vec3 dpdu, dpdv;
+    float t = 0.0f;     // ray parameter of the hit
+    Vec3 wo;            // direction towards the ray origin, unit length
+    bool front_face = true;  // the ray arrived on the side ng points to
+    const Material* material = nullptr;
+    const Light* area_light = nullptr;  // set when the surface emits
+
+    Vec3 to_local(const Vec3& w) const { return shading.to_local(w); }
+    Vec3 to_world(const Vec3& w) const { return shading.to_world(w); }
+};
+
+// Moves `p` off the surface along the geometric normal by a few ulps of its own magnitude
+// (Wächter & Binder, Ray Tracing Gems ch. 6), so new rays neither re-hit the surface they
+// leave (acne) nor start behind a neighbouring surface (leaks), at any scene scale.
+inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& direction) {
+    constexpr float kOrigin = 1.0f / 32.0f;
+    constexpr float kFloatScale = 1.0f / 65536.0f;
+    constexpr float kIntScale = 256.0f;
+    const Vec3 n = glm::dot(ng, direction) < 0.0f ? -ng : ng;
+    Vec3 result;
+    for (int i = 0; i < 3; ++i) {
+        const int offset = static_cast<int>(kIntScale * n[i]);
+        const int32_t bits = std::bit_cast<int32_t>(p[i]);
+        const float moved = std::bit_cast<float>(bits + (p[i] < 0.0f ? -offset : offset));
+        result[i] = std::abs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : moved;
+    }
+    return result;
+}
+
+inline Ray spawn_ray(const SurfaceInteraction& si, const Vec3& direction) {
+    return Ray{offset_ray_origin(si.p, si.ng, direction), direction, 0.0f, kInfinity};
+}
+
+// A ray from the surface towards `target` that stops just short of it: used for shadow
+// rays, so the surface at `target` (a light) does not occlude itself.
+inline Ray spawn_ray_to(const SurfaceInteraction& si, const Vec3& target) {
+    const Vec3 origin = offset_ray_origin(si.p, si.ng, target - si.p);
+    const Vec3 d = target - origin;
+    return Ray{origin, d, 0.0f, 1.0f - 1e-4f};
+}
+
+}  // namespace glint

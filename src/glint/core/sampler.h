@@ -1,0 +1,37 @@
+#pragma once
+// Samplers hand out the random numbers of one pixel sample. They are deterministic in
+// (seed, pixel, sample index, dimension) so an image is bit-identical for any thread count.
+#include <glint/math/vector.h>
+
+#include <memory>
+#include <string>
+
+namespace glint {
+
+class Sampler {
+public:
+    Sampler(int samples_per_pixel, uint64_t seed) : m_spp(samples_per_pixel), m_seed(seed) {}
+    virtual ~Sampler() = default;
+
+    // Positions the sampler at sample `index` of `pixel`; dimensions restart at 0.
+    virtual void start_pixel_sample(Vec2i pixel, int index) = 0;
+    virtual float get_1d() = 0;
+    virtual Vec2 get_2d() = 0;
+    // The 2D sample that positions the film sample inside its pixel.
+    virtual Vec2 get_pixel_2d() { return get_2d(); }
+    // A fresh sampler with the same settings, for another thread.
+    virtual std::unique_ptr<Sampler> clone() const = 0;
+
+    int samples_per_pixel() const { return m_spp; }
+    uint64_t seed() const { return m_seed; }
+
+protected:
+    int m_spp;
+    uint64_t m_seed;
+};
+
+// Names: "independent", "stratified". Throws glint::Error for anything else.
+std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_pixel,
+                                      uint64_t seed);
+
+}  // namespace glint

@@ -1,0 +1,117 @@
+#include <glint/core/error.h>
+#include <glint/geometry/accel.h>
+
+#include <fmt/format.h>
+
+namespace glint {
+
+Accel::Accel() {
+    m_device = rtcNewDevice(nullptr);
+    if (!m_device) throw Error("could not create the Embree device");
+    m_world = rtcNewScene(m_device);
+    rtcSetSceneBuildQuality(m_world, RTC_BUILD_QUALITY_HIGH);
+}
+
+Accel::~Accel() {
+    for (RTCScene scene : m_prototypes) rtcReleaseScene(scene);
+    if (m_world) rtcReleaseScene(m_world);
+    if (m_device) rtcReleaseDevice(m_device);
+}
+
+void Accel::check_device(const char* what) const {
+    const RTCError error = rtcGetDeviceError(m_device);
+    if (error != RTC_ERROR_NONE) {
+        throw Error(fmt::format("Embree failed while {} (error code {})", what, static_cast<int>(error)));
+    }
+}
+
+int Accel::add_prototype() {
+    RTCScene scene = rtcNewScene(m_device);
+    rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+    m_prototypes.push_back(scene);
+    return static_cast<int>(m_prototypes.size()) - 1;
+}
+
+unsigned Accel::add_shape(int prototype, const Shape& shape) {
+    RTCGeometry geometry = shape.create_embree_geometry(m_device);
+    const unsigned id = rtcAttachGeometry(prototype < 0 ? m_world : m_prototypes.at(prototype), geometry);
+    rtcReleaseGeometry(geometry);
+    check_device("adding a shape");
+    return id;
+}
+
+unsigned Accel::add_instance(int prototype, const Transform& to_world) {
+    RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(instance, m_prototypes.at(prototype));
+    rtcSetGeometryTransform(instance, 0, RTC_FORMAT_FLOAT4X4_COLUMN_MAJOR,
+                            &to_world.matrix()[0][0]);
+    rtcCommitGeometry(instance);
+    const unsigned id = rtcAttachGeometry(m_world, instance);
+    rtcReleaseGeometry(instance);
+    check_device("placing a group instance");
+    return id;
+}
+
+void Accel::commit() {
+    for (RTCScene scene : m_prototypes) rtcCommitScene(scene);
+    rtcCommitScene(m_world);
+    check_device("building the acceleration structure");
+}
+
+std::optional<HitRecord> Accel::intersect(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rh;
+    rh.ray.org_x = ray.origin.x;
+    rh.ray.org_y = ray.origin.y;
+    rh.ray.org_z = ray.origin.z;
+    rh.ray.dir_x = ray.direction.x;
+    rh.ray.dir_y = ray.direction.y;
+    rh.ray.dir_z = ray.direction.z;
+    rh.ray.tnear = ray.t_min;
+    rh.ray.tfar = ray.t_max;
+    rh.ray.time = 0.0f;
+    rh.ray.mask = 0xffffffffu;
+    rh.ray.id = 0;
+    rh.ray.flags = 0;
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_world, &context, &rh);
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    HitRecord hit;
+    hit.t = rh.ray.tfar;
+    hit.primitive = rh.hit.primID;
+    hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
+    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
+        hit.top_geometry = rh.hit.instID[0];
+        hit.local_geometry = rh.hit.geomID;
+    } else {
+        hit.top_geometry = rh.hit.geomID;
+    }
+    return hit;
+}
+
+bool Accel::occluded(const Ray& ray) const {
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r;
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x;
+    r.dir_y = ray.direction.y;
+    r.dir_z = ray.direction.z;
+    r.tnear = ray.t_min;
+    r.tfar = ray.t_max;
+    r.time = 0.0f;
+    r.mask = 0xffffffffu;
+    r.id = 0;
+    r.flags = 0;
+    rtcOccluded1(m_world, &context, &r);
+    return r.tfar < 0.0f;
+}
+
+const char* Accel::embree_version() { return RTC_VERSION_STRING; }
+
+}  // namespace glint

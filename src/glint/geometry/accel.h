@@ -1,0 +1,42 @@
+#pragma once
+// Embree scene management: one Embree scene per group prototype, placed in the world by
+// Embree instances (one level, which is what Debian's Embree supports), plus the shapes
+// of the root group directly in the world scene.
+#include <glint/geometry/shape.h>
+
+#include <optional>
+#include <vector>
+
+namespace glint {
+
+class Accel {
+public:
+    Accel();
+    ~Accel();
+    Accel(const Accel&) = delete;
+    Accel& operator=(const Accel&) = delete;
+
+    // A new, empty prototype scene; returns its id.
+    int add_prototype();
+    // Adds `shape` to prototype `prototype` (or to the world scene when -1); returns the
+    // geometry id it gets there. The shape must outlive the Accel.
+    unsigned add_shape(int prototype, const Shape& shape);
+    // Places a prototype in the world; returns the world geometry id of the instance.
+    unsigned add_instance(int prototype, const Transform& to_world);
+    // Builds all BVHs. Throws glint::Error when Embree reports a problem.
+    void commit();
+
+    std::optional<HitRecord> intersect(const Ray& ray) const;
+    bool occluded(const Ray& ray) const;
+
+    static const char* embree_version();
+
+private:
+    void check_device(const char* what) const;
+
+    RTCDevice m_device = nullptr;
+    RTCScene m_world = nullptr;
+    std::vector<RTCScene> m_prototypes;
+};
+
+}  // namespace glint

@@ -1,0 +1,219 @@
+#include <glint/core/error.h>
+#include <glint/geometry/mesh.h>
+#include <glint/math/warp.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstring>
+
+namespace glint {
+namespace {
+
+Vec3 triangle_cross(const Vec3& a, const Vec3& b, const Vec3& c) { return glm::cross(b - a, c - a); }
+
+// Uniform-by-area sampling over the world-space triangles of a placed mesh.
+class MeshSampler final : public ShapeSampler {
+public:
+    MeshSampler(const MeshData& mesh, const Transform& to_world) {
+        const size_t count = mesh.indices.size() / 3;
+        m_vertices.reserve(count * 3);
+        m_cumulative_area.reserve(count);
+        double total = 0.0;
+        for (size_t i = 0; i < count; ++i) {
+            for (int k = 0; k < 3; ++k) {
+                m_vertices.push_back(to_world.point(mesh.positions[mesh.indices[3 * i + k]]));
+            }
+            const Vec3* v = &m_vertices[3 * i];
+            total += 0.5 * glm::length(triangle_cross(v[0], v[1], v[2]));
+            m_cumulative_area.push_back(total);
+        }
+        m_area = static_cast<float>(total);
+    }
+
+    ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override {
+        const double target = u_select * static_cast<double>(m_area);
+        auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
+        const size_t tri = std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
+        const Vec3* v = &m_vertices[3 * tri];
+        const Vec2 b = warp::square_to_uniform_triangle(u);
+        ShapeSample s;
+        s.p = (1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2];
+        s.n = glm::normalize(triangle_cross(v[0], v[1], v[2]));
+        s.pdf = area_to_solid_angle_pdf(1.0f / m_area, ref, s.p, s.n);
+        return s;
+    }
+
+    float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override {
+        return area_to_solid_angle_pdf(1.0f / m_area, ref, p, n);
+    }
+
+    float area() const override { return m_area; }
+
+private:
+    std::vector<Vec3> m_vertices;
+    std::vector<double> m_cumulative_area;
+    float m_area = 0.0f;
+};
+
+}  // namespace
+
+TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(name)) {
+    const size_t vertex_count = data.positions.size();
+    if (data.indices.size() % 3 != 0) {
+        throw Error(fmt::format("mesh '{}': index count {} is not a multiple of 3", m_name,
+                                data.indices.size()));
+    }
+    if (!data.normals.empty() && data.normals.size() != vertex_count) {
+        throw Error(fmt::format("mesh '{}': {} normals for {} vertices", m_name,
+                                data.normals.size(), vertex_count));
+    }
+    if (!data.uvs.empty() && data.uvs.size() != vertex_count) {
+        throw Error(fmt::format("mesh '{}': {} uvs for {} vertices", m_name, data.uvs.size(),
+                                vertex_count));
+    }
+    for (size_t i = 0; i < vertex_count; ++i) {
+        if (!is_finite(data.positions[i])) {
+            throw Error(fmt::format("mesh '{}': vertex {} is not finite", m_name, i + 1));
+        }
+        m_bounds.expand(data.positions[i]);
+    }
+    for (auto& n : data.normals) {
+        const float len = glm::length(n);
+        n = (std::isfinite(len) && len > 0.0f) ? n / len : Vec3(0.0f);
+    }
+    std::vector<uint32_t> kept;
+    kept.reserve(data.indices.size());
+    for (size_t t = 0; t < data.indices.size(); t += 3) {
+        for (int k = 0; k < 3; ++k) {
+            if (data.indices[t + k] >= vertex_count) {
+                throw Error(fmt::format("mesh '{}': triangle {} uses vertex {} but there are {}",
+                                        m_name, t / 3 + 1, data.indices[t + k] + 1, vertex_count));
+            }
+        }
+        const Vec3 n = triangle_cross(data.positions[data.indices[t]],
+                                      data.positions[data.indices[t + 1]],
+                                      data.positions[data.indices[t + 2]]);
+        const float len2 = glm::dot(n, n);
+        if (!(len2 > 0.0f) || !std::isfinite(len2)) continue;  // degenerate: no normal
+        kept.insert(kept.end(), data.indices.begin() + t, data.indices.begin() + t + 3);
+    }
+    data.indices = std::move(kept);
+    m_data = std::move(data);
+}
+
+RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
+        m_data.positions.size()));
+    for (size_t i = 0; i < m_data.positions.size(); ++i) {
+        std::memcpy(vertices + 3 * i, &m_data.positions[i], 3 * sizeof(float));
+    }
+    auto* indices = static_cast<uint32_t*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                3 * sizeof(uint32_t), m_data.indices.size() / 3));
+    std::copy(m_data.indices.begin(), m_data.indices.end(), indices);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
+                                    SurfaceInteraction& si) const {
+    const uint32_t* idx = &m_data.indices[3 * hit.primitive];
+    const Vec3& p0 = m_data.positions[idx[0]];
+    const Vec3& p1 = m_data.positions[idx[1]];
+    const Vec3& p2 = m_data.positions[idx[2]];
+    const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
+    si.p = b0 * p0 + b1 * p1 + b2 * p2;
+    si.ng = glm::normalize(triangle_cross(p0, p1, p2));
+
+    Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
+    if (!m_data.uvs.empty()) {
+        uv0 = m_data.uvs[idx[0]];
+        uv1 = m_data.uvs[idx[1]];
+        uv2 = m_data.uvs[idx[2]];
+    }
+    si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
+    const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+    const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+    if (std::abs(det) > 1e-12f) {
+        const float inv = 1.0f / det;
+        si.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+        si.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+    } else {
+        const Frame f = Frame::from_normal(si.ng);
+        si.dpdu = f.s();
+        si.dpdv = f.t();
+    }
+
+    Vec3 ns = si.ng;
+    if (!m_data.normals.empty()) {
+        const Vec3 interpolated =
+            b0 * m_data.normals[idx[0]] + b1 * m_data.normals[idx[1]] + b2 * m_data.normals[idx[2]];
+        const float len2 = glm::dot(interpolated, interpolated);
+        if (len2 > 0.0f) {
+            ns = interpolated / std::sqrt(len2);
+            // The artist's normals define the outside when they disagree with the winding.
+            if (glm::dot(si.ng, ns) < 0.0f) si.ng = -si.ng;
+        }
+    }
+    si.shading = Frame::from_normal_tangent(ns, si.dpdu);
+}
+
+std::unique_ptr<ShapeSampler> TriangleMesh::make_sampler(const Transform& to_world) const {
+    if (m_data.indices.empty()) throw Error(fmt::format("mesh '{}' has no triangles to emit from", m_name));
+    return std::make_unique<MeshSampler>(m_data, to_world);
+}
+
+MeshData make_quad_mesh(const Vec3& p0, const Vec3& p1, const Vec3& p2, const Vec3& p3) {
+    MeshData mesh;
+    mesh.positions = {p0, p1, p2, p3};
+    mesh.uvs = {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)};
+    mesh.indices = {0, 1, 2, 0, 2, 3};
+    return mesh;
+}
+
+MeshData make_box_mesh(const Vec3& lo, const Vec3& hi) {
+    MeshData mesh;
+    // Each face: an axis, the side, and two in-plane axes ordered so the normal points out.
+    auto add_face = [&](int axis, bool positive) {
+        const int a = (axis + 1) % 3, b = (axis + 2) % 3;
+        const float w = positive ? hi[axis] : lo[axis];
+        auto corner = [&](float s, float t) {
+            Vec3 p;
+            p[axis] = w;
+            p[a] = s;
+            p[b] = t;
+            return p;
+        };
+        const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
+        if (positive) {
+            mesh.positions.insert(mesh.positions.end(), {corner(lo[a], lo[b]), corner(hi[a], lo[b]),
+                                                         corner(hi[a], hi[b]), corner(lo[a], hi[b])});
+        } else {
+            mesh.positions.insert(mesh.positions.end(), {corner(lo[a], lo[b]), corner(lo[a], hi[b]),
+                                                         corner(hi[a], hi[b]), corner(hi[a], lo[b])});
+        }
+        mesh.uvs.insert(mesh.uvs.end(), {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)});
+        mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    };
+    for (int axis = 0; axis < 3; ++axis) {
+        add_face(axis, false);
+        add_face(axis, true);
+    }
+    return mesh;
+}
+
+void transform_mesh(MeshData& mesh, const Transform& xf) {
+    if (xf.is_identity()) return;
+    for (auto& p : mesh.positions) p = xf.point(p);
+    for (auto& n : mesh.normals) n = glm::normalize(xf.normal(n));
+    // A mirroring transform reverses the winding; restore it so normals still point out.
+    if (xf.swaps_handedness()) {
+        for (size_t t = 0; t < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+    }
+}
+
+}  // namespace glint

@@ -1,0 +1,73 @@
+#pragma once
+// The Shape interface. A shape lives in the space of the group that holds it; the scene
+// places groups in the world. Ray queries go through Embree (geometry/accel.h): meshes
+// natively, analytic shapes as Embree user geometry.
+#include <glint/core/interaction.h>
+#include <glint/math/bounds.h>
+
+#include <embree3/rtcore.h>
+
+#include <memory>
+#include <string>
+
+namespace glint {
+
+// What Embree reported for a hit, enough for the shape to rebuild the full interaction.
+struct HitRecord {
+    float t = kInfinity;
+    unsigned top_geometry = RTC_INVALID_GEOMETRY_ID;   // geometry id in the world scene
+    unsigned local_geometry = RTC_INVALID_GEOMETRY_ID; // geometry id inside an instance
+    unsigned primitive = 0;
+    Vec2 barycentric{0.0f};
+    bool instanced() const { return local_geometry != RTC_INVALID_GEOMETRY_ID; }
+};
+
+// A point drawn on an emitting surface, in world space.
+struct ShapeSample {
+    Vec3 p;
+    Vec3 n;           // unit surface normal at p (outward)
+    float pdf = 0.0f; // solid-angle density with respect to the reference point
+};
+
+// World-space sampling of a placed shape, used by area lights. Densities are in solid
+// angle as seen from `ref`; every implementation is chi-square tested.
+class ShapeSampler {
+public:
+    virtual ~ShapeSampler() = default;
+    virtual ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const = 0;
+    // Density of sampling the point `p` with normal `n` from `ref`.
+    virtual float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const = 0;
+    virtual float area() const = 0;
+};
+
+class Shape {
+public:
+    virtual ~Shape() = default;
+
+    virtual std::string name() const = 0;
+    virtual Bounds3 bounds() const = 0;
+    virtual size_t triangle_count() const { return 0; }
+
+    // A committed Embree geometry for this shape; the shape must outlive it.
+    virtual RTCGeometry create_embree_geometry(RTCDevice device) const = 0;
+
+    // Fills position, normals, shading frame, uv and derivatives in the shape's space.
+    // `ray` is the ray in that space and `hit` what Embree reported.
+    virtual void fill_interaction(const Ray& ray, const HitRecord& hit,
+                                  SurfaceInteraction& si) const = 0;
+
+    // Sampling of this shape placed in the world by `to_world`, for area lights.
+    virtual std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const = 0;
+};
+
+// Converts an area density at `p` (normal `n`) into a solid-angle density seen from `ref`.
+inline float area_to_solid_angle_pdf(float pdf_area, const Vec3& ref, const Vec3& p,
+                                     const Vec3& n) {
+    const Vec3 d = p - ref;
+    const float dist2 = glm::dot(d, d);
+    const float cos_light = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
+    if (cos_light <= 0.0f || dist2 <= 0.0f) return 0.0f;
+    return pdf_area * dist2 / cos_light;
+}
+
+}  // namespace glint

@@ -1,0 +1,174 @@
+#include <glint/core/error.h>
+#include <glint/geometry/sphere.h>
+#include <glint/math/warp.h>
+
+namespace glint {
+namespace {
+
+void sphere_bounds(const RTCBoundsFunctionArguments* args) {
+    const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
+    const Bounds3 b = sphere->bounds();
+    *args->bounds_o = RTCBounds{b.min.x, b.min.y, b.min.z, 0.0f, b.max.x, b.max.y, b.max.z, 0.0f};
+}
+
+void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] != -1) continue;
+        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+        float t0, t1;
+        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
+        const float t_near = RTCRayN_tnear(rays, n, i);
+        float& t_far = RTCRayN_tfar(rays, n, i);
+        const float t = t0 > t_near ? t0 : t1;
+        if (!(t > t_near && t < t_far)) continue;
+        t_far = t;
+        const Vec3 p = o + t * d;
+        RTCHitN_Ng_x(hits, n, i) = p.x;
+        RTCHitN_Ng_y(hits, n, i) = p.y;
+        RTCHitN_Ng_z(hits, n, i) = p.z;
+        RTCHitN_u(hits, n, i) = t == t0 ? 0.0f : 1.0f;  // which root, for CSG later
+        RTCHitN_v(hits, n, i) = 0.0f;
+        RTCHitN_primID(hits, n, i) = args->primID;
+        RTCHitN_geomID(hits, n, i) = args->geomID;
+        RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
+    }
+}
+
+void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
+    RTCRayN* rays = args->ray;
+    const unsigned n = args->N;
+    for (unsigned i = 0; i < n; ++i) {
+        if (args->valid[i] != -1) continue;
+        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+        float t0, t1;
+        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
+        const float t_near = RTCRayN_tnear(rays, n, i);
+        float& t_far = RTCRayN_tfar(rays, n, i);
+        const bool hit = (t0 > t_near && t0 < t_far) || (t1 > t_near && t1 < t_far);
+        if (hit) t_far = -kInfinity;  // Embree's convention for "occluded"
+    }
+}
+
+}  // namespace
+
+Sphere::Sphere(const Vec3& center, float radius, const Transform& to_parent) {
+    if (!(radius > 0.0f) || !std::isfinite(radius)) throw Error("sphere radius must be positive");
+    m_to_parent = to_parent * Transform::translate(center) * Transform::scale(Vec3(radius));
+}
+
+Bounds3 Sphere::bounds() const {
+    Bounds3 unit;
+    unit.expand(Vec3(-1.0f));
+    unit.expand(Vec3(1.0f));
+    return unit.transformed(m_to_parent);
+}
+
+bool Sphere::intersect_interval(const Vec3& origin, const Vec3& direction, float& t0,
+                                float& t1) const {
+    const Vec3 o = m_to_parent.inverse().point(origin);
+    const Vec3 d = m_to_parent.inverse().vector(direction);
+    const float a = glm::dot(d, d);
+    const float b = glm::dot(o, d);
+    const float c = glm::dot(o, o) - 1.0f;
+    // Discriminant from the distance of the closest approach, which stays accurate for
+    // distant rays where b*b - a*c cancels catastrophically.
+    const Vec3 closest = o - (b / a) * d;
+    const float discriminant = a * (1.0f - glm::dot(closest, closest));
+    if (discriminant < 0.0f) return false;
+    const float root = std::sqrt(discriminant);
+    const float q = b < 0.0f ? -b + root : -b - root;
+    if (q == 0.0f) return false;
+    t0 = c / q;
+    t1 = q / a;
+    if (t0 > t1) std::swap(t0, t1);
+    return true;
+}
+
+RTCGeometry Sphere::create_embree_geometry(RTCDevice device) const {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, 1);
+    rtcSetGeometryUserData(geometry, const_cast<Sphere*>(this));
+    rtcSetGeometryBoundsFunction(geometry, sphere_bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, sphere_intersect);
+    rtcSetGeometryOccludedFunction(geometry, sphere_occluded);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+void Sphere::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
+    const Transform to_object = m_to_parent.inverse();
+    Vec3 p_object = to_object.point(ray.at(hit.t));
+    p_object = glm::normalize(p_object);  // back onto the surface, removing the hit's error
+    const float phi_raw = std::atan2(p_object.z, p_object.x);
+    const float phi = phi_raw < 0.0f ? phi_raw + 2.0f * kPi : phi_raw;
+    const float theta = std::acos(std::clamp(p_object.y, -1.0f, 1.0f));
+    si.uv = Vec2(phi * kInv2Pi, theta * kInvPi);
+    // y is the pole; u runs around it, v from the north pole down.
+    const Vec3 dpdu_object(-2.0f * kPi * p_object.z, 0.0f, 2.0f * kPi * p_object.x);
+    const float sin_theta = safe_sqrt(1.0f - p_object.y * p_object.y);
+    const Vec3 dpdv_object =
+        kPi * Vec3(p_object.y * std::cos(phi), -sin_theta, p_object.y * std::sin(phi));
+
+    si.p = m_to_parent.point(p_object);
+    si.ng = glm::normalize(m_to_parent.normal(p_object));
+    si.dpdu = m_to_parent.vector(dpdu_object);
+    si.dpdv = m_to_parent.vector(dpdv_object);
+    si.shading = Frame::from_normal_tangent(si.ng, si.dpdu);
+}
+
+std::unique_ptr<ShapeSampler> Sphere::make_sampler(const Transform& to_world) const {
+    const Transform full = to_world * m_to_parent;
+    const Vec3 center = full.point(Vec3(0.0f));
+    const Vec3 axes(glm::length(full.vector(Vec3(1, 0, 0))), glm::length(full.vector(Vec3(0, 1, 0))),
+                    glm::length(full.vector(Vec3(0, 0, 1))));
+    if (max_component(axes) > 1.0001f * min_component(axes)) {
+        throw Error("an emissive sphere cannot be scaled non-uniformly");
+    }
+    return std::make_unique<SphereSampler>(center, axes.x);
+}
+
+ShapeSample SphereSampler::sample(const Vec3& ref, const Vec2& u, float) const {
+    const Vec3 to_center = m_center - ref;
+    const float dist2 = glm::dot(to_center, to_center);
+    ShapeSample s;
+    if (dist2 <= m_radius * m_radius * 1.0001f) {
+        // Inside (or on) the sphere: uniform area sampling.
+        s.n = warp::square_to_uniform_sphere(u);
+        s.p = m_center + m_radius * s.n;
+        s.pdf = area_to_solid_angle_pdf(1.0f / area(), ref, s.p, s.n);
+        return s;
+    }
+    const float dist = std::sqrt(dist2);
+    const float sin2_max = m_radius * m_radius / dist2;
+    const float cos_max = safe_sqrt(1.0f - sin2_max);
+    const Vec3 w = warp::square_to_uniform_cone(u, cos_max);
+    const Frame frame = Frame::from_normal(to_center / dist);
+    const Vec3 dir = frame.to_world(w);
+    // The first intersection of `dir` with the sphere; clamped so grazing directions at the
+    // rim, which round to a miss, land on the silhouette.
+    const float b = glm::dot(dir, to_center);
+    const float closest2 = dist2 - b * b;
+    const float t = b - safe_sqrt(m_radius * m_radius - closest2);
+    s.p = ref + t * dir;
+    s.n = glm::normalize(s.p - m_center);
+    s.p = m_center + m_radius * s.n;
+    s.pdf = warp::uniform_cone_pdf(Vec3(0, 0, w.z), cos_max);
+    return s;
+}
+
+float SphereSampler::pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
+    const Vec3 to_center = m_center - ref;
+    const float dist2 = glm::dot(to_center, to_center);
+    if (dist2 <= m_radius * m_radius * 1.0001f) return area_to_solid_angle_pdf(1.0f / area(), ref, p, n);
+    const float cos_max = safe_sqrt(1.0f - m_radius * m_radius / dist2);
+    return 1.0f / (2.0f * kPi * (1.0f - cos_max));
+}
+
+}  // namespace glint

@@ -1,0 +1,42 @@
+#pragma once
+// Analytic sphere as Embree user geometry: exact silhouettes and normals at any size.
+// Internally a unit sphere placed by a transform, so scaled spheres become ellipsoids.
+#include <glint/geometry/shape.h>
+
+namespace glint {
+
+class Sphere final : public Shape {
+public:
+    // `to_parent` places the sphere (centre, radius) further inside its group.
+    Sphere(const Vec3& center, float radius, const Transform& to_parent = Transform());
+
+    std::string name() const override { return "sphere"; }
+    Bounds3 bounds() const override;
+    RTCGeometry create_embree_geometry(RTCDevice device) const override;
+    void fill_interaction(const Ray& ray, const HitRecord& hit,
+                          SurfaceInteraction& si) const override;
+    std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const override;
+
+    // Ray parameters where the ray (in the sphere's parent space) enters and leaves;
+    // false when it misses. Used by Embree callbacks and, later, CSG.
+    bool intersect_interval(const Vec3& origin, const Vec3& direction, float& t0, float& t1) const;
+
+private:
+    Transform m_to_parent;  // unit sphere at the origin -> parent space
+};
+
+// Sampling of a sphere with centre and radius in world space: the cone of directions it
+// subtends when the reference point is outside, uniform area otherwise.
+class SphereSampler final : public ShapeSampler {
+public:
+    SphereSampler(const Vec3& center, float radius) : m_center(center), m_radius(radius) {}
+    ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override;
+    float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
+    float area() const override { return 4.0f * kPi * m_radius * m_radius; }
+
+private:
+    Vec3 m_center;
+    float m_radius;
+};
+
+}  // namespace glint

@@ -1,0 +1,57 @@
+#pragma once
+// Integrators turn a Scene into an image on a Film.
+#include <glint/film/film.h>
+#include <glint/film/filter.h>
+#include <glint/scene/render_settings.h>
+#include <glint/scene/scene.h>
+
+#include <atomic>
+#include <memory>
+
+namespace glint {
+
+class Sampler;
+class Arena;
+class Progress;
+
+struct RenderStats {
+    uint64_t samples = 0;
+    uint64_t rays = 0;  // closest-hit plus shadow rays
+    double seconds = 0.0;
+};
+
+class Integrator {
+public:
+    virtual ~Integrator() = default;
+    virtual RenderStats render(const Scene& scene, Film& film, Progress& progress) = 0;
+};
+
+// Counts rays per thread without contention; summed once per tile.
+struct RayCounter {
+    uint64_t rays = 0;
+};
+
+// An integrator that estimates radiance along camera rays independently per pixel sample:
+// the tile loop, sampling and film handling live here; subclasses supply li().
+class TileIntegrator : public Integrator {
+public:
+    explicit TileIntegrator(const RenderSettings& settings);
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+
+    // Radiance arriving along `ray`. When `aov` is not null, fills first-hit features.
+    virtual Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                        RayCounter& counter, AovSample* aov) const = 0;
+
+protected:
+    void render_pixel(const Scene& scene, Film& film, Vec2i pixel, Sampler& sampler, Arena& arena,
+                      RayCounter& counter) const;
+
+    RenderSettings m_settings;
+    std::unique_ptr<Filter> m_filter;
+};
+
+// Builds the integrator named in settings.integrator; throws glint::Error listing the
+// known names otherwise.
+std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings);
+
+}  // namespace glint

@@ -1,0 +1,32 @@
+#pragma once
+// A shape that emits constant radiance from its front side (or both sides).
+#include <glint/geometry/shape.h>
+#include <glint/light/light.h>
+
+#include <memory>
+
+namespace glint {
+
+class AreaLight final : public Light {
+public:
+    AreaLight(std::unique_ptr<ShapeSampler> shape, const Spectrum& radiance, bool two_sided)
+        : m_shape(std::move(shape)), m_radiance(radiance), m_two_sided(two_sided) {}
+
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
+    float pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const override;
+    Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
+    Spectrum power() const override;
+    bool is_delta() const override { return false; }
+
+    // Radiance leaving a surface point with normal `n` towards `w`.
+    Spectrum emitted(const Vec3& n, const Vec3& w) const {
+        return (m_two_sided || glm::dot(n, w) > 0.0f) ? m_radiance : Spectrum(0.0f);
+    }
+
+private:
+    std::unique_ptr<ShapeSampler> m_shape;
+    Spectrum m_radiance;
+    bool m_two_sided;
+};
+
+}  // namespace glint

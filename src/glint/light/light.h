@@ -1,0 +1,42 @@
+#pragma once
+// The Light interface. Lights state their emission in the units that fit them:
+// radiance for area lights, intensity (W/sr) for point and spot lights.
+#include <glint/core/interaction.h>
+#include <glint/core/spectrum.h>
+
+#include <optional>
+
+namespace glint {
+
+struct LightSample {
+    Vec3 wi;          // unit direction from the reference point towards the light
+    Spectrum L;       // radiance arriving from that direction (intensity/r^2 for delta lights)
+    float pdf = 0.0f; // solid-angle density, or 1 for delta lights
+    Vec3 p;           // the point on the light, target of the shadow ray
+    bool is_delta = false;
+};
+
+class Light {
+public:
+    virtual ~Light() = default;
+
+    // Samples incident illumination at `ref`; nullopt when the light cannot reach it.
+    virtual std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
+                                                 float u_select) const = 0;
+    // Density of sample_li choosing the point `on_light.p` (zero for delta lights).
+    virtual float pdf_li(const Vec3&, const SurfaceInteraction&) const { return 0.0f; }
+    // Radiance emitted from a hit on this light towards `w` (unit, away from the surface).
+    virtual Spectrum le(const SurfaceInteraction&, const Vec3&) const { return Spectrum(0.0f); }
+    // Total emitted power, for choosing lights in proportion to it.
+    virtual Spectrum power() const = 0;
+    virtual bool is_delta() const = 0;
+
+    // Position of this light in the scene's light list (set by the LightSampler).
+    int index() const { return m_index; }
+    void set_index(int index) { m_index = index; }
+
+private:
+    int m_index = -1;
+};
+
+}  // namespace glint

@@ -1,0 +1,44 @@
+#include <glint/light/light_sampler.h>
+
+#include <algorithm>
+
+namespace glint {
+
+LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights) {
+    double total = 0.0;
+    std::vector<double> weights;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        lights[i]->set_index(static_cast<int>(i));
+        m_lights.push_back(lights[i].get());
+        const double w = std::max(0.0f, lights[i]->power().luminance());
+        weights.push_back(w);
+        total += w;
+    }
+    // Lights with no measurable power (all black) fall back to a uniform choice.
+    if (!(total > 0.0)) {
+        std::fill(weights.begin(), weights.end(), 1.0);
+        total = static_cast<double>(weights.size());
+    }
+    double running = 0.0;
+    for (double w : weights) {
+        m_pmf.push_back(static_cast<float>(w / total));
+        running += w / total;
+        m_cdf.push_back(static_cast<float>(running));
+    }
+    if (!m_cdf.empty()) m_cdf.back() = 1.0f;
+}
+
+LightSampler::Choice LightSampler::sample(float u) const {
+    if (m_lights.empty()) return {};
+    auto it = std::upper_bound(m_cdf.begin(), m_cdf.end(), u);
+    size_t i = std::min<size_t>(it - m_cdf.begin(), m_lights.size() - 1);
+    while (m_pmf[i] == 0.0f && i > 0) --i;  // never pick a zero-probability light
+    return {m_lights[i], m_pmf[i]};
+}
+
+float LightSampler::pmf(const Light& light) const {
+    const int i = light.index();
+    return (i >= 0 && static_cast<size_t>(i) < m_pmf.size()) ? m_pmf[i] : 0.0f;
+}
+
+}  // namespace glint

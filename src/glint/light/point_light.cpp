@@ -1,0 +1,75 @@
+#include <glint/light/point_light.h>
+
+namespace glint {
+namespace {
+
+std::optional<LightSample> sample_point(const Vec3& position, const Vec3& ref, const Spectrum& intensity) {
+    const Vec3 d = position - ref;
+    const float dist2 = glm::dot(d, d);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    LightSample s;
+    s.wi = d / std::sqrt(dist2);
+    s.L = intensity / dist2;
+    s.pdf = 1.0f;
+    s.p = position;
+    s.is_delta = true;
+    return s;
+}
+
+}  // namespace
+
+std::optional<LightSample> PointLight::sample_li(const Vec3& ref, const Vec2&, float) const {
+    return sample_point(m_position, ref, m_intensity);
+}
+
+SpotLight::SpotLight(const Vec3& position, const Vec3& direction, const Spectrum& intensity,
+                     float cone_degrees, float falloff_start_degrees)
+    : m_position(position),
+      m_direction(glm::normalize(direction)),
+      m_intensity(intensity),
+      m_cos_cone(std::cos(glm::radians(cone_degrees))),
+      m_cos_falloff_start(std::cos(glm::radians(falloff_start_degrees))) {}
+
+float SpotLight::falloff(const Vec3& w) const {
+    const float cos_theta = glm::dot(w, m_direction);
+    if (cos_theta >= m_cos_falloff_start) return 1.0f;
+    if (cos_theta <= m_cos_cone) return 0.0f;
+    const float x = (cos_theta - m_cos_cone) / (m_cos_falloff_start - m_cos_cone);
+    return x * x * (3.0f - 2.0f * x);  // smoothstep
+}
+
+std::optional<LightSample> SpotLight::sample_li(const Vec3& ref, const Vec2&, float) const {
+    auto s = sample_point(m_position, ref, m_intensity);
+    if (!s) return s;
+    const float f = falloff(-s->wi);
+    if (f <= 0.0f) return std::nullopt;
+    s->L *= f;
+    return s;
+}
+
+Spectrum SpotLight::power() const {
+    // Full intensity inside the inner cone, and about half of it across the falloff band.
+    return m_intensity * 2.0f * kPi * ((1.0f - m_cos_falloff_start) + 0.5f * (m_cos_falloff_start - m_cos_cone));
+}
+
+std::unique_ptr<Light> make_point_light(const Params& params) {
+    const Vec3 position = params.get_vec3("position");
+    const Spectrum intensity = params.get_spectrum("intensity");
+    return std::make_unique<PointLight>(position, intensity);
+}
+
+std::unique_ptr<Light> make_spot_light(const Params& params) {
+    const Vec3 position = params.get_vec3("position");
+    const Vec3 target = params.get_vec3("look_at");
+    const Spectrum intensity = params.get_spectrum("intensity");
+    const float cone = params.get_float("cone_angle", 30.0f);
+    const float falloff_start = params.get_float("falloff_start", cone * 0.8f);
+    if (!(cone > 0.0f && cone <= 90.0f)) params.fail("'cone_angle' must be in (0, 90] degrees");
+    if (!(falloff_start >= 0.0f && falloff_start <= cone)) {
+        params.fail("'falloff_start' must be between 0 and 'cone_angle'");
+    }
+    if (glm::length(target - position) <= 0.0f) params.fail("'look_at' must differ from 'position'");
+    return std::make_unique<SpotLight>(position, target - position, intensity, cone, falloff_start);
+}
+
+}  // namespace glint

@@ -1,0 +1,35 @@
+#include <glint/light/point_light.h>
+#include <glint/light/registry.h>
+
+#include <map>
+
+namespace glint {
+namespace {
+
+using LightFactory = std::unique_ptr<Light> (*)(const Params&);
+
+const std::map<std::string, LightFactory>& factories() {
+    static const std::map<std::string, LightFactory> table = {
+        {"point_light", make_point_light},
+        {"spot_light", make_spot_light},
+    };
+    return table;
+}
+
+}  // namespace
+
+std::vector<std::string> light_types() {
+    std::vector<std::string> names;
+    for (const auto& [name, factory] : factories()) names.push_back(name);
+    return names;
+}
+
+std::unique_ptr<Light> make_light(const Params& params) {
+    auto it = factories().find(params.type());
+    if (it == factories().end()) params.fail("unknown light type");
+    auto light = it->second(params);
+    params.check_all_used();
+    return light;
+}
+
+}  // namespace glint

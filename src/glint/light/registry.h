@@ -1,0 +1,16 @@
+#pragma once
+// Scene-language names of the lights that are not shapes (area lights come from shapes
+// with an emissive material).
+#include <glint/core/params.h>
+#include <glint/light/light.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+std::vector<std::string> light_types();
+std::unique_ptr<Light> make_light(const Params& params);
+
+}  // namespace glint

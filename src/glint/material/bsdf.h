@@ -1,0 +1,62 @@
+#pragma once
+// The BSDF contract.
+//
+// A Bsdf works in the local shading frame: z is the shading normal on the outside of the
+// surface, `wo` points away from the surface towards the viewer, `wi` towards the light;
+// both are unit vectors and may lie on either side (z < 0 is inside or behind).
+//
+//   eval(wo, wi)      f(wo, wi) WITHOUT the cosine factor; 0 for delta lobes.
+//   pdf(wo, wi)       solid-angle density with which sample() returns wi; 0 for delta lobes.
+//   sample(wo, u, uc) a direction wi with f and pdf; for delta lobes `pdf` is the discrete
+//                     probability of the chosen lobe and `f` already contains the delta
+//                     (f * |cos wi| / pdf is the path weight). nullopt when no direction
+//                     is produced (absorbed).
+//
+// Rules, each tested in tests/material: sample() is distributed as pdf() (chi-square);
+// no BSDF reflects more energy than it receives; reflection is reciprocal, and refraction
+// obeys the generalised reciprocity f(wo,wi)/eta_i^2 = f(wi,wo)/eta_o^2 for radiance.
+//
+// BSDFs are built per hit in an Arena and never destroyed, so they must be trivially
+// destructible (no virtual destructor, no owning members).
+#include <glint/core/spectrum.h>
+#include <glint/math/frame.h>
+
+#include <cstdint>
+#include <optional>
+
+namespace glint {
+
+enum BsdfFlags : uint32_t {
+    kBsdfReflection = 1u << 0,
+    kBsdfTransmission = 1u << 1,
+    kBsdfDiffuse = 1u << 2,
+    kBsdfGlossy = 1u << 3,
+    kBsdfDelta = 1u << 4,
+};
+
+struct BsdfSample {
+    Spectrum f;
+    Vec3 wi;
+    float pdf = 0.0f;
+    uint32_t flags = 0;
+    // eta of the side wi enters relative to the side wo came from; 1 for reflection.
+    float eta = 1.0f;
+
+    bool is_delta() const { return flags & kBsdfDelta; }
+    bool is_transmission() const { return flags & kBsdfTransmission; }
+};
+
+class Bsdf {
+public:
+    virtual Spectrum eval(const Vec3& wo, const Vec3& wi) const = 0;
+    virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
+    virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const = 0;
+    // Union of the flags of all lobes.
+    virtual uint32_t flags() const = 0;
+    bool is_delta() const { return (flags() & ~(kBsdfReflection | kBsdfTransmission)) == kBsdfDelta; }
+
+protected:
+    ~Bsdf() = default;  // not virtual: arena objects are never destroyed
+};
+
+}  // namespace glint

@@ -1,0 +1,27 @@
+#include <glint/material/materials.h>
+
+namespace glint {
+namespace {
+
+// A light source surface: emits, does not reflect.
+class EmissiveMaterial final : public Material {
+public:
+    EmissiveMaterial(const Spectrum& radiance, bool two_sided) : m_radiance(radiance), m_two_sided(two_sided) {}
+    const Bsdf* bsdf(const SurfaceInteraction&, Arena&) const override { return nullptr; }
+    Spectrum emission() const override { return m_radiance; }
+    bool emits_two_sided() const override { return m_two_sided; }
+
+private:
+    Spectrum m_radiance;
+    bool m_two_sided;
+};
+
+}  // namespace
+
+std::unique_ptr<Material> make_emissive_material(const Params& params) {
+    const Spectrum radiance = params.get_spectrum("radiance");
+    if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f) params.fail("'radiance' must not be negative");
+    return std::make_unique<EmissiveMaterial>(radiance, params.get_bool("two_sided", false));
+}
+
+}  // namespace glint

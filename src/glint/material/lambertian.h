@@ -1,0 +1,32 @@
+#pragma once
+// Ideal diffuse reflection, two-sided: it reflects on whichever side the viewer is.
+#include <glint/material/bsdf.h>
+#include <glint/math/warp.h>
+
+namespace glint {
+
+class LambertianBsdf final : public Bsdf {
+public:
+    explicit LambertianBsdf(const Spectrum& reflectance) : m_reflectance(reflectance) {}
+
+    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+        return same_hemisphere(wo, wi) ? m_reflectance * kInvPi : Spectrum(0.0f);
+    }
+    float pdf(const Vec3& wo, const Vec3& wi) const override {
+        return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
+    }
+    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float) const override {
+        if (wo.z == 0.0f) return std::nullopt;
+        Vec3 wi = warp::square_to_cosine_hemisphere(u);
+        if (wo.z < 0.0f) wi.z = -wi.z;
+        const float p = abs_cos_theta(wi) * kInvPi;
+        if (p <= 0.0f) return std::nullopt;
+        return BsdfSample{m_reflectance * kInvPi, wi, p, kBsdfReflection | kBsdfDiffuse, 1.0f};
+    }
+    uint32_t flags() const override { return kBsdfReflection | kBsdfDiffuse; }
+
+private:
+    Spectrum m_reflectance;
+};
+
+}  // namespace glint

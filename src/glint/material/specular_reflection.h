@@ -1,0 +1,24 @@
+#pragma once
+// A perfect mirror with a tint (a delta lobe, two-sided).
+#include <glint/material/bsdf.h>
+
+namespace glint {
+
+class SpecularReflectionBsdf final : public Bsdf {
+public:
+    explicit SpecularReflectionBsdf(const Spectrum& tint) : m_tint(tint) {}
+
+    Spectrum eval(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
+    float pdf(const Vec3&, const Vec3&) const override { return 0.0f; }
+    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2&, float) const override {
+        if (wo.z == 0.0f) return std::nullopt;
+        const Vec3 wi(-wo.x, -wo.y, wo.z);
+        return BsdfSample{m_tint / abs_cos_theta(wi), wi, 1.0f, kBsdfReflection | kBsdfDelta, 1.0f};
+    }
+    uint32_t flags() const override { return kBsdfReflection | kBsdfDelta; }
+
+private:
+    Spectrum m_tint;
+};
+
+}  // namespace glint

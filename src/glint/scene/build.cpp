@@ -1,0 +1,147 @@
+#include <glint/core/error.h>
+#include <glint/light/area_light.h>
+#include <glint/light/registry.h>
+#include <glint/material/registry.h>
+#include <glint/scene/build.h>
+#include <glint/scene/shapes.h>
+
+#include <fmt/format.h>
+
+namespace glint {
+
+class SceneBuilder {
+public:
+    SceneBuilder(const SceneDesc& desc, const RenderSettings& settings)
+        : m_desc(desc), m_settings(settings), m_scene(std::make_unique<Scene>()) {}
+
+    std::unique_ptr<Scene> build() {
+        build_camera();
+        for (const Params& p : m_desc.materials) m_scene->m_materials.push_back(make_material(p));
+        for (const Params& p : m_desc.lights) m_scene->m_lights.push_back(make_light(p));
+        if (m_desc.background) {
+            m_scene->m_background = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));
+            m_desc.background->check_all_used();
+        }
+        build_groups();
+        place_root();
+        m_scene->m_accel.commit();
+        m_scene->m_light_sampler = LightSampler(m_scene->m_lights);
+        m_scene->m_stats.lights = m_scene->m_lights.size();
+        return std::move(m_scene);
+    }
+
+private:
+    void build_camera() {
+        const Params fallback("camera", "default camera");
+        m_scene->m_camera = make_camera(m_desc.camera ? *m_desc.camera : fallback,
+                                        Vec2i(m_settings.width, m_settings.height));
+    }
+
+    // Shapes of every group, built once however often the group is placed.
+    void build_groups() {
+        m_group_shapes.resize(m_desc.groups.size());
+        m_prototype.assign(m_desc.groups.size(), -1);
+        for (size_t g = 0; g < m_desc.groups.size(); ++g) {
+            for (const Params& p : m_desc.groups[g].shapes) {
+                const ObjectRef ref = p.get_ref("material", "material");
+                auto shape = make_shape(p, m_desc.directory);
+                m_group_shapes[g].push_back(
+                    {shape.get(), m_scene->m_materials.at(ref.index).get(), &p});
+                m_scene->m_shapes.push_back(std::move(shape));
+            }
+        }
+    }
+
+    void place_root() {
+        std::vector<int> path{0};
+        for (const ShapeUse& use : m_group_shapes[0]) {
+            const unsigned id = m_scene->m_accel.add_shape(-1, *use.shape);
+            Scene::WorldEntry& entry = world_entry(id);
+            entry.geometry = {use.shape, use.material};
+            entry.light = make_area_light(use, Transform());
+            count_shape(use, Transform());
+        }
+        for (const InstanceDesc& instance : m_desc.groups[0].instances) place(instance, Transform(), path);
+    }
+
+    // Places group `instance.group` at `parent * instance.transform`, then its own children.
+    // Embree supports one instance level, so nested placements are flattened here.
+    void place(const InstanceDesc& instance, const Transform& parent, std::vector<int>& path) {
+        const int g = instance.group;
+        for (int ancestor : path) {
+            if (ancestor == g) throw Error(fmt::format("{}: a group cannot contain itself", instance.where));
+        }
+        const Transform to_world = parent * instance.transform;
+        if (!m_group_shapes[g].empty()) {
+            const unsigned id = m_scene->m_accel.add_instance(prototype_of(g), to_world);
+            Scene::WorldEntry& entry = world_entry(id);
+            entry.group = m_prototype[g];
+            entry.to_world = to_world;
+            for (const ShapeUse& use : m_group_shapes[g]) {
+                entry.lights.push_back(make_area_light(use, to_world));
+                count_shape(use, to_world);
+            }
+            ++m_scene->m_stats.instances;
+        }
+        path.push_back(g);
+        for (const InstanceDesc& child : m_desc.groups[g].instances) place(child, to_world, path);
+        path.pop_back();
+    }
+
+    struct ShapeUse {
+        const Shape* shape;
+        const Material* material;
+        const Params* params;
+    };
+
+    int prototype_of(int group) {
+        if (m_prototype[group] >= 0) return m_prototype[group];
+        const int id = m_scene->m_accel.add_prototype();
+        m_scene->m_group_geometry.emplace_back();
+        for (const ShapeUse& use : m_group_shapes[group]) {
+            const unsigned local = m_scene->m_accel.add_shape(id, *use.shape);
+            auto& geometry = m_scene->m_group_geometry[id];
+            if (geometry.size() <= local) geometry.resize(local + 1);
+            geometry[local] = {use.shape, use.material};
+        }
+        ++m_scene->m_stats.groups;
+        return m_prototype[group] = id;
+    }
+
+    Scene::WorldEntry& world_entry(unsigned id) {
+        if (m_scene->m_world.size() <= id) m_scene->m_world.resize(id + 1);
+        return m_scene->m_world[id];
+    }
+
+    const Light* make_area_light(const ShapeUse& use, const Transform& to_world) {
+        if (!use.material->is_emissive()) return nullptr;
+        std::unique_ptr<ShapeSampler> sampler;
+        try {
+            sampler = use.shape->make_sampler(to_world);
+        } catch (const Error& e) {
+            use.params->fail(e.what());
+        }
+        m_scene->m_lights.push_back(std::make_unique<AreaLight>(
+            std::move(sampler), use.material->emission(), use.material->emits_two_sided()));
+        return m_scene->m_lights.back().get();
+    }
+
+    void count_shape(const ShapeUse& use, const Transform& to_world) {
+        SceneStats& stats = m_scene->m_stats;
+        ++stats.shapes;
+        stats.triangles += use.shape->triangle_count();
+        stats.bounds.expand(use.shape->bounds().transformed(to_world));
+    }
+
+    const SceneDesc& m_desc;
+    const RenderSettings& m_settings;
+    std::unique_ptr<Scene> m_scene;
+    std::vector<std::vector<ShapeUse>> m_group_shapes;
+    std::vector<int> m_prototype;
+};
+
+std::unique_ptr<Scene> build_scene(const SceneDesc& desc, const RenderSettings& settings) {
+    return SceneBuilder(desc, settings).build();
+}
+
+}  // namespace glint

@@ -1,0 +1,357 @@
+#include <glint/core/error.h>
+#include <glint/light/registry.h>
+#include <glint/material/registry.h>
+#include <glint/scene/lua/lua_loader.h>
+#include <glint/scene/shapes.h>
+
+#include <fmt/format.h>
+#include <lua.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <memory>
+
+namespace glint {
+namespace {
+
+constexpr const char* kTransformMeta = "glint.transform";
+constexpr const char* kHandleMeta = "glint.handle";
+constexpr const char* kDescKey = "glint.scene_desc";
+
+struct Handle {
+    int kind;  // 0 = material, 1 = group
+    int index;
+};
+constexpr const char* kHandleKinds[] = {"material", "group"};
+
+SceneDesc& desc_of(lua_State* L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, kDescKey);
+    auto* desc = static_cast<SceneDesc*>(lua_touserdata(L, -1));
+    lua_pop(L, 1);
+    return *desc;
+}
+
+// "file:line" of the script statement that called into glint.
+std::string where(lua_State* L) {
+    luaL_where(L, 1);
+    std::string location = lua_tostring(L, -1);
+    lua_pop(L, 1);
+    while (!location.empty() && (location.back() == ' ' || location.back() == ':')) location.pop_back();
+    return location.empty() ? "?" : location;
+}
+
+// Runs a binding, turning glint errors into Lua errors (which carry their own location).
+template <int (*F)(lua_State*)>
+int guarded(lua_State* L) {
+    std::string message;
+    try {
+        return F(L);
+    } catch (const Error& e) {
+        message = e.what();
+    }
+    lua_pushstring(L, message.c_str());
+    return lua_error(L);
+}
+
+[[noreturn]] void fail(lua_State* L, const std::string& message) {
+    throw Error(fmt::format("{}: {}", where(L), message));
+}
+
+Transform* to_transform(lua_State* L, int index) {
+    return static_cast<Transform*>(luaL_testudata(L, index, kTransformMeta));
+}
+
+Handle* to_handle(lua_State* L, int index) {
+    return static_cast<Handle*>(luaL_testudata(L, index, kHandleMeta));
+}
+
+void push_transform(lua_State* L, const Transform& xf) {
+    void* memory = lua_newuserdatauv(L, sizeof(Transform), 0);
+    new (memory) Transform(xf);
+    luaL_setmetatable(L, kTransformMeta);
+}
+
+void push_handle(lua_State* L, int kind, int index) {
+    auto* handle = static_cast<Handle*>(lua_newuserdatauv(L, sizeof(Handle), 0));
+    *handle = {kind, index};
+    luaL_setmetatable(L, kHandleMeta);
+}
+
+// Converts the Lua value at `index` into a parameter value; `name` is for errors.
+ParamValue to_param(lua_State* L, int index, const std::string& name, const std::string& type) {
+    index = lua_absindex(L, index);
+    switch (lua_type(L, index)) {
+        case LUA_TBOOLEAN: return lua_toboolean(L, index) != 0;
+        case LUA_TNUMBER: return lua_tonumber(L, index);
+        case LUA_TSTRING: return std::string(lua_tostring(L, index));
+        case LUA_TUSERDATA:
+            if (Transform* xf = to_transform(L, index)) return *xf;
+            if (Handle* h = to_handle(L, index)) return ObjectRef{kHandleKinds[h->kind], h->index};
+            break;
+        case LUA_TTABLE: {
+            const lua_Integer n = luaL_len(L, index);
+            std::vector<double> numbers;
+            std::vector<std::vector<double>> rows;
+            std::vector<std::string> strings;
+            for (lua_Integer i = 1; i <= n; ++i) {
+                lua_geti(L, index, i);
+                if (lua_type(L, -1) == LUA_TNUMBER && rows.empty() && strings.empty()) {
+                    numbers.push_back(lua_tonumber(L, -1));
+                } else if (lua_type(L, -1) == LUA_TSTRING && rows.empty() && numbers.empty()) {
+                    strings.emplace_back(lua_tostring(L, -1));
+                } else if (lua_type(L, -1) == LUA_TTABLE && numbers.empty() && strings.empty()) {
+                    ParamValue row = to_param(L, -1, name, type);
+                    auto* row_numbers = std::get_if<std::vector<double>>(&row);
+                    if (!row_numbers) fail(L, fmt::format("{}: entry {} of '{}' must be a list of numbers", type, i, name));
+                    rows.push_back(std::move(*row_numbers));
+                } else {
+                    fail(L, fmt::format("{}: '{}' must be a list of numbers, of strings, or of lists of numbers", type, name));
+                }
+                lua_pop(L, 1);
+            }
+            if (!rows.empty()) return rows;
+            if (!strings.empty()) return strings;
+            return numbers;
+        }
+        default: break;
+    }
+    fail(L, fmt::format("{}: parameter '{}' has unsupported type {}", type, name, luaL_typename(L, index)));
+}
+
+// Reads the table argument at `index` into Params of the given type.
+Params to_params(lua_State* L, int index, const std::string& type) {
+    Params params(type, where(L));
+    if (lua_isnoneornil(L, index)) return params;
+    if (!lua_istable(L, index)) fail(L, fmt::format("{} expects a table of named parameters, e.g. glint.{}{{...}}", type, type));
+    index = lua_absindex(L, index);
+    lua_pushnil(L);
+    while (lua_next(L, index) != 0) {
+        if (lua_type(L, -2) != LUA_TSTRING) {
+            fail(L, fmt::format("{}: parameters must be named (name = value)", type));
+        }
+        const std::string name = lua_tostring(L, -2);
+        params.set(name, to_param(L, -1, name, type));
+        lua_pop(L, 1);
+    }
+    return params;
+}
+
+// glint.<material>{...} -> material handle. The type name is the closure's upvalue.
+int new_material(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    SceneDesc& desc = desc_of(L);
+    desc.materials.push_back(to_params(L, 1, type));
+    push_handle(L, 0, static_cast<int>(desc.materials.size()) - 1);
+    return 1;
+}
+
+int new_light(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    desc_of(L).lights.push_back(to_params(L, 1, type));
+    return 0;
+}
+
+int group_index_of(lua_State* L, int index) {
+    Handle* h = to_handle(L, index);
+    if (!h || h->kind != 1) fail(L, "expected a group (made by glint.group())");
+    return h->index;
+}
+
+// glint.<shape>{...} adds to the world group; group:<shape>{...} to that group.
+int new_shape(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    int group = 0;
+    int args = 1;
+    if (to_handle(L, 1)) {
+        group = group_index_of(L, 1);
+        args = 2;
+    }
+    SceneDesc& desc = desc_of(L);
+    desc.groups[group].shapes.push_back(to_params(L, args, type));
+    return 0;
+}
+
+int new_group(lua_State* L) {
+    SceneDesc& desc = desc_of(L);
+    desc.groups.push_back(GroupDesc{where(L), {}, {}});
+    push_handle(L, 1, static_cast<int>(desc.groups.size()) - 1);
+    return 1;
+}
+
+Transform optional_transform(lua_State* L, int index) {
+    if (lua_isnoneornil(L, index)) return Transform();
+    Transform* xf = to_transform(L, index);
+    if (!xf) fail(L, "expected a transform (glint.translate, glint.rotate, glint.scale, glint.matrix)");
+    return *xf;
+}
+
+// glint.place(group [, transform]) or parent:place(group [, transform]).
+int place_group(lua_State* L) {
+    int parent = 0;
+    int args = 1;
+    if (to_handle(L, 2)) {
+        parent = group_index_of(L, 1);
+        args = 2;
+    }
+    const int child = group_index_of(L, args);
+    if (child == 0) fail(L, "the world group cannot be placed");
+    desc_of(L).groups[parent].instances.push_back({child, optional_transform(L, args + 1), where(L)});
+    return 0;
+}
+
+Vec3 vec3_arguments(lua_State* L, int first, const char* what) {
+    if (lua_istable(L, first)) {
+        ParamValue v = to_param(L, first, what, what);
+        auto* list = std::get_if<std::vector<double>>(&v);
+        if (!list || list->size() != 3) fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
+        return Vec3((*list)[0], (*list)[1], (*list)[2]);
+    }
+    Vec3 v;
+    for (int i = 0; i < 3; ++i) {
+        if (!lua_isnumber(L, first + i)) fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
+        v[i] = static_cast<float>(lua_tonumber(L, first + i));
+    }
+    return v;
+}
+
+int translate(lua_State* L) {
+    push_transform(L, Transform::translate(vec3_arguments(L, 1, "glint.translate")));
+    return 1;
+}
+
+int rotate(lua_State* L) {
+    if (!lua_isnumber(L, 1)) fail(L, "glint.rotate expects an angle in degrees and an axis {x, y, z}");
+    const float degrees = static_cast<float>(lua_tonumber(L, 1));
+    const Vec3 axis = vec3_arguments(L, 2, "glint.rotate axis");
+    if (glm::length(axis) <= 0.0f) fail(L, "glint.rotate axis must not be zero");
+    push_transform(L, Transform::rotate(degrees, axis));
+    return 1;
+}
+
+int scale(lua_State* L) {
+    Vec3 factors;
+    if (lua_isnumber(L, 1) && lua_isnone(L, 2)) factors = Vec3(static_cast<float>(lua_tonumber(L, 1)));
+    else factors = vec3_arguments(L, 1, "glint.scale");
+    if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f) fail(L, "glint.scale factors must not be zero");
+    push_transform(L, Transform::scale(factors));
+    return 1;
+}
+
+// glint.matrix{16 numbers, row by row}.
+int matrix(lua_State* L) {
+    ParamValue v = to_param(L, 1, "matrix", "glint.matrix");
+    auto* list = std::get_if<std::vector<double>>(&v);
+    if (!list || list->size() != 16) fail(L, "glint.matrix expects a table of 16 numbers, row by row");
+    Mat4 m;
+    for (int row = 0; row < 4; ++row) {
+        for (int col = 0; col < 4; ++col) m[col][row] = static_cast<float>((*list)[4 * row + col]);
+    }
+    if (std::abs(glm::determinant(m)) < 1e-12f) fail(L, "glint.matrix is not invertible");
+    push_transform(L, Transform(m));
+    return 1;
+}
+
+// a * b applies b first, then a.
+int transform_multiply(lua_State* L) {
+    Transform* a = to_transform(L, 1);
+    Transform* b = to_transform(L, 2);
+    if (!a || !b) fail(L, "only two transforms can be multiplied");
+    push_transform(L, *a * *b);
+    return 1;
+}
+
+template <std::optional<Params> SceneDesc::*Member>
+int set_single(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    SceneDesc& desc = desc_of(L);
+    if (desc.*Member) fail(L, fmt::format("glint.{} was already called at {}", type, (desc.*Member)->where()));
+    desc.*Member = to_params(L, 1, type);
+    return 0;
+}
+
+void register_closure(lua_State* L, const std::string& name, lua_CFunction function) {
+    lua_pushstring(L, name.c_str());
+    lua_pushcclosure(L, function, 1);
+    lua_setfield(L, -2, name.c_str());
+}
+
+// Builds the `glint` table, leaves it on the stack.
+int open_glint(lua_State* L) {
+    luaL_newmetatable(L, kTransformMeta);
+    lua_pushcfunction(L, guarded<transform_multiply>);
+    lua_setfield(L, -2, "__mul");
+    lua_pop(L, 1);
+
+    // Handles double as group objects: group:sphere{...}, group:place(other, xf).
+    luaL_newmetatable(L, kHandleMeta);
+    lua_newtable(L);
+    for (const std::string& type : shape_types()) register_closure(L, type, guarded<new_shape>);
+    lua_pushcfunction(L, guarded<place_group>);
+    lua_setfield(L, -2, "place");
+    lua_setfield(L, -2, "__index");
+    lua_pop(L, 1);
+
+    lua_newtable(L);
+    for (const std::string& type : material_types()) register_closure(L, type, guarded<new_material>);
+    for (const std::string& type : light_types()) register_closure(L, type, guarded<new_light>);
+    for (const std::string& type : shape_types()) register_closure(L, type, guarded<new_shape>);
+    register_closure(L, "camera", guarded<set_single<&SceneDesc::camera>>);
+    register_closure(L, "render", guarded<set_single<&SceneDesc::render>>);
+    register_closure(L, "background", guarded<set_single<&SceneDesc::background>>);
+    const std::pair<const char*, lua_CFunction> functions[] = {
+        {"group", guarded<new_group>},   {"place", guarded<place_group>},
+        {"translate", guarded<translate>}, {"rotate", guarded<rotate>},
+        {"scale", guarded<scale>},       {"matrix", guarded<matrix>},
+    };
+    for (const auto& [name, function] : functions) {
+        lua_pushcfunction(L, function);
+        lua_setfield(L, -2, name);
+    }
+    return 1;
+}
+
+struct LuaStateDeleter {
+    void operator()(lua_State* L) const { lua_close(L); }
+};
+
+SceneDesc run_chunk(const std::function<int(lua_State*)>& load, const std::string& directory) {
+    std::unique_ptr<lua_State, LuaStateDeleter> state(luaL_newstate());
+    if (!state) throw Error("could not start the Lua interpreter");
+    lua_State* L = state.get();
+    luaL_openlibs(L);
+
+    SceneDesc desc;
+    desc.directory = directory;
+    lua_pushlightuserdata(L, &desc);
+    lua_setfield(L, LUA_REGISTRYINDEX, kDescKey);
+
+    // `glint` is a global and also what require("glint") returns.
+    luaL_requiref(L, "glint", open_glint, 1);
+    lua_pop(L, 1);
+
+    if (load(L) != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK) {
+        const char* message = lua_tostring(L, -1);
+        throw Error(message ? message : "unknown Lua error");
+    }
+    return desc;
+}
+
+}  // namespace
+
+SceneDesc load_scene_file(const std::string& path) {
+    if (!std::filesystem::is_regular_file(path)) throw Error(fmt::format("cannot open scene file '{}'", path));
+    std::string directory = std::filesystem::path(path).parent_path().string();
+    if (directory.empty()) directory = ".";
+    return run_chunk([&](lua_State* L) { return luaL_loadfile(L, path.c_str()); }, directory);
+}
+
+SceneDesc load_scene_string(const std::string& code, const std::string& chunk_name,
+                            const std::string& directory) {
+    return run_chunk(
+        [&](lua_State* L) {
+            return luaL_loadbuffer(L, code.data(), code.size(), ("=" + chunk_name).c_str());
+        },
+        directory);
+}
+
+}  // namespace glint

@@ -1,0 +1,63 @@
+#pragma once
+// The renderable scene: geometry in Embree, materials, lights and the camera. Built once
+// from a SceneDesc (scene/build.h); read-only and thread-safe while rendering.
+#include <glint/camera/camera.h>
+#include <glint/geometry/accel.h>
+#include <glint/light/light_sampler.h>
+#include <glint/material/material.h>
+
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace glint {
+
+struct SceneStats {
+    size_t shapes = 0;     // shape placements in the world
+    size_t triangles = 0;  // triangles in the world, counting every placement
+    size_t lights = 0;
+    size_t groups = 0;
+    size_t instances = 0;
+    Bounds3 bounds;
+};
+
+class Scene {
+public:
+    std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
+    bool occluded(const Ray& ray) const { return m_accel.occluded(ray); }
+
+    const Camera& camera() const { return *m_camera; }
+    const std::vector<std::unique_ptr<Light>>& lights() const { return m_lights; }
+    const LightSampler& light_sampler() const { return m_light_sampler; }
+    const Spectrum& background() const { return m_background; }
+    const SceneStats& stats() const { return m_stats; }
+
+private:
+    friend class SceneBuilder;
+
+    struct Geometry {
+        const Shape* shape = nullptr;
+        const Material* material = nullptr;
+    };
+    // One entry per geometry id of the world scene: a root shape or a group instance.
+    struct WorldEntry {
+        Geometry geometry;  // root shapes
+        int group = -1;     // instances: the prototype
+        Transform to_world;
+        std::vector<const Light*> lights;  // instances: area light per local geometry id
+        const Light* light = nullptr;      // root shapes
+    };
+
+    Accel m_accel;
+    std::vector<std::unique_ptr<Shape>> m_shapes;
+    std::vector<std::unique_ptr<Material>> m_materials;
+    std::vector<std::unique_ptr<Light>> m_lights;
+    std::vector<std::vector<Geometry>> m_group_geometry;  // per prototype, by local id
+    std::vector<WorldEntry> m_world;
+    std::unique_ptr<Camera> m_camera;
+    LightSampler m_light_sampler;
+    Spectrum m_background;
+    SceneStats m_stats;
+};
+
+}  // namespace glint

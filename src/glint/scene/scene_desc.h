@@ -1,0 +1,35 @@
+#pragma once
+// The plain-data description of a scene, as written by a scene script: every object is a
+// type name plus checked Params. Nothing here knows about Lua or Embree.
+#include <glint/core/params.h>
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+// One placement of a group inside another group.
+struct InstanceDesc {
+    int group = -1;
+    Transform transform;
+    std::string where;  // script location, for errors
+};
+
+struct GroupDesc {
+    std::string where;
+    std::vector<Params> shapes;  // type: sphere, box, quad, mesh
+    std::vector<InstanceDesc> instances;
+};
+
+struct SceneDesc {
+    std::optional<Params> camera;
+    std::optional<Params> render;
+    std::optional<Params> background;
+    std::vector<Params> materials;  // ObjectRef{"material", i} indexes this
+    std::vector<Params> lights;     // non-shape lights: point_light, spot_light
+    std::vector<GroupDesc> groups{GroupDesc{}};  // groups[0] is the world (root) group
+    std::string directory;  // where the script lives; relative file names start here
+};
+
+}  // namespace glint

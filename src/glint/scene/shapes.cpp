@@ -1,0 +1,99 @@
+#include <glint/core/error.h>
+#include <glint/geometry/mesh.h>
+#include <glint/geometry/sphere.h>
+#include <glint/scene/import/obj.h>
+#include <glint/scene/shapes.h>
+
+#include <fmt/format.h>
+
+#include <filesystem>
+#include <map>
+
+namespace glint {
+namespace {
+
+using ShapeFactory = std::unique_ptr<Shape> (*)(const Params&, const std::string&);
+
+std::unique_ptr<Shape> mesh_shape(const Params& params, std::string name, MeshData data) {
+    transform_mesh(data, params.get_transform("transform"));
+    try {
+        return std::make_unique<TriangleMesh>(std::move(name), std::move(data));
+    } catch (const Error& e) {
+        params.fail(e.what());
+    }
+}
+
+std::unique_ptr<Shape> make_sphere(const Params& params, const std::string&) {
+    const Vec3 center = params.get_vec3("center", Vec3(0.0f));
+    const float radius = params.get_float("radius", 1.0f);
+    if (!(radius > 0.0f)) params.fail("'radius' must be positive");
+    return std::make_unique<Sphere>(center, radius, params.get_transform("transform"));
+}
+
+std::unique_ptr<Shape> make_box(const Params& params, const std::string&) {
+    const Vec3 lo = params.get_vec3("min", Vec3(-1.0f));
+    const Vec3 hi = params.get_vec3("max", Vec3(1.0f));
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) params.fail("'min' must be below 'max' on every axis");
+    return mesh_shape(params, "box", make_box_mesh(lo, hi));
+}
+
+std::unique_ptr<Shape> make_quad(const Params& params, const std::string&) {
+    const std::vector<Vec3> v = params.get_vec3_list("vertices");
+    if (v.size() != 4) params.fail("'vertices' must list exactly 4 corners");
+    return mesh_shape(params, "quad", make_quad_mesh(v[0], v[1], v[2], v[3]));
+}
+
+std::unique_ptr<Shape> make_mesh(const Params& params, const std::string& directory) {
+    if (params.has("file")) {
+        std::filesystem::path path = params.get_string("file");
+        if (path.is_relative()) path = std::filesystem::path(directory) / path;
+        MeshData data;
+        try {
+            data = load_obj(path.string());
+        } catch (const Error& e) {
+            params.fail(e.what());
+        }
+        return mesh_shape(params, path.filename().string(), std::move(data));
+    }
+    MeshData data;
+    data.positions = params.get_vec3_list("vertices");
+    data.normals = params.get_vec3_list("normals");
+    data.uvs = params.get_vec2_list("uvs");
+    for (double i : params.get_numbers("indices")) {
+        // 1-based, as everything in Lua.
+        if (i < 1 || i != std::floor(i)) params.fail("'indices' must be integers starting at 1");
+        data.indices.push_back(static_cast<uint32_t>(i) - 1);
+    }
+    if (data.positions.empty() || data.indices.empty()) {
+        params.fail("a mesh needs 'file', or 'vertices' and 'indices'");
+    }
+    return mesh_shape(params, "mesh", std::move(data));
+}
+
+const std::map<std::string, ShapeFactory>& factories() {
+    static const std::map<std::string, ShapeFactory> table = {
+        {"sphere", make_sphere},
+        {"box", make_box},
+        {"quad", make_quad},
+        {"mesh", make_mesh},
+    };
+    return table;
+}
+
+}  // namespace
+
+std::vector<std::string> shape_types() {
+    std::vector<std::string> names;
+    for (const auto& [name, factory] : factories()) names.push_back(name);
+    return names;
+}
+
+std::unique_ptr<Shape> make_shape(const Params& params, const std::string& directory) {
+    auto it = factories().find(params.type());
+    if (it == factories().end()) params.fail("unknown shape type");
+    auto shape = it->second(params, directory);
+    params.check_all_used();
+    return shape;
+}
+
+}  // namespace glint

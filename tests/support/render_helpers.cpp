@@ -1,0 +1,58 @@
+#include <glint/core/progress.h>
+#include <glint/integrator/integrator.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
+
+#include <support/render_helpers.h>
+#include <tbb/global_control.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <sys/wait.h>
+
+namespace glint::test {
+
+Image render_lua(const std::string& code, int threads) {
+    const SceneDesc desc = load_scene_string(code, "test.lua");
+    const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
+    const auto scene = build_scene(desc, settings);
+    auto integrator = make_integrator(settings);
+    Film film(settings.width, settings.height, settings.aovs);
+    Progress progress("test", 1, true);
+    if (threads > 0) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        integrator->render(*scene, film, progress);
+    } else {
+        integrator->render(*scene, film, progress);
+    }
+    return film.resolve();
+}
+
+double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1) {
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) sum += image.at(x, y, c);
+    }
+    return sum / (static_cast<double>(x1 - x0) * (y1 - y0));
+}
+
+CommandResult run_glint(const std::string& arguments) {
+    const char* binary = std::getenv("GLINT_BINARY");
+    CommandResult result;
+    if (!binary) {
+        result.output = "GLINT_BINARY is not set";
+        return result;
+    }
+    const std::string command = std::string(binary) + " " + arguments + " 2>&1";
+    FILE* pipe = popen(command.c_str(), "r");
+    if (!pipe) return result;
+    std::array<char, 4096> buffer;
+    size_t n;
+    while ((n = fread(buffer.data(), 1, buffer.size(), pipe)) > 0) result.output.append(buffer.data(), n);
+    const int status = pclose(pipe);
+    result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return result;
+}
+
+}  // namespace glint::test

@@ -1,0 +1,24 @@
+#pragma once
+// Renders scene scripts in-process for tests, and runs the glint binary for CLI tests.
+#include <glint/film/image.h>
+#include <glint/scene/render_settings.h>
+
+#include <string>
+
+namespace glint::test {
+
+// Loads a Lua scene from `code`, renders it with its own settings and `threads`
+// (0 = all), and returns the resolved image.
+Image render_lua(const std::string& code, int threads = 0);
+
+// Mean of channel `c` over a rectangle of the image.
+double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1);
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string output;  // stdout and stderr together
+};
+// Runs the glint binary (path from $GLINT_BINARY) with `arguments`.
+CommandResult run_glint(const std::string& arguments);
+
+}  // namespace glint::test
