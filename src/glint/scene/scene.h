@@ -31,6 +31,8 @@ public:
     const LightSampler& light_sampler() const { return m_light_sampler; }
     const Spectrum& background() const { return m_background; }
     const SceneStats& stats() const { return m_stats; }
+    // The raw ray-query structure, for benchmarks that measure Embree alone.
+    const Accel& accel() const { return m_accel; }
 
 private:
     friend class SceneBuilder;
