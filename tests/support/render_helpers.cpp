@@ -38,12 +38,9 @@ double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1) {
 }
 
 CommandResult run_glint(const std::string& arguments) {
-    const char* binary = std::getenv("GLINT_BINARY");
+    const char* from_environment = std::getenv("GLINT_BINARY");
+    const char* binary = from_environment ? from_environment : GLINT_BINARY_PATH;
     CommandResult result;
-    if (!binary) {
-        result.output = "GLINT_BINARY is not set";
-        return result;
-    }
     const std::string command = std::string(binary) + " " + arguments + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;

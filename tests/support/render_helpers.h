@@ -18,7 +18,7 @@ struct CommandResult {
     int exit_code = -1;
     std::string output;  // stdout and stderr together
 };
-// Runs the glint binary (path from $GLINT_BINARY) with `arguments`.
+// Runs the glint binary ($GLINT_BINARY, else the one this build made) with `arguments`.
 CommandResult run_glint(const std::string& arguments);
 
 }  // namespace glint::test

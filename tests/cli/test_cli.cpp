@@ -1,0 +1,139 @@
+// End-to-end tests of the glint command: exit codes, messages, outputs.
+#include <glint/film/image_io.h>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <support/render_helpers.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+
+using namespace glint;
+using glint::test::run_glint;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kScenes = GLINT_SOURCE_DIR "/tests/scenes/";
+
+// A fresh empty directory per test, removed afterwards.
+class CliTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        m_dir = fs::temp_directory_path() / fmt::format("glint-cli-{}-{}", info->name(), ::getpid());
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    std::string out(const std::string& name) const { return (m_dir / name).string(); }
+    size_t files_in_dir() const {
+        return static_cast<size_t>(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
+    }
+
+    fs::path m_dir;
+};
+
+std::string read_bytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+// Each kind of bad input names the file and line, exits with 1 and writes nothing.
+TEST_F(CliTest, BadInputGivesFileLineExitOneAndNoOutput) {
+    struct Case {
+        const char* scene;
+        const char* location;
+        const char* what;
+    };
+    const Case cases[] = {
+        {"syntax_error.lua", "syntax_error.lua:3:", "expected"},
+        {"unknown_parameter.lua", "unknown_parameter.lua:4:", "unknown parameter 'iorr'"},
+        {"wrong_type.lua", "wrong_type.lua:4:", "must be a number"},
+        {"missing_obj.lua", "missing_obj.lua:5:", "does-not-exist.obj"},
+        {"runtime_error.lua", "runtime_error.lua:3:", "nil value"},
+    };
+    for (const Case& c : cases) {
+        const auto result = run_glint(fmt::format("render {}{} -o {} -o {} --quiet", kScenes, c.scene,
+                                                  out("image.exr"), out("image.png")));
+        EXPECT_EQ(result.exit_code, 1) << c.scene << ": " << result.output;
+        EXPECT_NE(result.output.find(c.location), std::string::npos) << result.output;
+        EXPECT_NE(result.output.find(c.what), std::string::npos) << result.output;
+        EXPECT_EQ(files_in_dir(), 0u) << c.scene << " left a file behind";
+    }
+}
+
+TEST_F(CliTest, UsageErrorsExitWithTwo) {
+    EXPECT_EQ(run_glint("").exit_code, 2);
+    EXPECT_EQ(run_glint("render").exit_code, 2);
+    EXPECT_EQ(run_glint(fmt::format("render {}small.lua --res 12", kScenes)).exit_code, 2);
+    EXPECT_EQ(run_glint(fmt::format("render {}small.lua --spp 0", kScenes)).exit_code, 2);
+    EXPECT_EQ(run_glint("frobnicate").exit_code, 2);
+    EXPECT_EQ(run_glint("--help").exit_code, 0);
+}
+
+TEST_F(CliTest, MissingSceneAndBadOutputFormatExitWithOne) {
+    auto result = run_glint(fmt::format("render {} --quiet", out("absent.lua")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("absent.lua"), std::string::npos);
+    result = run_glint(fmt::format("render {}small.lua -o {} --quiet", kScenes, out("image.jpg")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_EQ(files_in_dir(), 0u);
+}
+
+TEST_F(CliTest, RendersExrAndPngWithOverrides) {
+    const auto result = run_glint(fmt::format("render {}small.lua -o {} -o {} --res 20x10 --spp 2 --aovs --quiet",
+                                              kScenes, out("a.exr"), out("a.png")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(result.output.empty()) << "--quiet printed: " << result.output;
+    const Image exr = read_image(out("a.exr"));
+    EXPECT_EQ(exr.width, 20);
+    EXPECT_EQ(exr.height, 10);
+    EXPECT_GE(exr.channel_index("albedo.R"), 0);
+    EXPECT_GE(exr.channel_index("normal.X"), 0);
+    EXPECT_GE(exr.channel_index("depth.Z"), 0);
+    EXPECT_TRUE(fs::exists(out("a.png")));
+    EXPECT_EQ(files_in_dir(), 2u);  // no temporary files left
+}
+
+TEST_F(CliTest, ThreadCountDoesNotChangeTheImage) {
+    for (int threads : {1, 2}) {
+        const auto result = run_glint(fmt::format("render {}small.lua -o {} --threads {} --spp 3 --quiet", kScenes,
+                                                  out(fmt::format("t{}.exr", threads)), threads));
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+    }
+    const std::string one = read_bytes(out("t1.exr"));
+    EXPECT_FALSE(one.empty());
+    EXPECT_TRUE(one == read_bytes(out("t2.exr"))) << "EXR files differ between 1 and 2 threads";
+}
+
+TEST_F(CliTest, ProgressAndSummaryGoToStderr) {
+    const auto result = run_glint(fmt::format("render {}small.lua -o {}", kScenes, out("p.exr")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("samples/s"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("rays/s"), std::string::npos) << result.output;
+}
+
+TEST_F(CliTest, InfoPrintsCounts) {
+    const auto result = run_glint(fmt::format("info {}small.lua", kScenes));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("shapes:     8"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("triangles:  41"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("lights:     4"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("bounds:"), std::string::npos) << result.output;
+}
+
+TEST_F(CliTest, CompareReportsErrorAgainstReference) {
+    ASSERT_EQ(run_glint(fmt::format("render {}small.lua -o {} --spp 2 --quiet", kScenes, out("low.exr"))).exit_code, 0);
+    ASSERT_EQ(run_glint(fmt::format("render {}small.lua -o {} --spp 32 --quiet", kScenes, out("high.exr"))).exit_code, 0);
+    auto same = run_glint(fmt::format("compare {} {}", out("high.exr"), out("high.exr")));
+    EXPECT_EQ(same.exit_code, 0);
+    EXPECT_NE(same.output.find("relative MSE: 0\n"), std::string::npos) << same.output;
+    auto differ = run_glint(fmt::format("compare {} {} --threshold 1e-9", out("low.exr"), out("high.exr")));
+    EXPECT_EQ(differ.exit_code, 1) << differ.output;
+    EXPECT_NE(differ.output.find("ref mean"), std::string::npos) << differ.output;
+}

@@ -1,0 +1,5 @@
+glint.camera{ eye = {0, 0, 5}, look_at = {0, 0, 0} }
+glint.render{ width = 8, height = 8, spp = 1 }
+local white = glint.diffuse{ reflectance = 0.5 }
+
+glint.mesh{ file = "does-not-exist.obj", material = white }
