@@ -12,7 +12,7 @@ float power_heuristic(float pdf_a, float pdf_b) {
 
 // Direct light at `si` from one light chosen by power, weighted against BSDF sampling.
 Spectrum sample_direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
-                       const Vec3& wo_local, Sampler& sampler, RayCounter& counter) {
+                       const Vec3& wo_local, Sampler& sampler, RayCounter& counter, bool use_mis) {
     const float u_light = sampler.get_1d();
     const Vec2 u = sampler.get_2d();
     const float u_select = sampler.get_1d();
@@ -26,7 +26,7 @@ Spectrum sample_direct(const Scene& scene, const SurfaceInteraction& si, const B
     ++counter.rays;
     if (scene.occluded(spawn_ray_to(si, ls->p))) return Spectrum(0.0f);
     const float light_pdf = choice.pmf * ls->pdf;
-    if (ls->is_delta) return f * ls->L / light_pdf;
+    if (ls->is_delta || !use_mis) return f * ls->L / light_pdf;
     const float weight = power_heuristic(light_pdf, bsdf.pdf(wo_local, wi_local));
     return f * ls->L * (weight / light_pdf);
 }
@@ -64,9 +64,9 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         if (si.area_light) {
             const Spectrum Le = si.area_light->le(si, si.wo);
             if (!Le.is_black()) {
-                if (specular_bounce) {
+                if (specular_bounce || m_strategy == DirectLighting::kBsdfOnly) {
                     L += beta * Le;
-                } else {
+                } else if (m_strategy == DirectLighting::kMis) {
                     const float light_pdf = scene.light_sampler().pmf(*si.area_light) *
                                             si.area_light->pdf_li(previous.p, si);
                     L += beta * Le * power_heuristic(bsdf_pdf, light_pdf);
@@ -85,8 +85,10 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         if (m_settings.max_depth >= 0 && depth >= m_settings.max_depth) break;
 
         const Vec3 wo_local = si.to_local(si.wo);
-        if (!bsdf->is_delta() && !scene.light_sampler().empty()) {
-            L += beta * sample_direct(scene, si, *bsdf, wo_local, sampler, counter);
+        if (!bsdf->is_delta() && !scene.light_sampler().empty() &&
+            m_strategy != DirectLighting::kBsdfOnly) {
+            L += beta * sample_direct(scene, si, *bsdf, wo_local, sampler, counter,
+                                      m_strategy == DirectLighting::kMis);
         }
 
         const Vec2 u = sampler.get_2d();

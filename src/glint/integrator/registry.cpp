@@ -13,7 +13,13 @@ using IntegratorFactory = std::unique_ptr<Integrator> (*)(const RenderSettings&)
 const std::map<std::string, IntegratorFactory>& factories() {
     static const std::map<std::string, IntegratorFactory> table = {
         {"path", [](const RenderSettings& s) -> std::unique_ptr<Integrator> {
-             return std::make_unique<PathIntegrator>(s);
+             return std::make_unique<PathIntegrator>(s, DirectLighting::kMis);
+         }},
+        {"path_light", [](const RenderSettings& s) -> std::unique_ptr<Integrator> {
+             return std::make_unique<PathIntegrator>(s, DirectLighting::kLightOnly);
+         }},
+        {"path_bsdf", [](const RenderSettings& s) -> std::unique_ptr<Integrator> {
+             return std::make_unique<PathIntegrator>(s, DirectLighting::kBsdfOnly);
          }},
     };
     return table;
