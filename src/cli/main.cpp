@@ -62,7 +62,10 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     }
     if (options.threads) settings.threads = *options.threads;
     if (options.seed) settings.seed = *options.seed;
-    if (!options.integrator.empty()) settings.integrator = options.integrator;
+    if (!options.integrator.empty()) {
+        settings.integrator = options.integrator;
+        settings.where = "--integrator";
+    }
     if (options.exposure) settings.exposure = *options.exposure;
     if (options.aovs) settings.aovs = true;
     if (!options.outputs.empty()) settings.outputs = options.outputs;
@@ -76,8 +79,8 @@ int run_render(const RenderOptions& options) {
     const SceneDesc desc = load_scene_file(options.scene);
     const RenderSettings settings = settings_for(desc, options);
     for (const std::string& path : settings.outputs) check_output_path(path);
-    const auto scene = build_scene(desc, settings);
     auto integrator = make_integrator(settings);
+    const auto scene = build_scene(desc, settings);
 
     const int threads = settings.threads > 0 ? settings.threads
                                              : tbb::this_task_arena::max_concurrency();
@@ -148,7 +151,8 @@ int main(int argc, char** argv) {
     RenderOptions render;
     CLI::App* render_cmd = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
     render_cmd->add_option("scene", render.scene, "Scene script (.lua)")->required();
-    render_cmd->add_option("-o,--output", render.outputs, "Output image, .exr or .png (repeatable)");
+    render_cmd->add_option("-o,--output", render.outputs, "Output image, .exr or .png (repeatable)")
+        ->allow_extra_args(false);  // `-o a.png scene.lua`: the scene is not a second output
     render_cmd->add_option("--spp", render.spp, "Samples per pixel")->check(CLI::PositiveNumber);
     render_cmd->add_option("--res", render.resolution, "Resolution WIDTHxHEIGHT");
     render_cmd->add_option("--threads", render.threads, "Worker threads (default: all cores)")

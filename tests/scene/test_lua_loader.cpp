@@ -132,6 +132,9 @@ TEST(LuaLoader, ErrorsNameFileAndLine) {
         {"glint.mesh{ file = 'nope.obj', material = glint.diffuse{} }", "scene.lua:1:"},
         {"glint.translate(1, 2, 3) * 4", "scene.lua:1:"},
         {"glint.sphere{ material = glint.diffuse{ reflectance = 2 } }", "scene.lua:1:"},
+        {"glint.matrix{1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,1,1}", "scene.lua:1:"},
+        {"\nglint.point_light{ position = {0,0,0}, intensity = -1 }", "scene.lua:2:"},
+        {"glint.background{ radiance = 0/0 }", "scene.lua:1:"},
     };
     for (const Case& c : cases) {
         const std::string message = error_of([&] { build(c.code); });

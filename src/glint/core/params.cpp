@@ -85,7 +85,10 @@ std::string Params::get_string(const std::string& name) const {
 Spectrum Params::get_spectrum(const std::string& name, const Spectrum& fallback) const {
     const ParamValue* v = lookup(name);
     if (!v) return fallback;
-    if (auto d = std::get_if<double>(v)) return Spectrum(static_cast<float>(*d));
+    if (auto d = std::get_if<double>(v)) {
+        if (!std::isfinite(*d)) fail(fmt::format("parameter '{}' must be finite", name));
+        return Spectrum(static_cast<float>(*d));
+    }
     auto list = std::get_if<std::vector<double>>(v);
     if (!list || list->size() != 3) wrong_type(name, "a number or a list of 3 numbers");
     Spectrum s((*list)[0], (*list)[1], (*list)[2]);

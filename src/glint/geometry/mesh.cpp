@@ -16,6 +16,9 @@ Vec3 triangle_cross(const Vec3& a, const Vec3& b, const Vec3& c) { return glm::c
 class MeshSampler final : public ShapeSampler {
 public:
     MeshSampler(const MeshData& mesh, const Transform& to_world) {
+        // A mirroring placement reverses the winding, so the cross product of the placed
+        // vertices points inwards; flip it to keep the emitting side where the hit sees it.
+        const float orientation = to_world.swaps_handedness() ? -1.0f : 1.0f;
         const size_t count = mesh.indices.size() / 3;
         m_vertices.reserve(count * 3);
         m_cumulative_area.reserve(count);
@@ -25,7 +28,9 @@ public:
                 m_vertices.push_back(to_world.point(mesh.positions[mesh.indices[3 * i + k]]));
             }
             const Vec3* v = &m_vertices[3 * i];
-            total += 0.5 * glm::length(triangle_cross(v[0], v[1], v[2]));
+            const Vec3 cross = triangle_cross(v[0], v[1], v[2]);
+            total += 0.5 * glm::length(cross);
+            m_normals.push_back(orientation * glm::normalize(cross));
             m_cumulative_area.push_back(total);
         }
         m_area = static_cast<float>(total);
@@ -39,7 +44,7 @@ public:
         const Vec2 b = warp::square_to_uniform_triangle(u);
         ShapeSample s;
         s.p = (1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2];
-        s.n = glm::normalize(triangle_cross(v[0], v[1], v[2]));
+        s.n = m_normals[tri];
         s.pdf = area_to_solid_angle_pdf(1.0f / m_area, ref, s.p, s.n);
         return s;
     }
@@ -52,6 +57,7 @@ public:
 
 private:
     std::vector<Vec3> m_vertices;
+    std::vector<Vec3> m_normals;  // unit, per triangle, on the emitting side
     std::vector<double> m_cumulative_area;
     float m_area = 0.0f;
 };

@@ -32,7 +32,7 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings) {
     if (it != factories().end()) return it->second(settings);
     std::string known;
     for (const auto& [name, factory] : factories()) known += (known.empty() ? "" : ", ") + name;
-    throw Error(fmt::format("unknown integrator '{}' (known: {})", settings.integrator, known));
+    throw Error(fmt::format("{}: unknown integrator '{}' (known: {})", settings.where, settings.integrator, known));
 }
 
 }  // namespace glint

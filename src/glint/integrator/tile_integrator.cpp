@@ -1,10 +1,13 @@
 #include <glint/core/arena.h>
+#include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
 
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
+
+#include <fmt/format.h>
 
 #include <chrono>
 
@@ -14,8 +17,15 @@ namespace {
 constexpr int kTileSize = 16;
 }
 
-TileIntegrator::TileIntegrator(const RenderSettings& settings)
-    : m_settings(settings), m_filter(make_filter(settings.filter, settings.filter_radius)) {}
+TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(settings) {
+    // Check the names now, before any scene is built, and say where they came from.
+    try {
+        m_filter = make_filter(settings.filter, settings.filter_radius);
+        make_sampler(settings.sampler, settings.spp, settings.seed);
+    } catch (const Error& e) {
+        throw Error(fmt::format("{}: {}", settings.where, e.what()));
+    }
+}
 
 RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();

@@ -1,5 +1,7 @@
 #include <glint/light/point_light.h>
 
+#include <algorithm>
+
 namespace glint {
 namespace {
 
@@ -55,6 +57,7 @@ Spectrum SpotLight::power() const {
 std::unique_ptr<Light> make_point_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
     const Spectrum intensity = params.get_spectrum("intensity");
+    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f) params.fail("'intensity' must not be negative");
     return std::make_unique<PointLight>(position, intensity);
 }
 
@@ -62,6 +65,7 @@ std::unique_ptr<Light> make_spot_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
     const Vec3 target = params.get_vec3("look_at");
     const Spectrum intensity = params.get_spectrum("intensity");
+    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f) params.fail("'intensity' must not be negative");
     const float cone = params.get_float("cone_angle", 30.0f);
     const float falloff_start = params.get_float("falloff_start", cone * 0.8f);
     if (!(cone > 0.0f && cone <= 90.0f)) params.fail("'cone_angle' must be in (0, 90] degrees");

@@ -7,6 +7,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace glint {
 
 class SceneBuilder {
@@ -19,7 +21,11 @@ public:
         for (const Params& p : m_desc.materials) m_scene->m_materials.push_back(make_material(p));
         for (const Params& p : m_desc.lights) m_scene->m_lights.push_back(make_light(p));
         if (m_desc.background) {
-            m_scene->m_background = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));
+            const Spectrum radiance = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));
+            if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f) {
+                m_desc.background->fail("'radiance' must not be negative");
+            }
+            m_scene->m_background = radiance;
             m_desc.background->check_all_used();
         }
         build_groups();

@@ -6,6 +6,7 @@ RenderSettings parse_render_settings(const Params* params) {
     RenderSettings s;
     if (!params) return s;
     const Params& p = *params;
+    s.where = p.where();
     s.width = p.get_int("width", s.width);
     s.height = p.get_int("height", s.height);
     s.spp = p.get_int("spp", s.spp);

@@ -23,6 +23,8 @@ struct RenderSettings {
     bool aovs = false;           // albedo/normal/depth channels in EXR output
     std::vector<std::string> outputs;
     int threads = 0;  // 0 = all cores
+    // Where the integrator, sampler and filter names came from, for error messages.
+    std::string where = "render settings";
 };
 
 RenderSettings parse_render_settings(const Params* params);

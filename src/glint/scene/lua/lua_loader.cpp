@@ -246,6 +246,9 @@ int matrix(lua_State* L) {
     for (int row = 0; row < 4; ++row) {
         for (int col = 0; col < 4; ++col) m[col][row] = static_cast<float>((*list)[4 * row + col]);
     }
+    if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) {
+        fail(L, "glint.matrix must be affine: its last row must be 0, 0, 0, 1");
+    }
     if (std::abs(glm::determinant(m)) < 1e-12f) fail(L, "glint.matrix is not invertible");
     push_transform(L, Transform(m));
     return 1;
