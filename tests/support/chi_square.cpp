@@ -97,14 +97,19 @@ CellEstimate midpoint_rule(const DirectionPdf& pdf, const Cell& c) {
 // ever smaller cells. Splitting along one axis only resolves edges of constant z or phi,
 // whose errors would otherwise add up with the same sign in every bin along the edge,
 // finely and cheaply; slanted edges, whose errors are of both signs, stop at a coarser
-// level. Cells too light to matter (`tolerance`, a probability) are not split.
-double integrate_cell(const DirectionPdf& pdf, const Cell& c, double tolerance, int depth) {
+// level. Cells too light to matter (`tolerance`, a probability) are not split. Down to
+// `forced_depth` every cell is split, to find features smaller than the grid.
+double integrate_cell(const DirectionPdf& pdf, const Cell& c, double tolerance, int depth,
+                      int forced_depth) {
     constexpr int kMaxDepth = 12;  // halvings of the bin, counting each axis
     const CellEstimate e = midpoint_rule(pdf, c);
-    const int splits = (e.jump_z ? 1 : 0) + (e.jump_phi ? 1 : 0);
-    if (splits == 0 || depth + splits > kMaxDepth || e.bound <= tolerance) return e.integral;
-    const double zm = e.jump_z ? 0.5 * (c.z0 + c.z1) : c.z1;
-    const double pm = e.jump_phi ? 0.5 * (c.phi0 + c.phi1) : c.phi1;
+    const bool forced = depth < forced_depth;
+    const int splits = forced ? 2 : (e.jump_z ? 1 : 0) + (e.jump_phi ? 1 : 0);
+    if (!forced && (splits == 0 || depth + splits > kMaxDepth || e.bound <= tolerance)) {
+        return e.integral;
+    }
+    const double zm = forced || e.jump_z ? 0.5 * (c.z0 + c.z1) : c.z1;
+    const double pm = forced || e.jump_phi ? 0.5 * (c.phi0 + c.phi1) : c.phi1;
     const Cell parts[4] = {{c.z0, zm, c.phi0, pm},
                            {zm, c.z1, c.phi0, pm},
                            {c.z0, zm, pm, c.phi1},
@@ -112,7 +117,8 @@ double integrate_cell(const DirectionPdf& pdf, const Cell& c, double tolerance, 
     double sum = 0.0;
     for (const Cell& part : parts) {
         if (part.z1 > part.z0 && part.phi1 > part.phi0) {
-            sum += integrate_cell(pdf, part, std::ldexp(tolerance, -splits), depth + splits);
+            sum += integrate_cell(pdf, part, std::ldexp(tolerance, -splits), depth + splits,
+                                  forced_depth);
         }
     }
     return sum;
@@ -161,7 +167,12 @@ ChiSquareResult chi_square_directions(const DirectionSampler& sample, const Dire
     for (int zi = 0; zi < cos_theta_bins; ++zi) {
         for (int pi = 0; pi < phi_bins; ++pi) {
             const Cell bin{-1.0 + zi * dz, -1.0 + (zi + 1) * dz, pi * dphi, (pi + 1) * dphi};
-            const double integral = integrate_cell(pdf, bin, tolerance, 0);
+            double integral = integrate_cell(pdf, bin, tolerance, 0, 0);
+            // Samples where the grid saw no density: look again, finely, for a sliver of
+            // the pdf's support (a light seen edge-on) between the grid points.
+            if (integral == 0.0 && observed[zi * phi_bins + pi] > 0.0) {
+                integral = integrate_cell(pdf, bin, tolerance, 0, 8);
+            }
             expected[zi * phi_bins + pi] = integral * sample_count;
             total_pdf += integral;
         }
