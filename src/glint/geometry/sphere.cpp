@@ -56,6 +56,12 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     }
 }
 
+// 1 - cos(theta_max) of the cone a sphere subtends, from sin^2(theta_max), without the
+// cancellation of 1 - sqrt(1 - sin^2) (7% error at a distance of 1000 radii).
+float one_minus_cos_cone(float sin2_max) {
+    return sin2_max / (1.0f + safe_sqrt(1.0f - sin2_max));
+}
+
 }  // namespace
 
 Sphere::Sphere(const Vec3& center, float radius, const Transform& to_parent) {
@@ -146,20 +152,25 @@ ShapeSample SphereSampler::sample(const Vec3& ref, const Vec2& u, float) const {
         return s;
     }
     const float dist = std::sqrt(dist2);
-    const float sin2_max = m_radius * m_radius / dist2;
-    const float cos_max = safe_sqrt(1.0f - sin2_max);
-    const Vec3 w = warp::square_to_uniform_cone(u, cos_max);
+    const float one_minus_cos_max = one_minus_cos_cone(m_radius * m_radius / dist2);
+    // Uniform in the cone through x = 1 - cos(theta), with sin(theta) from x: for a distant
+    // sphere cos(theta) itself is only a few float steps below 1.
+    const float x = u.x * one_minus_cos_max;
+    const float sin_theta = safe_sqrt(x * (2.0f - x));
+    const float phi = 2.0f * kPi * u.y;
+    const Vec3 w(sin_theta * std::cos(phi), sin_theta * std::sin(phi), 1.0f - x);
     const Frame frame = Frame::from_normal(to_center / dist);
     const Vec3 dir = frame.to_world(w);
-    // The first intersection of `dir` with the sphere; clamped so grazing directions at the
-    // rim, which round to a miss, land on the silhouette.
+    // The first intersection of `dir` with the sphere. The squared distance of closest
+    // approach comes from the perpendicular vector, as dist2 - b * b cancels for a distant
+    // sphere; grazing directions at the rim, which round to a miss, land on the silhouette.
     const float b = glm::dot(dir, to_center);
-    const float closest2 = dist2 - b * b;
-    const float t = b - safe_sqrt(m_radius * m_radius - closest2);
+    const Vec3 perp = to_center - b * dir;
+    const float t = b - safe_sqrt(m_radius * m_radius - glm::dot(perp, perp));
     s.p = ref + t * dir;
     s.n = glm::normalize(s.p - m_center);
     s.p = m_center + m_radius * s.n;
-    s.pdf = warp::uniform_cone_pdf(Vec3(0, 0, w.z), cos_max);
+    s.pdf = 1.0f / (2.0f * kPi * one_minus_cos_max);
     return s;
 }
 
@@ -167,8 +178,7 @@ float SphereSampler::pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
     const Vec3 to_center = m_center - ref;
     const float dist2 = glm::dot(to_center, to_center);
     if (dist2 <= m_radius * m_radius * 1.0001f) return area_to_solid_angle_pdf(1.0f / area(), ref, p, n);
-    const float cos_max = safe_sqrt(1.0f - m_radius * m_radius / dist2);
-    return 1.0f / (2.0f * kPi * (1.0f - cos_max));
+    return 1.0f / (2.0f * kPi * one_minus_cos_cone(m_radius * m_radius / dist2));
 }
 
 }  // namespace glint
