@@ -1,0 +1,467 @@
+// Light sampling: the solid-angle densities of quad and sphere emitters against their
+// samples (chi-square, densities computed here by ray casting, independently of the
+// samplers), point and spot light closed forms, one-sided emission and light selection.
+#include <glint/core/error.h>
+#include <glint/core/rng.h>
+#include <glint/geometry/mesh.h>
+#include <glint/geometry/sphere.h>
+#include <glint/light/area_light.h>
+#include <glint/light/light_sampler.h>
+#include <glint/light/point_light.h>
+
+#include <gtest/gtest.h>
+#include <support/chi_square.h>
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+using namespace glint;
+
+namespace {
+
+using DVec3 = glm::dvec3;
+
+constexpr int kSamples = 200000;
+
+// Ray parameter of the hit of (o, d) with triangle (a, b, c), Moller-Trumbore in double;
+// negative on a miss. The edges move out by `slack` (barycentric units).
+double ray_triangle(const DVec3& o, const DVec3& d, const DVec3& a, const DVec3& b, const DVec3& c,
+                    double slack) {
+    const DVec3 e1 = b - a, e2 = c - a;
+    const DVec3 p = glm::cross(d, e2);
+    const double det = glm::dot(e1, p);
+    if (std::abs(det) < 1e-300) return -1.0;
+    const DVec3 s = o - a;
+    const double u = glm::dot(s, p) / det;
+    if (u < -slack || u > 1.0 + slack) return -1.0;
+    const DVec3 q = glm::cross(s, e1);
+    const double v = glm::dot(d, q) / det;
+    if (v < -slack || u + v > 1.0 + slack) return -1.0;
+    return glm::dot(e2, q) / det;
+}
+
+// The solid-angle density, seen from `ref`, of a point uniform by area on a set of world
+// triangles: dist^2 / (area |cos|) at the first triangle the direction meets.
+struct TriangleEmitter {
+    std::vector<std::array<DVec3, 3>> triangles;
+
+    double area() const {
+        double sum = 0.0;
+        for (const auto& t : triangles)
+            sum += 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        return sum;
+    }
+    double pdf(const Vec3& ref, const Vec3& w, double slack) const {
+        const DVec3 o(ref), d = glm::normalize(DVec3(w));
+        for (const auto& t : triangles) {
+            const double hit = ray_triangle(o, d, t[0], t[1], t[2], slack);
+            if (hit <= 0.0) continue;
+            const DVec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
+            return hit * hit / (area() * std::abs(glm::dot(n, d)));
+        }
+        return 0.0;
+    }
+};
+
+// Zooms the cap of directions within `cos_min` of `axis` onto the whole sphere, so that a
+// small light still spreads over many chi-square bins. The map keeps phi and stretches
+// 1 - cos(theta) linearly, which scales solid angle by the constant 2 / (1 - cos_min);
+// densities scale by the inverse. Samples outside the cap are counted in `outside`.
+class CapZoom {
+public:
+    CapZoom(const Vec3& axis, double cos_min)
+        : m_frame(Frame::from_normal(axis)), m_width(1.0 - cos_min) {}
+
+    std::optional<Vec3> to_sphere(const Vec3& w) {
+        const DVec3 l = local(DVec3(w));
+        const double one_minus_z =
+            (l.x * l.x + l.y * l.y) / (1.0 + l.z);  // 1 - cos, no cancellation
+        if (l.z <= 0.0 || one_minus_z > m_width) {
+            ++outside;
+            return std::nullopt;
+        }
+        const double z = 1.0 - 2.0 * one_minus_z / m_width;
+        const double phi = std::atan2(l.y, l.x);
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        return Vec3(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)),
+                    static_cast<float>(z));
+    }
+    // The world direction that `to_sphere` maps to `v`, and the density factor.
+    Vec3 from_sphere(const Vec3& v) const {
+        const double one_minus_z = 0.5 * (1.0 - v.z) * m_width;
+        const double r = std::sqrt(std::max(0.0, one_minus_z * (2.0 - one_minus_z)));
+        const double phi = std::atan2(v.y, v.x);
+        const DVec3 l(r * std::cos(phi), r * std::sin(phi), 1.0 - one_minus_z);
+        return Vec3(DVec3(m_frame.s()) * l.x + DVec3(m_frame.t()) * l.y + DVec3(m_frame.n()) * l.z);
+    }
+    double density_scale() const { return 0.5 * m_width; }
+
+    int outside = 0;
+
+private:
+    DVec3 local(const DVec3& w) const {
+        return DVec3(glm::dot(w, DVec3(m_frame.s())), glm::dot(w, DVec3(m_frame.t())),
+                     glm::dot(w, DVec3(m_frame.n())));
+    }
+    Frame m_frame;
+    double m_width;
+};
+
+// A reference solid-angle density of direction `w`, with the light's edges moved out by
+// `slack` (see ray_triangle and sphere_pdf).
+using ReferencePdf = std::function<double(const Vec3& w, double slack)>;
+
+// Chi-square of the directions from `ref` towards the points `sampler` draws, against
+// `pdf`; also checks that each sample's own pdf, and the sampler's pdf() for its point,
+// agree with `pdf`. Sampled points on the light's edge, rounded to float, may fall just
+// outside it, so that check gives the edges some slack; the chi-square does not. With
+// `zoom`, the chi-square runs on the zoomed cap.
+void expect_matches(const ShapeSampler& sampler, const Vec3& ref, const ReferencePdf& pdf,
+                    const std::string& label, int tests_in_case, CapZoom* zoom = nullptr) {
+    int inconsistent = 0;
+    double worst = 0.0;
+    auto sample = [&](const Vec2& u, float u_select) -> std::optional<Vec3> {
+        const ShapeSample s = sampler.sample(ref, u, u_select);
+        const Vec3 w = glm::normalize(s.p - ref);
+        const double expected = pdf(w, 1e-6);
+        const double error =
+            std::max(std::abs(s.pdf - expected), std::abs(sampler.pdf(ref, s.p, s.n) - expected));
+        worst = std::max(worst, error / expected);
+        if (!(error <= 1e-3 * expected) || std::abs(glm::length(s.n) - 1.0f) > 1e-5f) {
+            ++inconsistent;
+        }
+        return zoom ? zoom->to_sphere(w) : w;
+    };
+    std::function<double(const Vec3&)> density = [&](const Vec3& w) { return pdf(w, 0.0); };
+    if (zoom) {
+        density = [&](const Vec3& v) {
+            return pdf(zoom->from_sphere(v), 0.0) * zoom->density_scale();
+        };
+    }
+    const auto result =
+        test::chi_square_directions(sample, density, kSamples, 31, 20, 40, 0.01 / tests_in_case);
+    EXPECT_TRUE(result.passed) << label << ": " << result.details;
+    EXPECT_NEAR(result.integrated_pdf, 1.0, 2e-3) << label << ": " << result.details;
+    EXPECT_EQ(inconsistent, 0) << label << ": worst relative pdf error " << worst;
+    if (zoom) {
+        EXPECT_EQ(zoom->outside, 0) << label;
+    }
+}
+
+TriangleEmitter world_triangles(const MeshData& mesh, const Transform& to_world) {
+    TriangleEmitter emitter;
+    for (size_t i = 0; i < mesh.indices.size(); i += 3) {
+        emitter.triangles.push_back({DVec3(to_world.point(mesh.positions[mesh.indices[i]])),
+                                     DVec3(to_world.point(mesh.positions[mesh.indices[i + 1]])),
+                                     DVec3(to_world.point(mesh.positions[mesh.indices[i + 2]]))});
+    }
+    return emitter;
+}
+
+// Solid-angle density of uniform sampling of the cone a sphere subtends from `ref`
+// outside it, or of uniform area sampling from inside; by ray casting. The silhouette
+// moves out by about `slack` times the distance (float directions are good to 1e-7).
+double sphere_pdf(const DVec3& center, double radius, const Vec3& ref, const Vec3& w,
+                  double slack) {
+    const DVec3 o(ref), d = glm::normalize(DVec3(w));
+    const DVec3 oc = o - center;
+    const double b = glm::dot(oc, d), c = glm::dot(oc, oc) - radius * radius;
+    const double disc = b * b - c;
+    if (disc < -2.0 * slack * radius * glm::length(oc)) return 0.0;
+    if (c > 0.0) {
+        if (b > 0.0) return 0.0;  // the sphere is behind
+        const double sin2_max = radius * radius / glm::dot(oc, oc);
+        const double one_minus_cos_max = sin2_max / (1.0 + std::sqrt(1.0 - sin2_max));
+        return 1.0 / (2.0 * M_PI * one_minus_cos_max);
+    }
+    const double t = -b + std::sqrt(std::max(0.0, disc));  // inside: the one hit in front
+    const DVec3 n = glm::normalize(oc + t * d);
+    return t * t / (4.0 * M_PI * radius * radius * std::abs(glm::dot(n, d)));
+}
+
+}  // namespace
+
+TEST(QuadEmitter, SamplingMatchesSolidAngleDensity) {
+    struct Case {
+        std::string name;
+        MeshData mesh;
+        Transform to_world;
+    };
+    // A square, a convex quad that is not a parallelogram, and that quad placed by a
+    // rotation, non-uniform scale and translation.
+    const Transform placed = Transform::translate(Vec3(1, 2, -1)) *
+                             Transform::rotate(40.0f, Vec3(1, 1, 0)) *
+                             Transform::scale(Vec3(1.5f, 0.7f, 1.0f));
+    const MeshData irregular = make_quad_mesh(Vec3(-0.5f, -0.4f, 0), Vec3(0.9f, -0.6f, 0),
+                                              Vec3(0.6f, 0.8f, 0), Vec3(-0.7f, 0.3f, 0));
+    const Case cases[] = {
+        {"square",
+         make_quad_mesh(Vec3(-0.5f, -0.5f, 0), Vec3(0.5f, -0.5f, 0), Vec3(0.5f, 0.5f, 0),
+                        Vec3(-0.5f, 0.5f, 0)),
+         Transform()},
+        {"irregular", irregular, Transform()},
+        {"placed", irregular, placed},
+    };
+    // Reference points in the quad's own space: above, oblique and low, behind.
+    const Vec3 refs[] = {Vec3(0.1f, 0.2f, 0.8f), Vec3(1.5f, -1.0f, 0.3f), Vec3(0.2f, 0.1f, -0.6f)};
+    for (const Case& c : cases) {
+        const TriangleMesh mesh(c.name, c.mesh);
+        // The mesh is in local space; its sampler places it in the world.
+        const auto sampler = mesh.make_sampler(c.to_world);
+        const TriangleEmitter emitter = world_triangles(mesh.data(), c.to_world);
+        EXPECT_NEAR(sampler->area(), emitter.area(), 1e-5 * emitter.area()) << c.name;
+        for (const Vec3& local_ref : refs) {
+            const Vec3 ref = c.to_world.point(local_ref);
+            expect_matches(
+                *sampler, ref,
+                [&](const Vec3& w, double slack) { return emitter.pdf(ref, w, slack); },
+                c.name + " from " + std::to_string(local_ref.x) + "," + std::to_string(local_ref.z),
+                9);
+        }
+    }
+}
+
+TEST(QuadEmitter, FarAwayQuadOnAZoomedCap) {
+    const TriangleMesh mesh("irregular", make_quad_mesh(Vec3(-0.5f, -0.4f, 0), Vec3(0.9f, -0.6f, 0),
+                                                        Vec3(0.6f, 0.8f, 0), Vec3(-0.7f, 0.3f, 0)));
+    const auto sampler = mesh.make_sampler(Transform());
+    const TriangleEmitter emitter = world_triangles(mesh.data(), Transform());
+    const Vec3 ref(3.0f, -2.0f, 12.0f);
+    // A cap around the direction to the centre wide enough for every corner.
+    const Vec3 axis = glm::normalize(Vec3(0.1f, 0.0f, 0.0f) - ref);
+    double cos_min = 1.0;
+    for (const auto& t : emitter.triangles) {
+        for (const DVec3& p : t)
+            cos_min = std::min(cos_min, glm::dot(glm::normalize(p - DVec3(ref)), DVec3(axis)));
+    }
+    CapZoom zoom(axis, 1.0 - 1.5 * (1.0 - cos_min));
+    expect_matches(
+        *sampler, ref, [&](const Vec3& w, double slack) { return emitter.pdf(ref, w, slack); },
+        "far quad", 1, &zoom);
+}
+
+TEST(SphereEmitter, SamplingMatchesSolidAngleDensity) {
+    const Vec3 center(0.5f, -1.0f, 2.0f);
+    const float radius = 0.8f;
+    const SphereSampler sampler(center, radius);
+    struct Case {
+        std::string name;
+        Vec3 ref;
+        bool zoomed;
+    };
+    const Case cases[] = {
+        {"near", center + Vec3(0.6f, 0.9f, -0.3f), false},              // 1.36 radii
+        {"grazing", center + radius * Vec3(0.0f, 0.0f, 1.02f), false},  // just outside
+        {"far", center + Vec3(6.0f, -9.0f, 8.0f), true},                // 17 radii
+        {"very far", center + Vec3(-60.0f, 20.0f, 0.0f), true},         // 79 radii
+        {"sun", center + Vec3(100.0f, 100.0f, -100.0f), true},          // 216 radii
+        {"distant", center + Vec3(0.0f, 800.0f, 0.0f), true},           // 1000 radii
+        {"inside", center + Vec3(0.2f, -0.3f, 0.1f), false},
+        {"at the centre", center, false},
+    };
+    for (const Case& c : cases) {
+        auto pdf = [&](const Vec3& w, double slack) {
+            return sphere_pdf(DVec3(center), radius, c.ref, w, slack);
+        };
+        if (!c.zoomed) {
+            expect_matches(sampler, c.ref, pdf, c.name, 8);
+            continue;
+        }
+        const Vec3 axis = glm::normalize(center - c.ref);
+        const double sin2_max =
+            double(radius) * radius / glm::dot(DVec3(center - c.ref), DVec3(center - c.ref));
+        CapZoom zoom(axis, 1.0 - 1.3 * sin2_max / (1.0 + std::sqrt(1.0 - sin2_max)));
+        expect_matches(sampler, c.ref, pdf, c.name, 8, &zoom);
+    }
+}
+
+// Points land on the sphere; from outside only on the part facing the reference point.
+TEST(SphereEmitter, SamplesLieOnTheVisibleSurface) {
+    const Vec3 center(1.0f, 2.0f, 3.0f);
+    const float radius = 2.0f;
+    const SphereSampler sampler(center, radius);
+    Rng rng(2);
+    for (const Vec3& ref :
+         {center + Vec3(0, 0, 2.5f), center + Vec3(30, -10, 0), center + Vec3(0.5f, 0, 0)}) {
+        const bool outside = glm::length(ref - center) > radius;
+        for (int i = 0; i < 2000; ++i) {
+            const ShapeSample s =
+                sampler.sample(ref, Vec2(rng.next_float(), rng.next_float()), rng.next_float());
+            EXPECT_NEAR(glm::length(s.p - center), radius, 1e-5f * radius);
+            EXPECT_NEAR(glm::dot(s.n, glm::normalize(s.p - center)), 1.0f, 1e-5f);
+            if (outside) {
+                EXPECT_GE(glm::dot(s.n, ref - s.p), -1e-4f * radius);
+            }
+        }
+    }
+    EXPECT_NEAR(sampler.area(), 4.0f * kPi * radius * radius, 1e-4f);
+    // Placing a sphere shape: a uniform scale scales the radius, a non-uniform one is refused.
+    const Sphere sphere(Vec3(0.0f), 1.5f);
+    EXPECT_NEAR(sphere.make_sampler(Transform::scale(Vec3(2.0f)))->area(), 4.0f * kPi * 9.0f,
+                1e-3f);
+    EXPECT_THROW(sphere.make_sampler(Transform::scale(Vec3(1, 2, 1))), Error);
+}
+
+TEST(PointLight, IrradianceFallsOffAsInverseSquare) {
+    const Spectrum intensity(3.0f, 2.0f, 1.0f);
+    const PointLight light(Vec3(1, 2, 3), intensity);
+    for (const Vec3& ref : {Vec3(1, 2, 0), Vec3(-4, 0, 1), Vec3(100, 2, 3)}) {
+        const auto s = light.sample_li(ref, Vec2(0.5f), 0.5f);
+        ASSERT_TRUE(s.has_value());
+        const Vec3 d = Vec3(1, 2, 3) - ref;
+        const float r2 = glm::dot(d, d);
+        for (int c = 0; c < 3; ++c)
+            EXPECT_NEAR(s->L[c], intensity[c] / r2, 1e-6f * intensity[c] / r2);
+        EXPECT_NEAR(glm::length(s->wi - glm::normalize(d)), 0.0f, 1e-6f);
+        EXPECT_TRUE(s->is_delta);
+        EXPECT_EQ(s->pdf, 1.0f);
+        EXPECT_EQ(s->p, Vec3(1, 2, 3));
+    }
+    EXPECT_NEAR(light.power().r, 4.0f * kPi * 3.0f, 1e-5f);
+    EXPECT_FALSE(light.sample_li(Vec3(1, 2, 3), Vec2(0.5f), 0.5f).has_value());  // at the light
+}
+
+TEST(SpotLight, FalloffProfile) {
+    const float cone = 30.0f, start = 20.0f;
+    const Vec3 position(0, 0, 5), axis = glm::normalize(Vec3(0.3f, -0.2f, -1.0f));
+    const SpotLight light(position, axis * 3.0f, Spectrum(10.0f), cone, start);
+    const Frame frame = Frame::from_normal(axis);
+    float previous = 2.0f;
+    double power = 0.0;  // the intensity integrated over solid angle, by the midpoint rule
+    constexpr int kSteps = 4000;
+    for (int i = 0; i < kSteps; ++i) {
+        const float degrees = (i + 0.5f) * 40.0f / kSteps;
+        const Vec3 w = frame.to_world(
+            Vec3(std::sin(glm::radians(degrees)), 0.0f, std::cos(glm::radians(degrees))));
+        const float f = light.falloff(w);
+        if (degrees < start) {
+            EXPECT_EQ(f, 1.0f) << degrees;
+        } else if (degrees > cone) {
+            EXPECT_EQ(f, 0.0f) << degrees;
+        }
+        EXPECT_LE(f, previous) << degrees;  // monotone
+        previous = f;
+        const double theta0 = glm::radians(i * 40.0 / kSteps),
+                     theta1 = glm::radians((i + 1) * 40.0 / kSteps);
+        power += 10.0 * f * 2.0 * M_PI * (std::cos(theta0) - std::cos(theta1));
+
+        // What a surface point in that direction receives.
+        const Vec3 ref = position + 4.0f * w;
+        const auto s = light.sample_li(ref, Vec2(0.5f), 0.5f);
+        if (f > 0.0f) {
+            ASSERT_TRUE(s.has_value()) << degrees;
+            EXPECT_NEAR(s->L.r, 10.0f * f / 16.0f, 1e-5f) << degrees;
+        } else {
+            EXPECT_FALSE(s.has_value()) << degrees;
+        }
+    }
+    // Around the axis, azimuth makes no difference.
+    for (float phi : {0.0f, 1.0f, 2.5f, 4.0f}) {
+        const float t = glm::radians(25.0f);
+        const Vec3 w = frame.to_world(
+            Vec3(std::sin(t) * std::cos(phi), std::sin(t) * std::sin(phi), std::cos(t)));
+        EXPECT_NEAR(light.falloff(w),
+                    light.falloff(frame.to_world(Vec3(std::sin(t), 0.0f, std::cos(t)))), 1e-5f);
+    }
+    EXPECT_NEAR(light.power().r, power, 1e-3 * power);
+}
+
+TEST(AreaLight, OneSidedEmitsOnlyFromTheFront) {
+    // Counter-clockwise seen from +z, so the front faces +z.
+    const MeshData quad =
+        make_quad_mesh(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0));
+    const TriangleMesh mesh("quad", quad);
+    const Spectrum radiance(2.0f, 1.0f, 0.5f);
+    const AreaLight one_sided(mesh.make_sampler(Transform()), radiance, false);
+    const AreaLight two_sided(mesh.make_sampler(Transform()), radiance, true);
+    Rng rng(17);
+    int front = 0, back = 0, two_front = 0, two_back = 0;
+    for (int i = 0; i < 1000; ++i) {
+        const Vec2 u(rng.next_float(), rng.next_float());
+        const float u_select = rng.next_float();
+        const Vec3 above(0.3f, -0.2f, 1.5f), below(0.3f, -0.2f, -1.5f);
+        if (auto s = one_sided.sample_li(above, u, u_select)) {
+            ++front;
+            EXPECT_TRUE(s->L == radiance);
+            SurfaceInteraction on_light;
+            on_light.p = s->p;
+            on_light.ng = Vec3(0, 0, 1);
+            EXPECT_NEAR(one_sided.pdf_li(above, on_light), s->pdf, 1e-4f * s->pdf);
+            EXPECT_FALSE(s->is_delta);
+        }
+        if (one_sided.sample_li(below, u, u_select)) ++back;
+        if (two_sided.sample_li(above, u, u_select)) ++two_front;
+        if (two_sided.sample_li(below, u, u_select)) ++two_back;
+    }
+    EXPECT_EQ(front, 1000);
+    EXPECT_EQ(back, 0);
+    EXPECT_EQ(two_front, 1000);
+    EXPECT_EQ(two_back, 1000);
+
+    SurfaceInteraction si;
+    si.p = Vec3(0.1f, 0.2f, 0.0f);
+    si.ng = Vec3(0, 0, 1);
+    EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, 1.0f))) == radiance);
+    EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, -1.0f))).is_black());
+    EXPECT_TRUE(two_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, -1.0f))) == radiance);
+    // Power: radiance times pi times area, per emitting side.
+    EXPECT_NEAR(one_sided.power().r, 2.0f * kPi * 4.0f, 1e-4f);
+    EXPECT_NEAR(two_sided.power().r, 2.0f * 2.0f * kPi * 4.0f, 1e-4f);
+}
+
+TEST(LightSampler, ChoosesInProportionToPower) {
+    std::vector<std::unique_ptr<Light>> lights;
+    lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // black
+    lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(1.0f)));
+    lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(3.0f, 0.5f, 2.0f)));
+    const TriangleMesh mesh(
+        "quad", make_quad_mesh(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1, 0)));
+    lights.push_back(
+        std::make_unique<AreaLight>(mesh.make_sampler(Transform()), Spectrum(1.5f), false));
+    lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // black, last
+    const LightSampler sampler(lights);
+
+    std::vector<double> expected(lights.size());
+    double total = 0.0;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        expected[i] = lights[i]->power().luminance();
+        total += expected[i];
+    }
+    double pmf_sum = 0.0;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        expected[i] /= total;
+        EXPECT_EQ(lights[i]->index(), static_cast<int>(i));
+        EXPECT_NEAR(sampler.pmf(*lights[i]), expected[i], 1e-6);
+        pmf_sum += sampler.pmf(*lights[i]);
+    }
+    EXPECT_NEAR(pmf_sum, 1.0, 1e-6);
+
+    Rng rng(23);
+    constexpr int kDraws = 200000;
+    std::vector<double> counts(lights.size(), 0.0);
+    for (int i = 0; i < kDraws; ++i) {
+        const auto choice = sampler.sample(rng.next_float());
+        ASSERT_NE(choice.light, nullptr);
+        EXPECT_EQ(choice.pmf, sampler.pmf(*choice.light));
+        counts[choice.light->index()] += 1.0;
+    }
+    EXPECT_EQ(counts[0], 0.0);
+    EXPECT_EQ(counts[4], 0.0);
+    double chi2 = 0.0;
+    for (size_t i = 1; i < 4; ++i)
+        chi2 += sqr(counts[i] - kDraws * expected[i]) / (kDraws * expected[i]);
+    EXPECT_GT(test::chi_square_upper_tail(chi2, 2), 0.01) << "chi2 = " << chi2;
+    // The ends of [0, 1) never pick a black light.
+    EXPECT_NE(sampler.sample(0.0f).light, lights[0].get());
+    EXPECT_NE(sampler.sample(std::nextafter(1.0f, 0.0f)).light, lights[4].get());
+
+    // With only black lights the choice falls back to uniform.
+    std::vector<std::unique_ptr<Light>> dark;
+    dark.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(0.0f)));
+    dark.push_back(std::make_unique<PointLight>(Vec3(1.0f), Spectrum(0.0f)));
+    const LightSampler uniform(dark);
+    EXPECT_NEAR(uniform.pmf(*dark[0]), 0.5f, 1e-6f);
+    EXPECT_EQ(uniform.sample(0.75f).light, dark[1].get());
+}
