@@ -122,6 +122,9 @@ void write_image(const std::string& path, const Image& image, const WriteOptions
             spec.channelnames = image.channels;
             spec.alpha_channel = image.channel_index("A");
             spec.attribute("compression", "zip");
+            // OpenEXR stamps files with the current time (capDate) unless told otherwise; a
+            // fixed stamp keeps a render's file identical bit for bit, run after run.
+            spec.attribute("DateTime", "1970:01:01 00:00:00");
             write_with_oiio(temp, spec, image.pixels.data());
         } else {
             int channels = 0;
