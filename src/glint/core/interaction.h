@@ -21,6 +21,7 @@ struct SurfaceInteraction {
     float t = 0.0f;     // ray parameter of the hit
     Vec3 wo;            // direction towards the ray origin, unit length
     bool front_face = true;  // the ray arrived on the side ng points to
+    int part = 0;            // which part of the shape was hit (CSG primitives have their own materials)
     const Material* material = nullptr;
     const Light* area_light = nullptr;  // set when the surface emits
 

@@ -83,6 +83,7 @@ std::optional<HitRecord> Accel::intersect(const Ray& ray) const {
     hit.t = rh.ray.tfar;
     hit.primitive = rh.hit.primID;
     hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
+    hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
     if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
         hit.top_geometry = rh.hit.instID[0];
         hit.local_geometry = rh.hit.geomID;

@@ -19,6 +19,7 @@ struct HitRecord {
     unsigned local_geometry = RTC_INVALID_GEOMETRY_ID; // geometry id inside an instance
     unsigned primitive = 0;
     Vec2 barycentric{0.0f};
+    Vec3 normal{0.0f};  // as the geometry reported it (user geometry uses it to pass data)
     bool instanced() const { return local_geometry != RTC_INVALID_GEOMETRY_ID; }
 };
 

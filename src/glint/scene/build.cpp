@@ -4,6 +4,7 @@
 #include <glint/material/registry.h>
 #include <glint/scene/build.h>
 #include <glint/scene/shapes.h>
+#include <glint/scene/solids.h>
 
 #include <fmt/format.h>
 
@@ -49,10 +50,16 @@ private:
         m_prototype.assign(m_desc.groups.size(), -1);
         for (size_t g = 0; g < m_desc.groups.size(); ++g) {
             for (const Params& p : m_desc.groups[g].shapes) {
+                if (p.type() == "solid") {
+                    BuiltSolid built = build_solid(m_desc, p.get_ref("solid", "solid").index, p,
+                                                   m_scene->m_materials, m_settings.csg_shortcuts);
+                    m_group_shapes[g].push_back({built.shape.get(), std::move(built.part_materials), &p});
+                    m_scene->m_shapes.push_back(std::move(built.shape));
+                    continue;
+                }
                 const ObjectRef ref = p.get_ref("material", "material");
                 auto shape = make_shape(p, m_desc.directory);
-                m_group_shapes[g].push_back(
-                    {shape.get(), m_scene->m_materials.at(ref.index).get(), &p});
+                m_group_shapes[g].push_back({shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
                 m_scene->m_shapes.push_back(std::move(shape));
             }
         }
@@ -63,7 +70,7 @@ private:
         for (const ShapeUse& use : m_group_shapes[0]) {
             const unsigned id = m_scene->m_accel.add_shape(-1, *use.shape);
             Scene::WorldEntry& entry = world_entry(id);
-            entry.geometry = {use.shape, use.material};
+            entry.geometry = {use.shape, use.materials};
             entry.light = make_area_light(use, Transform());
             count_shape(use, Transform());
         }
@@ -96,7 +103,7 @@ private:
 
     struct ShapeUse {
         const Shape* shape;
-        const Material* material;
+        std::vector<const Material*> materials;  // per part
         const Params* params;
     };
 
@@ -108,7 +115,7 @@ private:
             const unsigned local = m_scene->m_accel.add_shape(id, *use.shape);
             auto& geometry = m_scene->m_group_geometry[id];
             if (geometry.size() <= local) geometry.resize(local + 1);
-            geometry[local] = {use.shape, use.material};
+            geometry[local] = {use.shape, use.materials};
         }
         ++m_scene->m_stats.groups;
         return m_prototype[group] = id;
@@ -120,7 +127,11 @@ private:
     }
 
     const Light* make_area_light(const ShapeUse& use, const Transform& to_world) {
-        if (!use.material->is_emissive()) return nullptr;
+        const Material* emitter = nullptr;
+        for (const Material* m : use.materials) {
+            if (m->is_emissive()) emitter = m;
+        }
+        if (!emitter) return nullptr;
         std::unique_ptr<ShapeSampler> sampler;
         try {
             sampler = use.shape->make_sampler(to_world);
@@ -128,7 +139,7 @@ private:
             use.params->fail(e.what());
         }
         m_scene->m_lights.push_back(std::make_unique<AreaLight>(
-            std::move(sampler), use.material->emission(), use.material->emits_two_sided()));
+            std::move(sampler), emitter->emission(), emitter->emits_two_sided()));
         return m_scene->m_lights.back().get();
     }
 

@@ -19,6 +19,7 @@ RenderSettings parse_render_settings(const Params* params) {
     s.exposure = p.get_float("exposure", 0.0f);
     s.aovs = p.get_bool("aovs", false);
     s.outputs = p.get_strings("output");
+    s.csg_shortcuts = p.get_bool("csg_shortcuts", true);
     if (s.width < 1 || s.height < 1 || s.width > 65536 || s.height > 65536) {
         p.fail("'width' and 'height' must be between 1 and 65536");
     }

@@ -19,11 +19,11 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
         si.dpdv = xf.vector(si.dpdv);
         si.shading = Frame::from_normal_tangent(glm::normalize(xf.normal(si.shading.n())),
                                                 xf.vector(si.shading.s()));
-        si.material = geometry.material;
+        si.material = geometry.material(si.part);
         si.area_light = entry.lights[hit->local_geometry];
     } else {
         entry.geometry.shape->fill_interaction(ray, *hit, si);
-        si.material = entry.geometry.material;
+        si.material = entry.geometry.material(si.part);
         si.area_light = entry.light;
     }
     si.t = hit->t;

@@ -39,7 +39,11 @@ private:
 
     struct Geometry {
         const Shape* shape = nullptr;
-        const Material* material = nullptr;
+        std::vector<const Material*> materials;  // one per part of the shape
+
+        const Material* material(int part) const {
+            return static_cast<size_t>(part) < materials.size() ? materials[part] : materials.front();
+        }
     };
     // One entry per geometry id of the world scene: a root shape or a group instance.
     struct WorldEntry {

@@ -18,8 +18,15 @@ struct InstanceDesc {
 
 struct GroupDesc {
     std::string where;
-    std::vector<Params> shapes;  // type: sphere, box, quad, mesh
+    std::vector<Params> shapes;  // type: sphere, box, quad, mesh, or solid (a CSG tree)
     std::vector<InstanceDesc> instances;
+};
+
+// A solid for CSG: a primitive ("sphere", "quadric", ...) or a node ("union",
+// "intersection", "difference") over earlier solids.
+struct SolidDesc {
+    Params params;
+    std::vector<int> children;  // indices into SceneDesc::solids
 };
 
 struct SceneDesc {
@@ -28,6 +35,7 @@ struct SceneDesc {
     std::optional<Params> background;
     std::vector<Params> materials;  // ObjectRef{"material", i} indexes this
     std::vector<Params> lights;     // non-shape lights: point_light, spot_light
+    std::vector<SolidDesc> solids;  // ObjectRef{"solid", i} indexes this
     std::vector<GroupDesc> groups{GroupDesc{}};  // groups[0] is the world (root) group
     std::string directory;  // where the script lives; relative file names start here
 };

@@ -3,6 +3,7 @@
 #include <glint/material/registry.h>
 #include <glint/scene/lua/lua_loader.h>
 #include <glint/scene/shapes.h>
+#include <glint/scene/solids.h>
 
 #include <fmt/format.h>
 #include <lua.hpp>
@@ -19,10 +20,11 @@ constexpr const char* kHandleMeta = "glint.handle";
 constexpr const char* kDescKey = "glint.scene_desc";
 
 struct Handle {
-    int kind;  // 0 = material, 1 = group
+    int kind;  // 0 = material, 1 = group, 2 = solid
     int index;
 };
-constexpr const char* kHandleKinds[] = {"material", "group"};
+constexpr const char* kHandleKinds[] = {"material", "group", "solid"};
+constexpr int kSolidHandle = 2;
 
 SceneDesc& desc_of(lua_State* L) {
     lua_getfield(L, LUA_REGISTRYINDEX, kDescKey);
@@ -171,6 +173,68 @@ int new_shape(lua_State* L) {
     return 0;
 }
 
+// glint.solid.<type>{...} -> solid handle (not yet in the scene; see glint.add).
+int new_solid(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    SceneDesc& desc = desc_of(L);
+    desc.solids.push_back({to_params(L, 1, type), {}});
+    push_handle(L, kSolidHandle, static_cast<int>(desc.solids.size()) - 1);
+    return 1;
+}
+
+// glint.union{a, b, ..., material = m, transform = xf}: solids in the list part, settings
+// by name.
+int new_csg_node(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    if (!lua_istable(L, 1)) fail(L, fmt::format("glint.{} expects a table: glint.{}{{a, b, material = m}}", type, type));
+    std::vector<int> children;
+    const lua_Integer n = luaL_len(L, 1);
+    for (lua_Integer i = 1; i <= n; ++i) {
+        lua_geti(L, 1, i);
+        Handle* h = to_handle(L, -1);
+        if (!h || h->kind != kSolidHandle) {
+            fail(L, fmt::format("glint.{}: entry {} is not a solid (made by glint.solid.* or another CSG node)", type, i));
+        }
+        children.push_back(h->index);
+        lua_pop(L, 1);
+    }
+    // The named entries are the node's parameters.
+    lua_newtable(L);
+    lua_pushnil(L);
+    while (lua_next(L, 1) != 0) {
+        if (lua_type(L, -2) == LUA_TSTRING) {
+            lua_pushvalue(L, -2);
+            lua_insert(L, -2);
+            lua_settable(L, -4);
+        } else {
+            lua_pop(L, 1);
+        }
+    }
+    SceneDesc& desc = desc_of(L);
+    desc.solids.push_back({to_params(L, -1, type), std::move(children)});
+    if (desc.solids.back().children.empty()) {
+        fail(L, fmt::format("glint.{} needs at least one solid, e.g. glint.{}{{a, b}}", type, type));
+    }
+    push_handle(L, kSolidHandle, static_cast<int>(desc.solids.size()) - 1);
+    return 1;
+}
+
+// glint.add(solid [, {material = m}]) or group:add(solid): puts a solid into the scene.
+int add_solid(lua_State* L) {
+    int group = 0;
+    int args = 1;
+    if (Handle* h = to_handle(L, 1); h && h->kind == 1) {
+        group = h->index;
+        args = 2;
+    }
+    Handle* solid = to_handle(L, args);
+    if (!solid || solid->kind != kSolidHandle) fail(L, "glint.add expects a solid (made by glint.solid.* or a CSG node)");
+    Params params = to_params(L, args + 1, "solid");
+    params.set("solid", ObjectRef{"solid", solid->index});
+    desc_of(L).groups[group].shapes.push_back(std::move(params));
+    return 0;
+}
+
 int new_group(lua_State* L) {
     SceneDesc& desc = desc_of(L);
     desc.groups.push_back(GroupDesc{where(L), {}, {}});
@@ -291,6 +355,8 @@ int open_glint(lua_State* L) {
     for (const std::string& type : shape_types()) register_closure(L, type, guarded<new_shape>);
     lua_pushcfunction(L, guarded<place_group>);
     lua_setfield(L, -2, "place");
+    lua_pushcfunction(L, guarded<add_solid>);
+    lua_setfield(L, -2, "add");
     lua_setfield(L, -2, "__index");
     lua_pop(L, 1);
 
@@ -298,6 +364,14 @@ int open_glint(lua_State* L) {
     for (const std::string& type : material_types()) register_closure(L, type, guarded<new_material>);
     for (const std::string& type : light_types()) register_closure(L, type, guarded<new_light>);
     for (const std::string& type : shape_types()) register_closure(L, type, guarded<new_shape>);
+    lua_newtable(L);
+    for (const std::string& type : solid_types()) register_closure(L, type, guarded<new_solid>);
+    lua_setfield(L, -2, "solid");
+    for (const char* operation : {"union", "intersection", "difference"}) {
+        register_closure(L, operation, guarded<new_csg_node>);
+    }
+    lua_pushcfunction(L, guarded<add_solid>);
+    lua_setfield(L, -2, "add");
     register_closure(L, "camera", guarded<set_single<&SceneDesc::camera>>);
     register_closure(L, "render", guarded<set_single<&SceneDesc::render>>);
     register_closure(L, "background", guarded<set_single<&SceneDesc::background>>);

@@ -1,0 +1,108 @@
+#include <glint/core/error.h>
+#include <glint/geometry/csg/solid_shape.h>
+
+#include <fmt/format.h>
+
+namespace glint {
+namespace {
+
+IntervalScratch& thread_scratch() {
+    thread_local IntervalScratch scratch;
+    return scratch;
+}
+
+Ray ray_from(RTCRayN* rays, unsigned n, unsigned i) {
+    Ray ray;
+    ray.origin = Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    ray.direction = Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    ray.t_min = RTCRayN_tnear(rays, n, i);
+    ray.t_max = RTCRayN_tfar(rays, n, i);
+    return ray;
+}
+
+void solid_bounds(const RTCBoundsFunctionArguments* args) {
+    const Bounds3 b = static_cast<const SolidShape*>(args->geometryUserPtr)->bounds();
+    *args->bounds_o = RTCBounds{b.min.x, b.min.y, b.min.z, 0.0f, b.max.x, b.max.y, b.max.z, 0.0f};
+}
+
+void solid_intersect(const RTCIntersectFunctionNArguments* args) {
+    const auto* shape = static_cast<const SolidShape*>(args->geometryUserPtr);
+    RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
+    RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        const std::optional<Crossing> crossing = shape->first_hit(ray_from(rays, args->N, i));
+        if (!crossing) continue;
+        RTCRayN_tfar(rays, args->N, i) = crossing->t;
+        RTCHitN_Ng_x(hits, args->N, i) = crossing->normal.x;
+        RTCHitN_Ng_y(hits, args->N, i) = crossing->normal.y;
+        RTCHitN_Ng_z(hits, args->N, i) = crossing->normal.z;
+        RTCHitN_u(hits, args->N, i) = 0.0f;
+        RTCHitN_v(hits, args->N, i) = 0.0f;
+        // One Embree primitive per solid, so the primitive id is free to carry the part.
+        RTCHitN_primID(hits, args->N, i) = static_cast<unsigned>(crossing->leaf);
+        RTCHitN_geomID(hits, args->N, i) = args->geomID;
+        RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
+    }
+}
+
+void solid_occluded(const RTCOccludedFunctionNArguments* args) {
+    const auto* shape = static_cast<const SolidShape*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] != -1) continue;
+        if (shape->any_hit(ray_from(args->ray, args->N, i))) RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
+    }
+}
+
+}  // namespace
+
+SolidShape::SolidShape(std::shared_ptr<const Solid> solid, std::string name)
+    : m_solid(std::move(solid)), m_name(std::move(name)) {
+    if (!m_solid->is_bounded()) {
+        throw Error(fmt::format("the {} is unbounded: give it 'bounds = {{{{xmin, ymin, zmin}}, {{xmax, ymax, zmax}}}}' "
+                                "or intersect it with a finite solid",
+                                m_solid->describe()));
+    }
+    m_bounds = m_solid->bounds();
+}
+
+std::optional<Crossing> SolidShape::first_hit(const Ray& ray) const {
+    IntervalScratch& scratch = thread_scratch();
+    IntervalList& spans = scratch.acquire();
+    m_solid->intervals(ray, spans, scratch);
+    const Crossing* crossing = first_crossing_after(spans, ray.t_min);
+    std::optional<Crossing> result;
+    if (crossing && crossing->t < ray.t_max) result = *crossing;
+    scratch.release(1);
+    return result;
+}
+
+bool SolidShape::any_hit(const Ray& ray) const { return first_hit(ray).has_value(); }
+
+RTCGeometry SolidShape::create_embree_geometry(RTCDevice device) const {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, 1);
+    rtcSetGeometryUserData(geometry, const_cast<SolidShape*>(this));
+    rtcSetGeometryBoundsFunction(geometry, solid_bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, solid_intersect);
+    rtcSetGeometryOccludedFunction(geometry, solid_occluded);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
+    si.p = ray.at(hit.t);
+    si.ng = glm::normalize(hit.normal);
+    si.shading = Frame::from_normal(si.ng);
+    si.dpdu = si.shading.s();
+    si.dpdv = si.shading.t();
+    si.uv = Vec2(0.0f);
+    si.part = static_cast<int>(hit.primitive);
+}
+
+std::unique_ptr<ShapeSampler> SolidShape::make_sampler(const Transform&) const {
+    throw Error(fmt::format("a CSG {} cannot emit light (use an emissive sphere, quad or mesh as the light)",
+                            m_solid->describe()));
+}
+
+}  // namespace glint
