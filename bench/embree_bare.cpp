@@ -65,8 +65,10 @@ std::optional<Options> parse_options(int argc, char** argv) {
         if ((arg == "--rays" || arg == "--threads") && i + 1 < argc) {
             const std::optional<double> value = parse_count(argv[++i]);
             if (!value) return std::nullopt;
-            if (arg == "--rays") options.rays = static_cast<uint64_t>(*value);
-            else options.threads = static_cast<int>(*value);
+            if (arg == "--rays")
+                options.rays = static_cast<uint64_t>(*value);
+            else
+                options.threads = static_cast<int>(*value);
         } else if (!arg.empty() && arg[0] != '-' && !have_scene) {
             options.scene = arg;
             have_scene = true;

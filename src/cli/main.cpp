@@ -7,10 +7,10 @@
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 
-#include <CLI/CLI.hpp>
 #include <fmt/format.h>
 #include <tbb/global_control.h>
 #include <tbb/task_arena.h>
+#include <CLI/CLI.hpp>
 
 #include <filesystem>
 #include <optional>
@@ -40,7 +40,8 @@ Vec2i parse_resolution(const std::string& text) {
     char x = 0, extra = 0;
     if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
         w < 1 || h < 1) {
-        throw CLI::ValidationError("--res", fmt::format("'{}' is not WIDTHxHEIGHT, e.g. 512x512", text));
+        throw CLI::ValidationError("--res",
+                                   fmt::format("'{}' is not WIDTHxHEIGHT, e.g. 512x512", text));
     }
     return Vec2i(w, h);
 }
@@ -82,25 +83,29 @@ int run_render(const RenderOptions& options) {
     auto integrator = make_integrator(settings);
     const auto scene = build_scene(desc, settings);
 
-    const int threads = settings.threads > 0 ? settings.threads
-                                             : tbb::this_task_arena::max_concurrency();
+    const int threads =
+        settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Film film(settings.width, settings.height, settings.aovs);
-    Progress progress("rendering", static_cast<uint64_t>(settings.width) * settings.height * settings.spp,
+    Progress progress("rendering",
+                      static_cast<uint64_t>(settings.width) * settings.height * settings.spp,
                       options.quiet);
     const RenderStats stats = integrator->render(*scene, film, progress);
     progress.finish();
 
     const Image image = film.resolve();
-    for (const std::string& path : settings.outputs) write_image(path, image, WriteOptions{settings.exposure});
+    for (const std::string& path : settings.outputs)
+        write_image(path, image, WriteOptions{settings.exposure});
     if (!options.quiet) {
-        fmt::print(stderr, "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
+        fmt::print(stderr,
+                   "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
                    settings.width, settings.height, settings.spp, threads, stats.seconds,
                    stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
         for (const std::string& path : settings.outputs) fmt::print(stderr, "wrote {}\n", path);
     }
     if (film.non_finite_samples() > 0) {
-        fmt::print(stderr, "warning: {} samples were not finite and were skipped\n", film.non_finite_samples());
+        fmt::print(stderr, "warning: {} samples were not finite and were skipped\n",
+                   film.non_finite_samples());
     }
     return 0;
 }
@@ -119,11 +124,11 @@ int run_info(const std::string& scene_path) {
     if (s.bounds.is_empty()) {
         fmt::print("bounds:     empty\n");
     } else {
-        fmt::print("bounds:     ({:g}, {:g}, {:g}) to ({:g}, {:g}, {:g})\n", s.bounds.min.x, s.bounds.min.y,
-                   s.bounds.min.z, s.bounds.max.x, s.bounds.max.y, s.bounds.max.z);
+        fmt::print("bounds:     ({:g}, {:g}, {:g}) to ({:g}, {:g}, {:g})\n", s.bounds.min.x,
+                   s.bounds.min.y, s.bounds.min.z, s.bounds.max.x, s.bounds.max.y, s.bounds.max.z);
     }
-    fmt::print("render:     {}x{}, {} spp, integrator {}\n", settings.width, settings.height, settings.spp,
-               settings.integrator);
+    fmt::print("render:     {}x{}, {} spp, integrator {}\n", settings.width, settings.height,
+               settings.spp, settings.integrator);
     return 0;
 }
 
@@ -132,10 +137,13 @@ int run_compare(const std::string& test_path, const std::string& reference_path,
     const CompareResult r = compare_images(read_image(test_path), read_image(reference_path));
     fmt::print("relative MSE: {:.6g}\n", r.rel_mse);
     fmt::print("RMSE:         {:.6g}\n", r.rmse);
-    fmt::print("test mean:    ({:.6g}, {:.6g}, {:.6g})\n", r.test_mean[0], r.test_mean[1], r.test_mean[2]);
-    fmt::print("ref mean:     ({:.6g}, {:.6g}, {:.6g})\n", r.ref_mean[0], r.ref_mean[1], r.ref_mean[2]);
+    fmt::print("test mean:    ({:.6g}, {:.6g}, {:.6g})\n", r.test_mean[0], r.test_mean[1],
+               r.test_mean[2]);
+    fmt::print("ref mean:     ({:.6g}, {:.6g}, {:.6g})\n", r.ref_mean[0], r.ref_mean[1],
+               r.ref_mean[2]);
     if (threshold && r.rel_mse > *threshold) {
-        fmt::print(stderr, "relative MSE {:.6g} exceeds the threshold {:.6g}\n", r.rel_mse, *threshold);
+        fmt::print(stderr, "relative MSE {:.6g} exceeds the threshold {:.6g}\n", r.rel_mse,
+                   *threshold);
         return kExitInputError;
     }
     return 0;
@@ -146,7 +154,8 @@ int run_compare(const std::string& test_path, const std::string& reference_path,
 int main(int argc, char** argv) {
     CLI::App app{"glint: a physically based renderer driven by Lua scenes"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", fmt::format("glint 0.1.0 (Embree {})", Accel::embree_version()));
+    app.set_version_flag("--version",
+                         fmt::format("glint 0.1.0 (Embree {})", Accel::embree_version()));
 
     RenderOptions render;
     CLI::App* render_cmd = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
@@ -158,13 +167,16 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--threads", render.threads, "Worker threads (default: all cores)")
         ->check(CLI::PositiveNumber);
     render_cmd->add_option("--seed", render.seed, "Random seed");
-    render_cmd->add_option("--integrator", render.integrator, "Light transport algorithm, e.g. path");
+    render_cmd->add_option("--integrator", render.integrator,
+                           "Light transport algorithm, e.g. path");
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
-    render_cmd->add_flag("--aovs", render.aovs, "Add albedo, normal and depth channels to EXR output");
+    render_cmd->add_flag("--aovs", render.aovs,
+                         "Add albedo, normal and depth channels to EXR output");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
 
     std::string info_scene;
-    CLI::App* info_cmd = app.add_subcommand("info", "Print counts of shapes, triangles, lights and bounds");
+    CLI::App* info_cmd =
+        app.add_subcommand("info", "Print counts of shapes, triangles, lights and bounds");
     info_cmd->add_option("scene", info_scene, "Scene script (.lua)")->required();
 
     std::string test_image, reference_image;
@@ -172,7 +184,8 @@ int main(int argc, char** argv) {
     CLI::App* compare_cmd = app.add_subcommand("compare", "Compare an image with a reference");
     compare_cmd->add_option("test", test_image, "Image to check (.exr)")->required();
     compare_cmd->add_option("reference", reference_image, "Converged reference (.exr)")->required();
-    compare_cmd->add_option("--threshold", threshold, "Exit with 1 when the relative MSE exceeds this");
+    compare_cmd->add_option("--threshold", threshold,
+                            "Exit with 1 when the relative MSE exceeds this");
 
     try {
         app.parse(argc, argv);

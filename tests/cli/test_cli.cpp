@@ -23,7 +23,8 @@ class CliTest : public ::testing::Test {
 protected:
     void SetUp() override {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        m_dir = fs::temp_directory_path() / fmt::format("glint-cli-{}-{}", info->name(), ::getpid());
+        m_dir =
+            fs::temp_directory_path() / fmt::format("glint-cli-{}-{}", info->name(), ::getpid());
         fs::remove_all(m_dir);
         fs::create_directories(m_dir);
     }
@@ -31,7 +32,8 @@ protected:
 
     std::string out(const std::string& name) const { return (m_dir / name).string(); }
     size_t files_in_dir() const {
-        return static_cast<size_t>(std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
+        return static_cast<size_t>(
+            std::distance(fs::directory_iterator(m_dir), fs::directory_iterator()));
     }
 
     fs::path m_dir;
@@ -59,8 +61,8 @@ TEST_F(CliTest, BadInputGivesFileLineExitOneAndNoOutput) {
         {"runtime_error.lua", "runtime_error.lua:3:", "nil value"},
     };
     for (const Case& c : cases) {
-        const auto result = run_glint(fmt::format("render {}{} -o {} -o {} --quiet", kScenes, c.scene,
-                                                  out("image.exr"), out("image.png")));
+        const auto result = run_glint(fmt::format("render {}{} -o {} -o {} --quiet", kScenes,
+                                                  c.scene, out("image.exr"), out("image.png")));
         EXPECT_EQ(result.exit_code, 1) << c.scene << ": " << result.output;
         EXPECT_NE(result.output.find(c.location), std::string::npos) << result.output;
         EXPECT_NE(result.output.find(c.what), std::string::npos) << result.output;
@@ -87,8 +89,9 @@ TEST_F(CliTest, MissingSceneAndBadOutputFormatExitWithOne) {
 }
 
 TEST_F(CliTest, RendersExrAndPngWithOverrides) {
-    const auto result = run_glint(fmt::format("render {}small.lua -o {} -o {} --res 20x10 --spp 2 --aovs --quiet",
-                                              kScenes, out("a.exr"), out("a.png")));
+    const auto result =
+        run_glint(fmt::format("render {}small.lua -o {} -o {} --res 20x10 --spp 2 --aovs --quiet",
+                              kScenes, out("a.exr"), out("a.png")));
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_TRUE(result.output.empty()) << "--quiet printed: " << result.output;
     const Image exr = read_image(out("a.exr"));
@@ -105,8 +108,9 @@ TEST_F(CliTest, ThreadCountDoesNotChangeTheImage) {
     for (int threads : {1, 2}) {
         // A second apart, so a time stamp in the file would show as a difference.
         if (threads == 2) std::this_thread::sleep_for(std::chrono::milliseconds(1100));
-        const auto result = run_glint(fmt::format("render {}small.lua -o {} --threads {} --spp 3 --quiet", kScenes,
-                                                  out(fmt::format("t{}.exr", threads)), threads));
+        const auto result =
+            run_glint(fmt::format("render {}small.lua -o {} --threads {} --spp 3 --quiet", kScenes,
+                                  out(fmt::format("t{}.exr", threads)), threads));
         ASSERT_EQ(result.exit_code, 0) << result.output;
     }
     const std::string one = read_bytes(out("t1.exr"));
@@ -131,12 +135,19 @@ TEST_F(CliTest, InfoPrintsCounts) {
 }
 
 TEST_F(CliTest, CompareReportsErrorAgainstReference) {
-    ASSERT_EQ(run_glint(fmt::format("render {}small.lua -o {} --spp 2 --quiet", kScenes, out("low.exr"))).exit_code, 0);
-    ASSERT_EQ(run_glint(fmt::format("render {}small.lua -o {} --spp 32 --quiet", kScenes, out("high.exr"))).exit_code, 0);
+    ASSERT_EQ(
+        run_glint(fmt::format("render {}small.lua -o {} --spp 2 --quiet", kScenes, out("low.exr")))
+            .exit_code,
+        0);
+    ASSERT_EQ(run_glint(fmt::format("render {}small.lua -o {} --spp 32 --quiet", kScenes,
+                                    out("high.exr")))
+                  .exit_code,
+              0);
     auto same = run_glint(fmt::format("compare {} {}", out("high.exr"), out("high.exr")));
     EXPECT_EQ(same.exit_code, 0);
     EXPECT_NE(same.output.find("relative MSE: 0\n"), std::string::npos) << same.output;
-    auto differ = run_glint(fmt::format("compare {} {} --threshold 1e-9", out("low.exr"), out("high.exr")));
+    auto differ =
+        run_glint(fmt::format("compare {} {} --threshold 1e-9", out("low.exr"), out("high.exr")));
     EXPECT_EQ(differ.exit_code, 1) << differ.output;
     EXPECT_NE(differ.output.find("ref mean"), std::string::npos) << differ.output;
 }

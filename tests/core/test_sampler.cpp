@@ -61,4 +61,6 @@ TEST(Sampler, StratifiedCoversEveryStratumOnce) {
     for (int i = 0; i < 16; ++i) EXPECT_EQ(cells[i], i);
 }
 
-TEST(Sampler, UnknownNameThrows) { EXPECT_THROW(make_sampler("sobolx", 4, 0), Error); }
+TEST(Sampler, UnknownNameThrows) {
+    EXPECT_THROW(make_sampler("sobolx", 4, 0), Error);
+}

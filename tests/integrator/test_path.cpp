@@ -25,7 +25,8 @@ void expect_all_pixels(const Image& image, const Spectrum& expected, double tole
             for (int c = 0; c < 3; ++c) {
                 const double v = image.at(x, y, c);
                 if (std::abs(v - expected[c]) > tolerance * expected[c] && failures++ < 5) {
-                    ADD_FAILURE() << fmt::format("pixel ({}, {}) channel {}: {} expected {}", x, y, c, v, expected[c]);
+                    ADD_FAILURE() << fmt::format("pixel ({}, {}) channel {}: {} expected {}", x, y,
+                                                 c, v, expected[c]);
                 }
             }
         }
@@ -75,13 +76,15 @@ TEST(PathIntegrator, ConvexSphereReflectsAlbedoTimesBackground) {
 TEST(PathIntegrator, DiffusePlaneUnderPointLight) {
     const int res = 64;
     const float fov = 60.0f, height = 2.0f, camera_height = 3.0f, rho = 0.5f, intensity = 10.0f;
-    const Image image = render_lua(fmt::format(R"(
+    const Image image =
+        render_lua(fmt::format(R"(
         glint.camera{{ eye = {{0, {}, 0}}, look_at = {{0, 0, 0}}, up = {{0, 0, -1}}, fov = {} }}
         glint.render{{ width = {}, height = {}, spp = 4 }}
         glint.point_light{{ position = {{0, {}, 0}}, intensity = {} }}
         glint.quad{{ vertices = {{ {{-50, 0, 50}}, {{50, 0, 50}}, {{50, 0, -50}}, {{-50, 0, -50}} }},
                      material = glint.diffuse{{ reflectance = {} }} }}
-    )", camera_height, fov, res, res, height, intensity, rho));
+    )",
+                               camera_height, fov, res, res, height, intensity, rho));
 
     const float tan_half = std::tan(fov * 0.5f * kPi / 180.0f);
     int checked = 0;
@@ -113,7 +116,8 @@ Image render_slab(float absorption, float thickness) {
                     material = glint.dielectric{{ ior = 1.5, absorption = {} }} }}
         glint.quad{{ vertices = {{ {{-500, -500, -5}}, {{500, -500, -5}}, {{500, 500, -5}}, {{-500, 500, -5}} }},
                      material = glint.emissive{{ radiance = 1 }} }}
-    )", -thickness, absorption));
+    )",
+                                  -thickness, absorption));
 }
 
 }  // namespace
@@ -217,7 +221,8 @@ TEST(PathIntegrator, LightAndBsdfSamplingConvergeToTheSameImage) {
         const Image fine = render_cornell_with(variant, res, 256, 2);
         const double error_coarse = compare_images(coarse, reference).rel_mse;
         const double error_fine = compare_images(fine, reference).rel_mse;
-        EXPECT_LT(error_fine, 0.5 * error_coarse) << variant << ": " << error_coarse << " -> " << error_fine;
+        EXPECT_LT(error_fine, 0.5 * error_coarse)
+            << variant << ": " << error_coarse << " -> " << error_fine;
         for (int c = 0; c < 3; ++c) {
             const double mean = mean_channel(fine, c, 0, 0, res, res);
             const double expected = mean_channel(reference, c, 0, 0, res, res);
@@ -242,7 +247,8 @@ TEST(PathIntegrator, PlaneUnderSphericalEmitterMatchesClosedFormForEveryStrategy
             glint.sphere{{ center = {{0, 1.5, 0}}, radius = {}, material = glint.emissive{{ radiance = {} }} }}
             glint.quad{{ vertices = {{ {{-20, 0, 20}}, {{20, 0, 20}}, {{20, 0, -20}}, {{-20, 0, -20}} }},
                          material = glint.diffuse{{ reflectance = {} }} }}
-        )", res, res, variant, radius, radiance, rho));
+        )",
+                                                   res, res, variant, radius, radiance, rho));
         double measured_sum = 0.0, expected_sum = 0.0;
         int pixels = 0, far_off = 0;
         // The closed form at a film position, or nothing where the plane is not what is seen.
@@ -265,7 +271,8 @@ TEST(PathIntegrator, PlaneUnderSphericalEmitterMatchesClosedFormForEveryStrategy
                 double expected = 0.0;
                 bool plane_only = true;
                 for (int i = 0; i < kSub * kSub && plane_only; ++i) {
-                    const auto value = closed_form(Vec2(x + (i % kSub + 0.5f) / kSub, y + (i / kSub + 0.5f) / kSub));
+                    const auto value = closed_form(
+                        Vec2(x + (i % kSub + 0.5f) / kSub, y + (i / kSub + 0.5f) / kSub));
                     plane_only = value.has_value();
                     expected += value.value_or(0.0) / (kSub * kSub);
                 }

@@ -391,20 +391,26 @@ TEST(AreaLight, OneSidedEmitsOnlyFromTheFront) {
             EXPECT_NEAR(one_sided.pdf_li(above, on_light), s->pdf, 1e-4f * s->pdf);
             EXPECT_FALSE(s->is_delta);
         }
+        // Behind, also just behind the plane at a grazing angle.
+        const Vec3 grazing(6.0f, 1.0f, -0.05f);
         if (one_sided.sample_li(below, u, u_select)) ++back;
+        if (one_sided.sample_li(grazing, u, u_select)) ++back;
         if (two_sided.sample_li(above, u, u_select)) ++two_front;
         if (two_sided.sample_li(below, u, u_select)) ++two_back;
+        if (two_sided.sample_li(grazing, u, u_select)) ++two_back;
     }
     EXPECT_EQ(front, 1000);
     EXPECT_EQ(back, 0);
     EXPECT_EQ(two_front, 1000);
-    EXPECT_EQ(two_back, 1000);
+    EXPECT_EQ(two_back, 2000);
 
     SurfaceInteraction si;
     si.p = Vec3(0.1f, 0.2f, 0.0f);
     si.ng = Vec3(0, 0, 1);
     EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, 1.0f))) == radiance);
     EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, -1.0f))).is_black());
+    EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(1.0f, 0.0f, -0.01f))).is_black());
+    EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(1.0f, 0.0f, 0.01f))) == radiance);
     EXPECT_TRUE(two_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, -1.0f))) == radiance);
     // Power: radiance times pi times area, per emitting side.
     EXPECT_NEAR(one_sided.power().r, 2.0f * kPi * 4.0f, 1e-4f);

@@ -72,8 +72,10 @@ TEST(LuaLoader, GroupsAreInstancedWithNestedTransforms) {
 
 TEST(LuaLoader, GroupCannotContainItself) {
     const std::string message = error_of([] {
-        build("local a = glint.group()\nlocal b = glint.group()\na:box{ material = glint.diffuse{} }\n"
-              "a:place(b)\nb:place(a)\nglint.place(a)\n");
+        build(
+            "local a = glint.group()\nlocal b = glint.group()\na:box{ material = glint.diffuse{} "
+            "}\n"
+            "a:place(b)\nb:place(a)\nglint.place(a)\n");
     });
     EXPECT_NE(message.find("contain itself"), std::string::npos) << message;
 }
@@ -95,7 +97,9 @@ TEST(LuaLoader, InlineMeshUsesOneBasedIndices) {
     )");
     EXPECT_EQ(scene->stats().triangles, 1u);
     const std::string message = error_of([] {
-        build("glint.mesh{ vertices = {{0,0,0}, {1,0,0}, {0,1,0}}, indices = {0, 1, 2}, material = glint.diffuse{} }");
+        build(
+            "glint.mesh{ vertices = {{0,0,0}, {1,0,0}, {0,1,0}}, indices = {0, 1, 2}, material = "
+            "glint.diffuse{} }");
     });
     EXPECT_NE(message.find("scene.lua:1"), std::string::npos) << message;
 }

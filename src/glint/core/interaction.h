@@ -13,15 +13,15 @@ class Material;
 class Light;
 
 struct SurfaceInteraction {
-    Vec3 p;             // world-space hit point
-    Vec3 ng;            // geometric normal, unit length, pointing to the shape's outside
-    Frame shading;      // shading frame, normal on the same side as ng
+    Vec3 p;         // world-space hit point
+    Vec3 ng;        // geometric normal, unit length, pointing to the shape's outside
+    Frame shading;  // shading frame, normal on the same side as ng
     Vec2 uv;
     Vec3 dpdu, dpdv;
-    float t = 0.0f;     // ray parameter of the hit
-    Vec3 wo;            // direction towards the ray origin, unit length
+    float t = 0.0f;          // ray parameter of the hit
+    Vec3 wo;                 // direction towards the ray origin, unit length
     bool front_face = true;  // the ray arrived on the side ng points to
-    int part = 0;            // which part of the shape was hit (CSG primitives have their own materials)
+    int part = 0;  // which part of the shape was hit (CSG primitives have their own materials)
     const Material* material = nullptr;
     const Light* area_light = nullptr;  // set when the surface emits
 

@@ -9,14 +9,22 @@ namespace glint {
 
 const char* param_type_name(const ParamValue& value) {
     switch (value.index()) {
-        case 0: return "a boolean";
-        case 1: return "a number";
-        case 2: return "a string";
-        case 3: return "a list of numbers";
-        case 4: return "a list of lists of numbers";
-        case 5: return "a list of strings";
-        case 6: return "a transform";
-        default: return std::get<ObjectRef>(value).kind.c_str();
+        case 0:
+            return "a boolean";
+        case 1:
+            return "a number";
+        case 2:
+            return "a string";
+        case 3:
+            return "a list of numbers";
+        case 4:
+            return "a list of lists of numbers";
+        case 5:
+            return "a list of strings";
+        case 6:
+            return "a transform";
+        default:
+            return std::get<ObjectRef>(value).kind.c_str();
     }
 }
 
@@ -112,7 +120,8 @@ Vec3 Params::get_vec3(const std::string& name, const Vec3& fallback) const {
 }
 
 Vec3 Params::get_vec3(const std::string& name) const {
-    if (!has(name)) fail(fmt::format("missing required parameter '{}' (a list of 3 numbers)", name));
+    if (!has(name))
+        fail(fmt::format("missing required parameter '{}' (a list of 3 numbers)", name));
     return get_vec3(name, Vec3(0.0f));
 }
 
@@ -137,7 +146,8 @@ std::vector<glm::vec<N, float>> to_vectors(const Params& params, const std::stri
         glm::vec<N, float> v;
         for (int k = 0; k < N; ++k) {
             v[k] = static_cast<float>(rows[i][k]);
-            if (!std::isfinite(v[k])) params.fail(fmt::format("entry {} of '{}' is not finite", i + 1, name));
+            if (!std::isfinite(v[k]))
+                params.fail(fmt::format("entry {} of '{}' is not finite", i + 1, name));
         }
         result.push_back(v);
     }
@@ -148,14 +158,16 @@ std::vector<glm::vec<N, float>> to_vectors(const Params& params, const std::stri
 std::vector<Vec3> Params::get_vec3_list(const std::string& name) const {
     const ParamValue* v = lookup(name);
     if (!v) return {};
-    if (auto rows = std::get_if<std::vector<std::vector<double>>>(v)) return to_vectors<3>(*this, name, *rows);
+    if (auto rows = std::get_if<std::vector<std::vector<double>>>(v))
+        return to_vectors<3>(*this, name, *rows);
     wrong_type(name, "a list of {x, y, z} points");
 }
 
 std::vector<Vec2> Params::get_vec2_list(const std::string& name) const {
     const ParamValue* v = lookup(name);
     if (!v) return {};
-    if (auto rows = std::get_if<std::vector<std::vector<double>>>(v)) return to_vectors<2>(*this, name, *rows);
+    if (auto rows = std::get_if<std::vector<std::vector<double>>>(v))
+        return to_vectors<2>(*this, name, *rows);
     wrong_type(name, "a list of {u, v} pairs");
 }
 

@@ -19,14 +19,15 @@ struct ObjectRef {
     int index = -1;
 };
 
-using ParamValue = std::variant<bool, double, std::string, std::vector<double>,
-                                std::vector<std::vector<double>>, std::vector<std::string>,
-                                Transform, ObjectRef>;
+using ParamValue =
+    std::variant<bool, double, std::string, std::vector<double>, std::vector<std::vector<double>>,
+                 std::vector<std::string>, Transform, ObjectRef>;
 
 class Params {
 public:
     Params() = default;
-    Params(std::string type, std::string where) : m_type(std::move(type)), m_where(std::move(where)) {}
+    Params(std::string type, std::string where)
+        : m_type(std::move(type)), m_where(std::move(where)) {}
 
     void set(const std::string& name, ParamValue value) { m_values[name] = std::move(value); }
     bool has(const std::string& name) const;

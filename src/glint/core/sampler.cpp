@@ -8,9 +8,8 @@ namespace glint {
 namespace {
 
 uint64_t pixel_sample_key(uint64_t seed, Vec2i pixel, int index) {
-    const uint64_t packed_pixel =
-        (static_cast<uint64_t>(static_cast<uint32_t>(pixel.x)) << 32) |
-        static_cast<uint32_t>(pixel.y);
+    const uint64_t packed_pixel = (static_cast<uint64_t>(static_cast<uint32_t>(pixel.x)) << 32) |
+                                  static_cast<uint32_t>(pixel.y);
     return hash_combine(hash_combine(mix_bits(seed), packed_pixel), static_cast<uint64_t>(index));
 }
 

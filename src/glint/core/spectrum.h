@@ -16,9 +16,24 @@ struct Spectrum {
     float operator[](int i) const { return i == 0 ? r : (i == 1 ? g : b); }
     float& operator[](int i) { return i == 0 ? r : (i == 1 ? g : b); }
 
-    Spectrum& operator+=(const Spectrum& o) { r += o.r; g += o.g; b += o.b; return *this; }
-    Spectrum& operator*=(const Spectrum& o) { r *= o.r; g *= o.g; b *= o.b; return *this; }
-    Spectrum& operator*=(float s) { r *= s; g *= s; b *= s; return *this; }
+    Spectrum& operator+=(const Spectrum& o) {
+        r += o.r;
+        g += o.g;
+        b += o.b;
+        return *this;
+    }
+    Spectrum& operator*=(const Spectrum& o) {
+        r *= o.r;
+        g *= o.g;
+        b *= o.b;
+        return *this;
+    }
+    Spectrum& operator*=(float s) {
+        r *= s;
+        g *= s;
+        b *= s;
+        return *this;
+    }
     Spectrum& operator/=(float s) { return *this *= 1.0f / s; }
 
     bool is_black() const { return r == 0.0f && g == 0.0f && b == 0.0f; }
@@ -29,20 +44,32 @@ struct Spectrum {
     float luminance() const { return 0.2126f * r + 0.7152f * g + 0.0722f * b; }
 };
 
-inline Spectrum operator+(Spectrum a, const Spectrum& b) { return a += b; }
+inline Spectrum operator+(Spectrum a, const Spectrum& b) {
+    return a += b;
+}
 inline Spectrum operator-(const Spectrum& a, const Spectrum& b) {
     return {a.r - b.r, a.g - b.g, a.b - b.b};
 }
-inline Spectrum operator*(Spectrum a, const Spectrum& b) { return a *= b; }
-inline Spectrum operator*(Spectrum a, float s) { return a *= s; }
-inline Spectrum operator*(float s, Spectrum a) { return a *= s; }
-inline Spectrum operator/(Spectrum a, float s) { return a /= s; }
+inline Spectrum operator*(Spectrum a, const Spectrum& b) {
+    return a *= b;
+}
+inline Spectrum operator*(Spectrum a, float s) {
+    return a *= s;
+}
+inline Spectrum operator*(float s, Spectrum a) {
+    return a *= s;
+}
+inline Spectrum operator/(Spectrum a, float s) {
+    return a /= s;
+}
 inline Spectrum operator/(const Spectrum& a, const Spectrum& b) {
     return {b.r != 0 ? a.r / b.r : 0.0f, b.g != 0 ? a.g / b.g : 0.0f, b.b != 0 ? a.b / b.b : 0.0f};
 }
 inline bool operator==(const Spectrum& a, const Spectrum& b) {
     return a.r == b.r && a.g == b.g && a.b == b.b;
 }
-inline Spectrum exp(const Spectrum& s) { return {std::exp(s.r), std::exp(s.g), std::exp(s.b)}; }
+inline Spectrum exp(const Spectrum& s) {
+    return {std::exp(s.r), std::exp(s.g), std::exp(s.b)};
+}
 
 }  // namespace glint

@@ -21,7 +21,8 @@ Accel::~Accel() {
 void Accel::check_device(const char* what) const {
     const RTCError error = rtcGetDeviceError(m_device);
     if (error != RTC_ERROR_NONE) {
-        throw Error(fmt::format("Embree failed while {} (error code {})", what, static_cast<int>(error)));
+        throw Error(
+            fmt::format("Embree failed while {} (error code {})", what, static_cast<int>(error)));
     }
 }
 
@@ -34,7 +35,8 @@ int Accel::add_prototype() {
 
 unsigned Accel::add_shape(int prototype, const Shape& shape) {
     RTCGeometry geometry = shape.create_embree_geometry(m_device);
-    const unsigned id = rtcAttachGeometry(prototype < 0 ? m_world : m_prototypes.at(prototype), geometry);
+    const unsigned id =
+        rtcAttachGeometry(prototype < 0 ? m_world : m_prototypes.at(prototype), geometry);
     rtcReleaseGeometry(geometry);
     check_device("adding a shape");
     return id;
@@ -113,6 +115,8 @@ bool Accel::occluded(const Ray& ray) const {
     return r.tfar < 0.0f;
 }
 
-const char* Accel::embree_version() { return RTC_VERSION_STRING; }
+const char* Accel::embree_version() {
+    return RTC_VERSION_STRING;
+}
 
 }  // namespace glint

@@ -10,7 +10,9 @@
 namespace glint {
 namespace {
 
-Vec3 triangle_cross(const Vec3& a, const Vec3& b, const Vec3& c) { return glm::cross(b - a, c - a); }
+Vec3 triangle_cross(const Vec3& a, const Vec3& b, const Vec3& c) {
+    return glm::cross(b - a, c - a);
+}
 
 // Uniform-by-area sampling over the world-space triangles of a placed mesh.
 class MeshSampler final : public ShapeSampler {
@@ -39,7 +41,8 @@ public:
     ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override {
         const double target = u_select * static_cast<double>(m_area);
         auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
-        const size_t tri = std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
+        const size_t tri =
+            std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
         const Vec3* v = &m_vertices[3 * tri];
         const Vec2 b = warp::square_to_uniform_triangle(u);
         ShapeSample s;
@@ -97,9 +100,9 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
                                         m_name, t / 3 + 1, data.indices[t + k] + 1, vertex_count));
             }
         }
-        const Vec3 n = triangle_cross(data.positions[data.indices[t]],
-                                      data.positions[data.indices[t + 1]],
-                                      data.positions[data.indices[t + 2]]);
+        const Vec3 n =
+            triangle_cross(data.positions[data.indices[t]], data.positions[data.indices[t + 1]],
+                           data.positions[data.indices[t + 2]]);
         const float len2 = glm::dot(n, n);
         if (!(len2 > 0.0f) || !std::isfinite(len2)) continue;  // degenerate: no normal
         kept.insert(kept.end(), data.indices.begin() + t, data.indices.begin() + t + 3);
@@ -110,9 +113,9 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
 
 RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
-        geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float),
-        m_data.positions.size()));
+    auto* vertices = static_cast<float*>(
+        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                3 * sizeof(float), m_data.positions.size()));
     for (size_t i = 0; i < m_data.positions.size(); ++i) {
         std::memcpy(vertices + 3 * i, &m_data.positions[i], 3 * sizeof(float));
     }
@@ -169,7 +172,8 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
 }
 
 std::unique_ptr<ShapeSampler> TriangleMesh::make_sampler(const Transform& to_world) const {
-    if (m_data.indices.empty()) throw Error(fmt::format("mesh '{}' has no triangles to emit from", m_name));
+    if (m_data.indices.empty())
+        throw Error(fmt::format("mesh '{}' has no triangles to emit from", m_name));
     return std::make_unique<MeshSampler>(m_data, to_world);
 }
 
@@ -196,14 +200,17 @@ MeshData make_box_mesh(const Vec3& lo, const Vec3& hi) {
         };
         const uint32_t base = static_cast<uint32_t>(mesh.positions.size());
         if (positive) {
-            mesh.positions.insert(mesh.positions.end(), {corner(lo[a], lo[b]), corner(hi[a], lo[b]),
-                                                         corner(hi[a], hi[b]), corner(lo[a], hi[b])});
+            mesh.positions.insert(mesh.positions.end(),
+                                  {corner(lo[a], lo[b]), corner(hi[a], lo[b]), corner(hi[a], hi[b]),
+                                   corner(lo[a], hi[b])});
         } else {
-            mesh.positions.insert(mesh.positions.end(), {corner(lo[a], lo[b]), corner(lo[a], hi[b]),
-                                                         corner(hi[a], hi[b]), corner(hi[a], lo[b])});
+            mesh.positions.insert(mesh.positions.end(),
+                                  {corner(lo[a], lo[b]), corner(lo[a], hi[b]), corner(hi[a], hi[b]),
+                                   corner(hi[a], lo[b])});
         }
         mesh.uvs.insert(mesh.uvs.end(), {Vec2(0, 0), Vec2(1, 0), Vec2(1, 1), Vec2(0, 1)});
-        mesh.indices.insert(mesh.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+        mesh.indices.insert(mesh.indices.end(),
+                            {base, base + 1, base + 2, base, base + 2, base + 3});
     };
     for (int axis = 0; axis < 3; ++axis) {
         add_face(axis, false);
@@ -218,7 +225,8 @@ void transform_mesh(MeshData& mesh, const Transform& xf) {
     for (auto& n : mesh.normals) n = glm::normalize(xf.normal(n));
     // A mirroring transform reverses the winding; restore it so normals still point out.
     if (xf.swaps_handedness()) {
-        for (size_t t = 0; t < mesh.indices.size(); t += 3) std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+        for (size_t t = 0; t < mesh.indices.size(); t += 3)
+            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
     }
 }
 

@@ -9,8 +9,8 @@ namespace glint {
 
 struct MeshData {
     std::vector<Vec3> positions;
-    std::vector<Vec3> normals;  // per vertex, optional
-    std::vector<Vec2> uvs;      // per vertex, optional
+    std::vector<Vec3> normals;      // per vertex, optional
+    std::vector<Vec2> uvs;          // per vertex, optional
     std::vector<uint32_t> indices;  // three per triangle
 };
 

@@ -15,8 +15,8 @@ namespace glint {
 // What Embree reported for a hit, enough for the shape to rebuild the full interaction.
 struct HitRecord {
     float t = kInfinity;
-    unsigned top_geometry = RTC_INVALID_GEOMETRY_ID;   // geometry id in the world scene
-    unsigned local_geometry = RTC_INVALID_GEOMETRY_ID; // geometry id inside an instance
+    unsigned top_geometry = RTC_INVALID_GEOMETRY_ID;    // geometry id in the world scene
+    unsigned local_geometry = RTC_INVALID_GEOMETRY_ID;  // geometry id inside an instance
     unsigned primitive = 0;
     Vec2 barycentric{0.0f};
     Vec3 normal{0.0f};  // as the geometry reported it (user geometry uses it to pass data)
@@ -26,8 +26,8 @@ struct HitRecord {
 // A point drawn on an emitting surface, in world space.
 struct ShapeSample {
     Vec3 p;
-    Vec3 n;           // unit surface normal at p (outward)
-    float pdf = 0.0f; // solid-angle density with respect to the reference point
+    Vec3 n;            // unit surface normal at p (outward)
+    float pdf = 0.0f;  // solid-angle density with respect to the reference point
 };
 
 // World-space sampling of a placed shape, used by area lights. Densities are in solid

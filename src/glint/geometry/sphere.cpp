@@ -18,8 +18,10 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
-        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i),
+                     RTCRayN_org_z(rays, n, i));
+        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i),
+                     RTCRayN_dir_z(rays, n, i));
         float t0, t1;
         if (!sphere->intersect_interval(o, d, t0, t1)) continue;
         const float t_near = RTCRayN_tnear(rays, n, i);
@@ -45,8 +47,10 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
-        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i),
+                     RTCRayN_org_z(rays, n, i));
+        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i),
+                     RTCRayN_dir_z(rays, n, i));
         float t0, t1;
         if (!sphere->intersect_interval(o, d, t0, t1)) continue;
         const float t_near = RTCRayN_tnear(rays, n, i);
@@ -132,7 +136,8 @@ void Sphere::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInter
 std::unique_ptr<ShapeSampler> Sphere::make_sampler(const Transform& to_world) const {
     const Transform full = to_world * m_to_parent;
     const Vec3 center = full.point(Vec3(0.0f));
-    const Vec3 axes(glm::length(full.vector(Vec3(1, 0, 0))), glm::length(full.vector(Vec3(0, 1, 0))),
+    const Vec3 axes(glm::length(full.vector(Vec3(1, 0, 0))),
+                    glm::length(full.vector(Vec3(0, 1, 0))),
                     glm::length(full.vector(Vec3(0, 0, 1))));
     if (max_component(axes) > 1.0001f * min_component(axes)) {
         throw Error("an emissive sphere cannot be scaled non-uniformly");
@@ -177,7 +182,8 @@ ShapeSample SphereSampler::sample(const Vec3& ref, const Vec2& u, float) const {
 float SphereSampler::pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
     const Vec3 to_center = m_center - ref;
     const float dist2 = glm::dot(to_center, to_center);
-    if (dist2 <= m_radius * m_radius * 1.0001f) return area_to_solid_angle_pdf(1.0f / area(), ref, p, n);
+    if (dist2 <= m_radius * m_radius * 1.0001f)
+        return area_to_solid_angle_pdf(1.0f / area(), ref, p, n);
     return 1.0f / (2.0f * kPi * one_minus_cos_cone(m_radius * m_radius / dist2));
 }
 

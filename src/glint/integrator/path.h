@@ -9,9 +9,9 @@ namespace glint {
 // The two single-strategy variants exist to validate the combination: all three must
 // converge to the same image (tests/integrator/test_path.cpp).
 enum class DirectLighting {
-    kMis,       // "path": light sampling and BSDF sampling, power heuristic
-    kLightOnly, // "path_light": next-event estimation only (emitters found by BSDF rays ignored)
-    kBsdfOnly,  // "path_bsdf": no light sampling; point and spot lights are invisible
+    kMis,        // "path": light sampling and BSDF sampling, power heuristic
+    kLightOnly,  // "path_light": next-event estimation only (emitters found by BSDF rays ignored)
+    kBsdfOnly,   // "path_bsdf": no light sampling; point and spot lights are invisible
 };
 
 class PathIntegrator final : public TileIntegrator {

@@ -2,7 +2,8 @@
 
 namespace glint {
 
-std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u, float u_select) const {
+std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
+                                                float u_select) const {
     const ShapeSample s = m_shape->sample(ref, u, u_select);
     const Vec3 d = s.p - ref;
     const float dist2 = glm::dot(d, d);
@@ -20,7 +21,9 @@ float AreaLight::pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) con
     return m_shape->pdf(ref, on_light.p, on_light.ng);
 }
 
-Spectrum AreaLight::le(const SurfaceInteraction& si, const Vec3& w) const { return emitted(si.ng, w); }
+Spectrum AreaLight::le(const SurfaceInteraction& si, const Vec3& w) const {
+    return emitted(si.ng, w);
+}
 
 Spectrum AreaLight::power() const {
     return m_radiance * (kPi * m_shape->area() * (m_two_sided ? 2.0f : 1.0f));

@@ -12,7 +12,8 @@ public:
     AreaLight(std::unique_ptr<ShapeSampler> shape, const Spectrum& radiance, bool two_sided)
         : m_shape(std::move(shape)), m_radiance(radiance), m_two_sided(two_sided) {}
 
-    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
+                                         float u_select) const override;
     float pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const override;
     Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
     Spectrum power() const override;

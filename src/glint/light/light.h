@@ -9,10 +9,10 @@
 namespace glint {
 
 struct LightSample {
-    Vec3 wi;          // unit direction from the reference point towards the light
-    Spectrum L;       // radiance arriving from that direction (intensity/r^2 for delta lights)
-    float pdf = 0.0f; // solid-angle density, or 1 for delta lights
-    Vec3 p;           // the point on the light, target of the shadow ray
+    Vec3 wi;           // unit direction from the reference point towards the light
+    Spectrum L;        // radiance arriving from that direction (intensity/r^2 for delta lights)
+    float pdf = 0.0f;  // solid-angle density, or 1 for delta lights
+    Vec3 p;            // the point on the light, target of the shadow ray
     bool is_delta = false;
 };
 

@@ -5,7 +5,8 @@
 namespace glint {
 namespace {
 
-std::optional<LightSample> sample_point(const Vec3& position, const Vec3& ref, const Spectrum& intensity) {
+std::optional<LightSample> sample_point(const Vec3& position, const Vec3& ref,
+                                        const Spectrum& intensity) {
     const Vec3 d = position - ref;
     const float dist2 = glm::dot(d, d);
     if (!(dist2 > 0.0f)) return std::nullopt;
@@ -51,13 +52,15 @@ std::optional<LightSample> SpotLight::sample_li(const Vec3& ref, const Vec2&, fl
 
 Spectrum SpotLight::power() const {
     // Full intensity inside the inner cone, and about half of it across the falloff band.
-    return m_intensity * 2.0f * kPi * ((1.0f - m_cos_falloff_start) + 0.5f * (m_cos_falloff_start - m_cos_cone));
+    return m_intensity * 2.0f * kPi *
+           ((1.0f - m_cos_falloff_start) + 0.5f * (m_cos_falloff_start - m_cos_cone));
 }
 
 std::unique_ptr<Light> make_point_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
     const Spectrum intensity = params.get_spectrum("intensity");
-    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f) params.fail("'intensity' must not be negative");
+    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
+        params.fail("'intensity' must not be negative");
     return std::make_unique<PointLight>(position, intensity);
 }
 
@@ -65,14 +68,16 @@ std::unique_ptr<Light> make_spot_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
     const Vec3 target = params.get_vec3("look_at");
     const Spectrum intensity = params.get_spectrum("intensity");
-    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f) params.fail("'intensity' must not be negative");
+    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
+        params.fail("'intensity' must not be negative");
     const float cone = params.get_float("cone_angle", 30.0f);
     const float falloff_start = params.get_float("falloff_start", cone * 0.8f);
     if (!(cone > 0.0f && cone <= 90.0f)) params.fail("'cone_angle' must be in (0, 90] degrees");
     if (!(falloff_start >= 0.0f && falloff_start <= cone)) {
         params.fail("'falloff_start' must be between 0 and 'cone_angle'");
     }
-    if (glm::length(target - position) <= 0.0f) params.fail("'look_at' must differ from 'position'");
+    if (glm::length(target - position) <= 0.0f)
+        params.fail("'look_at' must differ from 'position'");
     return std::make_unique<SpotLight>(position, target - position, intensity, cone, falloff_start);
 }
 

@@ -9,8 +9,10 @@ namespace glint {
 // Isotropic point light of a given intensity (W/sr).
 class PointLight final : public Light {
 public:
-    PointLight(const Vec3& position, const Spectrum& intensity) : m_position(position), m_intensity(intensity) {}
-    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
+    PointLight(const Vec3& position, const Spectrum& intensity)
+        : m_position(position), m_intensity(intensity) {}
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
+                                         float u_select) const override;
     Spectrum power() const override { return 4.0f * kPi * m_intensity; }
     bool is_delta() const override { return true; }
 
@@ -24,7 +26,8 @@ class SpotLight final : public Light {
 public:
     SpotLight(const Vec3& position, const Vec3& direction, const Spectrum& intensity,
               float cone_degrees, float falloff_start_degrees);
-    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
+                                         float u_select) const override;
     Spectrum power() const override;
     bool is_delta() const override { return true; }
     // Fraction of the intensity emitted in direction `w` (unit, away from the light).

@@ -53,7 +53,9 @@ public:
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const = 0;
     // Union of the flags of all lobes.
     virtual uint32_t flags() const = 0;
-    bool is_delta() const { return (flags() & ~(kBsdfReflection | kBsdfTransmission)) == kBsdfDelta; }
+    bool is_delta() const {
+        return (flags() & ~(kBsdfReflection | kBsdfTransmission)) == kBsdfDelta;
+    }
 
 protected:
     ~Bsdf() = default;  // not virtual: arena objects are never destroyed

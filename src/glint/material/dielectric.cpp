@@ -6,7 +6,8 @@ namespace {
 
 class DielectricMaterial final : public Material {
 public:
-    DielectricMaterial(float ior, const Spectrum& absorption) : m_ior(ior), m_absorption(absorption) {}
+    DielectricMaterial(float ior, const Spectrum& absorption)
+        : m_ior(ior), m_absorption(absorption) {}
     const Bsdf* bsdf(const SurfaceInteraction&, Arena& arena) const override {
         return arena.make<SmoothDielectricBsdf>(m_ior);
     }

@@ -20,7 +20,8 @@ private:
 
 std::unique_ptr<Material> make_diffuse_material(const Params& params) {
     const Spectrum reflectance = params.get_spectrum("reflectance", Spectrum(0.5f));
-    if (reflectance.max_value() > 1.0f || std::min({reflectance.r, reflectance.g, reflectance.b}) < 0.0f) {
+    if (reflectance.max_value() > 1.0f ||
+        std::min({reflectance.r, reflectance.g, reflectance.b}) < 0.0f) {
         params.fail("'reflectance' must lie in [0, 1] so the surface does not create energy");
     }
     return std::make_unique<DiffuseMaterial>(reflectance);

@@ -6,7 +6,8 @@ namespace {
 // A light source surface: emits, does not reflect.
 class EmissiveMaterial final : public Material {
 public:
-    EmissiveMaterial(const Spectrum& radiance, bool two_sided) : m_radiance(radiance), m_two_sided(two_sided) {}
+    EmissiveMaterial(const Spectrum& radiance, bool two_sided)
+        : m_radiance(radiance), m_two_sided(two_sided) {}
     const Bsdf* bsdf(const SurfaceInteraction&, Arena&) const override { return nullptr; }
     Spectrum emission() const override { return m_radiance; }
     bool emits_two_sided() const override { return m_two_sided; }
@@ -20,7 +21,8 @@ private:
 
 std::unique_ptr<Material> make_emissive_material(const Params& params) {
     const Spectrum radiance = params.get_spectrum("radiance");
-    if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f) params.fail("'radiance' must not be negative");
+    if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f)
+        params.fail("'radiance' must not be negative");
     return std::make_unique<EmissiveMaterial>(radiance, params.get_bool("two_sided", false));
 }
 

@@ -15,7 +15,8 @@ inline float fresnel_dielectric(float cos_theta_i, float eta) {
     if (sin2_t >= 1.0f) return 1.0f;  // total internal reflection
     const float cos_theta_t = safe_sqrt(1.0f - sin2_t);
     const float r_parallel = (eta * cos_theta_i - cos_theta_t) / (eta * cos_theta_i + cos_theta_t);
-    const float r_perpendicular = (cos_theta_i - eta * cos_theta_t) / (cos_theta_i + eta * cos_theta_t);
+    const float r_perpendicular =
+        (cos_theta_i - eta * cos_theta_t) / (cos_theta_i + eta * cos_theta_t);
     return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
 }
 
@@ -31,6 +32,8 @@ inline bool refract(const Vec3& wi, const Vec3& n, float eta, Vec3& wt) {
     return true;
 }
 
-inline Vec3 reflect(const Vec3& wo, const Vec3& n) { return -wo + 2.0f * glm::dot(wo, n) * n; }
+inline Vec3 reflect(const Vec3& wo, const Vec3& n) {
+    return -wo + 2.0f * glm::dot(wo, n) * n;
+}
 
 }  // namespace glint

@@ -1,7 +1,7 @@
 #pragma once
 // Scene-language names of the materials. A new material is one file plus one line here.
-#include <glint/material/material.h>
 #include <glint/core/params.h>
+#include <glint/material/material.h>
 
 #include <memory>
 #include <string>

@@ -42,8 +42,14 @@ private:
 };
 
 // Trigonometry of a direction expressed in a local frame (z = normal).
-inline float cos_theta(const Vec3& w) { return w.z; }
-inline float abs_cos_theta(const Vec3& w) { return std::abs(w.z); }
-inline bool same_hemisphere(const Vec3& a, const Vec3& b) { return a.z * b.z > 0.0f; }
+inline float cos_theta(const Vec3& w) {
+    return w.z;
+}
+inline float abs_cos_theta(const Vec3& w) {
+    return std::abs(w.z);
+}
+inline bool same_hemisphere(const Vec3& a, const Vec3& b) {
+    return a.z * b.z > 0.0f;
+}
 
 }  // namespace glint

@@ -24,14 +24,24 @@ inline constexpr float kInv2Pi = 0.5f / kPi;
 inline constexpr float kInv4Pi = 0.25f / kPi;
 inline constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-inline float max_component(const Vec3& v) { return std::max(v.x, std::max(v.y, v.z)); }
-inline float min_component(const Vec3& v) { return std::min(v.x, std::min(v.y, v.z)); }
-inline float length_squared(const Vec3& v) { return glm::dot(v, v); }
+inline float max_component(const Vec3& v) {
+    return std::max(v.x, std::max(v.y, v.z));
+}
+inline float min_component(const Vec3& v) {
+    return std::min(v.x, std::min(v.y, v.z));
+}
+inline float length_squared(const Vec3& v) {
+    return glm::dot(v, v);
+}
 inline bool is_finite(const Vec3& v) {
     return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
 }
-inline float safe_sqrt(float x) { return std::sqrt(std::max(0.0f, x)); }
-inline float sqr(float x) { return x * x; }
+inline float safe_sqrt(float x) {
+    return std::sqrt(std::max(0.0f, x));
+}
+inline float sqr(float x) {
+    return x * x;
+}
 
 // Flip `v` into the hemisphere of `reference`.
 inline Vec3 face_forward(const Vec3& v, const Vec3& reference) {

@@ -22,7 +22,9 @@ Vec3 square_to_cosine_hemisphere(const Vec2& u) {
     return Vec3(d.x, d.y, z);
 }
 
-float cosine_hemisphere_pdf(const Vec3& w) { return w.z > 0.0f ? w.z * kInvPi : 0.0f; }
+float cosine_hemisphere_pdf(const Vec3& w) {
+    return w.z > 0.0f ? w.z * kInvPi : 0.0f;
+}
 
 Vec3 square_to_uniform_hemisphere(const Vec2& u) {
     const float z = u.x;
@@ -31,7 +33,9 @@ Vec3 square_to_uniform_hemisphere(const Vec2& u) {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
-float uniform_hemisphere_pdf(const Vec3& w) { return w.z > 0.0f ? kInv2Pi : 0.0f; }
+float uniform_hemisphere_pdf(const Vec3& w) {
+    return w.z > 0.0f ? kInv2Pi : 0.0f;
+}
 
 Vec3 square_to_uniform_sphere(const Vec2& u) {
     const float z = 1.0f - 2.0f * u.x;
@@ -40,7 +44,9 @@ Vec3 square_to_uniform_sphere(const Vec2& u) {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
-float uniform_sphere_pdf() { return kInv4Pi; }
+float uniform_sphere_pdf() {
+    return kInv4Pi;
+}
 
 Vec3 square_to_uniform_cone(const Vec2& u, float cos_theta_max) {
     const float cos_theta = 1.0f - u.x * (1.0f - cos_theta_max);

@@ -53,13 +53,15 @@ private:
                 if (p.type() == "solid") {
                     BuiltSolid built = build_solid(m_desc, p.get_ref("solid", "solid").index, p,
                                                    m_scene->m_materials, m_settings.csg_shortcuts);
-                    m_group_shapes[g].push_back({built.shape.get(), std::move(built.part_materials), &p});
+                    m_group_shapes[g].push_back(
+                        {built.shape.get(), std::move(built.part_materials), &p});
                     m_scene->m_shapes.push_back(std::move(built.shape));
                     continue;
                 }
                 const ObjectRef ref = p.get_ref("material", "material");
                 auto shape = make_shape(p, m_desc.directory);
-                m_group_shapes[g].push_back({shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
+                m_group_shapes[g].push_back(
+                    {shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
                 m_scene->m_shapes.push_back(std::move(shape));
             }
         }
@@ -74,7 +76,8 @@ private:
             entry.light = make_area_light(use, Transform());
             count_shape(use, Transform());
         }
-        for (const InstanceDesc& instance : m_desc.groups[0].instances) place(instance, Transform(), path);
+        for (const InstanceDesc& instance : m_desc.groups[0].instances)
+            place(instance, Transform(), path);
     }
 
     // Places group `instance.group` at `parent * instance.transform`, then its own children.
@@ -82,7 +85,8 @@ private:
     void place(const InstanceDesc& instance, const Transform& parent, std::vector<int>& path) {
         const int g = instance.group;
         for (int ancestor : path) {
-            if (ancestor == g) throw Error(fmt::format("{}: a group cannot contain itself", instance.where));
+            if (ancestor == g)
+                throw Error(fmt::format("{}: a group cannot contain itself", instance.where));
         }
         const Transform to_world = parent * instance.transform;
         if (!m_group_shapes[g].empty()) {

@@ -22,7 +22,7 @@ struct RenderSettings {
     float exposure = 0.0f;       // stops, applied to PNG output
     bool aovs = false;           // albedo/normal/depth channels in EXR output
     std::vector<std::string> outputs;
-    int threads = 0;  // 0 = all cores
+    int threads = 0;            // 0 = all cores
     bool csg_shortcuts = true;  // bounding-box pruning inside CSG trees
     // Where the integrator, sampler and filter names came from, for error messages.
     std::string where = "render settings";

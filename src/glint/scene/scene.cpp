@@ -10,7 +10,8 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
     if (hit->instanced()) {
         const Geometry& geometry = m_group_geometry[entry.group][hit->local_geometry];
         const Transform to_local = entry.to_world.inverse();
-        const Ray local_ray{to_local.point(ray.origin), to_local.vector(ray.direction), ray.t_min, ray.t_max};
+        const Ray local_ray{to_local.point(ray.origin), to_local.vector(ray.direction), ray.t_min,
+                            ray.t_max};
         geometry.shape->fill_interaction(local_ray, *hit, si);
         const Transform& xf = entry.to_world;
         si.p = xf.point(si.p);

@@ -42,7 +42,8 @@ private:
         std::vector<const Material*> materials;  // one per part of the shape
 
         const Material* material(int part) const {
-            return static_cast<size_t>(part) < materials.size() ? materials[part] : materials.front();
+            return static_cast<size_t>(part) < materials.size() ? materials[part]
+                                                                : materials.front();
         }
     };
     // One entry per geometry id of the world scene: a root shape or a group instance.

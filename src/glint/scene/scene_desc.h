@@ -33,9 +33,9 @@ struct SceneDesc {
     std::optional<Params> camera;
     std::optional<Params> render;
     std::optional<Params> background;
-    std::vector<Params> materials;  // ObjectRef{"material", i} indexes this
-    std::vector<Params> lights;     // non-shape lights: point_light, spot_light
-    std::vector<SolidDesc> solids;  // ObjectRef{"solid", i} indexes this
+    std::vector<Params> materials;               // ObjectRef{"material", i} indexes this
+    std::vector<Params> lights;                  // non-shape lights: point_light, spot_light
+    std::vector<SolidDesc> solids;               // ObjectRef{"solid", i} indexes this
     std::vector<GroupDesc> groups{GroupDesc{}};  // groups[0] is the world (root) group
     std::string directory;  // where the script lives; relative file names start here
 };

@@ -33,7 +33,8 @@ std::unique_ptr<Shape> make_sphere(const Params& params, const std::string&) {
 std::unique_ptr<Shape> make_box(const Params& params, const std::string&) {
     const Vec3 lo = params.get_vec3("min", Vec3(-1.0f));
     const Vec3 hi = params.get_vec3("max", Vec3(1.0f));
-    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) params.fail("'min' must be below 'max' on every axis");
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        params.fail("'min' must be below 'max' on every axis");
     return mesh_shape(params, "box", make_box_mesh(lo, hi));
 }
 

@@ -23,15 +23,43 @@ double positive(const Params& p, const char* name) {
 
 const std::map<std::string, QuadricFactory>& quadric_factories() {
     static const std::map<std::string, QuadricFactory> table = {
-        {"ellipsoid", [](const Params& p) { return quadric_forms::ellipsoid(positive(p, "a"), positive(p, "b"), positive(p, "c")); }},
-        {"hyperboloid_one_sheet", [](const Params& p) { return quadric_forms::hyperboloid_one_sheet(positive(p, "a"), positive(p, "b"), positive(p, "c")); }},
-        {"hyperboloid_two_sheets", [](const Params& p) { return quadric_forms::hyperboloid_two_sheets(positive(p, "a"), positive(p, "b"), positive(p, "c")); }},
-        {"elliptic_cone", [](const Params& p) { return quadric_forms::elliptic_cone(positive(p, "a"), positive(p, "b"), positive(p, "c")); }},
-        {"elliptic_paraboloid", [](const Params& p) { return quadric_forms::elliptic_paraboloid(positive(p, "a"), positive(p, "c")); }},
-        {"hyperbolic_paraboloid", [](const Params& p) { return quadric_forms::hyperbolic_paraboloid(positive(p, "a"), positive(p, "c")); }},
-        {"elliptic_cylinder", [](const Params& p) { return quadric_forms::elliptic_cylinder(positive(p, "a"), positive(p, "c")); }},
-        {"hyperbolic_cylinder", [](const Params& p) { return quadric_forms::hyperbolic_cylinder(positive(p, "a"), positive(p, "c")); }},
-        {"parabolic_cylinder", [](const Params& p) { return quadric_forms::parabolic_cylinder(positive(p, "a")); }},
+        {"ellipsoid",
+         [](const Params& p) {
+             return quadric_forms::ellipsoid(positive(p, "a"), positive(p, "b"), positive(p, "c"));
+         }},
+        {"hyperboloid_one_sheet",
+         [](const Params& p) {
+             return quadric_forms::hyperboloid_one_sheet(positive(p, "a"), positive(p, "b"),
+                                                         positive(p, "c"));
+         }},
+        {"hyperboloid_two_sheets",
+         [](const Params& p) {
+             return quadric_forms::hyperboloid_two_sheets(positive(p, "a"), positive(p, "b"),
+                                                          positive(p, "c"));
+         }},
+        {"elliptic_cone",
+         [](const Params& p) {
+             return quadric_forms::elliptic_cone(positive(p, "a"), positive(p, "b"),
+                                                 positive(p, "c"));
+         }},
+        {"elliptic_paraboloid",
+         [](const Params& p) {
+             return quadric_forms::elliptic_paraboloid(positive(p, "a"), positive(p, "c"));
+         }},
+        {"hyperbolic_paraboloid",
+         [](const Params& p) {
+             return quadric_forms::hyperbolic_paraboloid(positive(p, "a"), positive(p, "c"));
+         }},
+        {"elliptic_cylinder",
+         [](const Params& p) {
+             return quadric_forms::elliptic_cylinder(positive(p, "a"), positive(p, "c"));
+         }},
+        {"hyperbolic_cylinder",
+         [](const Params& p) {
+             return quadric_forms::hyperbolic_cylinder(positive(p, "a"), positive(p, "c"));
+         }},
+        {"parabolic_cylinder",
+         [](const Params& p) { return quadric_forms::parabolic_cylinder(positive(p, "a")); }},
         {"quadric", nullptr},  // the general form, from 'matrix'
     };
     return table;
@@ -54,8 +82,9 @@ glm::dmat4 quadric_matrix(const Params& p) {
     for (int row = 0; row < 4; ++row) {
         for (int col = row + 1; col < 4; ++col) {
             if (std::abs(q[col][row] - q[row][col]) > 1e-9 * largest) {
-                p.fail(fmt::format("'matrix' must be symmetric: entry ({}, {}) is {} but ({}, {}) is {}", row + 1,
-                                   col + 1, q[col][row], col + 1, row + 1, q[row][col]));
+                p.fail(fmt::format(
+                    "'matrix' must be symmetric: entry ({}, {}) is {} but ({}, {}) is {}", row + 1,
+                    col + 1, q[col][row], col + 1, row + 1, q[row][col]));
             }
         }
     }
@@ -63,31 +92,40 @@ glm::dmat4 quadric_matrix(const Params& p) {
     for (int row = 0; row < 3; ++row) {
         for (int col = 0; col < 3; ++col) quadratic |= q[col][row] != 0.0;
     }
-    if (!quadratic) p.fail("'matrix' has no quadratic terms (its upper-left 3x3 block is zero): that is a plane or nothing");
+    if (!quadratic)
+        p.fail(
+            "'matrix' has no quadratic terms (its upper-left 3x3 block is zero): that is a plane "
+            "or nothing");
     return q;
 }
 
 class SolidBuilder {
 public:
-    SolidBuilder(const SceneDesc& desc, const std::vector<std::unique_ptr<Material>>& materials, bool shortcuts)
+    SolidBuilder(const SceneDesc& desc, const std::vector<std::unique_ptr<Material>>& materials,
+                 bool shortcuts)
         : m_desc(desc), m_materials(materials), m_shortcuts(shortcuts) {}
 
     std::shared_ptr<const Solid> build(int index, const Material* inherited) {
         const SolidDesc& node = m_desc.solids.at(index);
         const Params& p = node.params;
         const Material* material = inherited;
-        if (p.has("material")) material = m_materials.at(p.get_ref("material", "material").index).get();
+        if (p.has("material"))
+            material = m_materials.at(p.get_ref("material", "material").index).get();
         const Transform transform = p.get_transform("transform");
         const std::vector<Vec3> bounds = p.get_vec3_list("bounds");
 
-        std::shared_ptr<const Solid> solid = node.children.empty() ? primitive(p, material) : combination(node, material);
+        std::shared_ptr<const Solid> solid =
+            node.children.empty() ? primitive(p, material) : combination(node, material);
         if (p.has("bounds")) {
-            if (bounds.size() != 2 || !(bounds[0].x < bounds[1].x && bounds[0].y < bounds[1].y && bounds[0].z < bounds[1].z)) {
-                p.fail("'bounds' must be {{xmin, ymin, zmin}, {xmax, ymax, zmax}} with min below max");
+            if (bounds.size() != 2 || !(bounds[0].x < bounds[1].x && bounds[0].y < bounds[1].y &&
+                                        bounds[0].z < bounds[1].z)) {
+                p.fail(
+                    "'bounds' must be {{xmin, ymin, zmin}, {xmax, ymax, zmax}} with min below max");
             }
             auto box = std::make_shared<BoxSolid>(bounds[0], bounds[1], new_part(p, material));
             solid = std::make_shared<CsgNode>(CsgOperation::kIntersection,
-                                              std::vector<std::shared_ptr<const Solid>>{solid, box}, m_shortcuts);
+                                              std::vector<std::shared_ptr<const Solid>>{solid, box},
+                                              m_shortcuts);
         }
         if (!transform.is_identity()) solid = std::make_shared<TransformedSolid>(solid, transform);
         p.check_all_used();
@@ -98,7 +136,8 @@ public:
 
 private:
     int new_part(const Params& p, const Material* material) {
-        if (!material) p.fail("no material: give this solid, or a CSG node around it, a 'material'");
+        if (!material)
+            p.fail("no material: give this solid, or a CSG node around it, a 'material'");
         m_parts.push_back(material);
         return static_cast<int>(m_parts.size()) - 1;
     }
@@ -126,7 +165,8 @@ private:
         }
         if (type == "box") {
             const Vec3 lo = p.get_vec3("min", Vec3(-1.0f)), hi = p.get_vec3("max", Vec3(1.0f));
-            if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z)) p.fail("'min' must be below 'max' on every axis");
+            if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+                p.fail("'min' must be below 'max' on every axis");
             return std::make_shared<BoxSolid>(lo, hi, new_part(p, material));
         }
         if (type == "cylinder" || type == "cone") return capped(p, material);
@@ -151,7 +191,8 @@ private:
         } else {
             // (x^2 + z^2) / r^2 = (y - h)^2 / h^2, the nappe below the apex.
             q = quadric_forms::elliptic_cone(radius, height, radius);
-            q = glm::transpose(glm::inverse(glm::dmat4(glm::translate(glm::dmat4(1.0), glm::dvec3(0, height, 0))))) *
+            q = glm::transpose(glm::inverse(
+                    glm::dmat4(glm::translate(glm::dmat4(1.0), glm::dvec3(0, height, 0))))) *
                 q * glm::inverse(glm::translate(glm::dmat4(1.0), glm::dvec3(0, height, 0)));
             lo = Vec3(-radius, 0.0, -radius);
             hi = Vec3(radius, height, radius);
@@ -159,7 +200,8 @@ private:
         auto surface = std::make_shared<QuadricSolid>(q, p.type(), part);
         auto box = std::make_shared<BoxSolid>(lo, hi, part);
         return std::make_shared<CsgNode>(CsgOperation::kIntersection,
-                                         std::vector<std::shared_ptr<const Solid>>{surface, box}, m_shortcuts);
+                                         std::vector<std::shared_ptr<const Solid>>{surface, box},
+                                         m_shortcuts);
     }
 
     std::shared_ptr<const Solid> mesh(const Params& p, const Material* material) {
@@ -180,7 +222,9 @@ private:
             }
         }
         for (uint32_t i : data.indices) {
-            if (i >= data.positions.size()) p.fail(fmt::format("index {} is past the {} vertices", i + 1, data.positions.size()));
+            if (i >= data.positions.size())
+                p.fail(
+                    fmt::format("index {} is past the {} vertices", i + 1, data.positions.size()));
         }
         try {
             return std::make_shared<MeshSolid>(data, new_part(p, material));
@@ -207,7 +251,8 @@ BuiltSolid build_solid(const SceneDesc& desc, int root, const Params& placement,
                        const std::vector<std::unique_ptr<Material>>& materials, bool shortcuts) {
     SolidBuilder builder(desc, materials, shortcuts);
     const Material* fallback = nullptr;
-    if (placement.has("material")) fallback = materials.at(placement.get_ref("material", "material").index).get();
+    if (placement.has("material"))
+        fallback = materials.at(placement.get_ref("material", "material").index).get();
     std::shared_ptr<const Solid> solid = builder.build(root, fallback);
     BuiltSolid result;
     try {

@@ -7,7 +7,9 @@
 namespace glint {
 namespace {
 
-Bounds3 infinite_bounds() { return {Vec3(-kInfinity), Vec3(kInfinity)}; }
+Bounds3 infinite_bounds() {
+    return {Vec3(-kInfinity), Vec3(kInfinity)};
+}
 
 Bounds3 overlap(const Bounds3& a, const Bounds3& b) {
     return {glm::max(a.min, b.min), glm::min(a.max, b.max)};
@@ -15,13 +17,15 @@ Bounds3 overlap(const Bounds3& a, const Bounds3& b) {
 
 }  // namespace
 
-CsgNode::CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid>> children, bool shortcuts)
+CsgNode::CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid>> children,
+                 bool shortcuts)
     : m_operation(operation), m_children(std::move(children)), m_shortcuts(shortcuts) {
     if (m_children.empty()) throw Error("a CSG node needs at least one solid");
     m_order.resize(m_children.size());
     std::iota(m_order.begin(), m_order.end(), 0);
-    std::stable_sort(m_order.begin(), m_order.end(),
-                     [&](size_t a, size_t b) { return m_children[a]->cost() < m_children[b]->cost(); });
+    std::stable_sort(m_order.begin(), m_order.end(), [&](size_t a, size_t b) {
+        return m_children[a]->cost() < m_children[b]->cost();
+    });
     for (const auto& child : m_children) m_cost += child->cost();
 
     switch (m_operation) {
@@ -40,9 +44,12 @@ CsgNode::CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid
 
 std::string CsgNode::describe() const {
     switch (m_operation) {
-        case CsgOperation::kUnion: return "union";
-        case CsgOperation::kIntersection: return "intersection";
-        default: return "difference";
+        case CsgOperation::kUnion:
+            return "union";
+        case CsgOperation::kIntersection:
+            return "intersection";
+        default:
+            return "difference";
     }
 }
 
@@ -54,9 +61,15 @@ bool CsgNode::may_hit(const Ray& ray, const Solid& child) const {
 void CsgNode::intervals(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
     out.clear();
     switch (m_operation) {
-        case CsgOperation::kUnion: evaluate_union(ray, out, scratch); break;
-        case CsgOperation::kIntersection: evaluate_intersection(ray, out, scratch); break;
-        case CsgOperation::kDifference: evaluate_difference(ray, out, scratch); break;
+        case CsgOperation::kUnion:
+            evaluate_union(ray, out, scratch);
+            break;
+        case CsgOperation::kIntersection:
+            evaluate_intersection(ray, out, scratch);
+            break;
+        case CsgOperation::kDifference:
+            evaluate_difference(ray, out, scratch);
+            break;
     }
 }
 
@@ -73,7 +86,8 @@ void CsgNode::evaluate_union(const Ray& ray, IntervalList& out, IntervalScratch&
     scratch.release(2);
 }
 
-void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
+void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out,
+                                    IntervalScratch& scratch) const {
     if (m_shortcuts) {
         for (const auto& child : m_children) {
             if (!may_hit(ray, *child)) return;
@@ -96,7 +110,8 @@ void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out, IntervalS
     scratch.release(2);
 }
 
-void CsgNode::evaluate_difference(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
+void CsgNode::evaluate_difference(const Ray& ray, IntervalList& out,
+                                  IntervalScratch& scratch) const {
     if (m_shortcuts && !may_hit(ray, *m_children.front())) return;
     m_children.front()->intervals(ray, out, scratch);
     IntervalList& child_spans = scratch.acquire();
@@ -113,12 +128,15 @@ void CsgNode::evaluate_difference(const Ray& ray, IntervalList& out, IntervalScr
 bool CsgNode::contains(const Vec3& p) const {
     switch (m_operation) {
         case CsgOperation::kUnion:
-            return std::any_of(m_children.begin(), m_children.end(), [&](const auto& c) { return c->contains(p); });
+            return std::any_of(m_children.begin(), m_children.end(),
+                               [&](const auto& c) { return c->contains(p); });
         case CsgOperation::kIntersection:
-            return std::all_of(m_children.begin(), m_children.end(), [&](const auto& c) { return c->contains(p); });
+            return std::all_of(m_children.begin(), m_children.end(),
+                               [&](const auto& c) { return c->contains(p); });
         default:
             if (!m_children.front()->contains(p)) return false;
-            return std::none_of(m_children.begin() + 1, m_children.end(), [&](const auto& c) { return c->contains(p); });
+            return std::none_of(m_children.begin() + 1, m_children.end(),
+                                [&](const auto& c) { return c->contains(p); });
     }
 }
 
@@ -126,9 +144,11 @@ bool CsgNode::contains(const Vec3& p) const {
 TransformedSolid::TransformedSolid(std::shared_ptr<const Solid> child, const Transform& to_parent)
     : m_child(std::move(child)), m_to_parent(to_parent), m_to_child(to_parent.inverse()) {}
 
-void TransformedSolid::intervals(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
+void TransformedSolid::intervals(const Ray& ray, IntervalList& out,
+                                 IntervalScratch& scratch) const {
     // The parameter t is the same in both spaces because the direction is not renormalised.
-    const Ray local{m_to_child.point(ray.origin), m_to_child.vector(ray.direction), ray.t_min, ray.t_max};
+    const Ray local{m_to_child.point(ray.origin), m_to_child.vector(ray.direction), ray.t_min,
+                    ray.t_max};
     m_child->intervals(local, out, scratch);
     for (Interval& span : out) {
         span.enter.normal = m_to_parent.normal(span.enter.normal);
@@ -136,7 +156,9 @@ void TransformedSolid::intervals(const Ray& ray, IntervalList& out, IntervalScra
     }
 }
 
-bool TransformedSolid::contains(const Vec3& p) const { return m_child->contains(m_to_child.point(p)); }
+bool TransformedSolid::contains(const Vec3& p) const {
+    return m_child->contains(m_to_child.point(p));
+}
 
 Bounds3 TransformedSolid::bounds() const {
     const Bounds3 b = m_child->bounds();

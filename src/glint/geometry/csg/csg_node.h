@@ -16,7 +16,8 @@ enum class CsgOperation { kUnion, kIntersection, kDifference };
 class CsgNode final : public Solid {
 public:
     // Throws glint::Error when `children` is empty.
-    CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid>> children, bool shortcuts);
+    CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid>> children,
+            bool shortcuts);
 
     void intervals(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const override;
     bool contains(const Vec3& p) const override;

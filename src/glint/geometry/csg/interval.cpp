@@ -39,8 +39,10 @@ void interval_intersection(const IntervalList& a, const IntervalList& b, Interva
         const Crossing& exit = a[i].exit.t <= b[j].exit.t ? a[i].exit : b[j].exit;
         // Touching intervals share a single point: no volume, so no interval.
         if (enter.t < exit.t) out.push_back({enter, exit});
-        if (a[i].exit.t <= b[j].exit.t) ++i;
-        else ++j;
+        if (a[i].exit.t <= b[j].exit.t)
+            ++i;
+        else
+            ++j;
     }
 }
 

@@ -52,7 +52,9 @@ bool SphereSolid::contains(const Vec3& p) const {
     return length_squared(p - m_center) <= m_radius * m_radius;
 }
 
-Bounds3 SphereSolid::bounds() const { return {m_center - Vec3(m_radius), m_center + Vec3(m_radius)}; }
+Bounds3 SphereSolid::bounds() const {
+    return {m_center - Vec3(m_radius), m_center + Vec3(m_radius)};
+}
 
 // ---------------------------------------------------------------------------------------
 BoxSolid::BoxSolid(const Vec3& min, const Vec3& max, int part) : m_box{min, max}, m_part(part) {}
@@ -80,7 +82,8 @@ void BoxSolid::intervals(const Ray& ray, IntervalList& out, IntervalScratch&) co
 }
 
 bool BoxSolid::contains(const Vec3& p) const {
-    return glm::all(glm::greaterThanEqual(p, m_box.min)) && glm::all(glm::lessThanEqual(p, m_box.max));
+    return glm::all(glm::greaterThanEqual(p, m_box.min)) &&
+           glm::all(glm::lessThanEqual(p, m_box.max));
 }
 
 // ---------------------------------------------------------------------------------------
@@ -92,7 +95,9 @@ double QuadricSolid::value(const glm::dvec3& p) const {
     return glm::dot(x, m_q * x);
 }
 
-bool QuadricSolid::contains(const Vec3& p) const { return value(glm::dvec3(p)) <= 0.0; }
+bool QuadricSolid::contains(const Vec3& p) const {
+    return value(glm::dvec3(p)) <= 0.0;
+}
 
 Crossing QuadricSolid::crossing(const Ray& ray, double t) const {
     const glm::dvec4 x(glm::dvec3(ray.origin) + t * glm::dvec3(ray.direction), 1.0);
@@ -116,8 +121,10 @@ void QuadricSolid::intervals(const Ray& ray, IntervalList& out, IntervalScratch&
             return;
         }
         const double t = -c / (2.0 * b);
-        if (b > 0.0) out.push_back({minus_infinity, crossing(ray, t)});
-        else out.push_back({crossing(ray, t), plus_infinity});
+        if (b > 0.0)
+            out.push_back({minus_infinity, crossing(ray, t)});
+        else
+            out.push_back({crossing(ray, t), plus_infinity});
         return;
     }
     const double discriminant = b * b - a * c;
@@ -142,7 +149,8 @@ Bounds3 QuadricSolid::bounds() const {
     const glm::dmat3 A(m_q);
     const glm::dvec3 bvec(m_q[3]);
     const double det = glm::determinant(A);
-    const bool positive_definite = A[0][0] > 0 && (A[0][0] * A[1][1] - A[1][0] * A[0][1]) > 0 && det > 0;
+    const bool positive_definite =
+        A[0][0] > 0 && (A[0][0] * A[1][1] - A[1][0] * A[0][1]) > 0 && det > 0;
     if (!positive_definite) return {Vec3(-kInfinity), Vec3(kInfinity)};
     const glm::dmat3 inverse = glm::inverse(A);
     const glm::dvec3 center = -inverse * bvec;
@@ -171,11 +179,12 @@ MeshSolid::MeshSolid(const MeshData& mesh, int part) : m_part(part) {
     for (const auto& [edge, count] : directed) {
         auto reverse = directed.find({edge.second, edge.first});
         if (count != 1 || reverse == directed.end() || reverse->second != 1) {
-            throw Error(fmt::format("the mesh is not a closed, consistently oriented surface: the edge "
-                                    "between vertices {} and {} is used {} time(s) in one direction and "
-                                    "{} in the other",
-                                    edge.first + 1, edge.second + 1, count,
-                                    reverse == directed.end() ? 0 : reverse->second));
+            throw Error(
+                fmt::format("the mesh is not a closed, consistently oriented surface: the edge "
+                            "between vertices {} and {} is used {} time(s) in one direction and "
+                            "{} in the other",
+                            edge.first + 1, edge.second + 1, count,
+                            reverse == directed.end() ? 0 : reverse->second));
         }
     }
     if (m_triangles.empty()) throw Error("the mesh has no triangles");
@@ -194,7 +203,8 @@ void MeshSolid::intervals(const Ray& ray, IntervalList& out, IntervalScratch&) c
     hits.clear();
     for (size_t i = 0; i < m_triangles.size(); i += 3) {
         // Möller–Trumbore over the whole line (t of either sign).
-        const Vec3 e1 = m_triangles[i + 1] - m_triangles[i], e2 = m_triangles[i + 2] - m_triangles[i];
+        const Vec3 e1 = m_triangles[i + 1] - m_triangles[i],
+                   e2 = m_triangles[i + 2] - m_triangles[i];
         const Vec3 pvec = glm::cross(ray.direction, e2);
         const float det = glm::dot(e1, pvec);
         if (det == 0.0f) continue;
@@ -216,8 +226,10 @@ void MeshSolid::intervals(const Ray& ray, IntervalList& out, IntervalScratch&) c
         if (entering) {
             if (winding++ == 0) enter = {h.t, h.n, m_part};
         } else if (winding > 0 && --winding == 0) {
-            if (!out.empty() && enter.t <= out.back().exit.t) out.back().exit = {h.t, h.n, m_part};
-            else out.push_back({enter, {h.t, h.n, m_part}});
+            if (!out.empty() && enter.t <= out.back().exit.t)
+                out.back().exit = {h.t, h.n, m_part};
+            else
+                out.push_back({enter, {h.t, h.n, m_part}});
         }
     }
 }
@@ -252,7 +264,9 @@ glm::dmat4 with_minus_y(glm::dmat4 q) {
 }
 }  // namespace
 
-glm::dmat4 ellipsoid(double a, double b, double c) { return diagonal(1 / (a * a), 1 / (b * b), 1 / (c * c), -1); }
+glm::dmat4 ellipsoid(double a, double b, double c) {
+    return diagonal(1 / (a * a), 1 / (b * b), 1 / (c * c), -1);
+}
 glm::dmat4 hyperboloid_one_sheet(double a, double b, double c) {
     return diagonal(1 / (a * a), -1 / (b * b), 1 / (c * c), -1);
 }
@@ -262,13 +276,21 @@ glm::dmat4 hyperboloid_two_sheets(double a, double b, double c) {
 glm::dmat4 elliptic_cone(double a, double b, double c) {
     return diagonal(1 / (a * a), -1 / (b * b), 1 / (c * c), 0);
 }
-glm::dmat4 elliptic_paraboloid(double a, double c) { return with_minus_y(diagonal(1 / (a * a), 0, 1 / (c * c), 0)); }
+glm::dmat4 elliptic_paraboloid(double a, double c) {
+    return with_minus_y(diagonal(1 / (a * a), 0, 1 / (c * c), 0));
+}
 glm::dmat4 hyperbolic_paraboloid(double a, double c) {
     return with_minus_y(diagonal(1 / (a * a), 0, -1 / (c * c), 0));
 }
-glm::dmat4 elliptic_cylinder(double a, double c) { return diagonal(1 / (a * a), 0, 1 / (c * c), -1); }
-glm::dmat4 hyperbolic_cylinder(double a, double c) { return diagonal(1 / (a * a), 0, -1 / (c * c), -1); }
-glm::dmat4 parabolic_cylinder(double a) { return with_minus_y(diagonal(1 / (a * a), 0, 0, 0)); }
+glm::dmat4 elliptic_cylinder(double a, double c) {
+    return diagonal(1 / (a * a), 0, 1 / (c * c), -1);
+}
+glm::dmat4 hyperbolic_cylinder(double a, double c) {
+    return diagonal(1 / (a * a), 0, -1 / (c * c), -1);
+}
+glm::dmat4 parabolic_cylinder(double a) {
+    return with_minus_y(diagonal(1 / (a * a), 0, 0, 0));
+}
 }  // namespace quadric_forms
 
 }  // namespace glint

@@ -64,7 +64,9 @@ public:
     void intervals(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const override;
     bool contains(const Vec3& p) const override;
     Bounds3 bounds() const override { return m_bounds; }
-    float cost() const override { return 1.0f + 0.05f * static_cast<float>(m_triangles.size() / 3); }
+    float cost() const override {
+        return 1.0f + 0.05f * static_cast<float>(m_triangles.size() / 3);
+    }
     std::string describe() const override { return "mesh"; }
 
 private:

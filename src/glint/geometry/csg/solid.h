@@ -6,9 +6,9 @@
 #include <glint/geometry/csg/interval.h>
 #include <glint/math/bounds.h>
 
+#include <deque>
 #include <memory>
 #include <string>
-#include <deque>
 #include <vector>
 
 namespace glint {

@@ -13,8 +13,10 @@ IntervalScratch& thread_scratch() {
 
 Ray ray_from(RTCRayN* rays, unsigned n, unsigned i) {
     Ray ray;
-    ray.origin = Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    ray.direction = Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    ray.origin =
+        Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    ray.direction =
+        Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
     ray.t_min = RTCRayN_tnear(rays, n, i);
     ray.t_max = RTCRayN_tfar(rays, n, i);
     return ray;
@@ -50,7 +52,8 @@ void solid_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* shape = static_cast<const SolidShape*>(args->geometryUserPtr);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        if (shape->any_hit(ray_from(args->ray, args->N, i))) RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
+        if (shape->any_hit(ray_from(args->ray, args->N, i)))
+            RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
     }
 }
 
@@ -59,9 +62,11 @@ void solid_occluded(const RTCOccludedFunctionNArguments* args) {
 SolidShape::SolidShape(std::shared_ptr<const Solid> solid, std::string name)
     : m_solid(std::move(solid)), m_name(std::move(name)) {
     if (!m_solid->is_bounded()) {
-        throw Error(fmt::format("the {} is unbounded: give it 'bounds = {{{{xmin, ymin, zmin}}, {{xmax, ymax, zmax}}}}' "
-                                "or intersect it with a finite solid",
-                                m_solid->describe()));
+        throw Error(
+            fmt::format("the {} is unbounded: give it 'bounds = {{{{xmin, ymin, zmin}}, {{xmax, "
+                        "ymax, zmax}}}}' "
+                        "or intersect it with a finite solid",
+                        m_solid->describe()));
     }
     m_bounds = m_solid->bounds();
 }
@@ -77,7 +82,9 @@ std::optional<Crossing> SolidShape::first_hit(const Ray& ray) const {
     return result;
 }
 
-bool SolidShape::any_hit(const Ray& ray) const { return first_hit(ray).has_value(); }
+bool SolidShape::any_hit(const Ray& ray) const {
+    return first_hit(ray).has_value();
+}
 
 RTCGeometry SolidShape::create_embree_geometry(RTCDevice device) const {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
@@ -90,7 +97,8 @@ RTCGeometry SolidShape::create_embree_geometry(RTCDevice device) const {
     return geometry;
 }
 
-void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
+void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit,
+                                  SurfaceInteraction& si) const {
     si.p = ray.at(hit.t);
     si.ng = glm::normalize(hit.normal);
     si.shading = Frame::from_normal(si.ng);
@@ -101,8 +109,9 @@ void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceI
 }
 
 std::unique_ptr<ShapeSampler> SolidShape::make_sampler(const Transform&) const {
-    throw Error(fmt::format("a CSG {} cannot emit light (use an emissive sphere, quad or mesh as the light)",
-                            m_solid->describe()));
+    throw Error(fmt::format(
+        "a CSG {} cannot emit light (use an emissive sphere, quad or mesh as the light)",
+        m_solid->describe()));
 }
 
 }  // namespace glint

@@ -17,7 +17,8 @@ public:
     std::string name() const override { return m_name; }
     Bounds3 bounds() const override { return m_bounds; }
     RTCGeometry create_embree_geometry(RTCDevice device) const override;
-    void fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const override;
+    void fill_interaction(const Ray& ray, const HitRecord& hit,
+                          SurfaceInteraction& si) const override;
     std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const override;
 
     const Solid& solid() const { return *m_solid; }

@@ -11,7 +11,8 @@
 namespace glint {
 
 MeshData load_obj(const std::string& path) {
-    if (!std::filesystem::is_regular_file(path)) throw Error(fmt::format("cannot open OBJ file '{}'", path));
+    if (!std::filesystem::is_regular_file(path))
+        throw Error(fmt::format("cannot open OBJ file '{}'", path));
     tinyobj::ObjReaderConfig config;
     config.triangulate = true;
     config.vertex_color = false;
@@ -30,8 +31,10 @@ MeshData load_obj(const std::string& path) {
         for (const tinyobj::index_t& index : shape.mesh.indices) {
             if (index.normal_index < 0) has_normals = false;
             if (index.texcoord_index < 0) has_uvs = false;
-            const auto key = std::make_tuple(index.vertex_index, index.normal_index, index.texcoord_index);
-            auto [it, inserted] = vertex_of.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
+            const auto key =
+                std::make_tuple(index.vertex_index, index.normal_index, index.texcoord_index);
+            auto [it, inserted] =
+                vertex_of.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
             if (inserted) {
                 const float* p = &attrib.vertices[3 * static_cast<size_t>(index.vertex_index)];
                 mesh.positions.emplace_back(p[0], p[1], p[2]);
@@ -42,7 +45,8 @@ MeshData load_obj(const std::string& path) {
                     mesh.normals.emplace_back(0.0f);
                 }
                 if (index.texcoord_index >= 0) {
-                    const float* t = &attrib.texcoords[2 * static_cast<size_t>(index.texcoord_index)];
+                    const float* t =
+                        &attrib.texcoords[2 * static_cast<size_t>(index.texcoord_index)];
                     mesh.uvs.emplace_back(t[0], t[1]);
                 } else {
                     mesh.uvs.emplace_back(0.0f);

@@ -38,7 +38,8 @@ std::string where(lua_State* L) {
     luaL_where(L, 1);
     std::string location = lua_tostring(L, -1);
     lua_pop(L, 1);
-    while (!location.empty() && (location.back() == ' ' || location.back() == ':')) location.pop_back();
+    while (!location.empty() && (location.back() == ' ' || location.back() == ':'))
+        location.pop_back();
     return location.empty() ? "?" : location;
 }
 
@@ -83,9 +84,12 @@ void push_handle(lua_State* L, int kind, int index) {
 ParamValue to_param(lua_State* L, int index, const std::string& name, const std::string& type) {
     index = lua_absindex(L, index);
     switch (lua_type(L, index)) {
-        case LUA_TBOOLEAN: return lua_toboolean(L, index) != 0;
-        case LUA_TNUMBER: return lua_tonumber(L, index);
-        case LUA_TSTRING: return std::string(lua_tostring(L, index));
+        case LUA_TBOOLEAN:
+            return lua_toboolean(L, index) != 0;
+        case LUA_TNUMBER:
+            return lua_tonumber(L, index);
+        case LUA_TSTRING:
+            return std::string(lua_tostring(L, index));
         case LUA_TUSERDATA:
             if (Transform* xf = to_transform(L, index)) return *xf;
             if (Handle* h = to_handle(L, index)) return ObjectRef{kHandleKinds[h->kind], h->index};
@@ -104,10 +108,14 @@ ParamValue to_param(lua_State* L, int index, const std::string& name, const std:
                 } else if (lua_type(L, -1) == LUA_TTABLE && numbers.empty() && strings.empty()) {
                     ParamValue row = to_param(L, -1, name, type);
                     auto* row_numbers = std::get_if<std::vector<double>>(&row);
-                    if (!row_numbers) fail(L, fmt::format("{}: entry {} of '{}' must be a list of numbers", type, i, name));
+                    if (!row_numbers)
+                        fail(L, fmt::format("{}: entry {} of '{}' must be a list of numbers", type,
+                                            i, name));
                     rows.push_back(std::move(*row_numbers));
                 } else {
-                    fail(L, fmt::format("{}: '{}' must be a list of numbers, of strings, or of lists of numbers", type, name));
+                    fail(L, fmt::format("{}: '{}' must be a list of numbers, of strings, or of "
+                                        "lists of numbers",
+                                        type, name));
                 }
                 lua_pop(L, 1);
             }
@@ -115,16 +123,20 @@ ParamValue to_param(lua_State* L, int index, const std::string& name, const std:
             if (!strings.empty()) return strings;
             return numbers;
         }
-        default: break;
+        default:
+            break;
     }
-    fail(L, fmt::format("{}: parameter '{}' has unsupported type {}", type, name, luaL_typename(L, index)));
+    fail(L, fmt::format("{}: parameter '{}' has unsupported type {}", type, name,
+                        luaL_typename(L, index)));
 }
 
 // Reads the table argument at `index` into Params of the given type.
 Params to_params(lua_State* L, int index, const std::string& type) {
     Params params(type, where(L));
     if (lua_isnoneornil(L, index)) return params;
-    if (!lua_istable(L, index)) fail(L, fmt::format("{} expects a table of named parameters, e.g. glint.{}{{...}}", type, type));
+    if (!lua_istable(L, index))
+        fail(L, fmt::format("{} expects a table of named parameters, e.g. glint.{}{{...}}", type,
+                            type));
     index = lua_absindex(L, index);
     lua_pushnil(L);
     while (lua_next(L, index) != 0) {
@@ -186,14 +198,20 @@ int new_solid(lua_State* L) {
 // by name.
 int new_csg_node(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
-    if (!lua_istable(L, 1)) fail(L, fmt::format("glint.{} expects a table: glint.{}{{a, b, material = m}}", type, type));
+    if (!lua_istable(L, 1))
+        fail(L,
+             fmt::format("glint.{} expects a table: glint.{}{{a, b, material = m}}", type, type));
     std::vector<int> children;
     const lua_Integer n = luaL_len(L, 1);
     for (lua_Integer i = 1; i <= n; ++i) {
         lua_geti(L, 1, i);
         Handle* h = to_handle(L, -1);
         if (!h || h->kind != kSolidHandle) {
-            fail(L, fmt::format("glint.{}: entry {} is not a solid (made by glint.solid.* or another CSG node)", type, i));
+            fail(
+                L,
+                fmt::format(
+                    "glint.{}: entry {} is not a solid (made by glint.solid.* or another CSG node)",
+                    type, i));
         }
         children.push_back(h->index);
         lua_pop(L, 1);
@@ -213,7 +231,8 @@ int new_csg_node(lua_State* L) {
     SceneDesc& desc = desc_of(L);
     desc.solids.push_back({to_params(L, -1, type), std::move(children)});
     if (desc.solids.back().children.empty()) {
-        fail(L, fmt::format("glint.{} needs at least one solid, e.g. glint.{}{{a, b}}", type, type));
+        fail(L,
+             fmt::format("glint.{} needs at least one solid, e.g. glint.{}{{a, b}}", type, type));
     }
     push_handle(L, kSolidHandle, static_cast<int>(desc.solids.size()) - 1);
     return 1;
@@ -228,7 +247,8 @@ int add_solid(lua_State* L) {
         args = 2;
     }
     Handle* solid = to_handle(L, args);
-    if (!solid || solid->kind != kSolidHandle) fail(L, "glint.add expects a solid (made by glint.solid.* or a CSG node)");
+    if (!solid || solid->kind != kSolidHandle)
+        fail(L, "glint.add expects a solid (made by glint.solid.* or a CSG node)");
     Params params = to_params(L, args + 1, "solid");
     params.set("solid", ObjectRef{"solid", solid->index});
     desc_of(L).groups[group].shapes.push_back(std::move(params));
@@ -245,7 +265,8 @@ int new_group(lua_State* L) {
 Transform optional_transform(lua_State* L, int index) {
     if (lua_isnoneornil(L, index)) return Transform();
     Transform* xf = to_transform(L, index);
-    if (!xf) fail(L, "expected a transform (glint.translate, glint.rotate, glint.scale, glint.matrix)");
+    if (!xf)
+        fail(L, "expected a transform (glint.translate, glint.rotate, glint.scale, glint.matrix)");
     return *xf;
 }
 
@@ -259,7 +280,8 @@ int place_group(lua_State* L) {
     }
     const int child = group_index_of(L, args);
     if (child == 0) fail(L, "the world group cannot be placed");
-    desc_of(L).groups[parent].instances.push_back({child, optional_transform(L, args + 1), where(L)});
+    desc_of(L).groups[parent].instances.push_back(
+        {child, optional_transform(L, args + 1), where(L)});
     return 0;
 }
 
@@ -267,12 +289,14 @@ Vec3 vec3_arguments(lua_State* L, int first, const char* what) {
     if (lua_istable(L, first)) {
         ParamValue v = to_param(L, first, what, what);
         auto* list = std::get_if<std::vector<double>>(&v);
-        if (!list || list->size() != 3) fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
+        if (!list || list->size() != 3)
+            fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
         return Vec3((*list)[0], (*list)[1], (*list)[2]);
     }
     Vec3 v;
     for (int i = 0; i < 3; ++i) {
-        if (!lua_isnumber(L, first + i)) fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
+        if (!lua_isnumber(L, first + i))
+            fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
         v[i] = static_cast<float>(lua_tonumber(L, first + i));
     }
     return v;
@@ -284,7 +308,8 @@ int translate(lua_State* L) {
 }
 
 int rotate(lua_State* L) {
-    if (!lua_isnumber(L, 1)) fail(L, "glint.rotate expects an angle in degrees and an axis {x, y, z}");
+    if (!lua_isnumber(L, 1))
+        fail(L, "glint.rotate expects an angle in degrees and an axis {x, y, z}");
     const float degrees = static_cast<float>(lua_tonumber(L, 1));
     const Vec3 axis = vec3_arguments(L, 2, "glint.rotate axis");
     if (glm::length(axis) <= 0.0f) fail(L, "glint.rotate axis must not be zero");
@@ -294,9 +319,12 @@ int rotate(lua_State* L) {
 
 int scale(lua_State* L) {
     Vec3 factors;
-    if (lua_isnumber(L, 1) && lua_isnone(L, 2)) factors = Vec3(static_cast<float>(lua_tonumber(L, 1)));
-    else factors = vec3_arguments(L, 1, "glint.scale");
-    if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f) fail(L, "glint.scale factors must not be zero");
+    if (lua_isnumber(L, 1) && lua_isnone(L, 2))
+        factors = Vec3(static_cast<float>(lua_tonumber(L, 1)));
+    else
+        factors = vec3_arguments(L, 1, "glint.scale");
+    if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f)
+        fail(L, "glint.scale factors must not be zero");
     push_transform(L, Transform::scale(factors));
     return 1;
 }
@@ -305,7 +333,8 @@ int scale(lua_State* L) {
 int matrix(lua_State* L) {
     ParamValue v = to_param(L, 1, "matrix", "glint.matrix");
     auto* list = std::get_if<std::vector<double>>(&v);
-    if (!list || list->size() != 16) fail(L, "glint.matrix expects a table of 16 numbers, row by row");
+    if (!list || list->size() != 16)
+        fail(L, "glint.matrix expects a table of 16 numbers, row by row");
     Mat4 m;
     for (int row = 0; row < 4; ++row) {
         for (int col = 0; col < 4; ++col) m[col][row] = static_cast<float>((*list)[4 * row + col]);
@@ -331,7 +360,8 @@ template <std::optional<Params> SceneDesc::*Member>
 int set_single(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
     SceneDesc& desc = desc_of(L);
-    if (desc.*Member) fail(L, fmt::format("glint.{} was already called at {}", type, (desc.*Member)->where()));
+    if (desc.*Member)
+        fail(L, fmt::format("glint.{} was already called at {}", type, (desc.*Member)->where()));
     desc.*Member = to_params(L, 1, type);
     return 0;
 }
@@ -361,7 +391,8 @@ int open_glint(lua_State* L) {
     lua_pop(L, 1);
 
     lua_newtable(L);
-    for (const std::string& type : material_types()) register_closure(L, type, guarded<new_material>);
+    for (const std::string& type : material_types())
+        register_closure(L, type, guarded<new_material>);
     for (const std::string& type : light_types()) register_closure(L, type, guarded<new_light>);
     for (const std::string& type : shape_types()) register_closure(L, type, guarded<new_shape>);
     lua_newtable(L);
@@ -376,9 +407,9 @@ int open_glint(lua_State* L) {
     register_closure(L, "render", guarded<set_single<&SceneDesc::render>>);
     register_closure(L, "background", guarded<set_single<&SceneDesc::background>>);
     const std::pair<const char*, lua_CFunction> functions[] = {
-        {"group", guarded<new_group>},   {"place", guarded<place_group>},
+        {"group", guarded<new_group>},     {"place", guarded<place_group>},
         {"translate", guarded<translate>}, {"rotate", guarded<rotate>},
-        {"scale", guarded<scale>},       {"matrix", guarded<matrix>},
+        {"scale", guarded<scale>},         {"matrix", guarded<matrix>},
     };
     for (const auto& [name, function] : functions) {
         lua_pushcfunction(L, function);
@@ -416,7 +447,8 @@ SceneDesc run_chunk(const std::function<int(lua_State*)>& load, const std::strin
 }  // namespace
 
 SceneDesc load_scene_file(const std::string& path) {
-    if (!std::filesystem::is_regular_file(path)) throw Error(fmt::format("cannot open scene file '{}'", path));
+    if (!std::filesystem::is_regular_file(path))
+        throw Error(fmt::format("cannot open scene file '{}'", path));
     std::string directory = std::filesystem::path(path).parent_path().string();
     if (directory.empty()) directory = ".";
     return run_chunk([&](lua_State* L) { return luaL_loadfile(L, path.c_str()); }, directory);
