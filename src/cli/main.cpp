@@ -31,6 +31,8 @@ struct RenderOptions {
     std::optional<uint64_t> seed;
     std::string integrator;
     std::optional<float> exposure;
+    std::string adaptive;
+    std::vector<std::string> debug;
     bool aovs = false;
     bool quiet = false;
 };
@@ -69,6 +71,11 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     }
     if (options.exposure) settings.exposure = *options.exposure;
     if (options.aovs) settings.aovs = true;
+    if (!options.adaptive.empty()) {
+        settings.adaptive = options.adaptive;
+        settings.where = "--adaptive";
+    }
+    if (!options.debug.empty()) settings.debug = options.debug;
     if (!options.outputs.empty()) settings.outputs = options.outputs;
     if (settings.outputs.empty()) {
         settings.outputs = {std::filesystem::path(options.scene).stem().string() + ".exr"};
@@ -76,10 +83,41 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     return settings;
 }
 
+// Samples the render will take: exact for uniform sampling, an upper bound when adaptive.
+uint64_t expected_samples(const RenderSettings& settings) {
+    const uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
+    if (settings.adaptive == "sobel") return pixels * (2 + static_cast<uint64_t>(settings.supersample * settings.supersample));
+    if (settings.adaptive == "variance") {
+        return pixels * static_cast<uint64_t>(settings.max_spp > 0 ? std::max(settings.max_spp, settings.spp) : 8 * settings.spp);
+    }
+    return pixels * settings.spp;
+}
+
+void check_debug_views(const RenderSettings& settings) {
+    for (const std::string& view : settings.debug) {
+        if (view != "edges") throw Error(fmt::format("unknown debug view '{}' (known: edges)", view));
+        if (settings.adaptive != "sobel") throw Error("--debug edges needs --adaptive sobel");
+    }
+}
+
+// `--debug edges` writes the edge mask next to the first output, as NAME.edges.png.
+void write_debug_images(const RenderSettings& settings, const RenderStats& stats) {
+    for (const std::string& view : settings.debug) {
+        for (const ExtraChannel& channel : stats.channels) {
+            if (channel.name != view + ".Y") continue;
+            std::filesystem::path path = settings.outputs.front();
+            path.replace_extension("." + view + ".png");
+            write_image(path.string(), grey_image(settings.width, settings.height, channel.values));
+            fmt::print(stderr, "wrote {}\n", path.string());
+        }
+    }
+}
+
 int run_render(const RenderOptions& options) {
     const SceneDesc desc = load_scene_file(options.scene);
     const RenderSettings settings = settings_for(desc, options);
     for (const std::string& path : settings.outputs) check_output_path(path);
+    check_debug_views(settings);
     auto integrator = make_integrator(settings);
     const auto scene = build_scene(desc, settings);
 
@@ -87,15 +125,18 @@ int run_render(const RenderOptions& options) {
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Film film(settings.width, settings.height, settings.aovs);
-    Progress progress("rendering",
-                      static_cast<uint64_t>(settings.width) * settings.height * settings.spp,
-                      options.quiet);
+    Progress progress("rendering", expected_samples(settings), options.quiet);
     const RenderStats stats = integrator->render(*scene, film, progress);
     progress.finish();
 
-    const Image image = film.resolve();
-    for (const std::string& path : settings.outputs)
-        write_image(path, image, WriteOptions{settings.exposure});
+    Image image = film.resolve();
+    for (const ExtraChannel& channel : stats.channels) image = with_channel(image, channel.name, channel.values);
+    for (const std::string& path : settings.outputs) write_image(path, image, WriteOptions{settings.exposure});
+    write_debug_images(settings, stats);
+    if (!options.quiet && settings.adaptive != "none") {
+        fmt::print(stderr, "adaptive ({}): {:.2f} samples per pixel on average\n", settings.adaptive,
+                   static_cast<double>(stats.samples) / (static_cast<double>(settings.width) * settings.height));
+    }
     if (!options.quiet) {
         fmt::print(stderr,
                    "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
@@ -172,6 +213,10 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
     render_cmd->add_flag("--aovs", render.aovs,
                          "Add albedo, normal and depth channels to EXR output");
+    render_cmd->add_option("--adaptive", render.adaptive,
+                           "Adaptive sampling: none, sobel (supersample edges), variance (stop converged pixels)");
+    render_cmd->add_option("--debug", render.debug, "Also write a debug view: edges (with --adaptive sobel)")
+        ->allow_extra_args(false);
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
 
     std::string info_scene;

@@ -29,4 +29,10 @@ struct Image {
 /// A zero-filled image; throws glint::Error for negative sizes or no channels.
 Image make_image(int width, int height, std::vector<std::string> channels);
 
+// A copy of `image` with one more channel; `values` holds width * height floats.
+Image with_channel(const Image& image, const std::string& name, const std::vector<float>& values);
+
+// A single-channel image of `values` replicated into R, G, B (for writing masks as PNG).
+Image grey_image(int width, int height, const std::vector<float>& values);
+
 }  // namespace glint

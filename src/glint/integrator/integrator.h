@@ -14,10 +14,17 @@ class Sampler;
 class Arena;
 class Progress;
 
+// A per-pixel channel an integrator adds to the image (e.g. samples taken per pixel).
+struct ExtraChannel {
+    std::string name;           // EXR channel name, e.g. "samples.Y"
+    std::vector<float> values;  // width * height, row-major, top row first
+};
+
 struct RenderStats {
     uint64_t samples = 0;
     uint64_t rays = 0;  // closest-hit plus shadow rays
     double seconds = 0.0;
+    std::vector<ExtraChannel> channels;
 };
 
 class Integrator {
@@ -43,8 +50,23 @@ public:
                         RayCounter& counter, AovSample* aov) const = 0;
 
 protected:
-    void render_pixel(const Scene& scene, Film& film, Vec2i pixel, Sampler& sampler, Arena& arena,
-                      RayCounter& counter) const;
+    // Renders samples [first, first + count) of `pixel` into `film`; returns their mean
+    // luminance and mean squared luminance (for error estimates).
+    struct PixelMoments {
+        double sum = 0.0, sum_squares = 0.0;
+    };
+    PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Sampler& sampler,
+                              Arena& arena, RayCounter& counter, int first, int count) const;
+
+    // Runs `work(pixel, sampler, arena, counter)` for every pixel for which `wanted` is true,
+    // in parallel tiles; returns the rays traced.
+    template <typename Work>
+    uint64_t for_each_pixel(int width, int height, const Sampler& prototype, Progress& progress,
+                            const std::vector<uint8_t>* wanted, Work&& work) const;
+
+    void render_uniform(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const;
+    void render_edge_adaptive(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const;
+    void render_variance_adaptive(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const;
 
     RenderSettings m_settings;
     std::unique_ptr<Filter> m_filter;

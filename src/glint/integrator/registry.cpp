@@ -1,5 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/integrator/path.h>
+#include <glint/integrator/whitted.h>
 
 #include <fmt/format.h>
 
@@ -10,20 +11,21 @@ namespace {
 
 using IntegratorFactory = std::unique_ptr<Integrator> (*)(const RenderSettings&);
 
+template <DirectLighting Strategy>
+std::unique_ptr<Integrator> make_path(const RenderSettings& settings) {
+    return std::make_unique<PathIntegrator>(settings, Strategy);
+}
+
+std::unique_ptr<Integrator> make_whitted(const RenderSettings& settings) {
+    return std::make_unique<WhittedIntegrator>(settings);
+}
+
 const std::map<std::string, IntegratorFactory>& factories() {
     static const std::map<std::string, IntegratorFactory> table = {
-        {"path",
-         [](const RenderSettings& s) -> std::unique_ptr<Integrator> {
-             return std::make_unique<PathIntegrator>(s, DirectLighting::kMis);
-         }},
-        {"path_light",
-         [](const RenderSettings& s) -> std::unique_ptr<Integrator> {
-             return std::make_unique<PathIntegrator>(s, DirectLighting::kLightOnly);
-         }},
-        {"path_bsdf",
-         [](const RenderSettings& s) -> std::unique_ptr<Integrator> {
-             return std::make_unique<PathIntegrator>(s, DirectLighting::kBsdfOnly);
-         }},
+        {"path", make_path<DirectLighting::kMis>},
+        {"path_light", make_path<DirectLighting::kLightOnly>},
+        {"path_bsdf", make_path<DirectLighting::kBsdfOnly>},
+        {"whitted", make_whitted},
     };
     return table;
 }

@@ -4,24 +4,65 @@
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
 
+#include <fmt/format.h>
 #include <tbb/blocked_range2d.h>
 #include <tbb/parallel_for.h>
-
-#include <fmt/format.h>
 
 #include <chrono>
 
 namespace glint {
 
 namespace {
+
 constexpr int kTileSize = 16;
+
+// Luminance compressed to [0, 1) so that edge thresholds mean the same in dark and bright
+// images.
+float tone(const Image& image, int x, int y) {
+    const float l = 0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) + 0.0722f * image.at(x, y, 2);
+    return l / (1.0f + std::max(0.0f, l));
 }
+
+// Pixels where the Sobel gradient of the tone-mapped luminance exceeds `threshold`, grown
+// by `radius` pixels so that both sides of every edge are refined.
+std::vector<uint8_t> sobel_edge_mask(const Image& image, float threshold, int radius) {
+    const int w = image.width, h = image.height;
+    auto at = [&](int x, int y) { return tone(image, std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1)); };
+    std::vector<uint8_t> edges(static_cast<size_t>(w) * h, 0);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float gx = (at(x + 1, y - 1) + 2 * at(x + 1, y) + at(x + 1, y + 1)) -
+                             (at(x - 1, y - 1) + 2 * at(x - 1, y) + at(x - 1, y + 1));
+            const float gy = (at(x - 1, y + 1) + 2 * at(x, y + 1) + at(x + 1, y + 1)) -
+                             (at(x - 1, y - 1) + 2 * at(x, y - 1) + at(x + 1, y - 1));
+            edges[static_cast<size_t>(y) * w + x] = std::sqrt(gx * gx + gy * gy) / 4.0f > threshold;
+        }
+    }
+    std::vector<uint8_t> mask(edges.size(), 0);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (!edges[static_cast<size_t>(y) * w + x]) continue;
+            for (int dy = -radius; dy <= radius; ++dy) {
+                for (int dx = -radius; dx <= radius; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx >= 0 && ny >= 0 && nx < w && ny < h) mask[static_cast<size_t>(ny) * w + nx] = 1;
+                }
+            }
+        }
+    }
+    return mask;
+}
+
+}  // namespace
 
 TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(settings) {
     // Check the names now, before any scene is built, and say where they came from.
     try {
         m_filter = make_filter(settings.filter, settings.filter_radius);
         make_sampler(settings.sampler, settings.spp, settings.seed);
+        if (settings.adaptive != "none" && settings.adaptive != "sobel" && settings.adaptive != "variance") {
+            throw Error(fmt::format("unknown adaptive mode '{}' (expected: none, sobel, variance)", settings.adaptive));
+        }
     } catch (const Error& e) {
         throw Error(fmt::format("{}: {}", settings.where, e.what()));
     }
@@ -29,46 +70,139 @@ TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(sett
 
 RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    const auto prototype = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
-    const int tiles_x = (film.width() + kTileSize - 1) / kTileSize;
-    const int tiles_y = (film.height() + kTileSize - 1) / kTileSize;
-    std::atomic<uint64_t> total_rays{0};
-
-    // Each pixel is rendered by exactly one task and its random numbers depend only on
-    // (seed, pixel, sample index), so the image does not depend on scheduling.
-    tbb::parallel_for(
-        tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
-        [&](const tbb::blocked_range2d<int>& range) {
-            auto sampler = prototype->clone();
-            Arena arena;
-            RayCounter counter;
-            for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
-                for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
-                    const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-                    const int x1 = std::min(x0 + kTileSize, film.width());
-                    const int y1 = std::min(y0 + kTileSize, film.height());
-                    for (int y = y0; y < y1; ++y) {
-                        for (int x = x0; x < x1; ++x) {
-                            render_pixel(scene, film, Vec2i(x, y), *sampler, arena, counter);
-                        }
-                    }
-                    progress.advance(static_cast<uint64_t>(x1 - x0) * (y1 - y0) * m_settings.spp);
-                }
-            }
-            total_rays += counter.rays;
-        });
-
     RenderStats stats;
-    stats.samples = static_cast<uint64_t>(film.width()) * film.height() * m_settings.spp;
-    stats.rays = total_rays.load();
+    if (m_settings.adaptive == "sobel") render_edge_adaptive(scene, film, progress, stats);
+    else if (m_settings.adaptive == "variance") render_variance_adaptive(scene, film, progress, stats);
+    else render_uniform(scene, film, progress, stats);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }
 
-void TileIntegrator::render_pixel(const Scene& scene, Film& film, Vec2i pixel, Sampler& sampler,
-                                  Arena& arena, RayCounter& counter) const {
+template <typename Work>
+uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& prototype, Progress& progress,
+                                        const std::vector<uint8_t>* wanted, Work&& work) const {
+    const int tiles_x = (width + kTileSize - 1) / kTileSize;
+    const int tiles_y = (height + kTileSize - 1) / kTileSize;
+    std::atomic<uint64_t> total_rays{0};
+    // Each pixel is rendered by exactly one task and its random numbers depend only on
+    // (seed, pixel, sample index), so the image does not depend on scheduling.
+    tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const tbb::blocked_range2d<int>& range) {
+        auto sampler = prototype.clone();
+        Arena arena;
+        RayCounter counter;
+        for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
+            for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
+                const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+                const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
+                uint64_t samples = 0;
+                for (int y = y0; y < y1; ++y) {
+                    for (int x = x0; x < x1; ++x) {
+                        if (wanted && !(*wanted)[static_cast<size_t>(y) * width + x]) continue;
+                        samples += work(Vec2i(x, y), *sampler, arena, counter);
+                    }
+                }
+                progress.advance(samples);
+            }
+        }
+        total_rays += counter.rays;
+    });
+    return total_rays.load();
+}
+
+void TileIntegrator::render_uniform(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const {
+    const auto sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
+    const int spp = m_settings.spp;
+    stats.rays = for_each_pixel(film.width(), film.height(), *sampler, progress, nullptr,
+                                [&](Vec2i pixel, Sampler& s, Arena& arena, RayCounter& counter) {
+                                    render_pixel(scene, film, pixel, s, arena, counter, 0, spp);
+                                    return static_cast<uint64_t>(spp);
+                                });
+    stats.samples = static_cast<uint64_t>(film.width()) * film.height() * spp;
+}
+
+// Adaptive supersampling: one sample per pixel, Sobel edges on its luminance, then N x N
+// stratified samples only in the (dilated) edge pixels; flat pixels keep their one sample.
+void TileIntegrator::render_edge_adaptive(const Scene& scene, Film& film, Progress& progress,
+                                          RenderStats& stats) const {
+    const int w = film.width(), h = film.height();
+    Film preview(w, h, film.has_aovs());
+    const auto single = make_sampler("stratified", 1, m_settings.seed);
+    stats.rays = for_each_pixel(w, h, *single, progress, nullptr, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+        render_pixel(scene, preview, pixel, s, a, c, 0, 1);
+        return uint64_t{1};
+    });
+    const std::vector<uint8_t> mask = sobel_edge_mask(preview.resolve(), m_settings.edge_threshold, m_settings.edge_radius);
+
+    const int n = m_settings.supersample;
+    const auto grid = make_sampler("stratified", n * n, m_settings.seed);
+    stats.rays += for_each_pixel(w, h, *grid, progress, &mask, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+        render_pixel(scene, film, pixel, s, a, c, 0, n * n);
+        return static_cast<uint64_t>(n * n);
+    });
+    std::vector<uint8_t> flat(mask.size());
+    for (size_t i = 0; i < mask.size(); ++i) flat[i] = !mask[i];
+    stats.rays += for_each_pixel(w, h, *single, progress, &flat, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+        render_pixel(scene, film, pixel, s, a, c, 0, 1);
+        return uint64_t{1};
+    });
+
+    ExtraChannel edges{"edges.Y", std::vector<float>(mask.begin(), mask.end())};
+    ExtraChannel counts{"samples.Y", {}};
+    for (uint8_t marked : mask) counts.values.push_back(marked ? static_cast<float>(n * n) : 1.0f);
+    for (float c : counts.values) stats.samples += static_cast<uint64_t>(c);
+    stats.channels = {std::move(edges), std::move(counts)};
+}
+
+// Adaptive sampling by error estimate: every pixel gets `spp` samples, then more in
+// batches while the standard error of its mean luminance exceeds target_error times the
+// mean, up to max_spp. Decisions depend only on a pixel's own samples: deterministic.
+void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Progress& progress,
+                                              RenderStats& stats) const {
+    const int w = film.width(), h = film.height();
+    const int cap = m_settings.max_spp > 0 ? std::max(m_settings.max_spp, m_settings.spp) : 8 * m_settings.spp;
+    const int batch = m_settings.spp;
+    // Strata over the cap, so any prefix of a pixel's samples is an unbiased estimate.
+    const auto sampler = make_sampler(m_settings.sampler, cap, m_settings.seed);
+    std::vector<PixelMoments> moments(static_cast<size_t>(w) * h);
+    std::vector<int> taken(moments.size(), 0);
+    std::vector<uint8_t> active(moments.size(), 1);
+
+    auto converged = [&](size_t i) {
+        const double n = taken[i];
+        const double mean = moments[i].sum / n;
+        const double variance = std::max(0.0, moments[i].sum_squares / n - mean * mean) * n / std::max(1.0, n - 1.0);
+        const double standard_error = std::sqrt(variance / n);
+        // Black-ish pixels converge on an absolute scale instead of a relative one.
+        return standard_error <= m_settings.target_error * std::max(mean, 1e-3);
+    };
+
+    for (bool any = true; any;) {
+        stats.rays += for_each_pixel(w, h, *sampler, progress, &active, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+            const size_t i = static_cast<size_t>(pixel.y) * w + pixel.x;
+            const int count = std::min(batch, cap - taken[i]);
+            const PixelMoments m = render_pixel(scene, film, pixel, s, a, c, taken[i], count);
+            moments[i].sum += m.sum;
+            moments[i].sum_squares += m.sum_squares;
+            taken[i] += count;
+            active[i] = taken[i] < cap && !converged(i);
+            return static_cast<uint64_t>(count);
+        });
+        any = std::any_of(active.begin(), active.end(), [](uint8_t a) { return a != 0; });
+    }
+    ExtraChannel counts{"samples.Y", {}};
+    for (int n : taken) {
+        counts.values.push_back(static_cast<float>(n));
+        stats.samples += static_cast<uint64_t>(n);
+    }
+    stats.channels = {std::move(counts)};
+}
+
+TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Film& film, Vec2i pixel,
+                                                          Sampler& sampler, Arena& arena, RayCounter& counter,
+                                                          int first, int count) const {
     const bool want_aovs = film.has_aovs();
-    for (int index = 0; index < m_settings.spp; ++index) {
+    PixelMoments moments;
+    for (int index = first; index < first + count; ++index) {
         sampler.start_pixel_sample(pixel, index);
         const FilterSample fs = m_filter->sample(sampler.get_pixel_2d());
         const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + fs.offset;
@@ -77,7 +211,11 @@ void TileIntegrator::render_pixel(const Scene& scene, Film& film, Vec2i pixel, S
         arena.reset();
         const Spectrum L = li(ray, scene, sampler, arena, counter, want_aovs ? &aov : nullptr);
         film.add_sample(pixel, L, fs.weight, want_aovs ? &aov : nullptr);
+        const double y = L.is_finite() ? L.luminance() : 0.0;
+        moments.sum += y;
+        moments.sum_squares += y * y;
     }
+    return moments;
 }
 
 }  // namespace glint

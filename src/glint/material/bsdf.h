@@ -14,7 +14,8 @@
 //
 // Rules, each tested in tests/material: sample() is distributed as pdf() (chi-square);
 // no BSDF reflects more energy than it receives; reflection is reciprocal, and refraction
-// obeys the generalised reciprocity f(wo,wi)/eta_i^2 = f(wi,wo)/eta_o^2 for radiance.
+// obeys the generalised reciprocity f(wo,wi)/eta_o^2 = f(wi,wo)/eta_i^2 for radiance,
+// with eta_o the index on wo's side (Veach 1997, eq. 5.14; see tests/material).
 //
 // BSDFs are built per hit in an Arena and never destroyed, so they must be trivially
 // destructible (no virtual destructor, no owning members).

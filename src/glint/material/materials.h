@@ -12,5 +12,6 @@ std::unique_ptr<Material> make_diffuse_material(const Params& params);
 std::unique_ptr<Material> make_mirror_material(const Params& params);
 std::unique_ptr<Material> make_dielectric_material(const Params& params);
 std::unique_ptr<Material> make_emissive_material(const Params& params);
+std::unique_ptr<Material> make_phong_material(const Params& params);
 
 }  // namespace glint

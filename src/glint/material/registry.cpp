@@ -14,6 +14,7 @@ const std::map<std::string, MaterialFactory>& factories() {
         {"mirror", make_mirror_material},
         {"dielectric", make_dielectric_material},
         {"emissive", make_emissive_material},
+        {"phong", make_phong_material},
     };
     return table;
 }

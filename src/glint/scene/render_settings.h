@@ -2,6 +2,7 @@
 // How to render: resolution, sampling, integrator and outputs. Filled from the script's
 // glint.render{...} and then overridden by command-line flags.
 #include <glint/core/params.h>
+#include <glint/core/spectrum.h>
 
 #include <cstdint>
 #include <string>
@@ -24,6 +25,20 @@ struct RenderSettings {
     std::vector<std::string> outputs;
     int threads = 0;            // 0 = all cores
     bool csg_shortcuts = true;  // bounding-box pruning inside CSG trees
+
+    // Classic ray tracing ("whitted").
+    Spectrum ambient{0.0f};          // ambient light, times the surface albedo
+    int shadow_samples = 4;          // N: area lights get N x N stratified shadow rays
+    bool penumbra_shortcut = false;  // test 4 rays first; full set only in the penumbra
+
+    // Adaptive sampling, for every tile integrator.
+    std::string adaptive = "none";  // "none", "sobel" (edge supersampling), "variance"
+    float edge_threshold = 0.03f;   // sobel: gradient of tone-mapped luminance marking an edge
+    int edge_radius = 1;            // sobel: dilation of the edge mask, in pixels
+    int supersample = 4;            // sobel: edge pixels get N x N samples
+    float target_error = 0.02f;     // variance: stop when the relative error falls below
+    int max_spp = 0;                // variance: cap per pixel (0 = 8 x spp)
+    std::vector<std::string> debug; // "edges": also write the edge mask
     // Where the integrator, sampler and filter names came from, for error messages.
     std::string where = "render settings";
 };

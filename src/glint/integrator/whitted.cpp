@@ -1,0 +1,140 @@
+#include <glint/core/sampler.h>
+#include <glint/integrator/whitted.h>
+#include <glint/material/material.h>
+
+#include <vector>
+
+namespace glint {
+namespace {
+
+constexpr int kDefaultMaxDepth = 10;
+
+float fract(float x) { return x - std::floor(x); }
+
+}  // namespace
+
+WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings)
+    : TileIntegrator(settings), m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
+
+Spectrum WhittedIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                               RayCounter& counter, AovSample* aov) const {
+    return trace(ray, scene, sampler, arena, counter, aov, 0);
+}
+
+Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                                  RayCounter& counter, AovSample* aov, int depth) const {
+    ++counter.rays;
+    const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+    if (!hit) {
+        if (aov) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
+        return scene.background();
+    }
+    const SurfaceInteraction& si = *hit;
+    if (aov) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
+
+    Spectrum L(0.0f);
+    if (si.area_light) L += si.area_light->le(si, si.wo);
+    const Bsdf* bsdf = si.material->bsdf(si, arena);
+    // Like the path tracer's max_depth: scattering at vertex `depth` is computed only below
+    // the limit, so both integrators mean the same by it (and agree where both are exact).
+    if (bsdf && depth < m_max_depth) {
+        const Vec3 wo_local = si.to_local(si.wo);
+        if (!bsdf->is_delta()) {
+            L += direct(scene, si, *bsdf, sampler, counter);
+            L += m_settings.ambient * si.material->albedo(si);
+        } else {
+            // Follow every delta lobe (reflection, refraction) with its exact weight.
+            uint32_t followed = 0;
+            for (const float u_lobe : {0.0f, 0x1.fffffep-1f}) {
+                const std::optional<BsdfSample> bs = bsdf->sample(wo_local, Vec2(0.5f), u_lobe);
+                if (!bs || (bs->flags & followed) || bs->f.is_black()) continue;
+                followed |= bs->flags & (kBsdfReflection | kBsdfTransmission);
+                const Vec3 wi = si.to_world(bs->wi);
+                const Spectrum weight = bs->f * abs_cos_theta(bs->wi);
+                L += weight * trace(spawn_ray(si, wi), scene, sampler, arena, counter, nullptr, depth + 1);
+            }
+        }
+    }
+    // Light arriving from inside an absorbing medium was attenuated along this segment.
+    if (!si.front_face) {
+        const Spectrum sigma = si.material->interior_absorption();
+        if (!sigma.is_black()) L *= exp(sigma * (-si.t * glm::length(ray.direction)));
+    }
+    return L;
+}
+
+Spectrum WhittedIntegrator::direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                                   Sampler& sampler, RayCounter& counter) const {
+    const Vec3 wo_local = si.to_local(si.wo);
+    Spectrum L(0.0f);
+    for (const auto& light : scene.lights()) {
+        // One random rotation of the stratified pattern per light and hit.
+        const Vec2 rotation = sampler.get_2d();
+        if (!light->is_delta()) {
+            L += area_light_direct(scene, *light, si, bsdf, wo_local, rotation, counter);
+            continue;
+        }
+        const std::optional<LightSample> ls = light->sample_li(si.p, rotation, 0.0f);
+        if (!ls) continue;
+        const Vec3 wi_local = si.to_local(ls->wi);
+        const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
+        if (f.is_black()) continue;
+        ++counter.rays;
+        if (!scene.occluded(spawn_ray_to(si, ls->p))) L += f * ls->L / ls->pdf;
+    }
+    return L;
+}
+
+Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& light,
+                                              const SurfaceInteraction& si, const Bsdf& bsdf,
+                                              const Vec3& wo_local, const Vec2& rotation,
+                                              RayCounter& counter) const {
+    const int n = m_settings.shadow_samples;
+    const int count = n * n;
+    struct ShadowSample {
+        Spectrum contribution;  // unoccluded f L cos / pdf
+        Vec3 target;
+        int visible = -1;       // -1 unknown, 0 blocked, 1 clear
+    };
+    thread_local std::vector<ShadowSample> samples;
+    samples.assign(count, ShadowSample{});
+    for (int k = 0; k < count; ++k) {
+        const Vec2 u(fract((k % n + 0.5f) / n + rotation.x), fract((k / n + 0.5f) / n + rotation.y));
+        const float u_select = fract((k + 0.5f) / count + rotation.x * rotation.y);
+        const std::optional<LightSample> ls = light.sample_li(si.p, u, u_select);
+        if (!ls) continue;
+        const Vec3 wi_local = si.to_local(ls->wi);
+        const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
+        if (f.is_black()) continue;
+        samples[k].contribution = f * ls->L / ls->pdf;
+        samples[k].target = ls->p;
+    }
+    auto visible = [&](int k) {
+        if (samples[k].visible < 0) {
+            ++counter.rays;
+            samples[k].visible = scene.occluded(spawn_ray_to(si, samples[k].target)) ? 0 : 1;
+        }
+        return samples[k].visible == 1;
+    };
+
+    bool assume_all_visible = false;
+    if (m_settings.penumbra_shortcut && n > 1) {
+        const int corners[4] = {0, n - 1, count - n, count - 1};
+        int clear = 0, tested = 0;
+        for (int k : corners) {
+            if (samples[k].contribution.is_black()) continue;
+            ++tested;
+            clear += visible(k);
+        }
+        if (tested > 0 && clear == 0) return Spectrum(0.0f);  // umbra
+        assume_all_visible = tested == 4 && clear == 4;       // fully lit
+    }
+    Spectrum sum(0.0f);
+    for (int k = 0; k < count; ++k) {
+        if (samples[k].contribution.is_black()) continue;
+        if (assume_all_visible || visible(k)) sum += samples[k].contribution;
+    }
+    return sum / static_cast<float>(count);
+}
+
+}  // namespace glint

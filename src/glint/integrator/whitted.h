@@ -1,0 +1,32 @@
+#pragma once
+// Classic recursive ray tracing (Whitted 1980): direct light from every light at each
+// non-specular hit (stratified shadow rays for area lights, hence soft shadows), an
+// ambient term, and exact recursion into mirror reflection and refraction, weighted by
+// Fresnel, with total internal reflection and Beer absorption. No indirect diffuse light.
+#include <glint/integrator/integrator.h>
+
+namespace glint {
+
+class WhittedIntegrator final : public TileIntegrator {
+public:
+    explicit WhittedIntegrator(const RenderSettings& settings);
+    Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                RayCounter& counter, AovSample* aov) const override;
+
+    // Direct light from one area light through N x N stratified shadow rays; with the
+    // penumbra shortcut, the four corner strata decide first whether the point is in the
+    // umbra (all blocked: black) or fully lit (all clear: no more shadow rays).
+    Spectrum area_light_direct(const Scene& scene, const Light& light, const SurfaceInteraction& si,
+                               const Bsdf& bsdf, const Vec3& wo_local, const Vec2& rotation,
+                               RayCounter& counter) const;
+
+private:
+    Spectrum trace(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                   RayCounter& counter, AovSample* aov, int depth) const;
+    Spectrum direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                    Sampler& sampler, RayCounter& counter) const;
+
+    int m_max_depth;
+};
+
+}  // namespace glint
