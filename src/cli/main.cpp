@@ -129,8 +129,7 @@ int run_render(const RenderOptions& options) {
     const RenderStats stats = integrator->render(*scene, film, progress);
     progress.finish();
 
-    Image image = film.resolve();
-    for (const ExtraChannel& channel : stats.channels) image = with_channel(image, channel.name, channel.values);
+    const Image image = final_image(film, stats);
     for (const std::string& path : settings.outputs) write_image(path, image, WriteOptions{settings.exposure});
     write_debug_images(settings, stats);
     if (!options.quiet && settings.adaptive != "none") {

@@ -4,12 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 using namespace glint;
 
 TEST(Sampler, SameKeyGivesSameNumbers) {
-    for (const char* name : {"independent", "stratified"}) {
+    for (const char* name : {"independent", "stratified", "sobol"}) {
         auto a = make_sampler(name, 16, 7);
         auto b = a->clone();
         a->start_pixel_sample(Vec2i(3, 5), 9);
@@ -22,7 +23,7 @@ TEST(Sampler, SameKeyGivesSameNumbers) {
 }
 
 TEST(Sampler, ValuesInUnitInterval) {
-    for (const char* name : {"independent", "stratified"}) {
+    for (const char* name : {"independent", "stratified", "sobol"}) {
         auto s = make_sampler(name, 7, 1);
         for (int i = 0; i < 7; ++i) {
             s->start_pixel_sample(Vec2i(1, 2), i);
@@ -63,4 +64,39 @@ TEST(Sampler, StratifiedCoversEveryStratumOnce) {
 
 TEST(Sampler, UnknownNameThrows) {
     EXPECT_THROW(make_sampler("sobolx", 4, 0), Error);
+}
+
+// Owen-scrambled Sobol: every power-of-two prefix of a pixel's samples is stratified in
+// each dimension and in each pair's elementary intervals (the (0,2)-sequence property),
+// so adaptive sampling can stop a pixel after any such prefix.
+TEST(Sampler, SobolPrefixesAreStratified) {
+    auto s = make_sampler("sobol", 1024, 11);
+    for (int count : {4, 16, 64}) {
+        const int dims = 4;  // two 2D pairs
+        std::vector<Vec2> points[dims / 2];
+        for (int i = 0; i < count; ++i) {
+            s->start_pixel_sample(Vec2i(7, 3), i);
+            for (int d = 0; d < dims / 2; ++d) points[d].push_back(s->get_2d());
+        }
+        for (const auto& pair : points) {
+            // Elementary intervals of shape 2^-a x 2^-(k-a) each hold exactly one point.
+            const int k = static_cast<int>(std::log2(count));
+            for (int a = 0; a <= k; ++a) {
+                const int nx = 1 << a, ny = 1 << (k - a);
+                std::vector<int> hits(count, 0);
+                for (const Vec2& p : pair) ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
+                for (int h : hits) EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
+            }
+        }
+    }
+}
+
+TEST(Sampler, SobolDiffersBetweenPixelsAndDimensions) {
+    auto s = make_sampler("sobol", 16, 2);
+    s->start_pixel_sample(Vec2i(0, 0), 5);
+    const Vec2 a = s->get_2d(), b = s->get_2d();
+    s->start_pixel_sample(Vec2i(1, 0), 5);
+    const Vec2 c = s->get_2d();
+    EXPECT_NE(a, b);
+    EXPECT_NE(a, c);
 }

@@ -1,3 +1,4 @@
+#include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/integrator/integrator.h>
 #include <glint/scene/build.h>
@@ -20,13 +21,25 @@ Image render_lua(const std::string& code, int threads) {
     auto integrator = make_integrator(settings);
     Film film(settings.width, settings.height, settings.aovs);
     Progress progress("test", 1, true);
+    RenderStats stats;
     if (threads > 0) {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        integrator->render(*scene, film, progress);
+        stats = integrator->render(*scene, film, progress);
     } else {
-        integrator->render(*scene, film, progress);
+        stats = integrator->render(*scene, film, progress);
     }
-    return film.resolve();
+    return final_image(film, stats);
+}
+
+std::string read_text(const std::string& path) {
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) throw Error("cannot open " + path);
+    std::string text;
+    char buffer[4096];
+    size_t n;
+    while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, n);
+    std::fclose(file);
+    return text;
 }
 
 double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1) {

@@ -11,6 +11,9 @@ namespace glint::test {
 // (0 = all), and returns the resolved image.
 Image render_lua(const std::string& code, int threads = 0);
 
+// The whole content of a text file (throws glint::Error when it cannot be read).
+std::string read_text(const std::string& path);
+
 // Mean of channel `c` over a rectangle of the image.
 double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1);
 

@@ -117,6 +117,79 @@ private:
     Rng m_rng;
 };
 
+uint32_t reverse_bits(uint32_t x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+    x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+    x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+    return x;
+}
+
+// Hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling"): the
+// Laine-Karras permutation on reversed bits scrambles each bit depending only on the bits
+// above it, which keeps the sequence's stratification.
+uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
+    x = reverse_bits(x);
+    x += seed;
+    x ^= x * 0x6c50b47cu;
+    x ^= x * 0xb82f1e52u;
+    x ^= x * 0xc7afe638u;
+    x ^= x * 0x8d22f6e6u;
+    return reverse_bits(x);
+}
+
+// The first two dimensions of the Sobol sequence: van der Corput, and the dimension whose
+// generator matrix is Pascal's triangle mod 2. Together a (0,2)-sequence: every prefix of
+// 2^k points is stratified in every elementary interval of area 2^-k.
+uint32_t sobol_dimension_0(uint32_t index) { return reverse_bits(index); }
+uint32_t sobol_dimension_1(uint32_t index) {
+    uint32_t result = 0;
+    for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
+        if (index & 1u) result ^= v;
+    }
+    return result;
+}
+
+float to_unit_float(uint32_t bits) { return std::min(static_cast<float>(bits >> 8) * 0x1p-24f, 0x1.fffffep-1f); }
+
+// Owen-scrambled Sobol, "padded" per dimension pair: each pair of dimensions uses the
+// (0,2)-sequence with its own index shuffle and scramble, keyed by (seed, pixel, dimension).
+// Any prefix of a pixel's samples is well stratified, which adaptive sampling relies on.
+class SobolSampler final : public Sampler {
+public:
+    using Sampler::Sampler;
+
+    void start_pixel_sample(Vec2i pixel, int index) override {
+        m_pixel_key = pixel_sample_key(m_seed, pixel, 0);
+        m_index = static_cast<uint32_t>(index);
+        m_dimension = 0;
+    }
+
+    float get_1d() override {
+        const uint32_t key = next_dimension_key();
+        const uint32_t shuffled = nested_uniform_scramble(m_index, key);
+        return to_unit_float(nested_uniform_scramble(sobol_dimension_0(shuffled), key * 0x9e3779b9u + 1u));
+    }
+
+    Vec2 get_2d() override {
+        const uint32_t key = next_dimension_key();
+        const uint32_t shuffled = nested_uniform_scramble(m_index, key);
+        const uint32_t x = nested_uniform_scramble(sobol_dimension_0(shuffled), key * 0x9e3779b9u + 1u);
+        const uint32_t y = nested_uniform_scramble(sobol_dimension_1(shuffled), key * 0x85ebca6bu + 2u);
+        return Vec2(to_unit_float(x), to_unit_float(y));
+    }
+
+    std::unique_ptr<Sampler> clone() const override { return std::make_unique<SobolSampler>(m_spp, m_seed); }
+
+private:
+    uint32_t next_dimension_key() { return static_cast<uint32_t>(hash_combine(m_pixel_key, m_dimension++)); }
+
+    uint64_t m_pixel_key = 0;
+    uint32_t m_index = 0;
+    uint64_t m_dimension = 0;
+};
+
 }  // namespace
 
 std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_pixel,
@@ -124,7 +197,8 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_p
     if (samples_per_pixel < 1) throw Error("samples per pixel must be at least 1");
     if (name == "independent") return std::make_unique<IndependentSampler>(samples_per_pixel, seed);
     if (name == "stratified") return std::make_unique<StratifiedSampler>(samples_per_pixel, seed);
-    throw Error(fmt::format("unknown sampler '{}' (expected: independent, stratified)", name));
+    if (name == "sobol") return std::make_unique<SobolSampler>(samples_per_pixel, seed);
+    throw Error(fmt::format("unknown sampler '{}' (expected: independent, stratified, sobol)", name));
 }
 
 }  // namespace glint

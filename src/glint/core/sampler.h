@@ -30,7 +30,7 @@ protected:
     uint64_t m_seed;
 };
 
-// Names: "independent", "stratified". Throws glint::Error for anything else.
+// Names: "independent", "stratified", "sobol". Throws glint::Error for anything else.
 std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_pixel,
                                       uint64_t seed);
 

@@ -72,6 +72,9 @@ protected:
     std::unique_ptr<Filter> m_filter;
 };
 
+// The film's image with the integrator's extra channels (sample counts, edge mask) added.
+Image final_image(const Film& film, const RenderStats& stats);
+
 // Builds the integrator named in settings.integrator; throws glint::Error listing the
 // known names otherwise.
 std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings);

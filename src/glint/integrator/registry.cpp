@@ -41,4 +41,10 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings) {
                             settings.integrator, known));
 }
 
+Image final_image(const Film& film, const RenderStats& stats) {
+    Image image = film.resolve();
+    for (const ExtraChannel& channel : stats.channels) image = with_channel(image, channel.name, channel.values);
+    return image;
+}
+
 }  // namespace glint

@@ -153,14 +153,14 @@ void TileIntegrator::render_edge_adaptive(const Scene& scene, Film& film, Progre
     stats.channels = {std::move(edges), std::move(counts)};
 }
 
-// Adaptive sampling by error estimate: every pixel gets `spp` samples, then more in
-// batches while the standard error of its mean luminance exceeds target_error times the
-// mean, up to max_spp. Decisions depend only on a pixel's own samples: deterministic.
+// Adaptive sampling by error estimate: every pixel gets `spp` samples, then its count
+// doubles while the standard error of its mean luminance exceeds target_error times the
+// mean, up to max_spp. Decisions are made between rounds from finished pixels only, so
+// they do not depend on the thread count.
 void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Progress& progress,
                                               RenderStats& stats) const {
     const int w = film.width(), h = film.height();
     const int cap = m_settings.max_spp > 0 ? std::max(m_settings.max_spp, m_settings.spp) : 8 * m_settings.spp;
-    const int batch = m_settings.spp;
     // Strata over the cap, so any prefix of a pixel's samples is an unbiased estimate.
     const auto sampler = make_sampler(m_settings.sampler, cap, m_settings.seed);
     std::vector<PixelMoments> moments(static_cast<size_t>(w) * h);
@@ -172,22 +172,42 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
         const double mean = moments[i].sum / n;
         const double variance = std::max(0.0, moments[i].sum_squares / n - mean * mean) * n / std::max(1.0, n - 1.0);
         const double standard_error = std::sqrt(variance / n);
-        // Black-ish pixels converge on an absolute scale instead of a relative one.
-        return standard_error <= m_settings.target_error * std::max(mean, 1e-3);
+        // Relative to the mean, regularised like glint compare's relative MSE (r^2 + 0.01),
+        // so dark pixels are not chased to a precision nobody can see.
+        return standard_error <= m_settings.target_error * std::sqrt(mean * mean + 0.01);
     };
 
     for (bool any = true; any;) {
         stats.rays += for_each_pixel(w, h, *sampler, progress, &active, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
             const size_t i = static_cast<size_t>(pixel.y) * w + pixel.x;
-            const int count = std::min(batch, cap - taken[i]);
+            // Doubling keeps sample counts at powers of two times spp, where the Sobol
+            // sampler's prefixes are best stratified.
+            const int count = std::min(taken[i] == 0 ? m_settings.spp : taken[i], cap - taken[i]);
             const PixelMoments m = render_pixel(scene, film, pixel, s, a, c, taken[i], count);
             moments[i].sum += m.sum;
             moments[i].sum_squares += m.sum_squares;
             taken[i] += count;
-            active[i] = taken[i] < cap && !converged(i);
             return static_cast<uint64_t>(count);
         });
-        any = std::any_of(active.begin(), active.end(), [](uint8_t a) { return a != 0; });
+        // Between rounds: a pixel stops only when it and its 8 neighbours all look
+        // converged. A few samples can miss a pixel's rare bright paths and understate its
+        // error; its neighbours, which see the same light, catch that.
+        std::vector<uint8_t> looks_converged(active.size());
+        for (size_t i = 0; i < active.size(); ++i) looks_converged[i] = converged(i);
+        any = false;
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const size_t i = static_cast<size_t>(y) * w + x;
+                bool neighbourhood_converged = true;
+                for (int ny = std::max(0, y - 1); ny <= std::min(h - 1, y + 1); ++ny) {
+                    for (int nx = std::max(0, x - 1); nx <= std::min(w - 1, x + 1); ++nx) {
+                        neighbourhood_converged &= looks_converged[static_cast<size_t>(ny) * w + nx] != 0;
+                    }
+                }
+                active[i] = taken[i] < cap && !neighbourhood_converged;
+                any |= active[i] != 0;
+            }
+        }
     }
     ExtraChannel counts{"samples.Y", {}};
     for (int n : taken) {

@@ -2,6 +2,7 @@
 #include <glint/integrator/whitted.h>
 #include <glint/material/material.h>
 
+#include <array>
 #include <vector>
 
 namespace glint {
@@ -10,6 +11,43 @@ namespace {
 constexpr int kDefaultMaxDepth = 10;
 
 float fract(float x) { return x - std::floor(x); }
+
+struct ShadowSample {
+    Spectrum contribution;  // unoccluded f L cos / pdf
+    Vec3 target;
+    int visible = -1;  // -1 unknown, 0 blocked, 1 clear
+};
+
+// Indices of the samples farthest out along the four diagonals of a plane facing `p`
+// (-1 where there is no sample with a contribution).
+std::array<int, 4> extreme_samples(const std::vector<ShadowSample>& samples, const Vec3& p) {
+    Vec3 centroid(0.0f);
+    int used = 0;
+    for (const ShadowSample& s : samples) {
+        if (s.contribution.is_black()) continue;
+        centroid += s.target;
+        ++used;
+    }
+    std::array<int, 4> best = {-1, -1, -1, -1};
+    if (used == 0) return best;
+    centroid /= static_cast<float>(used);
+    const Frame frame = Frame::from_normal(glm::normalize(centroid - p));
+    std::array<float, 4> best_score;
+    best_score.fill(-kInfinity);
+    for (int k = 0; k < static_cast<int>(samples.size()); ++k) {
+        if (samples[k].contribution.is_black()) continue;
+        const Vec3 d = samples[k].target - centroid;
+        const float a = glm::dot(d, frame.s()), b = glm::dot(d, frame.t());
+        const float scores[4] = {a + b, a - b, -a + b, -a - b};
+        for (int q = 0; q < 4; ++q) {
+            if (scores[q] > best_score[q]) {
+                best_score[q] = scores[q];
+                best[q] = k;
+            }
+        }
+    }
+    return best;
+}
 
 }  // namespace
 
@@ -91,11 +129,6 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
                                               RayCounter& counter) const {
     const int n = m_settings.shadow_samples;
     const int count = n * n;
-    struct ShadowSample {
-        Spectrum contribution;  // unoccluded f L cos / pdf
-        Vec3 target;
-        int visible = -1;       // -1 unknown, 0 blocked, 1 clear
-    };
     thread_local std::vector<ShadowSample> samples;
     samples.assign(count, ShadowSample{});
     for (int k = 0; k < count; ++k) {
@@ -119,10 +152,12 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
 
     bool assume_all_visible = false;
     if (m_settings.penumbra_shortcut && n > 1) {
-        const int corners[4] = {0, n - 1, count - n, count - 1};
-        int clear = 0, tested = 0;
-        for (int k : corners) {
-            if (samples[k].contribution.is_black()) continue;
+        // Test the four samples at the extremes of the light as seen from the point: for a
+        // convex light and occluder, all four blocked means the whole light is hidden and
+        // all four clear means no edge crosses it.
+        int tested = 0, clear = 0;
+        for (int k : extreme_samples(samples, si.p)) {
+            if (k < 0) continue;
             ++tested;
             clear += visible(k);
         }

@@ -17,7 +17,7 @@ struct RenderSettings {
     uint64_t seed = 0;
     int max_depth = -1;  // bounces; -1 = unlimited (Russian roulette ends paths)
     std::string integrator = "path";
-    std::string sampler = "stratified";
+    std::string sampler = "sobol";
     std::string filter = "box";
     float filter_radius = 0.0f;  // 0 = the filter's default
     float exposure = 0.0f;       // stops, applied to PNG output
