@@ -15,6 +15,8 @@ public:
     explicit Arena(size_t block_size = 64 * 1024) : m_block_size(block_size) {}
     Arena(const Arena&) = delete;
     Arena& operator=(const Arena&) = delete;
+    Arena(Arena&&) = default;
+    Arena& operator=(Arena&&) = default;
 
     template <typename T, typename... Args>
     T* make(Args&&... args) {

@@ -38,6 +38,15 @@ public:
         m_area = static_cast<float>(total);
     }
 
+    ShapeSample sample_area(const Vec2& u, float u_select) const override {
+        const double target = u_select * static_cast<double>(m_area);
+        auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
+        const size_t tri = std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
+        const Vec3* v = &m_vertices[3 * tri];
+        const Vec2 b = warp::square_to_uniform_triangle(u);
+        return {(1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2], m_normals[tri], 1.0f / m_area};
+    }
+
     ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override {
         const double target = u_select * static_cast<double>(m_area);
         auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);

@@ -39,6 +39,8 @@ public:
     // Density of sampling the point `p` with normal `n` from `ref`.
     virtual float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const = 0;
     virtual float area() const = 0;
+    // A point uniform over the surface (pdf = 1 / area), for emitting photons.
+    virtual ShapeSample sample_area(const Vec2& u, float u_select) const = 0;
 };
 
 class Shape {

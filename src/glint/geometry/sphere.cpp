@@ -145,6 +145,11 @@ std::unique_ptr<ShapeSampler> Sphere::make_sampler(const Transform& to_world) co
     return std::make_unique<SphereSampler>(center, axes.x);
 }
 
+ShapeSample SphereSampler::sample_area(const Vec2& u, float) const {
+    const Vec3 n = warp::square_to_uniform_sphere(u);
+    return {m_center + m_radius * n, n, 1.0f / area()};
+}
+
 ShapeSample SphereSampler::sample(const Vec3& ref, const Vec2& u, float) const {
     const Vec3 to_center = m_center - ref;
     const float dist2 = glm::dot(to_center, to_center);

@@ -33,6 +33,7 @@ public:
     ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override;
     float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
     float area() const override { return 4.0f * kPi * m_radius * m_radius; }
+    ShapeSample sample_area(const Vec2& u, float u_select) const override;
 
 private:
     Vec3 m_center;

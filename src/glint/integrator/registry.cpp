@@ -1,5 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/integrator/path.h>
+#include <glint/integrator/sppm.h>
 #include <glint/integrator/whitted.h>
 
 #include <fmt/format.h>
@@ -16,6 +17,10 @@ std::unique_ptr<Integrator> make_path(const RenderSettings& settings) {
     return std::make_unique<PathIntegrator>(settings, Strategy);
 }
 
+std::unique_ptr<Integrator> make_sppm(const RenderSettings& settings) {
+    return std::make_unique<SppmIntegrator>(settings);
+}
+
 std::unique_ptr<Integrator> make_whitted(const RenderSettings& settings) {
     return std::make_unique<WhittedIntegrator>(settings);
 }
@@ -25,6 +30,7 @@ const std::map<std::string, IntegratorFactory>& factories() {
         {"path", make_path<DirectLighting::kMis>},
         {"path_light", make_path<DirectLighting::kLightOnly>},
         {"path_bsdf", make_path<DirectLighting::kBsdfOnly>},
+        {"sppm", make_sppm},
         {"whitted", make_whitted},
     };
     return table;

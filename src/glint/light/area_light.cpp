@@ -1,4 +1,5 @@
 #include <glint/light/area_light.h>
+#include <glint/math/warp.h>
 
 namespace glint {
 
@@ -23,6 +24,21 @@ float AreaLight::pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) con
 
 Spectrum AreaLight::le(const SurfaceInteraction& si, const Vec3& w) const {
     return emitted(si.ng, w);
+}
+
+// Position uniform by area, direction cosine-weighted about the normal (on a random side
+// when two-sided), so every photon carries L * pi * area (times 2 if two-sided).
+std::optional<LightEmission> AreaLight::sample_le(const Vec2& u1, const Vec2& u2, float u_select) const {
+    float u_side = 0.0f;
+    if (m_two_sided) {
+        u_side = u_select < 0.5f ? 0.0f : 1.0f;
+        u_select = u_select < 0.5f ? 2.0f * u_select : 2.0f * u_select - 1.0f;
+    }
+    const ShapeSample s = m_shape->sample_area(u1, u_select);
+    const Vec3 n = u_side > 0.0f ? -s.n : s.n;
+    const Vec3 w = Frame::from_normal(n).to_world(warp::square_to_cosine_hemisphere(u2));
+    const float sides = m_two_sided ? 2.0f : 1.0f;
+    return LightEmission{Ray{offset_ray_origin(s.p, n, w), w}, m_radiance * (kPi * sides / s.pdf)};
 }
 
 Spectrum AreaLight::power() const {

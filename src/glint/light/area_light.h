@@ -17,6 +17,7 @@ public:
     float pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const override;
     Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
     Spectrum power() const override;
+    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
     bool is_delta() const override { return false; }
 
     // Radiance leaving a surface point with normal `n` towards `w`.

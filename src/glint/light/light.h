@@ -16,9 +16,24 @@ struct LightSample {
     bool is_delta = false;
 };
 
+// A ray leaving a light, for photon tracing and light paths.
+struct LightEmission {
+    Ray ray;        // unit direction
+    Spectrum beta;  // Le |cos| / (pdf_position pdf_direction): the photon's power per sample
+};
+
 class Light {
 public:
     virtual ~Light() = default;
+
+    // Called once the scene is built (directional lights need its extent).
+    virtual void preprocess(const Vec3& scene_center, float scene_radius) {
+        (void)scene_center;
+        (void)scene_radius;
+    }
+    // Samples an emitted ray; nullopt when nothing is emitted. u1 picks the position,
+    // u2 the direction, u_select a triangle or side.
+    virtual std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const = 0;
 
     // Samples incident illumination at `ref`; nullopt when the light cannot reach it.
     virtual std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,

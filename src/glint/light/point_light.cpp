@@ -1,4 +1,6 @@
 #include <glint/light/point_light.h>
+#include <glint/math/frame.h>
+#include <glint/math/warp.h>
 
 #include <algorithm>
 
@@ -20,6 +22,37 @@ std::optional<LightSample> sample_point(const Vec3& position, const Vec3& ref,
 }
 
 }  // namespace
+
+std::optional<LightEmission> PointLight::sample_le(const Vec2&, const Vec2& u2, float) const {
+    const Vec3 w = warp::square_to_uniform_sphere(u2);
+    return LightEmission{Ray{m_position, w}, m_intensity / warp::uniform_sphere_pdf()};
+}
+
+std::optional<LightEmission> SpotLight::sample_le(const Vec2&, const Vec2& u2, float) const {
+    const Vec3 local = warp::square_to_uniform_cone(u2, m_cos_cone);
+    const Vec3 w = Frame::from_normal(m_direction).to_world(local);
+    const float falloff_value = falloff(w);
+    if (falloff_value <= 0.0f) return std::nullopt;
+    return LightEmission{Ray{m_position, w}, m_intensity * (falloff_value / warp::uniform_cone_pdf(local, m_cos_cone))};
+}
+
+std::optional<LightSample> DirectionalLight::sample_li(const Vec3& ref, const Vec2&, float) const {
+    LightSample s;
+    s.wi = -m_direction;
+    s.L = m_irradiance;
+    s.pdf = 1.0f;
+    s.p = ref + s.wi * (2.0f * m_radius + glm::length(ref - m_center));  // beyond the scene
+    s.is_delta = true;
+    return s;
+}
+
+// Rays start on a disk that covers the scene, facing along the light.
+std::optional<LightEmission> DirectionalLight::sample_le(const Vec2& u1, const Vec2&, float) const {
+    const Vec2 d = warp::square_to_uniform_disk_concentric(u1);
+    const Frame frame = Frame::from_normal(m_direction);
+    const Vec3 origin = m_center - m_direction * m_radius + m_radius * (d.x * frame.s() + d.y * frame.t());
+    return LightEmission{Ray{origin, m_direction}, m_irradiance * (kPi * m_radius * m_radius)};
+}
 
 std::optional<LightSample> PointLight::sample_li(const Vec3& ref, const Vec2&, float) const {
     return sample_point(m_position, ref, m_intensity);
@@ -62,6 +95,14 @@ std::unique_ptr<Light> make_point_light(const Params& params) {
     if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
         params.fail("'intensity' must not be negative");
     return std::make_unique<PointLight>(position, intensity);
+}
+
+std::unique_ptr<Light> make_directional_light(const Params& params) {
+    const Vec3 direction = params.get_vec3("direction");
+    const Spectrum irradiance = params.get_spectrum("irradiance");
+    if (!(glm::length(direction) > 0.0f)) params.fail("'direction' must not be zero");
+    if (std::min({irradiance.r, irradiance.g, irradiance.b}) < 0.0f) params.fail("'irradiance' must not be negative");
+    return std::make_unique<DirectionalLight>(direction, irradiance);
 }
 
 std::unique_ptr<Light> make_spot_light(const Params& params) {

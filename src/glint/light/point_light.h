@@ -14,6 +14,7 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override { return 4.0f * kPi * m_intensity; }
+    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
     bool is_delta() const override { return true; }
 
 private:
@@ -29,6 +30,7 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override;
+    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
     bool is_delta() const override { return true; }
     // Fraction of the intensity emitted in direction `w` (unit, away from the light).
     float falloff(const Vec3& w) const;
@@ -41,7 +43,29 @@ private:
     float m_cos_falloff_start;
 };
 
+// Parallel light from one direction (the sun): `irradiance` on a surface facing it.
+class DirectionalLight final : public Light {
+public:
+    DirectionalLight(const Vec3& direction, const Spectrum& irradiance)
+        : m_direction(glm::normalize(direction)), m_irradiance(irradiance) {}
+    void preprocess(const Vec3& scene_center, float scene_radius) override {
+        m_center = scene_center;
+        m_radius = scene_radius;
+    }
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
+    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
+    Spectrum power() const override { return m_irradiance * (kPi * m_radius * m_radius); }
+    bool is_delta() const override { return true; }
+
+private:
+    Vec3 m_direction;  // the way the light travels
+    Spectrum m_irradiance;
+    Vec3 m_center{0.0f};
+    float m_radius = 1.0f;
+};
+
 std::unique_ptr<Light> make_point_light(const Params& params);
+std::unique_ptr<Light> make_directional_light(const Params& params);
 std::unique_ptr<Light> make_spot_light(const Params& params);
 
 }  // namespace glint

@@ -10,6 +10,7 @@ using LightFactory = std::unique_ptr<Light> (*)(const Params&);
 
 const std::map<std::string, LightFactory>& factories() {
     static const std::map<std::string, LightFactory> table = {
+        {"directional_light", make_directional_light},
         {"point_light", make_point_light},
         {"spot_light", make_spot_light},
     };

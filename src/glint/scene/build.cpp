@@ -32,6 +32,10 @@ public:
         build_groups();
         place_root();
         m_scene->m_accel.commit();
+        const Bounds3& bounds = m_scene->m_stats.bounds;
+        const Vec3 center = bounds.is_empty() ? Vec3(0.0f) : bounds.center();
+        const float radius = bounds.is_empty() ? 1.0f : std::max(1e-3f, 0.5f * glm::length(bounds.extent()));
+        for (auto& light : m_scene->m_lights) light->preprocess(center, radius);
         m_scene->m_light_sampler = LightSampler(m_scene->m_lights);
         m_scene->m_stats.lights = m_scene->m_lights.size();
         return std::move(m_scene);

@@ -25,6 +25,12 @@ RenderSettings parse_render_settings(const Params* params) {
     s.ambient = p.get_spectrum("ambient", s.ambient);
     s.shadow_samples = p.get_int("shadow_samples", s.shadow_samples);
     s.penumbra_shortcut = p.get_bool("penumbra_shortcut", s.penumbra_shortcut);
+    s.photons = p.get_int("photons", s.photons);
+    s.caustic_photons = p.get_int("caustic_photons", s.caustic_photons);
+    s.photon_radius = p.get_float("photon_radius", s.photon_radius);
+    s.photon_neighbours = p.get_int("photon_neighbours", s.photon_neighbours);
+    s.gather_rays = p.get_int("gather_rays", s.gather_rays);
+    s.projection_maps = p.get_bool("projection_maps", s.projection_maps);
     s.adaptive = p.get_string("adaptive", s.adaptive);
     s.edge_threshold = p.get_float("edge_threshold", s.edge_threshold);
     s.edge_radius = p.get_int("edge_radius", s.edge_radius);
@@ -41,6 +47,9 @@ RenderSettings parse_render_settings(const Params* params) {
     if (s.filter_radius < 0.0f) p.fail("'filter_radius' must not be negative");
     if (std::min({s.ambient.r, s.ambient.g, s.ambient.b}) < 0.0f) p.fail("'ambient' must not be negative");
     if (s.shadow_samples < 1 || s.shadow_samples > 64) p.fail("'shadow_samples' must be in [1, 64]");
+    if (s.photons < 1 || s.caustic_photons < 0) p.fail("'photons' must be at least 1 and 'caustic_photons' not negative");
+    if (s.photon_radius < 0.0f) p.fail("'photon_radius' must not be negative");
+    if (s.photon_neighbours < 1 || s.gather_rays < 0) p.fail("'photon_neighbours' must be at least 1 and 'gather_rays' not negative");
     if (s.edge_radius < 0 || s.edge_radius > 16) p.fail("'edge_radius' must be in [0, 16]");
     if (s.supersample < 1 || s.supersample > 32) p.fail("'supersample' must be in [1, 32]");
     if (!(s.target_error > 0.0f)) p.fail("'target_error' must be positive");

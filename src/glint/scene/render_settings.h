@@ -31,6 +31,14 @@ struct RenderSettings {
     int shadow_samples = 4;          // N: area lights get N x N stratified shadow rays
     bool penumbra_shortcut = false;  // test 4 rays first; full set only in the penumbra
 
+    // Photon mapping ("photon", "sppm"). For sppm, spp is the number of passes.
+    int photons = 100000;          // photons per pass (sppm) or in the global map (photon)
+    int caustic_photons = 100000;  // photons in the caustic map (photon)
+    float photon_radius = 0.0f;    // sppm initial radius; 0 = 1/256 of the scene's size
+    int photon_neighbours = 50;    // photon: photons per radiance estimate
+    int gather_rays = 16;          // photon: final-gathering rays per visible point
+    bool projection_maps = true;   // photon: aim caustic photons at specular objects
+
     // Adaptive sampling, for every tile integrator.
     std::string adaptive = "none";  // "none", "sobel" (edge supersampling), "variance"
     float edge_threshold = 0.03f;   // sobel: gradient of tone-mapped luminance marking an edge

@@ -1,0 +1,219 @@
+#include <glint/core/progress.h>
+#include <glint/core/sampler.h>
+#include <glint/integrator/photon_tracer.h>
+#include <glint/integrator/sppm.h>
+
+#include <tbb/parallel_for.h>
+
+#include <unordered_map>
+
+namespace glint {
+namespace {
+
+constexpr float kAlpha = 2.0f / 3.0f;
+constexpr int kMaxCameraDepth = 16;
+
+struct VisiblePoint {
+    SurfaceInteraction si;
+    Spectrum beta{0.0f};  // camera path throughput up to the point
+    bool valid = false;
+};
+
+struct PixelState {
+    Spectrum direct{0.0f};  // emission and next-event estimates, summed over passes
+    Spectrum tau{0.0f};     // accumulated flux (Hachisuka's tau)
+    double photons = 0.0;   // N
+    float radius = 0.0f;
+};
+
+// Direct light by light sampling alone: with the photons covering only indirect light
+// (photons of 0 bounces are skipped), this is the whole direct term.
+Spectrum estimate_direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, Sampler& sampler,
+                         uint64_t& rays) {
+    const LightSampler::Choice choice = scene.light_sampler().sample(sampler.get_1d());
+    const Vec2 u = sampler.get_2d();
+    const float u_select = sampler.get_1d();
+    if (!choice.light) return Spectrum(0.0f);
+    const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);
+    if (!ls || ls->L.is_black()) return Spectrum(0.0f);
+    const Vec3 wi = si.to_local(ls->wi);
+    const Spectrum f = bsdf.eval(si.to_local(si.wo), wi) * abs_cos_theta(wi);
+    if (f.is_black()) return Spectrum(0.0f);
+    ++rays;
+    if (scene.occluded(spawn_ray_to(si, ls->p))) return Spectrum(0.0f);
+    return f * ls->L / (choice.pmf * ls->pdf);
+}
+
+// Follows a camera ray through specular surfaces to its first non-specular surface.
+VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, Arena& arena, Spectrum& direct,
+                                uint64_t& rays) {
+    Spectrum beta(1.0f);
+    bool specular = true;
+    for (int depth = 0; depth < kMaxCameraDepth; ++depth) {
+        ++rays;
+        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        if (!hit) {
+            direct += beta * scene.background();
+            return {};
+        }
+        const SurfaceInteraction& si = *hit;
+        if (si.area_light && specular) direct += beta * si.area_light->le(si, si.wo);
+        if (!si.front_face) {
+            const Spectrum sigma = si.material->interior_absorption();
+            if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
+        }
+        const Bsdf* bsdf = si.material->bsdf(si, arena);
+        if (!bsdf) return {};
+        if (!bsdf->is_delta()) {
+            direct += beta * estimate_direct(scene, si, *bsdf, sampler, rays);
+            return {si, beta, true};
+        }
+        const Vec2 u = sampler.get_2d();
+        const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(si.wo), u, sampler.get_1d());
+        if (!bs || bs->pdf <= 0.0f) return {};
+        beta *= bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
+        ray = spawn_ray(si, si.to_world(bs->wi));
+    }
+    return {};
+}
+
+// Uniform grid over the visible points, hashed: each point is listed in every cell its
+// search sphere touches.
+class PointGrid {
+public:
+    PointGrid(const std::vector<VisiblePoint>& points, const std::vector<PixelState>& pixels) {
+        float max_radius = 0.0f;
+        for (size_t i = 0; i < points.size(); ++i) {
+            if (points[i].valid) max_radius = std::max(max_radius, pixels[i].radius);
+        }
+        m_cell = std::max(max_radius, 1e-6f);
+        m_buckets.resize(std::max<size_t>(1, points.size()));
+        for (size_t i = 0; i < points.size(); ++i) {
+            if (!points[i].valid) continue;
+            const glm::ivec3 lo = cell_of(points[i].si.p - Vec3(pixels[i].radius));
+            const glm::ivec3 hi = cell_of(points[i].si.p + Vec3(pixels[i].radius));
+            for (int z = lo.z; z <= hi.z; ++z)
+                for (int y = lo.y; y <= hi.y; ++y)
+                    for (int x = lo.x; x <= hi.x; ++x) m_buckets[bucket(glm::ivec3(x, y, z))].push_back(static_cast<uint32_t>(i));
+        }
+    }
+    const std::vector<uint32_t>& candidates(const Vec3& p) const { return m_buckets[bucket(cell_of(p))]; }
+
+private:
+    glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p / m_cell)); }
+    size_t bucket(const glm::ivec3& c) const {
+        const uint64_t h = hash_combine(hash_combine(static_cast<uint32_t>(c.x), static_cast<uint32_t>(c.y)),
+                                        static_cast<uint32_t>(c.z));
+        return h % m_buckets.size();
+    }
+
+    float m_cell;
+    std::vector<std::vector<uint32_t>> m_buckets;
+};
+
+struct Deposit {
+    uint32_t pixel;
+    Spectrum flux;
+};
+
+}  // namespace
+
+RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const int w = film.width(), h = film.height();
+    const size_t pixel_count = static_cast<size_t>(w) * h;
+    const int passes = m_settings.spp;
+    const uint64_t photons_per_pass = static_cast<uint64_t>(m_settings.photons);
+    const SceneStats& stats_in = scene.stats();
+    const float scene_size = stats_in.bounds.is_empty() ? 1.0f : glm::length(stats_in.bounds.extent());
+    const float initial_radius = m_settings.photon_radius > 0.0f ? m_settings.photon_radius : scene_size / 256.0f;
+
+    std::vector<PixelState> pixels(pixel_count);
+    for (PixelState& p : pixels) p.radius = initial_radius;
+    std::vector<VisiblePoint> points(pixel_count);
+    const auto prototype = make_sampler(m_settings.sampler, passes, m_settings.seed);
+    const PhotonTracer tracer(scene, m_settings.max_depth >= 0 ? m_settings.max_depth : 32);
+    RenderStats stats;
+
+    for (int pass = 0; pass < passes; ++pass) {
+        // 1. Visible points, one per pixel, keyed by (seed, pixel, pass).
+        std::atomic<uint64_t> camera_rays{0};
+        tbb::parallel_for(0, h, [&](int y) {
+            auto sampler = prototype->clone();
+            Arena arena;
+            uint64_t rays = 0;
+            for (int x = 0; x < w; ++x) {
+                sampler->start_pixel_sample(Vec2i(x, y), pass);
+                const Vec2 film_point = Vec2(x, y) + sampler->get_pixel_2d();
+                const Ray ray = scene.camera().generate_ray(film_point, sampler->get_2d());
+                const size_t i = static_cast<size_t>(y) * w + x;
+                arena.reset();
+                points[i] = find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, rays);
+            }
+            camera_rays += rays;
+        });
+        stats.rays += camera_rays.load();
+
+        // 2-3. Photons add their flux to the visible points within each point's radius.
+        const PointGrid grid(points, pixels);
+        auto make_sink = [&] {
+            struct Sink {
+                const std::vector<VisiblePoint>* points;
+                const std::vector<PixelState>* pixels;
+                const PointGrid* grid;
+                std::vector<Deposit> deposits;
+                Arena arena{4096};
+                void store(const PhotonHit& hit) {
+                    if (hit.bounces == 0) return;  // direct light comes from next-event estimation
+                    for (uint32_t i : grid->candidates(hit.si->p)) {
+                        const VisiblePoint& vp = (*points)[i];
+                        const float r = (*pixels)[i].radius;
+                        if (length_squared(vp.si.p - hit.si->p) > r * r) continue;
+                        arena.reset();
+                        const Bsdf* bsdf = vp.si.material->bsdf(vp.si, arena);
+                        const Spectrum f = bsdf->eval(vp.si.to_local(vp.si.wo), vp.si.to_local(hit.wi));
+                        if (f.is_black()) continue;
+                        deposits.push_back({i, vp.beta * f * hit.power});
+                    }
+                }
+            };
+            return Sink{&points, &pixels, &grid, {}, Arena{4096}};
+        };
+        const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass, photons_per_pass,
+                                        m_settings.seed, stats.rays, make_sink);
+
+        // 4. Progressive update, in a fixed order.
+        std::vector<Spectrum> flux(pixel_count);
+        std::vector<uint32_t> found(pixel_count, 0);
+        for (const auto& sink : sinks) {
+            for (const Deposit& d : sink.deposits) {
+                flux[d.pixel] += d.flux;
+                ++found[d.pixel];
+            }
+        }
+        for (size_t i = 0; i < pixel_count; ++i) {
+            PixelState& p = pixels[i];
+            if (found[i] == 0) continue;
+            const double n_new = p.photons + kAlpha * found[i];
+            const float r_new = p.radius * static_cast<float>(std::sqrt(n_new / (p.photons + found[i])));
+            p.tau = (p.tau + flux[i]) * ((r_new * r_new) / (p.radius * p.radius));
+            p.photons = n_new;
+            p.radius = r_new;
+        }
+        progress.advance(pixel_count);
+    }
+
+    const double total_photons = static_cast<double>(passes) * static_cast<double>(photons_per_pass);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const PixelState& p = pixels[static_cast<size_t>(y) * w + x];
+            const Spectrum indirect = p.tau / static_cast<float>(total_photons * kPi * p.radius * p.radius);
+            film.add_sample(Vec2i(x, y), p.direct / static_cast<float>(passes) + indirect, 1.0f, nullptr);
+        }
+    }
+    stats.samples = pixel_count * static_cast<uint64_t>(passes);
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+}  // namespace glint
