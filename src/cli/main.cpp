@@ -32,6 +32,7 @@ struct RenderOptions {
     std::string integrator;
     std::optional<float> exposure;
     std::string adaptive;
+    std::optional<int> photons;
     std::vector<std::string> debug;
     bool aovs = false;
     bool quiet = false;
@@ -76,6 +77,7 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
         settings.where = "--adaptive";
     }
     if (!options.debug.empty()) settings.debug = options.debug;
+    if (options.photons) settings.photons = settings.caustic_photons = *options.photons;
     if (!options.outputs.empty()) settings.outputs = options.outputs;
     if (settings.outputs.empty()) {
         settings.outputs = {std::filesystem::path(options.scene).stem().string() + ".exr"};
@@ -95,8 +97,11 @@ uint64_t expected_samples(const RenderSettings& settings) {
 
 void check_debug_views(const RenderSettings& settings) {
     for (const std::string& view : settings.debug) {
-        if (view != "edges") throw Error(fmt::format("unknown debug view '{}' (known: edges)", view));
-        if (settings.adaptive != "sobel") throw Error("--debug edges needs --adaptive sobel");
+        if (view == "edges" && settings.adaptive != "sobel") throw Error("--debug edges needs --adaptive sobel");
+        if (view == "photons" && settings.integrator != "photon") throw Error("--debug photons needs --integrator photon");
+        if (view != "edges" && view != "photons") {
+            throw Error(fmt::format("unknown debug view '{}' (known: edges, photons)", view));
+        }
     }
 }
 
@@ -132,6 +137,9 @@ int run_render(const RenderOptions& options) {
     const Image image = final_image(film, stats);
     for (const std::string& path : settings.outputs) write_image(path, image, WriteOptions{settings.exposure});
     write_debug_images(settings, stats);
+    if (!options.quiet) {
+        for (const std::string& note : stats.notes) fmt::print(stderr, "{}\n", note);
+    }
     if (!options.quiet && settings.adaptive != "none") {
         fmt::print(stderr, "adaptive ({}): {:.2f} samples per pixel on average\n", settings.adaptive,
                    static_cast<double>(stats.samples) / (static_cast<double>(settings.width) * settings.height));
@@ -214,7 +222,11 @@ int main(int argc, char** argv) {
                          "Add albedo, normal and depth channels to EXR output");
     render_cmd->add_option("--adaptive", render.adaptive,
                            "Adaptive sampling: none, sobel (supersample edges), variance (stop converged pixels)");
-    render_cmd->add_option("--debug", render.debug, "Also write a debug view: edges (with --adaptive sobel)")
+    render_cmd->add_option("--photons", render.photons,
+                           "Photons per pass (sppm) or per photon map (photon)")
+        ->check(CLI::PositiveNumber);
+    render_cmd->add_option("--debug", render.debug,
+                           "Also write a debug view: edges (with --adaptive sobel), photons (with --integrator photon)")
         ->allow_extra_args(false);
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
 

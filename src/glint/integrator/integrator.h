@@ -25,6 +25,7 @@ struct RenderStats {
     uint64_t rays = 0;  // closest-hit plus shadow rays
     double seconds = 0.0;
     std::vector<ExtraChannel> channels;
+    std::vector<std::string> notes;  // lines for the user (photon counts, ...)
 };
 
 class Integrator {

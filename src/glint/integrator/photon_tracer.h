@@ -10,6 +10,7 @@
 
 #include <tbb/parallel_for.h>
 
+#include <functional>
 #include <vector>
 
 namespace glint {
@@ -23,9 +24,13 @@ struct PhotonHit {
     bool caustic;    // every earlier scattering event was specular (and there was one)
 };
 
+// How a chosen light emits a photon; the default is Light::sample_le.
+using PhotonEmitter = std::function<std::optional<LightEmission>(const Light&, const Vec2&, const Vec2&, float)>;
+
 class PhotonTracer {
 public:
-    PhotonTracer(const Scene& scene, int max_bounces) : m_scene(scene), m_max_bounces(max_bounces) {}
+    PhotonTracer(const Scene& scene, int max_bounces, PhotonEmitter emitter = {})
+        : m_scene(scene), m_max_bounces(max_bounces), m_emitter(std::move(emitter)) {}
 
     // Traces photons [first, first + count); photon i is keyed by (seed, i). `make_sink()`
     // makes the sink of each chunk; the sinks come back in chunk order.
@@ -58,7 +63,9 @@ private:
         if (!choice.light) return;
         const Vec2 u1(rng.next_float(), rng.next_float());
         const Vec2 u2(rng.next_float(), rng.next_float());
-        const std::optional<LightEmission> emission = choice.light->sample_le(u1, u2, rng.next_float());
+        const float u3 = rng.next_float();
+        const std::optional<LightEmission> emission =
+            m_emitter ? m_emitter(*choice.light, u1, u2, u3) : choice.light->sample_le(u1, u2, u3);
         if (!emission || emission->beta.is_black()) return;
         Spectrum beta = emission->beta / choice.pmf;
         Ray ray = emission->ray;
@@ -98,6 +105,7 @@ private:
 
     const Scene& m_scene;
     int m_max_bounces;
+    PhotonEmitter m_emitter;
 };
 
 }  // namespace glint

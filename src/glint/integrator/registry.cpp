@@ -1,5 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/integrator/path.h>
+#include <glint/integrator/photon.h>
 #include <glint/integrator/sppm.h>
 #include <glint/integrator/whitted.h>
 
@@ -17,6 +18,10 @@ std::unique_ptr<Integrator> make_path(const RenderSettings& settings) {
     return std::make_unique<PathIntegrator>(settings, Strategy);
 }
 
+std::unique_ptr<Integrator> make_photon(const RenderSettings& settings) {
+    return std::make_unique<PhotonIntegrator>(settings);
+}
+
 std::unique_ptr<Integrator> make_sppm(const RenderSettings& settings) {
     return std::make_unique<SppmIntegrator>(settings);
 }
@@ -30,6 +35,7 @@ const std::map<std::string, IntegratorFactory>& factories() {
         {"path", make_path<DirectLighting::kMis>},
         {"path_light", make_path<DirectLighting::kLightOnly>},
         {"path_bsdf", make_path<DirectLighting::kBsdfOnly>},
+        {"photon", make_photon},
         {"sppm", make_sppm},
         {"whitted", make_whitted},
     };

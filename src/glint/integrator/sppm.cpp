@@ -1,5 +1,6 @@
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
+#include <glint/integrator/direct_lighting.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/sppm.h>
 
@@ -26,24 +27,6 @@ struct PixelState {
     float radius = 0.0f;
 };
 
-// Direct light by light sampling alone: with the photons covering only indirect light
-// (photons of 0 bounces are skipped), this is the whole direct term.
-Spectrum estimate_direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, Sampler& sampler,
-                         uint64_t& rays) {
-    const LightSampler::Choice choice = scene.light_sampler().sample(sampler.get_1d());
-    const Vec2 u = sampler.get_2d();
-    const float u_select = sampler.get_1d();
-    if (!choice.light) return Spectrum(0.0f);
-    const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);
-    if (!ls || ls->L.is_black()) return Spectrum(0.0f);
-    const Vec3 wi = si.to_local(ls->wi);
-    const Spectrum f = bsdf.eval(si.to_local(si.wo), wi) * abs_cos_theta(wi);
-    if (f.is_black()) return Spectrum(0.0f);
-    ++rays;
-    if (scene.occluded(spawn_ray_to(si, ls->p))) return Spectrum(0.0f);
-    return f * ls->L / (choice.pmf * ls->pdf);
-}
-
 // Follows a camera ray through specular surfaces to its first non-specular surface.
 VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, Arena& arena, Spectrum& direct,
                                 uint64_t& rays) {
@@ -65,7 +48,8 @@ VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, A
         const Bsdf* bsdf = si.material->bsdf(si, arena);
         if (!bsdf) return {};
         if (!bsdf->is_delta()) {
-            direct += beta * estimate_direct(scene, si, *bsdf, sampler, rays);
+            // Photons of zero bounces are skipped below: direct light is estimated here.
+            direct += beta * sample_one_light(scene, si, *bsdf, sampler, rays);
             return {si, beta, true};
         }
         const Vec2 u = sampler.get_2d();

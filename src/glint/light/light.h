@@ -42,6 +42,10 @@ public:
     virtual float pdf_li(const Vec3&, const SurfaceInteraction&) const { return 0.0f; }
     // Radiance emitted from a hit on this light towards `w` (unit, away from the surface).
     virtual Spectrum le(const SurfaceInteraction&, const Vec3&) const { return Spectrum(0.0f); }
+    // Lights that emit from a single point (point, spot) give its position and their
+    // intensity per direction, so photons can be aimed (projection maps).
+    virtual std::optional<Vec3> emission_point() const { return std::nullopt; }
+    virtual Spectrum intensity(const Vec3&) const { return Spectrum(0.0f); }
     // Total emitted power, for choosing lights in proportion to it.
     virtual Spectrum power() const = 0;
     virtual bool is_delta() const = 0;

@@ -14,6 +14,8 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override { return 4.0f * kPi * m_intensity; }
+    std::optional<Vec3> emission_point() const override { return m_position; }
+    Spectrum intensity(const Vec3&) const override { return m_intensity; }
     std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
     bool is_delta() const override { return true; }
 
@@ -31,6 +33,8 @@ public:
                                          float u_select) const override;
     Spectrum power() const override;
     std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
+    std::optional<Vec3> emission_point() const override { return m_position; }
+    Spectrum intensity(const Vec3& w) const override { return m_intensity * falloff(w); }
     bool is_delta() const override { return true; }
     // Fraction of the intensity emitted in direction `w` (unit, away from the light).
     float falloff(const Vec3& w) const;

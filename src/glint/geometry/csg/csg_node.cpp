@@ -26,10 +26,7 @@ CsgNode::CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid
     std::stable_sort(m_order.begin(), m_order.end(), [&](size_t a, size_t b) {
         return m_children[a]->cost() < m_children[b]->cost();
     });
-    for (const auto& child : m_children) {
-        m_cost += child->cost();
-        m_child_bounds.push_back(child->bounds());
-    }
+    for (const auto& child : m_children) m_cost += child->cost();
 
     switch (m_operation) {
         case CsgOperation::kUnion:
@@ -56,9 +53,9 @@ std::string CsgNode::describe() const {
     }
 }
 
-bool CsgNode::may_hit(const Ray& ray, size_t child) const {
+bool CsgNode::may_hit(const Ray& ray, const Solid& child) const {
     float t0, t1;
-    return ray_box_range(ray, m_child_bounds[child], t0, t1);
+    return ray_box_range(ray, child.bounds(), t0, t1);
 }
 
 void CsgNode::intervals(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
@@ -79,9 +76,9 @@ void CsgNode::intervals(const Ray& ray, IntervalList& out, IntervalScratch& scra
 void CsgNode::evaluate_union(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
     IntervalList& child_spans = scratch.acquire();
     IntervalList& merged = scratch.acquire();
-    for (size_t i = 0; i < m_children.size(); ++i) {
-        if (m_shortcuts && !may_hit(ray, i)) continue;
-        m_children[i]->intervals(ray, child_spans, scratch);
+    for (const auto& child : m_children) {
+        if (m_shortcuts && !may_hit(ray, *child)) continue;
+        child->intervals(ray, child_spans, scratch);
         if (child_spans.empty()) continue;
         interval_union(out, child_spans, merged);
         out.swap(merged);
@@ -92,8 +89,8 @@ void CsgNode::evaluate_union(const Ray& ray, IntervalList& out, IntervalScratch&
 void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out,
                                     IntervalScratch& scratch) const {
     if (m_shortcuts) {
-        for (size_t i = 0; i < m_children.size(); ++i) {
-            if (!may_hit(ray, i)) return;
+        for (const auto& child : m_children) {
+            if (!may_hit(ray, *child)) return;
         }
     }
     IntervalList& child_spans = scratch.acquire();
@@ -115,12 +112,12 @@ void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out,
 
 void CsgNode::evaluate_difference(const Ray& ray, IntervalList& out,
                                   IntervalScratch& scratch) const {
-    if (m_shortcuts && !may_hit(ray, 0)) return;
+    if (m_shortcuts && !may_hit(ray, *m_children.front())) return;
     m_children.front()->intervals(ray, out, scratch);
     IntervalList& child_spans = scratch.acquire();
     IntervalList& merged = scratch.acquire();
     for (size_t i = 1; i < m_children.size(); ++i) {
-        if (m_shortcuts && (out.empty() || !may_hit(ray, i))) continue;
+        if (m_shortcuts && (out.empty() || !may_hit(ray, *m_children[i]))) continue;
         m_children[i]->intervals(ray, child_spans, scratch);
         interval_difference(out, child_spans, merged);
         out.swap(merged);

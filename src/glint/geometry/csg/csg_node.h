@@ -29,14 +29,11 @@ private:
     void evaluate_union(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const;
     void evaluate_intersection(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const;
     void evaluate_difference(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const;
-    bool may_hit(const Ray& ray, size_t child) const;
+    bool may_hit(const Ray& ray, const Solid& child) const;
 
     CsgOperation m_operation;
     std::vector<std::shared_ptr<const Solid>> m_children;
     std::vector<size_t> m_order;  // children by increasing cost (intersection)
-    // The children's boxes, computed once: bounds() can be costly (a transformed solid
-    // transforms eight corners), and the shortcuts test them for every ray.
-    std::vector<Bounds3> m_child_bounds;
     Bounds3 m_bounds;
     float m_cost = 0.0f;
     bool m_shortcuts;

@@ -1,0 +1,202 @@
+#include <glint/core/progress.h>
+#include <glint/integrator/direct_lighting.h>
+#include <glint/integrator/photon.h>
+#include <glint/integrator/photon_tracer.h>
+#include <glint/integrator/projection_map.h>
+
+#include <fmt/format.h>
+
+#include <chrono>
+
+namespace glint {
+namespace {
+
+constexpr float kConeFilter = 1.1f;  // Jensen's k for the cone filter
+constexpr int kMaxSpecularChain = 16;
+
+struct PhotonSink {
+    bool caustic_only = false;
+    std::vector<Photon> photons;
+    void store(const PhotonHit& hit) {
+        if (caustic_only && !hit.caustic) return;
+        photons.push_back({hit.si->p, hit.wi, hit.power});
+    }
+};
+
+// Concatenates the chunks' photons in chunk order and scales them to the emitted count.
+PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted) {
+    std::vector<Photon> photons;
+    for (PhotonSink& sink : sinks) photons.insert(photons.end(), sink.photons.begin(), sink.photons.end());
+    const float scale = emitted > 0 ? 1.0f / static_cast<float>(emitted) : 0.0f;
+    for (Photon& p : photons) p.power *= scale;
+    return PhotonMap(std::move(photons));
+}
+
+}  // namespace
+
+PhotonIntegrator::PhotonIntegrator(const RenderSettings& settings) : TileIntegrator(settings) {}
+
+uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
+    const Bounds3& bounds = scene.stats().bounds;
+    const float scene_size = bounds.is_empty() ? 1.0f : glm::length(bounds.extent());
+    m_max_distance2 = sqr(scene_size / 20.0f);
+    const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
+    uint64_t rays = 0;
+
+    const PhotonTracer global_tracer(scene, max_bounces);
+    const uint64_t global_count = static_cast<uint64_t>(m_settings.photons);
+    m_global = gather_map(global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
+                          global_count);
+
+    // Caustic photons from point-like lights go only where specular objects are.
+    std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
+    if (m_settings.projection_maps) {
+        for (size_t i = 0; i < scene.lights().size(); ++i) {
+            if (scene.lights()[i]->emission_point()) projections[i].emplace(scene, *scene.lights()[i]);
+        }
+    }
+    PhotonEmitter emitter = [&](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
+        const auto& projection = projections[static_cast<size_t>(light.index())];
+        return projection ? projection->sample(light, u2, u3) : light.sample_le(u1, u2, u3);
+    };
+    const PhotonTracer caustic_tracer(scene, max_bounces, emitter);
+    const uint64_t caustic_count = static_cast<uint64_t>(m_settings.caustic_photons);
+    const auto start = std::chrono::steady_clock::now();
+    m_caustic = gather_map(caustic_tracer.trace(0, caustic_count, m_settings.seed + 1, rays,
+                                                [] { return PhotonSink{true, {}}; }),
+                           caustic_count);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_caustic_rate = seconds > 0.0 ? static_cast<double>(caustic_count) / seconds : 0.0;
+    return rays;
+}
+
+RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const uint64_t photon_rays = build_maps(scene);
+    const double photon_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    RenderStats stats = TileIntegrator::render(scene, film, progress);
+    stats.rays += photon_rays;
+    stats.notes.push_back(fmt::format("photon maps: {} global and {} caustic photons stored in {:.2f} s "
+                                      "({:.2f} M caustic photons emitted/s)",
+                                      m_global.size(), m_caustic.size(), photon_seconds, m_caustic_rate * 1e-6));
+
+    for (const std::string& view : m_settings.debug) {
+        if (view != "photons") continue;
+        // The debug view: what the photon maps alone say at each first diffuse hit.
+        Film photons(film.width(), film.height(), false);
+        Progress quiet("photon view", 1, true);
+        m_show_photons = true;
+        const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);
+        m_show_photons = false;
+        const Image image = photons.resolve();
+        ExtraChannel channel{"photons.Y", {}};
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x) {
+                channel.values.push_back(0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) +
+                                         0.0722f * image.at(x, y, 2));
+            }
+        }
+        stats.channels.push_back(std::move(channel));
+        stats.rays += view_stats.rays;
+    }
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+Spectrum PhotonIntegrator::estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const {
+    thread_local std::vector<std::pair<float, uint32_t>> found;
+    map.nearest(si.p, m_settings.photon_neighbours, m_max_distance2, found);
+    if (found.empty()) return Spectrum(0.0f);
+    const float r2 = static_cast<int>(found.size()) == m_settings.photon_neighbours ? found.front().first : m_max_distance2;
+    if (!(r2 > 0.0f)) return Spectrum(0.0f);
+    const float r = std::sqrt(r2);
+    const Vec3 wo = si.to_local(si.wo);
+    const float viewer_side = glm::dot(si.wo, si.ng);
+    Spectrum sum(0.0f);
+    for (const auto& [d2, index] : found) {
+        const Photon& photon = map[index];
+        if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) continue;  // arrived on the other side
+        const float weight = 1.0f - std::sqrt(d2) / (kConeFilter * r);
+        sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power * weight;
+    }
+    return sum / ((1.0f - 2.0f / (3.0f * kConeFilter)) * kPi * r2);
+}
+
+Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                                        Sampler& sampler, Arena& arena, RayCounter& counter) const {
+    const int n = m_settings.gather_rays;
+    if (n == 0) return Spectrum(0.0f);
+    const Vec3 wo = si.to_local(si.wo);
+    Spectrum sum(0.0f);
+    for (int i = 0; i < n; ++i) {
+        const Vec2 u = sampler.get_2d();
+        const std::optional<BsdfSample> bs = bsdf.sample(wo, u, sampler.get_1d());
+        if (!bs || bs->pdf <= 0.0f) continue;
+        Spectrum weight = bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
+        Ray ray = spawn_ray(si, si.to_world(bs->wi));
+        // Through specular surfaces to the first diffuse one; emission seen on the way is
+        // direct or caustic light, which the other terms already hold.
+        for (int depth = 0; depth < kMaxSpecularChain; ++depth) {
+            ++counter.rays;
+            const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+            if (!hit) {
+                sum += weight * scene.background();
+                break;
+            }
+            if (!hit->front_face) {
+                const Spectrum sigma = hit->material->interior_absorption();
+                if (!sigma.is_black()) weight *= exp(sigma * (-hit->t * glm::length(ray.direction)));
+            }
+            const Bsdf* next = hit->material->bsdf(*hit, arena);
+            if (!next) break;
+            if (!next->is_delta()) {
+                sum += weight * estimate(m_global, *hit, *next);
+                break;
+            }
+            const Vec2 u2 = sampler.get_2d();
+            const std::optional<BsdfSample> s = next->sample(hit->to_local(hit->wo), u2, sampler.get_1d());
+            if (!s || s->pdf <= 0.0f) break;
+            weight *= s->f * (abs_cos_theta(s->wi) / s->pdf);
+            ray = spawn_ray(*hit, hit->to_world(s->wi));
+        }
+    }
+    return sum / static_cast<float>(n);
+}
+
+Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                              RayCounter& counter, AovSample* aov) const {
+    Spectrum L(0.0f), beta(1.0f);
+    Ray ray = camera_ray;
+    for (int depth = 0; depth < kMaxSpecularChain; ++depth) {
+        ++counter.rays;
+        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        if (!hit) {
+            if (aov && depth == 0) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
+            return L + beta * scene.background();
+        }
+        const SurfaceInteraction& si = *hit;
+        if (aov && depth == 0) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
+        // Every vertex so far was specular: emission seen here is not in any map.
+        if (si.area_light) L += beta * si.area_light->le(si, si.wo);
+        if (!si.front_face) {
+            const Spectrum sigma = si.material->interior_absorption();
+            if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
+        }
+        const Bsdf* bsdf = si.material->bsdf(si, arena);
+        if (!bsdf) return L;
+        if (!bsdf->is_delta()) {
+            if (m_show_photons) return L + beta * (estimate(m_caustic, si, *bsdf) + estimate(m_global, si, *bsdf));
+            const Spectrum direct = sample_one_light(scene, si, *bsdf, sampler, counter.rays);
+            const Spectrum caustic = estimate(m_caustic, si, *bsdf);
+            return L + beta * (direct + caustic + final_gather(scene, si, *bsdf, sampler, arena, counter));
+        }
+        const Vec2 u = sampler.get_2d();
+        const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(si.wo), u, sampler.get_1d());
+        if (!bs || bs->pdf <= 0.0f) return L;
+        beta *= bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
+        ray = spawn_ray(si, si.to_world(bs->wi));
+    }
+    return L;
+}
+
+}  // namespace glint

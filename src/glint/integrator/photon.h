@@ -1,0 +1,39 @@
+#pragma once
+// Photon mapping (Jensen's two-pass method). Pass one traces photons from the lights into
+// a caustic map (light - specular+ - diffuse paths, aimed with projection maps) and a
+// global map (every diffuse hit). Pass two traces camera rays through specular surfaces
+// to the first diffuse hit, where it adds direct light (next-event estimation), the
+// caustic map's radiance estimate, and indirect light by final gathering: BSDF-sampled
+// rays whose hits are evaluated in the global map. Estimates use the k nearest photons
+// with a cone filter.
+#include <glint/integrator/integrator.h>
+#include <glint/integrator/photon_map.h>
+
+namespace glint {
+
+class PhotonIntegrator final : public TileIntegrator {
+public:
+    explicit PhotonIntegrator(const RenderSettings& settings);
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena, RayCounter& counter,
+                AovSample* aov) const override;
+
+    // Builds both maps (also used by tests); returns the rays traced.
+    uint64_t build_maps(const Scene& scene);
+    const PhotonMap& caustic_map() const { return m_caustic; }
+    const PhotonMap& global_map() const { return m_global; }
+    double caustic_photons_per_second() const { return m_caustic_rate; }
+
+private:
+    Spectrum estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const;
+    Spectrum final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, Sampler& sampler,
+                          Arena& arena, RayCounter& counter) const;
+
+    PhotonMap m_caustic;
+    PhotonMap m_global;
+    float m_max_distance2 = kInfinity;
+    bool m_show_photons = false;  // debug view: only the maps' estimate at the first diffuse hit
+    double m_caustic_rate = 0.0;
+};
+
+}  // namespace glint

@@ -1,0 +1,60 @@
+#include <glint/integrator/photon_map.h>
+
+#include <algorithm>
+
+namespace glint {
+
+PhotonMap::PhotonMap(std::vector<Photon> photons) : m_photons(std::move(photons)), m_axis(m_photons.size(), 0) {
+    build(0, m_photons.size());
+}
+
+void PhotonMap::build(size_t begin, size_t end) {
+    if (end - begin < 2) return;
+    Vec3 lo(kInfinity), hi(-kInfinity);
+    for (size_t i = begin; i < end; ++i) {
+        lo = glm::min(lo, m_photons[i].p);
+        hi = glm::max(hi, m_photons[i].p);
+    }
+    const Vec3 extent = hi - lo;
+    const uint8_t axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const size_t mid = begin + (end - begin) / 2;
+    std::nth_element(m_photons.begin() + static_cast<std::ptrdiff_t>(begin),
+                     m_photons.begin() + static_cast<std::ptrdiff_t>(mid),
+                     m_photons.begin() + static_cast<std::ptrdiff_t>(end),
+                     [axis](const Photon& a, const Photon& b) { return a.p[axis] < b.p[axis]; });
+    m_axis[mid] = axis;
+    build(begin, mid);
+    build(mid + 1, end);
+}
+
+void PhotonMap::nearest(const Vec3& p, int k, float max_distance2,
+                        std::vector<std::pair<float, uint32_t>>& found) const {
+    found.clear();
+    if (m_photons.empty() || k <= 0) return;
+    search(0, m_photons.size(), p, k, max_distance2, found);
+}
+
+void PhotonMap::search(size_t begin, size_t end, const Vec3& p, int k, float& max_distance2,
+                       std::vector<std::pair<float, uint32_t>>& found) const {
+    if (begin >= end) return;
+    const size_t mid = begin + (end - begin) / 2;
+    const Photon& photon = m_photons[mid];
+    const int axis = m_axis[mid];
+    const float delta = p[axis] - photon.p[axis];
+    // Visit the side that contains p first, the other only if the sphere crosses the plane.
+    const bool left_first = delta < 0.0f;
+    search(left_first ? begin : mid + 1, left_first ? mid : end, p, k, max_distance2, found);
+    const float d2 = length_squared(photon.p - p);
+    if (d2 < max_distance2) {
+        found.emplace_back(d2, static_cast<uint32_t>(mid));
+        std::push_heap(found.begin(), found.end());
+        if (static_cast<int>(found.size()) > k) {
+            std::pop_heap(found.begin(), found.end());
+            found.pop_back();
+        }
+        if (static_cast<int>(found.size()) == k) max_distance2 = found.front().first;
+    }
+    if (delta * delta < max_distance2) search(left_first ? mid + 1 : begin, left_first ? end : mid, p, k, max_distance2, found);
+}
+
+}  // namespace glint
