@@ -1,0 +1,228 @@
+// Photon mapping: flux bookkeeping, the caustic of a glass sphere, agreement with the path
+// tracer, determinism.
+#include <glint/film/image.h>
+#include <glint/film/image_io.h>
+#include <glint/integrator/photon.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <support/render_helpers.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace glint;
+using glint::test::render_lua;
+
+namespace {
+
+struct BuiltScene {
+    SceneDesc desc;
+    RenderSettings settings;
+    std::unique_ptr<Scene> scene;
+};
+
+BuiltScene build(const std::string& code) {
+    BuiltScene b;
+    b.desc = load_scene_string(code, "photon-test.lua");
+    b.settings = parse_render_settings(b.desc.render ? &*b.desc.render : nullptr);
+    b.scene = build_scene(b.desc, b.settings);
+    return b;
+}
+
+double total_power(const PhotonMap& map) {
+    double sum = 0.0;
+    for (size_t i = 0; i < map.size(); ++i) sum += map[i].power.g;
+    return sum;
+}
+
+}  // namespace
+
+// In a closed box of albedo rho around a point light of power Phi, the photons stored at
+// every bounce carry Phi rho^k on average, so the global map holds Phi / (1 - rho).
+TEST(PhotonMapping, StoredFluxFollowsTheGeometricSeries) {
+    for (const double rho : {0.3, 0.7}) {
+        BuiltScene b = build(fmt::format(R"(
+            glint.render{{ integrator = 'photon', photons = 200000, caustic_photons = 0, seed = 3 }}
+            glint.point_light{{ position = {{0.2, 0.3, -0.1}}, intensity = 2 }}
+            glint.box{{ min = {{-1, -1, -1}}, max = {{1, 1, 1}}, material = glint.diffuse{{ reflectance = {} }} }}
+        )", rho));
+        PhotonIntegrator integrator(b.settings);
+        integrator.build_maps(*b.scene);
+        const double emitted = 4.0 * M_PI * 2.0;
+        EXPECT_NEAR(total_power(integrator.global_map()), emitted / (1.0 - rho), 0.01 * emitted / (1.0 - rho))
+            << "rho = " << rho;
+        EXPECT_EQ(integrator.caustic_map().size(), 0u);
+    }
+}
+
+namespace {
+
+const char* kCausticScene = R"(
+    glint.camera{ eye = {0, 3, 4}, look_at = {0, 0.4, 0}, fov = 35 }
+    glint.render{ width = 24, height = 24, spp = %d, integrator = '%s', photons = 40000, caustic_photons = 40000,
+                  seed = 2 }
+    glint.quad{ vertices = { {-3, 0, 3}, {3, 0, 3}, {3, 0, -3}, {-3, 0, -3} }, material = glint.diffuse{ reflectance = 0.7 } }
+    glint.sphere{ center = {0, 0.5, 0}, radius = 0.5, material = glint.dielectric{ ior = 1.5 } }
+    glint.quad{ vertices = { {-0.6, 3, -0.6}, {0.6, 3, -0.6}, {0.6, 3, 0.6}, {-0.6, 3, 0.6} },
+                material = glint.emissive{ radiance = 8 } }
+)";
+
+std::string caustic_scene(int spp, const char* integrator) {
+    std::string code = kCausticScene;
+    code.replace(code.find("%d"), 2, std::to_string(spp));
+    code.replace(code.find("%s"), 2, integrator);
+    return code;
+}
+
+}  // namespace
+
+// Stochastic progressive photon mapping and path tracing converge to the same image of a
+// glass sphere's caustic under an area light. If both were unbiased, the relative MSE
+// between them would be the sum of their variances, each half the relative MSE between
+// two independent renders of the same integrator; the threshold allows 50 % more than that
+// for SPPM's shrinking-radius bias.
+TEST(PhotonMapping, SppmAgreesWithPathTracing) {
+    auto with_seed = [](std::string code, int seed) {
+        code.replace(code.find("seed = 2"), 8, fmt::format("seed = {}", seed));
+        return code;
+    };
+    const Image path_a = render_lua(caustic_scene(1024, "path"));
+    const Image path_b = render_lua(with_seed(caustic_scene(1024, "path"), 9));
+    const Image sppm_a = render_lua(caustic_scene(64, "sppm"));
+    const Image sppm_b = render_lua(with_seed(caustic_scene(64, "sppm"), 9));
+    const double path_noise = compare_images(path_b, path_a).rel_mse;
+    const double sppm_noise = compare_images(sppm_b, sppm_a).rel_mse;
+    const double expected = 0.5 * (path_noise + sppm_noise);
+    const double measured = compare_images(sppm_a, path_a).rel_mse;
+    fmt::print("relMSE: path vs path {:.4g}, sppm vs sppm {:.4g}, sppm vs path {:.4g} (unbiased: {:.4g})\n",
+               path_noise, sppm_noise, measured, expected);
+    EXPECT_LT(measured, 1.5 * expected);
+}
+
+// Photon paths and visible points are keyed by (seed, index) and merged in a fixed order.
+TEST(PhotonMapping, IdenticalForAnyThreadCount) {
+    for (const char* integrator : {"sppm", "photon"}) {
+        const std::string scene = caustic_scene(2, integrator);
+        const Image one = render_lua(scene, 1);
+        const Image two = render_lua(scene, 2);
+        EXPECT_TRUE(one.pixels == two.pixels) << integrator;
+    }
+}
+
+namespace {
+
+// Irradiance per radial bin on the plane y = plane_y below a glass circle of radius 1 at the
+// origin, lit by parallel light of irradiance 1 travelling along -y: the 2D meridional
+// trace of every Fresnel branch (exact Snell and Fresnel), weighted by the 3D ring area.
+std::vector<double> reference_caustic_profile(double eta, double plane_y, double bin_width, int bins) {
+    std::vector<double> energy(bins, 0.0);
+    auto fresnel = [](double cos_i, double n1, double n2) {
+        const double sin_t = n1 / n2 * std::sqrt(std::max(0.0, 1.0 - cos_i * cos_i));
+        if (sin_t >= 1.0) return 1.0;
+        const double cos_t = std::sqrt(1.0 - sin_t * sin_t);
+        const double rs = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+        const double rp = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+        return 0.5 * (rs * rs + rp * rp);
+    };
+    struct Branch {
+        glm::dvec2 o, d;
+        double weight;
+        bool inside;
+        int depth;
+    };
+    const int samples = 200000;
+    for (int s = 0; s < samples; ++s) {
+        // Heights uniform in h^2: equal 3D ring areas per sample.
+        const double h = std::sqrt((s + 0.5) / samples);
+        const double ring_area = M_PI / samples;
+        std::vector<Branch> stack = {{glm::dvec2(h, 3.0), glm::dvec2(0.0, -1.0), 1.0, false, 0}};
+        while (!stack.empty()) {
+            Branch b = stack.back();
+            stack.pop_back();
+            // Next intersection with the unit circle, after the start.
+            const double bq = glm::dot(b.o, b.d), c = glm::dot(b.o, b.o) - 1.0;
+            const double disc = bq * bq - c;
+            double t = -1.0;
+            if (disc > 0.0) {
+                const double t0 = -bq - std::sqrt(disc), t1 = -bq + std::sqrt(disc);
+                t = t0 > 1e-9 ? t0 : (t1 > 1e-9 ? t1 : -1.0);
+            }
+            if (t < 0.0) {
+                // Leaves the sphere for good: does it land on the plane?
+                if (b.depth > 0 && b.d.y < 0.0) {
+                    const double x = b.o.x + (plane_y - b.o.y) / b.d.y * b.d.x;
+                    const int bin = static_cast<int>(std::abs(x) / bin_width);
+                    if (bin < bins) energy[bin] += b.weight * ring_area;
+                }
+                continue;
+            }
+            if (b.weight < 1e-6 || b.depth > 12) continue;
+            const glm::dvec2 p = b.o + t * b.d;
+            glm::dvec2 n = p;  // outward
+            const double n1 = b.inside ? eta : 1.0, n2 = b.inside ? 1.0 : eta;
+            if (b.inside) n = -n;  // facing the incoming ray's side
+            const double cos_i = -glm::dot(b.d, n);
+            const double R = fresnel(cos_i, n1, n2);
+            const glm::dvec2 reflected = b.d + 2.0 * cos_i * n;
+            stack.push_back({p, reflected, b.weight * R, b.inside, b.depth + 1});
+            if (R < 1.0) {
+                const double ratio = n1 / n2;
+                const double cos_t = std::sqrt(1.0 - ratio * ratio * (1.0 - cos_i * cos_i));
+                const glm::dvec2 refracted = ratio * b.d + (ratio * cos_i - cos_t) * n;
+                stack.push_back({p, refracted, b.weight * (1.0 - R), !b.inside, b.depth + 1});
+            }
+        }
+    }
+    for (int i = 0; i < bins; ++i) {
+        const double r0 = i * bin_width, r1 = (i + 1) * bin_width;
+        energy[i] /= M_PI * (r1 * r1 - r0 * r0);
+    }
+    return energy;
+}
+
+}  // namespace
+
+// A glass sphere (n = 1.5, radius R) under parallel light focuses paraxial rays 1.5 R from
+// its centre. On a receiver there, the caustic photons' radial irradiance profile matches
+// an independent 2D trace of the same rays.
+TEST(PhotonMapping, GlassSphereCausticMatchesRayTracedProfile) {
+    BuiltScene b = build(R"(
+        glint.render{ integrator = 'photon', photons = 1, caustic_photons = 600000, seed = 4 }
+        glint.directional_light{ direction = {0, -1, 0}, irradiance = 1 }
+        glint.sphere{ center = {0, 0, 0}, radius = 1, material = glint.dielectric{ ior = 1.5 } }
+        glint.quad{ vertices = { {-1.6, -1.5, 1.6}, {1.6, -1.5, 1.6}, {1.6, -1.5, -1.6}, {-1.6, -1.5, -1.6} },
+                    material = glint.diffuse{ reflectance = 0.5 } }
+    )");
+    PhotonIntegrator integrator(b.settings);
+    integrator.build_maps(*b.scene);
+    const PhotonMap& caustics = integrator.caustic_map();
+    ASSERT_GT(caustics.size(), 10000u);
+
+    const double bin_width = 0.05;
+    const int bins = 24;
+    std::vector<double> measured(bins, 0.0);
+    for (size_t i = 0; i < caustics.size(); ++i) {
+        const Photon& photon = caustics[i];
+        if (std::abs(photon.p.y + 1.5f) > 1e-3f) continue;  // only the receiver
+        const int bin = static_cast<int>(std::hypot(photon.p.x, photon.p.z) / bin_width);
+        if (bin < bins) measured[bin] += photon.power.g;
+    }
+    for (int i = 0; i < bins; ++i) {
+        measured[i] /= M_PI * (sqr((i + 1) * bin_width) - sqr(i * bin_width));
+    }
+    const std::vector<double> expected = reference_caustic_profile(1.5, -1.5, bin_width, bins);
+
+    double difference = 0.0, total = 0.0;
+    for (int i = 0; i < bins; ++i) {
+        fmt::print("r {:.3f}: photons {:.4f}, traced {:.4f}\n", (i + 0.5) * bin_width, measured[i], expected[i]);
+        difference += std::abs(measured[i] - expected[i]) * (2 * i + 1);  // weighted by ring area
+        total += expected[i] * (2 * i + 1);
+    }
+    EXPECT_LT(difference / total, 0.05);
+    // The focus: the centre is the brightest point of both profiles.
+    EXPECT_EQ(std::max_element(measured.begin(), measured.end()) - measured.begin(), 0);
+    EXPECT_EQ(std::max_element(expected.begin(), expected.end()) - expected.begin(), 0);
+}
