@@ -23,10 +23,18 @@ CsgNode::CsgNode(CsgOperation operation, std::vector<std::shared_ptr<const Solid
     if (m_children.empty()) throw Error("a CSG node needs at least one solid");
     m_order.resize(m_children.size());
     std::iota(m_order.begin(), m_order.end(), 0);
+    // Intersections evaluate finite children first: a ray that meets an infinite quadric
+    // very often misses the finite solid that bounds it, and then the result is empty
+    // before any quadric is evaluated. Within each group, the cheapest first.
     std::stable_sort(m_order.begin(), m_order.end(), [&](size_t a, size_t b) {
+        const bool finite_a = m_children[a]->is_bounded(), finite_b = m_children[b]->is_bounded();
+        if (finite_a != finite_b) return finite_a;
         return m_children[a]->cost() < m_children[b]->cost();
     });
-    for (const auto& child : m_children) m_cost += child->cost();
+    for (const auto& child : m_children) {
+        m_cost += child->cost();
+        m_child_bounds.push_back(child->bounds());
+    }
 
     switch (m_operation) {
         case CsgOperation::kUnion:
@@ -53,9 +61,9 @@ std::string CsgNode::describe() const {
     }
 }
 
-bool CsgNode::may_hit(const Ray& ray, const Solid& child) const {
+bool CsgNode::may_hit(const Ray& ray, size_t child) const {
     float t0, t1;
-    return ray_box_range(ray, child.bounds(), t0, t1);
+    return ray_box_range(ray, m_child_bounds[child], t0, t1);
 }
 
 void CsgNode::intervals(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
@@ -76,9 +84,9 @@ void CsgNode::intervals(const Ray& ray, IntervalList& out, IntervalScratch& scra
 void CsgNode::evaluate_union(const Ray& ray, IntervalList& out, IntervalScratch& scratch) const {
     IntervalList& child_spans = scratch.acquire();
     IntervalList& merged = scratch.acquire();
-    for (const auto& child : m_children) {
-        if (m_shortcuts && !may_hit(ray, *child)) continue;
-        child->intervals(ray, child_spans, scratch);
+    for (size_t i = 0; i < m_children.size(); ++i) {
+        if (m_shortcuts && !may_hit(ray, i)) continue;
+        m_children[i]->intervals(ray, child_spans, scratch);
         if (child_spans.empty()) continue;
         interval_union(out, child_spans, merged);
         out.swap(merged);
@@ -89,9 +97,10 @@ void CsgNode::evaluate_union(const Ray& ray, IntervalList& out, IntervalScratch&
 void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out,
                                     IntervalScratch& scratch) const {
     if (m_shortcuts) {
-        for (const auto& child : m_children) {
-            if (!may_hit(ray, *child)) return;
-        }
+        // The overlap of the children's boxes holds the whole intersection: one test,
+        // tighter than testing each child's box.
+        float t0, t1;
+        if (!ray_box_range(ray, m_bounds, t0, t1)) return;
     }
     IntervalList& child_spans = scratch.acquire();
     IntervalList& merged = scratch.acquire();
@@ -112,12 +121,12 @@ void CsgNode::evaluate_intersection(const Ray& ray, IntervalList& out,
 
 void CsgNode::evaluate_difference(const Ray& ray, IntervalList& out,
                                   IntervalScratch& scratch) const {
-    if (m_shortcuts && !may_hit(ray, *m_children.front())) return;
+    if (m_shortcuts && !may_hit(ray, 0)) return;
     m_children.front()->intervals(ray, out, scratch);
     IntervalList& child_spans = scratch.acquire();
     IntervalList& merged = scratch.acquire();
     for (size_t i = 1; i < m_children.size(); ++i) {
-        if (m_shortcuts && (out.empty() || !may_hit(ray, *m_children[i]))) continue;
+        if (m_shortcuts && (out.empty() || !may_hit(ray, i))) continue;
         m_children[i]->intervals(ray, child_spans, scratch);
         interval_difference(out, child_spans, merged);
         out.swap(merged);
