@@ -104,3 +104,28 @@ TEST(Whitted, GlassSlabTransmittance) {
     const double expected = (1.0 - R) * (1.0 - R) / (1.0 - R * R);
     EXPECT_NEAR(mean_channel(image, 0, 0, 0, 4, 4), expected, 1e-4);
 }
+
+// The classic ray tracer cannot find light focused by glass onto a diffuse floor; with
+// `caustics = true` the caustic photon map adds it, under the sphere where its shadow is.
+TEST(Whitted, PhotonMappedCausticsBrightenTheShadowOfGlass) {
+    auto scene = [](bool caustics) {
+        return fmt::format(R"(
+            glint.camera{{ eye = {{0, 6, 0.01}}, look_at = {{0, 0, 0}}, fov = 30 }}
+            glint.render{{ width = 32, height = 32, spp = 4, integrator = 'whitted', caustics = {},
+                           caustic_photons = 200000, photon_neighbours = 40 }}
+            glint.quad{{ vertices = {{ {{-5, 0, 5}}, {{5, 0, 5}}, {{5, 0, -5}}, {{-5, 0, -5}} }},
+                         material = glint.diffuse{{ reflectance = 0.7 }} }}
+            glint.sphere{{ center = {{0, 1.5, 0}}, radius = 0.5, material = glint.dielectric{{ ior = 1.5 }} }}
+            glint.point_light{{ position = {{0, 5, 0}}, intensity = 30 }}
+        )", caustics ? "true" : "false");
+    };
+    const Image plain = render_lua(scene(false));
+    const Image with_caustics = render_lua(scene(true));
+    // The centre of the image looks straight down through the sphere at its shadow.
+    const double shadow_plain = mean_channel(plain, 1, 13, 13, 19, 19);
+    const double shadow_caustic = mean_channel(with_caustics, 1, 13, 13, 19, 19);
+    EXPECT_GT(shadow_caustic, shadow_plain + 0.5) << shadow_plain << " -> " << shadow_caustic;
+    // Far from the sphere only the faint light the sphere reflects onto the floor is added.
+    const double corner = mean_channel(plain, 1, 0, 0, 4, 4);
+    EXPECT_NEAR(mean_channel(with_caustics, 1, 0, 0, 4, 4), corner, 0.02 * corner);
+}

@@ -11,7 +11,6 @@
 namespace glint {
 namespace {
 
-constexpr float kConeFilter = 1.1f;  // Jensen's k for the cone filter
 constexpr int kMaxSpecularChain = 16;
 
 struct PhotonSink {
@@ -34,23 +33,11 @@ PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted) {
 
 }  // namespace
 
-PhotonIntegrator::PhotonIntegrator(const RenderSettings& settings) : TileIntegrator(settings) {}
-
-uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
-    const Bounds3& bounds = scene.stats().bounds;
-    const float scene_size = bounds.is_empty() ? 1.0f : glm::length(bounds.extent());
-    m_max_distance2 = sqr(scene_size / 20.0f);
-    const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
-    uint64_t rays = 0;
-
-    const PhotonTracer global_tracer(scene, max_bounces);
-    const uint64_t global_count = static_cast<uint64_t>(m_settings.photons);
-    m_global = gather_map(global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
-                          global_count);
-
+PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, uint64_t& rays) {
+    const int max_bounces = settings.max_depth >= 0 ? settings.max_depth : 32;
     // Caustic photons from point-like lights go only where specular objects are.
     std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
-    if (m_settings.projection_maps) {
+    if (settings.projection_maps) {
         for (size_t i = 0; i < scene.lights().size(); ++i) {
             if (scene.lights()[i]->emission_point()) projections[i].emplace(scene, *scene.lights()[i]);
         }
@@ -59,14 +46,33 @@ uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
         const auto& projection = projections[static_cast<size_t>(light.index())];
         return projection ? projection->sample(light, u2, u3) : light.sample_le(u1, u2, u3);
     };
-    const PhotonTracer caustic_tracer(scene, max_bounces, emitter);
-    const uint64_t caustic_count = static_cast<uint64_t>(m_settings.caustic_photons);
+    const PhotonTracer tracer(scene, max_bounces, emitter);
+    const uint64_t count = static_cast<uint64_t>(settings.caustic_photons);
+    return gather_map(tracer.trace(0, count, settings.seed + 1, rays, [] { return PhotonSink{true, {}}; }), count);
+}
+
+float photon_search_radius2(const Scene& scene) {
+    const Bounds3& bounds = scene.stats().bounds;
+    const float scene_size = bounds.is_empty() ? 1.0f : glm::length(bounds.extent());
+    return sqr(scene_size / 20.0f);
+}
+
+PhotonIntegrator::PhotonIntegrator(const RenderSettings& settings) : TileIntegrator(settings) {}
+
+uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
+    m_max_distance2 = photon_search_radius2(scene);
+    const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
+    uint64_t rays = 0;
+
+    const PhotonTracer global_tracer(scene, max_bounces);
+    const uint64_t global_count = static_cast<uint64_t>(m_settings.photons);
+    m_global = gather_map(global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
+                          global_count);
+
     const auto start = std::chrono::steady_clock::now();
-    m_caustic = gather_map(caustic_tracer.trace(0, caustic_count, m_settings.seed + 1, rays,
-                                                [] { return PhotonSink{true, {}}; }),
-                           caustic_count);
+    m_caustic = build_caustic_map(scene, m_settings, rays);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    m_caustic_rate = seconds > 0.0 ? static_cast<double>(caustic_count) / seconds : 0.0;
+    m_caustic_rate = seconds > 0.0 ? static_cast<double>(m_settings.caustic_photons) / seconds : 0.0;
     return rays;
 }
 
@@ -104,22 +110,7 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
 }
 
 Spectrum PhotonIntegrator::estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const {
-    thread_local std::vector<std::pair<float, uint32_t>> found;
-    map.nearest(si.p, m_settings.photon_neighbours, m_max_distance2, found);
-    if (found.empty()) return Spectrum(0.0f);
-    const float r2 = static_cast<int>(found.size()) == m_settings.photon_neighbours ? found.front().first : m_max_distance2;
-    if (!(r2 > 0.0f)) return Spectrum(0.0f);
-    const float r = std::sqrt(r2);
-    const Vec3 wo = si.to_local(si.wo);
-    const float viewer_side = glm::dot(si.wo, si.ng);
-    Spectrum sum(0.0f);
-    for (const auto& [d2, index] : found) {
-        const Photon& photon = map[index];
-        if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) continue;  // arrived on the other side
-        const float weight = 1.0f - std::sqrt(d2) / (kConeFilter * r);
-        sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power * weight;
-    }
-    return sum / ((1.0f - 2.0f / (3.0f * kConeFilter)) * kPi * r2);
+    return radiance_estimate(map, si, bsdf, m_settings.photon_neighbours, m_max_distance2);
 }
 
 Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,

@@ -11,6 +11,12 @@
 
 namespace glint {
 
+// The caustic map alone (light - specular+ - diffuse photons), for any integrator that wants
+// photon-mapped caustics; `rays` counts the rays traced.
+PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, uint64_t& rays);
+// The largest search radius (squared) for radiance estimates in `scene`.
+float photon_search_radius2(const Scene& scene);
+
 class PhotonIntegrator final : public TileIntegrator {
 public:
     explicit PhotonIntegrator(const RenderSettings& settings);

@@ -1,4 +1,6 @@
+#include <glint/core/interaction.h>
 #include <glint/integrator/photon_map.h>
+#include <glint/material/bsdf.h>
 
 #include <algorithm>
 
@@ -55,6 +57,30 @@ void PhotonMap::search(size_t begin, size_t end, const Vec3& p, int k, float& ma
         if (static_cast<int>(found.size()) == k) max_distance2 = found.front().first;
     }
     if (delta * delta < max_distance2) search(left_first ? mid + 1 : begin, left_first ? end : mid, p, k, max_distance2, found);
+}
+
+namespace {
+constexpr float kConeFilter = 1.1f;  // Jensen's k for the cone filter
+}
+
+Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf, int k,
+                           float max_distance2) {
+    thread_local std::vector<std::pair<float, uint32_t>> found;
+    map.nearest(si.p, k, max_distance2, found);
+    if (found.empty()) return Spectrum(0.0f);
+    const float r2 = static_cast<int>(found.size()) == k ? found.front().first : max_distance2;
+    if (!(r2 > 0.0f) || !std::isfinite(r2)) return Spectrum(0.0f);
+    const float r = std::sqrt(r2);
+    const Vec3 wo = si.to_local(si.wo);
+    const float viewer_side = glm::dot(si.wo, si.ng);
+    Spectrum sum(0.0f);
+    for (const auto& [d2, index] : found) {
+        const Photon& photon = map[index];
+        if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) continue;  // arrived on the other side
+        const float weight = 1.0f - std::sqrt(d2) / (kConeFilter * r);
+        sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power * weight;
+    }
+    return sum / ((1.0f - 2.0f / (3.0f * kConeFilter)) * kPi * r2);
 }
 
 }  // namespace glint

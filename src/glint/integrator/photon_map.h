@@ -38,4 +38,13 @@ private:
     std::vector<uint8_t> m_axis;  // split axis of the node at each median position
 };
 
+struct SurfaceInteraction;
+class Bsdf;
+
+// Reflected radiance at `si` from the k photons nearest to it (within
+// sqrt(max_distance2)), with Jensen's cone filter; photons that arrived on the other side
+// of the surface are ignored.
+Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf, int k,
+                           float max_distance2);
+
 }  // namespace glint

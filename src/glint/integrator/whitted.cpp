@@ -1,6 +1,9 @@
 #include <glint/core/sampler.h>
+#include <glint/integrator/photon.h>
 #include <glint/integrator/whitted.h>
 #include <glint/material/material.h>
+
+#include <fmt/format.h>
 
 #include <array>
 #include <vector>
@@ -54,6 +57,18 @@ std::array<int, 4> extreme_samples(const std::vector<ShadowSample>& samples, con
 WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings)
     : TileIntegrator(settings), m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
 
+RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    uint64_t photon_rays = 0;
+    if (m_settings.caustics) {
+        m_caustics = build_caustic_map(scene, m_settings, photon_rays);
+        m_caustic_radius2 = photon_search_radius2(scene);
+    }
+    RenderStats stats = TileIntegrator::render(scene, film, progress);
+    stats.rays += photon_rays;
+    if (m_settings.caustics) stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));
+    return stats;
+}
+
 Spectrum WhittedIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                                RayCounter& counter, AovSample* aov) const {
     return trace(ray, scene, sampler, arena, counter, aov, 0);
@@ -80,6 +95,9 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
         if (!bsdf->is_delta()) {
             L += direct(scene, si, *bsdf, sampler, counter);
             L += m_settings.ambient * si.material->albedo(si);
+            if (m_caustics.size() > 0) {
+                L += radiance_estimate(m_caustics, si, *bsdf, m_settings.photon_neighbours, m_caustic_radius2);
+            }
         } else {
             // Follow every delta lobe (reflection, refraction) with its exact weight.
             uint32_t followed = 0;

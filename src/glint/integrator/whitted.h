@@ -1,15 +1,19 @@
 #pragma once
 // Classic recursive ray tracing (Whitted 1980): direct light from every light at each
 // non-specular hit (stratified shadow rays for area lights, hence soft shadows), an
-// ambient term, and exact recursion into mirror reflection and refraction, weighted by
+// ambient term, optional photon-mapped caustics, and exact recursion into mirror reflection and refraction, weighted by
 // Fresnel, with total internal reflection and Beer absorption. No indirect diffuse light.
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/photon_map.h>
 
 namespace glint {
 
 class WhittedIntegrator final : public TileIntegrator {
 public:
     explicit WhittedIntegrator(const RenderSettings& settings);
+    // With `caustics = true`, builds a caustic photon map first and adds its estimate at
+    // every diffuse hit: the caustics a classic ray tracer cannot find on its own.
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
 
@@ -27,6 +31,8 @@ private:
                     Sampler& sampler, RayCounter& counter) const;
 
     int m_max_depth;
+    PhotonMap m_caustics;
+    float m_caustic_radius2 = 0.0f;
 };
 
 }  // namespace glint

@@ -25,6 +25,7 @@ RenderSettings parse_render_settings(const Params* params) {
     s.ambient = p.get_spectrum("ambient", s.ambient);
     s.shadow_samples = p.get_int("shadow_samples", s.shadow_samples);
     s.penumbra_shortcut = p.get_bool("penumbra_shortcut", s.penumbra_shortcut);
+    s.caustics = p.get_bool("caustics", s.caustics);
     s.photons = p.get_int("photons", s.photons);
     s.caustic_photons = p.get_int("caustic_photons", s.caustic_photons);
     s.photon_radius = p.get_float("photon_radius", s.photon_radius);

@@ -30,6 +30,7 @@ struct RenderSettings {
     Spectrum ambient{0.0f};          // ambient light, times the surface albedo
     int shadow_samples = 4;          // N: area lights get N x N stratified shadow rays
     bool penumbra_shortcut = false;  // test 4 rays first; full set only in the penumbra
+    bool caustics = false;           // add photon-mapped caustics (caustic_photons, photon_neighbours)
 
     // Photon mapping ("photon", "sppm"). For sppm, spp is the number of passes.
     int photons = 100000;          // photons per pass (sppm) or in the global map (photon)
