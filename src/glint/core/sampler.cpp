@@ -126,29 +126,52 @@ uint32_t reverse_bits(uint32_t x) {
     return x;
 }
 
-// Hash-based Owen scrambling (Burley 2020, "Practical Hash-based Owen Scrambling"): the
-// Laine-Karras permutation on reversed bits scrambles each bit depending only on the bits
-// above it, which keeps the sequence's stratification.
-uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) {
-    x = reverse_bits(x);
+// The Laine-Karras permutation (with Burley's constants): applied to bit-reversed values it
+// scrambles each bit depending only on the bits above it, i.e. a nested uniform (Owen)
+// scramble, which keeps the sequence's stratification (Burley 2020, "Practical Hash-based
+// Owen Scrambling").
+uint32_t laine_karras(uint32_t x, uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
     x ^= x * 0xc7afe638u;
     x ^= x * 0x8d22f6e6u;
-    return reverse_bits(x);
+    return x;
 }
 
-// The first two dimensions of the Sobol sequence: van der Corput, and the dimension whose
-// generator matrix is Pascal's triangle mod 2. Together a (0,2)-sequence: every prefix of
-// 2^k points is stratified in every elementary interval of area 2^-k.
-uint32_t sobol_dimension_0(uint32_t index) { return reverse_bits(index); }
-uint32_t sobol_dimension_1(uint32_t index) {
-    uint32_t result = 0;
-    for (uint32_t v = 1u << 31; index != 0; index >>= 1, v ^= v >> 1) {
-        if (index & 1u) result ^= v;
+uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
+
+// The second Sobol dimension: its generator matrix is Pascal's triangle mod 2, so the
+// direction numbers follow v <- v ^ (v >> 1). Tabulated per byte of the index, so any
+// 32-bit index takes four lookups.
+class SobolSecondDimension {
+public:
+    SobolSecondDimension() {
+        uint32_t direction[32];
+        uint32_t v = 1u << 31;
+        for (int bit = 0; bit < 32; ++bit, v ^= v >> 1) direction[bit] = v;
+        for (int byte = 0; byte < 4; ++byte) {
+            for (uint32_t value = 0; value < 256; ++value) {
+                uint32_t result = 0;
+                for (int bit = 0; bit < 8; ++bit) {
+                    if (value & (1u << bit)) result ^= direction[8 * byte + bit];
+                }
+                m_table[byte][value] = result;
+            }
+        }
     }
-    return result;
+    uint32_t operator()(uint32_t index) const {
+        return m_table[0][index & 0xff] ^ m_table[1][(index >> 8) & 0xff] ^ m_table[2][(index >> 16) & 0xff] ^
+               m_table[3][index >> 24];
+    }
+
+private:
+    uint32_t m_table[4][256];
+};
+
+const SobolSecondDimension& sobol_dimension_1() {
+    static const SobolSecondDimension table;
+    return table;
 }
 
 float to_unit_float(uint32_t bits) { return std::min(static_cast<float>(bits >> 8) * 0x1p-24f, 0x1.fffffep-1f); }
@@ -166,17 +189,19 @@ public:
         m_dimension = 0;
     }
 
+    // The first Sobol dimension is the bit reversal of the index, so scrambling it is
+    // reverse(LK(index)): one reversal instead of three.
     float get_1d() override {
         const uint32_t key = next_dimension_key();
         const uint32_t shuffled = nested_uniform_scramble(m_index, key);
-        return to_unit_float(nested_uniform_scramble(sobol_dimension_0(shuffled), key * 0x9e3779b9u + 1u));
+        return to_unit_float(reverse_bits(laine_karras(shuffled, key * 0x9e3779b9u + 1u)));
     }
 
     Vec2 get_2d() override {
         const uint32_t key = next_dimension_key();
         const uint32_t shuffled = nested_uniform_scramble(m_index, key);
-        const uint32_t x = nested_uniform_scramble(sobol_dimension_0(shuffled), key * 0x9e3779b9u + 1u);
-        const uint32_t y = nested_uniform_scramble(sobol_dimension_1(shuffled), key * 0x85ebca6bu + 2u);
+        const uint32_t x = reverse_bits(laine_karras(shuffled, key * 0x9e3779b9u + 1u));
+        const uint32_t y = nested_uniform_scramble(sobol_dimension_1()(shuffled), key * 0x85ebca6bu + 2u);
         return Vec2(to_unit_float(x), to_unit_float(y));
     }
 

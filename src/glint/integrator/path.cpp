@@ -46,7 +46,7 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
     Ray ray = camera_ray;
     bool specular_bounce = true;  // the camera "samples" its ray like a delta lobe
     float bsdf_pdf = 0.0f;
-    SurfaceInteraction previous;
+    Vec3 previous_point(0.0f);  // where the last BSDF sample was taken, for MIS
     float eta_scale = 1.0f;
 
     for (int depth = 0;; ++depth) {
@@ -68,7 +68,7 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
                     L += beta * Le;
                 } else if (m_strategy == DirectLighting::kMis) {
                     const float light_pdf = scene.light_sampler().pmf(*si.area_light) *
-                                            si.area_light->pdf_li(previous.p, si);
+                                            si.area_light->pdf_li(previous_point, si);
                     L += beta * Le * power_heuristic(bsdf_pdf, light_pdf);
                 }
             }
@@ -103,7 +103,7 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         specular_bounce = bs->is_delta();
         bsdf_pdf = bs->pdf;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
-        previous = si;
+        previous_point = si.p;
         ray = spawn_ray(si, wi);
 
         // Russian roulette on the throughput without the radiance scaling of refraction,
