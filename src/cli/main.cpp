@@ -33,6 +33,7 @@ struct RenderOptions {
     std::optional<float> exposure;
     std::string adaptive;
     std::optional<int> photons;
+    bool no_mipmap = false;
     std::vector<std::string> debug;
     bool aovs = false;
     bool quiet = false;
@@ -72,6 +73,7 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     }
     if (options.exposure) settings.exposure = *options.exposure;
     if (options.aovs) settings.aovs = true;
+    if (options.no_mipmap) settings.mipmapping = false;
     if (!options.adaptive.empty()) {
         settings.adaptive = options.adaptive;
         settings.where = "--adaptive";
@@ -228,6 +230,8 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--debug", render.debug,
                            "Also write a debug view: edges (with --adaptive sobel), photons (with --integrator photon)")
         ->allow_extra_args(false);
+    render_cmd->add_flag("--no-mipmap", render.no_mipmap,
+                         "Look image textures up in their full-resolution level only");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
 
     std::string info_scene;

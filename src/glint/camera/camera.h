@@ -2,6 +2,8 @@
 #include <glint/core/params.h>
 #include <glint/core/ray.h>
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 
 namespace glint {
@@ -11,7 +13,24 @@ public:
     virtual ~Camera() = default;
     // A primary ray through continuous film position `film` (pixels, origin at the top-left
     // corner, y down) using `lens` in [0,1)^2 for the aperture. Directions are unit length.
+    // The ray carries differentials towards the neighbouring pixels, scaled by the
+    // footprint scale, for texture filtering.
     virtual Ray generate_ray(const Vec2& film, const Vec2& lens) const = 0;
+
+    // How far a point p on a surface with normal n moves per pixel step, for hits that
+    // carry no ray differentials (after a bounce): pbrt-v4's approximation, which sees the
+    // point from the camera as a camera ray would.
+    virtual void approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx,
+                                       Vec3& dpdy) const = 0;
+
+    // With many samples per pixel each one need only filter a fraction of the pixel; pbrt-v4
+    // scales differentials by max(1/8, 1/sqrt(spp)).
+    void set_samples_per_pixel(int spp) {
+        m_footprint_scale = std::max(0.125f, 1.0f / std::sqrt(static_cast<float>(std::max(1, spp))));
+    }
+
+protected:
+    float m_footprint_scale = 1.0f;
 };
 
 // Perspective pinhole or thin-lens camera looking from `eye` at `look_at`.
@@ -21,8 +40,15 @@ public:
     PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const Vec3& up, float fov_y_degrees,
                       Vec2i resolution, float aperture_radius, float focus_distance);
     Ray generate_ray(const Vec2& film, const Vec2& lens) const override;
+    void approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx,
+                               Vec3& dpdy) const override;
 
 private:
+    // Unit direction through film position `film` from the pinhole.
+    Vec3 pinhole_direction(const Vec2& film) const;
+    // The ray through `film` using lens point `disk` (already on the aperture).
+    void lens_ray(const Vec2& film, const Vec2& disk, Vec3& origin, Vec3& direction) const;
+
     Vec3 m_eye, m_forward, m_right, m_up;
     float m_tan_half_fov;
     float m_aspect;

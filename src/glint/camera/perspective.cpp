@@ -17,19 +17,66 @@ PerspectiveCamera::PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const
     m_up = glm::cross(m_right, m_forward);
 }
 
-Ray PerspectiveCamera::generate_ray(const Vec2& film, const Vec2& lens) const {
+Vec3 PerspectiveCamera::pinhole_direction(const Vec2& film) const {
     // Screen coordinates in [-1, 1], y up.
     const float sx = 2.0f * film.x / m_resolution.x - 1.0f;
     const float sy = 1.0f - 2.0f * film.y / m_resolution.y;
-    const Vec3 direction = glm::normalize(m_forward + (sx * m_tan_half_fov * m_aspect) * m_right +
-                                          (sy * m_tan_half_fov) * m_up);
-    if (m_aperture_radius <= 0.0f) return Ray{m_eye, direction, 0.0f, kInfinity};
+    return glm::normalize(m_forward + (sx * m_tan_half_fov * m_aspect) * m_right +
+                          (sy * m_tan_half_fov) * m_up);
+}
+
+void PerspectiveCamera::lens_ray(const Vec2& film, const Vec2& disk, Vec3& origin,
+                                 Vec3& direction) const {
+    direction = pinhole_direction(film);
+    if (m_aperture_radius <= 0.0f) {
+        origin = m_eye;
+        return;
+    }
     // Thin lens: all rays through the lens meet at the plane of focus.
     const float t_focus = m_focus_distance / glm::dot(direction, m_forward);
     const Vec3 focus_point = m_eye + t_focus * direction;
-    const Vec2 disk = m_aperture_radius * warp::square_to_uniform_disk_concentric(lens);
-    const Vec3 origin = m_eye + disk.x * m_right + disk.y * m_up;
-    return Ray{origin, glm::normalize(focus_point - origin), 0.0f, kInfinity};
+    origin = m_eye + disk.x * m_right + disk.y * m_up;
+    direction = glm::normalize(focus_point - origin);
+}
+
+Ray PerspectiveCamera::generate_ray(const Vec2& film, const Vec2& lens) const {
+    const Vec2 disk = m_aperture_radius > 0.0f
+                          ? m_aperture_radius * warp::square_to_uniform_disk_concentric(lens)
+                          : Vec2(0.0f);
+    Ray ray;
+    lens_ray(film, disk, ray.origin, ray.direction);
+    ray.has_differentials = true;
+    RayDifferentials& d = ray.differentials;
+    lens_ray(film + Vec2(1.0f, 0.0f), disk, d.rx_origin, d.rx_direction);
+    lens_ray(film + Vec2(0.0f, 1.0f), disk, d.ry_origin, d.ry_direction);
+    d.rx_origin = ray.origin + m_footprint_scale * (d.rx_origin - ray.origin);
+    d.ry_origin = ray.origin + m_footprint_scale * (d.ry_origin - ray.origin);
+    d.rx_direction = ray.direction + m_footprint_scale * (d.rx_direction - ray.direction);
+    d.ry_direction = ray.direction + m_footprint_scale * (d.ry_direction - ray.direction);
+    return ray;
+}
+
+void PerspectiveCamera::approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx,
+                                              Vec3& dpdy) const {
+    // A pinhole ray towards p, and its neighbours one (scaled) pixel step away in angle as
+    // at the image centre; each neighbour is intersected with p's tangent plane.
+    const Vec3 to_p = p - m_eye;
+    const float distance = glm::length(to_p);
+    dpdx = dpdy = Vec3(0.0f);
+    if (!(distance > 0.0f)) return;
+    const Vec3 d = to_p / distance;
+    const float pixel_angle = 2.0f * m_tan_half_fov / m_resolution.y * m_footprint_scale;
+    const float d_dot_n = glm::dot(d, n);
+    auto on_plane = [&](const Vec3& step) {
+        const Vec3 dir = d + pixel_angle * step;
+        const float denom = glm::dot(dir, n);
+        if (std::abs(denom) < 1e-6f * std::abs(d_dot_n) || std::abs(denom) < 1e-12f)
+            return Vec3(0.0f);
+        const float t = distance * d_dot_n / denom;
+        return m_eye + t * dir - p;
+    };
+    dpdx = on_plane(m_right);
+    dpdy = on_plane(-m_up);
 }
 
 std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {

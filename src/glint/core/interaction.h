@@ -4,7 +4,9 @@
 #include <glint/core/ray.h>
 #include <glint/math/frame.h>
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 namespace glint {
@@ -14,6 +16,7 @@ class Light;
 
 struct SurfaceInteraction {
     Vec3 p;         // world-space hit point
+    Vec3 p_object;  // the hit in the shape's own space (before its transform and placement)
     Vec3 ng;        // geometric normal, unit length, pointing to the shape's outside
     Frame shading;  // shading frame, normal on the same side as ng
     Vec2 uv;
@@ -25,6 +28,14 @@ struct SurfaceInteraction {
     const Material* material = nullptr;
     const Light* area_light = nullptr;  // set when the surface emits
 
+    // Texture footprint: how p and uv change from one pixel to the next on the image.
+    // Zero until set_footprint() is called (integrators do so for materials with textures).
+    Vec3 dpdx{0.0f}, dpdy{0.0f};
+    float dudx = 0.0f, dvdx = 0.0f, dudy = 0.0f, dvdy = 0.0f;
+
+    // Stores the footprint and derives the uv derivatives by least squares (pbrt-v4).
+    void set_footprint(const Vec3& dp_dx, const Vec3& dp_dy);
+
     Vec3 to_local(const Vec3& w) const { return shading.to_local(w); }
     Vec3 to_world(const Vec3& w) const { return shading.to_world(w); }
 };
@@ -32,6 +43,26 @@ struct SurfaceInteraction {
 // Moves `p` off the surface along the geometric normal by a few ulps of its own magnitude
 // (Wächter & Binder, Ray Tracing Gems ch. 6), so new rays neither re-hit the surface they
 // leave (acne) nor start behind a neighbouring surface (leaks), at any scene scale.
+inline void SurfaceInteraction::set_footprint(const Vec3& dp_dx, const Vec3& dp_dy) {
+    dpdx = dp_dx;
+    dpdy = dp_dy;
+    // Solve dp = dpdu du + dpdv dv in the least-squares sense.
+    const float ata00 = glm::dot(dpdu, dpdu), ata01 = glm::dot(dpdu, dpdv);
+    const float ata11 = glm::dot(dpdv, dpdv);
+    const float det = ata00 * ata11 - ata01 * ata01;
+    const float inv_det = std::abs(det) > 1e-20f ? 1.0f / det : 0.0f;
+    auto solve = [&](const Vec3& dp, float& du, float& dv) {
+        const float atb0 = glm::dot(dpdu, dp), atb1 = glm::dot(dpdv, dp);
+        du = (ata11 * atb0 - ata01 * atb1) * inv_det;
+        dv = (ata00 * atb1 - ata01 * atb0) * inv_det;
+        // Clamp, so that a footprint seen edge-on cannot ask for the whole texture at once.
+        du = std::isfinite(du) ? std::clamp(du, -1e8f, 1e8f) : 0.0f;
+        dv = std::isfinite(dv) ? std::clamp(dv, -1e8f, 1e8f) : 0.0f;
+    };
+    solve(dpdx, dudx, dvdx);
+    solve(dpdy, dudy, dvdy);
+}
+
 inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& direction) {
     constexpr float kOrigin = 1.0f / 32.0f;
     constexpr float kFloatScale = 1.0f / 65536.0f;

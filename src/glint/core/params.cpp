@@ -33,6 +33,13 @@ bool Params::has(const std::string& name) const {
     return m_values.count(name) != 0;
 }
 
+bool Params::is_ref(const std::string& name, const std::string& kind) const {
+    auto it = m_values.find(name);
+    if (it == m_values.end()) return false;
+    auto ref = std::get_if<ObjectRef>(&it->second);
+    return ref && ref->kind == kind;
+}
+
 const ParamValue* Params::lookup(const std::string& name) const {
     m_asked.insert(name);
     auto it = m_values.find(name);
@@ -129,6 +136,7 @@ std::vector<double> Params::get_numbers(const std::string& name) const {
     const ParamValue* v = lookup(name);
     if (!v) return {};
     if (auto list = std::get_if<std::vector<double>>(v)) return *list;
+    if (auto number = std::get_if<double>(v)) return {*number};
     wrong_type(name, "a list of numbers");
 }
 

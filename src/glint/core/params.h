@@ -31,6 +31,8 @@ public:
 
     void set(const std::string& name, ParamValue value) { m_values[name] = std::move(value); }
     bool has(const std::string& name) const;
+    // Whether `name` was given as a handle of this kind (e.g. a "texture").
+    bool is_ref(const std::string& name, const std::string& kind) const;
 
     float get_float(const std::string& name, float fallback) const;
     float get_float(const std::string& name) const;

@@ -144,6 +144,7 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
     const Vec3& p2 = m_data.positions[idx[2]];
     const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
     si.p = b0 * p0 + b1 * p1 + b2 * p2;
+    si.p_object = m_data.to_object.is_identity() ? si.p : m_data.to_object.point(si.p);
     si.ng = glm::normalize(triangle_cross(p0, p1, p2));
 
     Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
@@ -230,6 +231,7 @@ MeshData make_box_mesh(const Vec3& lo, const Vec3& hi) {
 
 void transform_mesh(MeshData& mesh, const Transform& xf) {
     if (xf.is_identity()) return;
+    mesh.to_object = mesh.to_object * xf.inverse();
     for (auto& p : mesh.positions) p = xf.point(p);
     for (auto& n : mesh.normals) n = glm::normalize(xf.normal(n));
     // A mirroring transform reverses the winding; restore it so normals still point out.

@@ -2,6 +2,7 @@
 // Triangle mesh: Embree's native triangles. Quads and boxes are built as meshes too, so
 // they get Embree's fastest path and watertight edges (no light leaks between triangles).
 #include <glint/geometry/shape.h>
+#include <glint/math/transform.h>
 
 #include <vector>
 
@@ -12,6 +13,9 @@ struct MeshData {
     std::vector<Vec3> normals;      // per vertex, optional
     std::vector<Vec2> uvs;          // per vertex, optional
     std::vector<uint32_t> indices;  // three per triangle
+    // Undoes the transform applied by transform_mesh, so that solid textures see the mesh
+    // where it was modelled.
+    Transform to_object;
 };
 
 class TriangleMesh final : public Shape {

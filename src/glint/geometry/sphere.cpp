@@ -71,6 +71,7 @@ float one_minus_cos_cone(float sin2_max) {
 Sphere::Sphere(const Vec3& center, float radius, const Transform& to_parent) {
     if (!(radius > 0.0f) || !std::isfinite(radius)) throw Error("sphere radius must be positive");
     m_to_parent = to_parent * Transform::translate(center) * Transform::scale(Vec3(radius));
+    m_parent_to_object = to_parent.inverse();
 }
 
 Bounds3 Sphere::bounds() const {
@@ -119,14 +120,16 @@ void Sphere::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInter
     const float phi_raw = std::atan2(p_object.z, p_object.x);
     const float phi = phi_raw < 0.0f ? phi_raw + 2.0f * kPi : phi_raw;
     const float theta = std::acos(std::clamp(p_object.y, -1.0f, 1.0f));
-    si.uv = Vec2(phi * kInv2Pi, theta * kInvPi);
-    // y is the pole; u runs around it, v from the north pole down.
+    // y is the pole; u runs around it, v from the south pole (0) up to the north pole (1),
+    // so that an image's top row lies at the north pole.
+    si.uv = Vec2(phi * kInv2Pi, 1.0f - theta * kInvPi);
     const Vec3 dpdu_object(-2.0f * kPi * p_object.z, 0.0f, 2.0f * kPi * p_object.x);
     const float sin_theta = safe_sqrt(1.0f - p_object.y * p_object.y);
     const Vec3 dpdv_object =
-        kPi * Vec3(p_object.y * std::cos(phi), -sin_theta, p_object.y * std::sin(phi));
+        -kPi * Vec3(p_object.y * std::cos(phi), -sin_theta, p_object.y * std::sin(phi));
 
     si.p = m_to_parent.point(p_object);
+    si.p_object = m_parent_to_object.point(si.p);
     si.ng = glm::normalize(m_to_parent.normal(p_object));
     si.dpdu = m_to_parent.vector(dpdu_object);
     si.dpdv = m_to_parent.vector(dpdv_object);

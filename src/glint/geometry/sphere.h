@@ -22,7 +22,8 @@ public:
     bool intersect_interval(const Vec3& origin, const Vec3& direction, float& t0, float& t1) const;
 
 private:
-    Transform m_to_parent;  // unit sphere at the origin -> parent space
+    Transform m_to_parent;         // unit sphere at the origin -> parent space
+    Transform m_parent_to_object;  // undoes the `transform` parameter, for solid textures
 };
 
 // Sampling of a sphere with centre and radius in world space: the cone of directions it

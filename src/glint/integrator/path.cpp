@@ -1,4 +1,5 @@
 #include <glint/core/sampler.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/path.h>
 #include <glint/material/material.h>
 
@@ -51,14 +52,13 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
 
     for (int depth = 0;; ++depth) {
         ++counter.rays;
-        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) {
             L += beta * scene.background();
             if (aov && depth == 0) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
             break;
         }
-        const SurfaceInteraction& si = *hit;
-        if (aov && depth == 0) record_aov(aov, si, si.material);
+        SurfaceInteraction& si = *hit;
 
         // Emission reached by BSDF sampling; light sampling already counted the rest of it.
         if (si.area_light) {
@@ -80,7 +80,8 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
             if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
         }
 
-        const Bsdf* bsdf = si.material->bsdf(si, arena);
+        const Bsdf* bsdf = shade(scene, ray, si, arena);
+        if (aov && depth == 0) record_aov(aov, si, si.material);
         if (!bsdf) break;
         if (m_settings.max_depth >= 0 && depth >= m_settings.max_depth) break;
 

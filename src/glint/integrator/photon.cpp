@@ -1,6 +1,7 @@
 #include <glint/core/progress.h>
 #include <glint/integrator/direct_lighting.h>
 #include <glint/integrator/photon.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/projection_map.h>
 
@@ -129,7 +130,7 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
         // direct or caustic light, which the other terms already hold.
         for (int depth = 0; depth < kMaxSpecularChain; ++depth) {
             ++counter.rays;
-            const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+            std::optional<SurfaceInteraction> hit = scene.intersect(ray);
             if (!hit) {
                 sum += weight * scene.background();
                 break;
@@ -138,7 +139,7 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
                 const Spectrum sigma = hit->material->interior_absorption();
                 if (!sigma.is_black()) weight *= exp(sigma * (-hit->t * glm::length(ray.direction)));
             }
-            const Bsdf* next = hit->material->bsdf(*hit, arena);
+            const Bsdf* next = shade(scene, ray, *hit, arena);
             if (!next) break;
             if (!next->is_delta()) {
                 sum += weight * estimate(m_global, *hit, *next);
@@ -160,12 +161,13 @@ Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler
     Ray ray = camera_ray;
     for (int depth = 0; depth < kMaxSpecularChain; ++depth) {
         ++counter.rays;
-        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) {
             if (aov && depth == 0) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
             return L + beta * scene.background();
         }
-        const SurfaceInteraction& si = *hit;
+        SurfaceInteraction& si = *hit;
+        const Bsdf* bsdf = shade(scene, ray, si, arena);
         if (aov && depth == 0) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
         // Every vertex so far was specular: emission seen here is not in any map.
         if (si.area_light) L += beta * si.area_light->le(si, si.wo);
@@ -173,7 +175,6 @@ Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler
             const Spectrum sigma = si.material->interior_absorption();
             if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
         }
-        const Bsdf* bsdf = si.material->bsdf(si, arena);
         if (!bsdf) return L;
         if (!bsdf->is_delta()) {
             if (m_show_photons) return L + beta * (estimate(m_caustic, si, *bsdf) + estimate(m_global, si, *bsdf));

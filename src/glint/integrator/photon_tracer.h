@@ -6,6 +6,7 @@
 #include <glint/core/arena.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/shading.h>
 #include <glint/material/material.h>
 
 #include <tbb/parallel_for.h>
@@ -73,14 +74,14 @@ private:
         for (int bounces = 0; bounces <= m_max_bounces; ++bounces) {
             arena.reset();
             ++rays;
-            const std::optional<SurfaceInteraction> hit = m_scene.intersect(ray);
+            std::optional<SurfaceInteraction> hit = m_scene.intersect(ray);
             if (!hit) return;
-            const SurfaceInteraction& si = *hit;
+            SurfaceInteraction& si = *hit;
             if (!si.front_face) {
                 const Spectrum sigma = si.material->interior_absorption();
                 if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
             }
-            const Bsdf* bsdf = si.material->bsdf(si, arena);
+            const Bsdf* bsdf = shade(m_scene, ray, si, arena);
             if (!bsdf) return;
             const Vec3 wi = -glm::normalize(ray.direction);
             if (!bsdf->is_delta()) sink.store(PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0});

@@ -1,5 +1,6 @@
 #include <glint/core/arena.h>
 #include <glint/integrator/projection_map.h>
+#include <glint/integrator/shading.h>
 #include <glint/material/material.h>
 
 namespace glint {
@@ -24,10 +25,11 @@ ProjectionMap::ProjectionMap(const Scene& scene, const Light& light) {
         for (const Vec2& u : probes) {
             const Vec3 w = direction(cell, u);
             if (light.intensity(w).is_black()) continue;
-            const auto hit = scene.intersect(Ray{m_origin, w});
+            const Ray ray{m_origin, w};
+            auto hit = scene.intersect(ray);
             if (!hit) continue;
             arena.reset();
-            const Bsdf* bsdf = hit->material->bsdf(*hit, arena);
+            const Bsdf* bsdf = shade(scene, ray, *hit, arena);
             if (bsdf && bsdf->is_delta()) {
                 specular[cell] = 1;
                 break;

@@ -1,5 +1,6 @@
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/direct_lighting.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/sppm.h>
@@ -34,18 +35,18 @@ VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, A
     bool specular = true;
     for (int depth = 0; depth < kMaxCameraDepth; ++depth) {
         ++rays;
-        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) {
             direct += beta * scene.background();
             return {};
         }
-        const SurfaceInteraction& si = *hit;
+        SurfaceInteraction& si = *hit;
         if (si.area_light && specular) direct += beta * si.area_light->le(si, si.wo);
         if (!si.front_face) {
             const Spectrum sigma = si.material->interior_absorption();
             if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
         }
-        const Bsdf* bsdf = si.material->bsdf(si, arena);
+        const Bsdf* bsdf = shade(scene, ray, si, arena);
         if (!bsdf) return {};
         if (!bsdf->is_delta()) {
             // Photons of zero bounces are skipped below: direct light is estimated here.
@@ -154,6 +155,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
                         const float r = (*pixels)[i].radius;
                         if (length_squared(vp.si.p - hit.si->p) > r * r) continue;
                         arena.reset();
+                        // vp.si already has its final shading frame: no second bump.
                         const Bsdf* bsdf = vp.si.material->bsdf(vp.si, arena);
                         const Spectrum f = bsdf->eval(vp.si.to_local(vp.si.wo), vp.si.to_local(hit.wi));
                         if (f.is_black()) continue;

@@ -1,4 +1,5 @@
 #include <glint/core/sampler.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/whitted.h>
 #include <glint/material/material.h>
@@ -77,17 +78,17 @@ Spectrum WhittedIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
 Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                                   RayCounter& counter, AovSample* aov, int depth) const {
     ++counter.rays;
-    const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+    std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
         if (aov) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
         return scene.background();
     }
-    const SurfaceInteraction& si = *hit;
+    SurfaceInteraction& si = *hit;
+    const Bsdf* bsdf = shade(scene, ray, si, arena);
     if (aov) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
 
     Spectrum L(0.0f);
     if (si.area_light) L += si.area_light->le(si, si.wo);
-    const Bsdf* bsdf = si.material->bsdf(si, arena);
     // Like the path tracer's max_depth: scattering at vertex `depth` is computed only below
     // the limit, so both integrators mean the same by it (and agree where both are exact).
     if (bsdf && depth < m_max_depth) {

@@ -21,7 +21,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Material> make_dielectric_material(const Params& params) {
+std::unique_ptr<Material> make_dielectric_material(const Params& params, TextureTable&) {
     const float ior = params.get_float("ior", 1.5f);
     if (!(ior > 0.0f)) params.fail("'ior' must be positive");
     const Spectrum absorption = params.get_spectrum("absorption", Spectrum(0.0f));

@@ -6,24 +6,22 @@ namespace {
 
 class DiffuseMaterial final : public Material {
 public:
-    explicit DiffuseMaterial(const Spectrum& reflectance) : m_reflectance(reflectance) {}
-    const Bsdf* bsdf(const SurfaceInteraction&, Arena& arena) const override {
-        return arena.make<LambertianBsdf>(m_reflectance);
+    explicit DiffuseMaterial(const SpectrumInput& reflectance) : m_reflectance(reflectance) {}
+    const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        return arena.make<LambertianBsdf>(m_reflectance.eval(si));
     }
-    Spectrum albedo(const SurfaceInteraction&) const override { return m_reflectance; }
+    Spectrum albedo(const SurfaceInteraction& si) const override { return m_reflectance.eval(si); }
 
 private:
-    Spectrum m_reflectance;
+    SpectrumInput m_reflectance;
 };
 
 }  // namespace
 
-std::unique_ptr<Material> make_diffuse_material(const Params& params) {
-    const Spectrum reflectance = params.get_spectrum("reflectance", Spectrum(0.5f));
-    if (reflectance.max_value() > 1.0f ||
-        std::min({reflectance.r, reflectance.g, reflectance.b}) < 0.0f) {
-        params.fail("'reflectance' must lie in [0, 1] so the surface does not create energy");
-    }
+std::unique_ptr<Material> make_diffuse_material(const Params& params, TextureTable& textures) {
+    // In [0, 1] so the surface does not create energy.
+    const SpectrumInput reflectance =
+        textures.spectrum(params, "reflectance", Spectrum(0.5f), 0.0f, 1.0f);
     return std::make_unique<DiffuseMaterial>(reflectance);
 }
 

@@ -19,7 +19,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<Material> make_emissive_material(const Params& params) {
+std::unique_ptr<Material> make_emissive_material(const Params& params, TextureTable&) {
     const Spectrum radiance = params.get_spectrum("radiance");
     if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f)
         params.fail("'radiance' must not be negative");

@@ -4,6 +4,9 @@
 #include <glint/core/arena.h>
 #include <glint/core/interaction.h>
 #include <glint/material/bsdf.h>
+#include <glint/material/normal_perturbation.h>
+
+#include <optional>
 
 namespace glint {
 
@@ -11,7 +14,14 @@ class Material {
 public:
     virtual ~Material() = default;
 
-    // The BSDF at this hit, or nullptr for a surface that does not scatter (a pure emitter).
+    // What an integrator calls at a hit: applies the bump or normal map to si's shading
+    // frame, then returns the BSDF (nullptr for a surface that does not scatter). The
+    // integrator sets si's texture footprint first when uses_textures() says so.
+    const Bsdf* scatter(SurfaceInteraction& si, Arena& arena) const {
+        if (m_perturbation) m_perturbation->apply(si);
+        return bsdf(si, arena);
+    }
+    // The BSDF at this hit, with the shading frame already final.
     virtual const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const = 0;
     // Reflectance colour for the albedo feature channel.
     virtual Spectrum albedo(const SurfaceInteraction&) const { return Spectrum(0.0f); }
@@ -24,6 +34,18 @@ public:
     // Beer-Lambert absorption coefficient (per scene length unit) of the volume inside a
     // closed shape with this material; zero for surfaces.
     virtual Spectrum interior_absorption() const { return Spectrum(0.0f); }
+
+    // Set by the registry after the factory ran: textures need the pixel footprint.
+    void set_uses_textures(bool uses) { m_uses_textures = uses; }
+    bool uses_textures() const { return m_uses_textures; }
+    void set_perturbation(const NormalPerturbation& perturbation) {
+        m_perturbation = perturbation;
+        m_uses_textures = true;
+    }
+
+private:
+    bool m_uses_textures = false;
+    std::optional<NormalPerturbation> m_perturbation;
 };
 
 }  // namespace glint

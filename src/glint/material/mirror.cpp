@@ -6,23 +6,20 @@ namespace {
 
 class MirrorMaterial final : public Material {
 public:
-    explicit MirrorMaterial(const Spectrum& tint) : m_tint(tint) {}
-    const Bsdf* bsdf(const SurfaceInteraction&, Arena& arena) const override {
-        return arena.make<SpecularReflectionBsdf>(m_tint);
+    explicit MirrorMaterial(const SpectrumInput& tint) : m_tint(tint) {}
+    const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        return arena.make<SpecularReflectionBsdf>(m_tint.eval(si));
     }
-    Spectrum albedo(const SurfaceInteraction&) const override { return m_tint; }
+    Spectrum albedo(const SurfaceInteraction& si) const override { return m_tint.eval(si); }
 
 private:
-    Spectrum m_tint;
+    SpectrumInput m_tint;
 };
 
 }  // namespace
 
-std::unique_ptr<Material> make_mirror_material(const Params& params) {
-    const Spectrum tint = params.get_spectrum("tint", Spectrum(1.0f));
-    if (tint.max_value() > 1.0f || std::min({tint.r, tint.g, tint.b}) < 0.0f) {
-        params.fail("'tint' must lie in [0, 1]");
-    }
+std::unique_ptr<Material> make_mirror_material(const Params& params, TextureTable& textures) {
+    const SpectrumInput tint = textures.spectrum(params, "tint", Spectrum(1.0f), 0.0f, 1.0f);
     return std::make_unique<MirrorMaterial>(tint);
 }
 

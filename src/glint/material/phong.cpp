@@ -6,29 +6,35 @@ namespace {
 
 class PhongMaterial final : public Material {
 public:
-    PhongMaterial(const Spectrum& diffuse, const Spectrum& specular, float exponent)
+    PhongMaterial(const SpectrumInput& diffuse, const SpectrumInput& specular, float exponent)
         : m_diffuse(diffuse), m_specular(specular), m_exponent(exponent) {}
-    const Bsdf* bsdf(const SurfaceInteraction&, Arena& arena) const override {
-        return arena.make<PhongBsdf>(m_diffuse, m_specular, m_exponent);
+    const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        // A textured diffuse colour is cut where kd + ks would exceed 1.
+        Spectrum kd = m_diffuse.eval(si);
+        const Spectrum ks = m_specular.eval(si);
+        for (int c = 0; c < 3; ++c) kd[c] = std::min(kd[c], 1.0f - ks[c]);
+        return arena.make<PhongBsdf>(kd, ks, m_exponent);
     }
-    Spectrum albedo(const SurfaceInteraction&) const override { return m_diffuse + m_specular; }
+    Spectrum albedo(const SurfaceInteraction& si) const override {
+        return m_diffuse.eval(si) + m_specular.eval(si);
+    }
 
 private:
-    Spectrum m_diffuse;
-    Spectrum m_specular;
+    SpectrumInput m_diffuse;
+    SpectrumInput m_specular;
     float m_exponent;
 };
 
 }  // namespace
 
-std::unique_ptr<Material> make_phong_material(const Params& params) {
-    const Spectrum diffuse = params.get_spectrum("diffuse", Spectrum(0.5f));
-    const Spectrum specular = params.get_spectrum("specular", Spectrum(0.2f));
+std::unique_ptr<Material> make_phong_material(const Params& params, TextureTable& textures) {
+    const SpectrumInput diffuse = textures.spectrum(params, "diffuse", Spectrum(0.5f), 0.0f, 1.0f);
+    const SpectrumInput specular =
+        textures.spectrum(params, "specular", Spectrum(0.2f), 0.0f, 1.0f);
     const float exponent = params.get_float("exponent", 50.0f);
-    const Spectrum total = diffuse + specular;
-    if (std::min({diffuse.r, diffuse.g, diffuse.b, specular.r, specular.g, specular.b}) < 0.0f) {
-        params.fail("'diffuse' and 'specular' must not be negative");
-    }
+    if (specular.is_textured()) params.fail("'specular' cannot be a texture; 'diffuse' can");
+    const Spectrum total = diffuse.representative() * (diffuse.is_textured() ? 0.0f : 1.0f) +
+                           specular.representative();
     if (total.max_value() > 1.0f) {
         params.fail("'diffuse' + 'specular' must not exceed 1 in any channel, or the surface would create energy");
     }

@@ -1,12 +1,13 @@
 #include <glint/material/materials.h>
 #include <glint/material/registry.h>
 
+#include <cmath>
 #include <map>
 
 namespace glint {
 namespace {
 
-using MaterialFactory = std::unique_ptr<Material> (*)(const Params&);
+using MaterialFactory = std::unique_ptr<Material> (*)(const Params&, TextureTable&);
 
 const std::map<std::string, MaterialFactory>& factories() {
     static const std::map<std::string, MaterialFactory> table = {
@@ -19,6 +20,18 @@ const std::map<std::string, MaterialFactory>& factories() {
     return table;
 }
 
+// bump = texture, bump_scale = s; or normal_map = texture or file, normal_map_flip_y.
+void read_perturbation(const Params& params, TextureTable& textures, Material& material) {
+    const Texture* bump = textures.texture_or_file(params, "bump");
+    const float bump_scale = params.get_float("bump_scale", 1.0f);
+    const Texture* normal_map = textures.texture_or_file(params, "normal_map");
+    const bool flip_y = params.get_bool("normal_map_flip_y", false);
+    if (bump && normal_map) params.fail("give either 'bump' or 'normal_map', not both");
+    if (!std::isfinite(bump_scale)) params.fail("'bump_scale' must be a finite number");
+    if (bump) material.set_perturbation(NormalPerturbation::bump(bump, bump_scale));
+    if (normal_map) material.set_perturbation(NormalPerturbation::normal_map(normal_map, flip_y));
+}
+
 }  // namespace
 
 std::vector<std::string> material_types() {
@@ -27,10 +40,13 @@ std::vector<std::string> material_types() {
     return names;
 }
 
-std::unique_ptr<Material> make_material(const Params& params) {
+std::unique_ptr<Material> make_material(const Params& params, TextureTable& textures) {
     auto it = factories().find(params.type());
     if (it == factories().end()) params.fail("unknown material type");
-    auto material = it->second(params);
+    const size_t textures_before = textures.textures_handed_out();
+    auto material = it->second(params, textures);
+    material->set_uses_textures(textures.textures_handed_out() != textures_before);
+    read_perturbation(params, textures, *material);
     params.check_all_used();
     return material;
 }

@@ -2,6 +2,7 @@
 #include <glint/light/area_light.h>
 #include <glint/light/registry.h>
 #include <glint/material/registry.h>
+#include <glint/material/texture/registry.h>
 #include <glint/scene/build.h>
 #include <glint/scene/shapes.h>
 #include <glint/scene/solids.h>
@@ -19,7 +20,12 @@ public:
 
     std::unique_ptr<Scene> build() {
         build_camera();
-        for (const Params& p : m_desc.materials) m_scene->m_materials.push_back(make_material(p));
+        m_scene->m_textures =
+            std::make_unique<TextureTable>(m_desc.directory, m_settings.mipmapping);
+        for (const Params& p : m_desc.textures)
+            m_scene->m_textures->add(make_texture(p, *m_scene->m_textures));
+        for (const Params& p : m_desc.materials)
+            m_scene->m_materials.push_back(make_material(p, *m_scene->m_textures));
         for (const Params& p : m_desc.lights) m_scene->m_lights.push_back(make_light(p));
         if (m_desc.background) {
             const Spectrum radiance = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));
@@ -46,6 +52,7 @@ private:
         const Params fallback("camera", "default camera");
         m_scene->m_camera = make_camera(m_desc.camera ? *m_desc.camera : fallback,
                                         Vec2i(m_settings.width, m_settings.height));
+        m_scene->m_camera->set_samples_per_pixel(m_settings.spp);
     }
 
     // Shapes of every group, built once however often the group is placed.

@@ -22,6 +22,7 @@ RenderSettings parse_render_settings(const Params* params) {
     s.aovs = p.get_bool("aovs", false);
     s.outputs = p.get_strings("output");
     s.csg_shortcuts = p.get_bool("csg_shortcuts", true);
+    s.mipmapping = p.get_bool("mipmapping", true);
     s.ambient = p.get_spectrum("ambient", s.ambient);
     s.shadow_samples = p.get_int("shadow_samples", s.shadow_samples);
     s.penumbra_shortcut = p.get_bool("penumbra_shortcut", s.penumbra_shortcut);

@@ -25,6 +25,7 @@ struct RenderSettings {
     std::vector<std::string> outputs;
     int threads = 0;            // 0 = all cores
     bool csg_shortcuts = true;  // bounding-box pruning inside CSG trees
+    bool mipmapping = true;     // image textures filtered from mipmaps (false: full level only)
 
     // Classic ray tracing ("whitted").
     Spectrum ambient{0.0f};          // ambient light, times the surface albedo

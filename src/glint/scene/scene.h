@@ -5,6 +5,7 @@
 #include <glint/geometry/accel.h>
 #include <glint/light/light_sampler.h>
 #include <glint/material/material.h>
+#include <glint/material/texture/texture_table.h>
 
 #include <memory>
 #include <optional>
@@ -57,6 +58,7 @@ private:
 
     Accel m_accel;
     std::vector<std::unique_ptr<Shape>> m_shapes;
+    std::unique_ptr<TextureTable> m_textures;  // before the materials that point into it
     std::vector<std::unique_ptr<Material>> m_materials;
     std::vector<std::unique_ptr<Light>> m_lights;
     std::vector<std::vector<Geometry>> m_group_geometry;  // per prototype, by local id

@@ -100,6 +100,7 @@ RTCGeometry SolidShape::create_embree_geometry(RTCDevice device) const {
 void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit,
                                   SurfaceInteraction& si) const {
     si.p = ray.at(hit.t);
+    si.p_object = si.p;
     si.ng = glm::normalize(hit.normal);
     si.shading = Frame::from_normal(si.ng);
     si.dpdu = si.shading.s();

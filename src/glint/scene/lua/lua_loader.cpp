@@ -1,6 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/light/registry.h>
 #include <glint/material/registry.h>
+#include <glint/material/texture/registry.h>
 #include <glint/scene/lua/lua_loader.h>
 #include <glint/scene/shapes.h>
 #include <glint/scene/solids.h>
@@ -20,11 +21,12 @@ constexpr const char* kHandleMeta = "glint.handle";
 constexpr const char* kDescKey = "glint.scene_desc";
 
 struct Handle {
-    int kind;  // 0 = material, 1 = group, 2 = solid
+    int kind;  // 0 = material, 1 = group, 2 = solid, 3 = texture
     int index;
 };
-constexpr const char* kHandleKinds[] = {"material", "group", "solid"};
+constexpr const char* kHandleKinds[] = {"material", "group", "solid", "texture"};
 constexpr int kSolidHandle = 2;
+constexpr int kTextureHandle = 3;
 
 SceneDesc& desc_of(lua_State* L) {
     lua_getfield(L, LUA_REGISTRYINDEX, kDescKey);
@@ -156,6 +158,15 @@ int new_material(lua_State* L) {
     SceneDesc& desc = desc_of(L);
     desc.materials.push_back(to_params(L, 1, type));
     push_handle(L, 0, static_cast<int>(desc.materials.size()) - 1);
+    return 1;
+}
+
+// glint.texture.<type>{...} -> texture handle, usable wherever a material takes one.
+int new_texture(lua_State* L) {
+    const std::string type = lua_tostring(L, lua_upvalueindex(1));
+    SceneDesc& desc = desc_of(L);
+    desc.textures.push_back(to_params(L, 1, type));
+    push_handle(L, kTextureHandle, static_cast<int>(desc.textures.size()) - 1);
     return 1;
 }
 
@@ -398,6 +409,9 @@ int open_glint(lua_State* L) {
     lua_newtable(L);
     for (const std::string& type : solid_types()) register_closure(L, type, guarded<new_solid>);
     lua_setfield(L, -2, "solid");
+    lua_newtable(L);
+    for (const std::string& type : texture_types()) register_closure(L, type, guarded<new_texture>);
+    lua_setfield(L, -2, "texture");
     for (const char* operation : {"union", "intersection", "difference"}) {
         register_closure(L, operation, guarded<new_csg_node>);
     }

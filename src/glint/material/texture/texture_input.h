@@ -1,0 +1,53 @@
+#pragma once
+// A material parameter that is either a constant or a texture: what every colour,
+// roughness or weight of a material is, so that any of them can vary over a surface.
+#include <glint/material/texture/texture.h>
+
+namespace glint {
+
+class SpectrumInput {
+public:
+    SpectrumInput() = default;
+    explicit SpectrumInput(const Spectrum& constant) : m_constant(constant) {}
+    // Texture values are clamped to [lo, hi], so a texture cannot break a limit that a
+    // constant is checked against (a reflectance above 1 would create energy).
+    SpectrumInput(const Texture* texture, float lo, float hi)
+        : m_texture(texture), m_lo(lo), m_hi(hi) {}
+
+    Spectrum eval(const SurfaceInteraction& si) const {
+        if (!m_texture) return m_constant;
+        const Spectrum v = m_texture->eval(TextureContext(si));
+        return {std::clamp(v.r, m_lo, m_hi), std::clamp(v.g, m_lo, m_hi),
+                std::clamp(v.b, m_lo, m_hi)};
+    }
+    bool is_textured() const { return m_texture != nullptr; }
+    // The constant value, or a representative one (0.5) for a texture.
+    Spectrum representative() const { return m_texture ? Spectrum(0.5f) : m_constant; }
+
+private:
+    Spectrum m_constant{0.0f};
+    const Texture* m_texture = nullptr;
+    float m_lo = 0.0f, m_hi = 0.0f;
+};
+
+class FloatInput {
+public:
+    FloatInput() = default;
+    explicit FloatInput(float constant) : m_constant(constant) {}
+    FloatInput(const Texture* texture, float lo, float hi)
+        : m_texture(texture), m_lo(lo), m_hi(hi) {}
+
+    float eval(const SurfaceInteraction& si) const {
+        if (!m_texture) return m_constant;
+        return std::clamp(m_texture->eval_float(TextureContext(si)), m_lo, m_hi);
+    }
+    bool is_textured() const { return m_texture != nullptr; }
+    float representative() const { return m_texture ? 0.5f * (m_lo + m_hi) : m_constant; }
+
+private:
+    float m_constant = 0.0f;
+    const Texture* m_texture = nullptr;
+    float m_lo = 0.0f, m_hi = 0.0f;
+};
+
+}  // namespace glint
