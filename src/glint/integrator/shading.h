@@ -32,8 +32,7 @@ inline void set_texture_footprint(const Camera& camera, const Ray& ray, SurfaceI
 
 // The BSDF at a hit reached by `ray` (nullptr for surfaces that only emit); may change
 // si's shading frame (bump and normal maps).
-inline const Bsdf* shade(const Scene& scene, const Ray& ray, SurfaceInteraction& si,
-                         Arena& arena) {
+inline const Bsdf* shade(const Scene& scene, const Ray& ray, SurfaceInteraction& si, Arena& arena) {
     if (si.material->uses_textures()) set_texture_footprint(scene.camera(), ray, si);
     return si.material->scatter(si, arena);
 }

@@ -13,8 +13,10 @@ void set_shading(SurfaceInteraction& si, const Vec3& n, const Vec3& tangent) {
 }  // namespace
 
 void NormalPerturbation::apply(SurfaceInteraction& si) const {
-    if (m_is_normal_map) apply_normal_map(si);
-    else apply_bump(si);
+    if (m_is_normal_map)
+        apply_normal_map(si);
+    else
+        apply_bump(si);
 }
 
 void NormalPerturbation::apply_bump(SurfaceInteraction& si) const {

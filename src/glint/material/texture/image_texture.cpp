@@ -23,18 +23,22 @@ class ImageTexture final : public Texture {
 public:
     ImageTexture(OIIO::TextureSystem* system, OIIO::TextureSystem::TextureHandle* handle,
                  OIIO::TextureOpt options, int channels, bool srgb, TextureMapping2D mapping)
-        : m_system(system), m_handle(handle), m_options(options), m_channels(channels),
-          m_srgb(srgb), m_mapping(mapping) {}
+        : m_system(system),
+          m_handle(handle),
+          m_options(options),
+          m_channels(channels),
+          m_srgb(srgb),
+          m_mapping(mapping) {}
 
     Spectrum eval(const TextureContext& ctx) const override {
         const TexCoord2D tc = m_mapping.map(ctx);
         // OpenImageIO puts t = 0 at the top row; uv has v = 0 at the bottom.
         float result[3] = {0.0f, 0.0f, 0.0f};
         OIIO::TextureOpt options = m_options;  // the lookup may write into it
-        m_system->texture(m_handle, nullptr, options, tc.st.x, 1.0f - tc.st.y, tc.dsdx,
-                          -tc.dtdx, tc.dsdy, -tc.dtdy, std::min(m_channels, 3), result);
-        Spectrum value = m_channels >= 3 ? Spectrum(result[0], result[1], result[2])
-                                         : Spectrum(result[0]);
+        m_system->texture(m_handle, nullptr, options, tc.st.x, 1.0f - tc.st.y, tc.dsdx, -tc.dtdx,
+                          tc.dsdy, -tc.dtdy, std::min(m_channels, 3), result);
+        Spectrum value =
+            m_channels >= 3 ? Spectrum(result[0], result[1], result[2]) : Spectrum(result[0]);
         if (m_srgb) {
             value = {srgb_to_linear(value.r), srgb_to_linear(value.g), srgb_to_linear(value.b)};
         }
@@ -55,7 +59,8 @@ OIIO::TextureOpt::Wrap parse_wrap(const std::string& wrap) {
     if (wrap == "clamp") return OIIO::TextureOpt::WrapClamp;
     if (wrap == "mirror") return OIIO::TextureOpt::WrapMirror;
     if (wrap == "black") return OIIO::TextureOpt::WrapBlack;
-    throw Error(fmt::format("'wrap' must be \"repeat\", \"clamp\", \"mirror\" or \"black\", not \"{}\"", wrap));
+    throw Error(fmt::format(
+        "'wrap' must be \"repeat\", \"clamp\", \"mirror\" or \"black\", not \"{}\"", wrap));
 }
 
 }  // namespace
@@ -75,8 +80,7 @@ ImageTextureSystem::~ImageTextureSystem() {
 
 std::unique_ptr<Texture> load_image_texture(const std::string& path,
                                             const ImageTextureOptions& options,
-                                            const TextureMapping2D& mapping,
-                                            TextureTable& table) {
+                                            const TextureMapping2D& mapping, TextureTable& table) {
     if (!std::filesystem::is_regular_file(path))
         throw Error(fmt::format("texture file '{}' does not exist", path));
     auto input = OIIO::ImageInput::open(path);
@@ -98,8 +102,9 @@ std::unique_ptr<Texture> load_image_texture(const std::string& path,
     } else if (options.filter == "none" || !table.mipmapping()) {
         opt.mipmode = OIIO::TextureOpt::MipModeNoMIP;
     } else {
-        throw Error(fmt::format("'filter' must be \"anisotropic\", \"trilinear\" or \"none\", not \"{}\"",
-                                options.filter));
+        throw Error(
+            fmt::format("'filter' must be \"anisotropic\", \"trilinear\" or \"none\", not \"{}\"",
+                        options.filter));
     }
     opt.interpmode = OIIO::TextureOpt::InterpBilinear;
 
@@ -108,8 +113,7 @@ std::unique_ptr<Texture> load_image_texture(const std::string& path,
     const bool srgb = options.encoding == TextureEncoding::kSrgb ||
                       (options.encoding == TextureEncoding::kAuto && eight_bit);
     OIIO::TextureSystem* system = oiio(table.images());
-    OIIO::TextureSystem::TextureHandle* handle =
-        system->get_texture_handle(OIIO::ustring(path));
+    OIIO::TextureSystem::TextureHandle* handle = system->get_texture_handle(OIIO::ustring(path));
     if (!handle) {
         throw Error(fmt::format("cannot open texture file '{}': {}", path, system->geterror()));
     }
@@ -125,9 +129,12 @@ std::unique_ptr<Texture> make_image_texture(const Params& params, TextureTable& 
     options.filter = params.get_string("filter", options.filter);
     if (!params.get_bool("mipmap", true)) options.filter = "none";
     const std::string encoding = params.get_string("encoding", "auto");
-    if (encoding == "srgb") options.encoding = TextureEncoding::kSrgb;
-    else if (encoding == "linear") options.encoding = TextureEncoding::kLinear;
-    else if (encoding != "auto") params.fail("'encoding' must be \"auto\", \"srgb\" or \"linear\"");
+    if (encoding == "srgb")
+        options.encoding = TextureEncoding::kSrgb;
+    else if (encoding == "linear")
+        options.encoding = TextureEncoding::kLinear;
+    else if (encoding != "auto")
+        params.fail("'encoding' must be \"auto\", \"srgb\" or \"linear\"");
     const TextureMapping2D mapping = read_mapping_2d(params);
     try {
         return load_image_texture(path.string(), options, mapping, table);

@@ -9,7 +9,6 @@
 #include <memory>
 #include <string>
 
-
 namespace glint {
 
 class TextureTable;
@@ -31,7 +30,7 @@ private:
 enum class TextureEncoding { kAuto, kSrgb, kLinear };
 
 struct ImageTextureOptions {
-    std::string wrap = "repeat";  // repeat, clamp, mirror, black
+    std::string wrap = "repeat";         // repeat, clamp, mirror, black
     std::string filter = "anisotropic";  // anisotropic, trilinear, none (bilinear, no mipmap)
     TextureEncoding encoding = TextureEncoding::kAuto;  // auto: 8-bit files are sRGB
 };
@@ -40,8 +39,7 @@ struct ImageTextureOptions {
 // glint::Error naming the file otherwise.
 std::unique_ptr<Texture> load_image_texture(const std::string& path,
                                             const ImageTextureOptions& options,
-                                            const TextureMapping2D& mapping,
-                                            TextureTable& table);
+                                            const TextureMapping2D& mapping, TextureTable& table);
 
 // glint.texture.image{file = ..., wrap, filter, encoding, mapping, scale, offset, ...}.
 std::unique_ptr<Texture> make_image_texture(const Params& params, TextureTable& table);

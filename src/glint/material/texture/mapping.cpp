@@ -57,18 +57,28 @@ TexCoord2D TextureMapping2D::map(const TextureContext& ctx) const {
 TextureMapping2D read_mapping_2d(const Params& params) {
     const std::string name = params.get_string("mapping", "uv");
     TextureMapping2D::Kind kind;
-    if (name == "uv") kind = TextureMapping2D::Kind::kUv;
-    else if (name == "planar") kind = TextureMapping2D::Kind::kPlanar;
-    else if (name == "spherical") kind = TextureMapping2D::Kind::kSpherical;
-    else if (name == "cylindrical") kind = TextureMapping2D::Kind::kCylindrical;
-    else params.fail("'mapping' must be \"uv\", \"planar\", \"spherical\" or \"cylindrical\", not \"" + name + "\"");
+    if (name == "uv")
+        kind = TextureMapping2D::Kind::kUv;
+    else if (name == "planar")
+        kind = TextureMapping2D::Kind::kPlanar;
+    else if (name == "spherical")
+        kind = TextureMapping2D::Kind::kSpherical;
+    else if (name == "cylindrical")
+        kind = TextureMapping2D::Kind::kCylindrical;
+    else
+        params.fail(
+            "'mapping' must be \"uv\", \"planar\", \"spherical\" or \"cylindrical\", not \"" +
+            name + "\"");
 
     Vec2 scale(1.0f);
     if (params.has("scale")) {
         const std::vector<double> values = params.get_numbers("scale");
-        if (values.size() == 1) scale = Vec2(static_cast<float>(values[0]));
-        else if (values.size() == 2) scale = Vec2(values[0], values[1]);
-        else params.fail("'scale' must be a number or {su, sv}");
+        if (values.size() == 1)
+            scale = Vec2(static_cast<float>(values[0]));
+        else if (values.size() == 2)
+            scale = Vec2(values[0], values[1]);
+        else
+            params.fail("'scale' must be a number or {su, sv}");
         if (scale.x == 0.0f || scale.y == 0.0f) params.fail("'scale' must not be zero");
     }
     Vec2 offset(0.0f);

@@ -26,8 +26,12 @@ public:
     TextureMapping2D() = default;
     TextureMapping2D(Kind kind, const Vec2& scale, const Vec2& offset, const Vec3& center,
                      const Vec3& s_axis, const Vec3& t_axis)
-        : m_kind(kind), m_scale(scale), m_offset(offset), m_center(center),
-          m_s_axis(s_axis), m_t_axis(t_axis) {}
+        : m_kind(kind),
+          m_scale(scale),
+          m_offset(offset),
+          m_center(center),
+          m_s_axis(s_axis),
+          m_t_axis(t_axis) {}
 
     TexCoord2D map(const TextureContext& ctx) const;
     Kind kind() const { return m_kind; }
