@@ -58,6 +58,8 @@ TEST_F(CliTest, BadInputGivesFileLineExitOneAndNoOutput) {
         {"unknown_parameter.lua", "unknown_parameter.lua:4:", "unknown parameter 'iorr'"},
         {"wrong_type.lua", "wrong_type.lua:4:", "must be a number"},
         {"missing_obj.lua", "missing_obj.lua:5:", "does-not-exist.obj"},
+        {"missing_texture.lua", "missing_texture.lua:4:", "textures/does-not-exist.png"},
+        {"unreadable_texture.lua", "unreadable_texture.lua:5:", "triangle.obj"},
         {"runtime_error.lua", "runtime_error.lua:3:", "nil value"},
     };
     for (const Case& c : cases) {
