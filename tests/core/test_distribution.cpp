@@ -138,5 +138,98 @@ TEST(Distribution1D, Deterministic) {
     EXPECT_EQ(a.index, b.index);
 }
 
+// A 4 x 3 grid (width x height) with an empty cell, an empty row and uneven rows.
+const std::vector<float> kGrid = {
+    1.0f, 2.0f, 0.0f, 1.0f,  // row 0: integral 1
+    0.0f, 0.0f, 0.0f, 0.0f,  // row 1: empty
+    4.0f, 1.0f, 2.0f, 5.0f,  // row 2: integral 3
+};
+
+TEST(Distribution2D, PdfIsValueOverIntegral) {
+    const Distribution2D d(kGrid, 4, 3);
+    EXPECT_EQ(d.width(), 4u);
+    EXPECT_EQ(d.height(), 3u);
+    EXPECT_FLOAT_EQ(d.integral(), 16.0f / 12.0f);
+    double total = 0.0;
+    for (std::size_t j = 0; j < 3; ++j) {
+        for (std::size_t i = 0; i < 4; ++i) {
+            const Vec2 centre((i + 0.5f) / 4.0f, (j + 0.5f) / 3.0f);
+            EXPECT_FLOAT_EQ(d.pdf(centre), kGrid[j * 4 + i] / d.integral()) << i << ", " << j;
+            total += d.pdf(centre) / 12.0;
+        }
+    }
+    EXPECT_NEAR(total, 1.0, 1e-6);
+    EXPECT_EQ(d.pdf(Vec2(0.5f, 1.0f)), 0.0f);
+    EXPECT_EQ(d.pdf(Vec2(-0.1f, 0.5f)), 0.0f);
+}
+
+TEST(Distribution2D, SampleInvertsBothCdfs) {
+    const Distribution2D d(kGrid, 4, 3);
+    // Row cdf edges: 0, 1/4, 1/4, 1; u.y = 5/8 lies halfway through row 2, which covers
+    // y in [2/3, 1). Row 2's cdf edges: 0, 1/3, 5/12, 7/12, 1; u.x = 0.5 is halfway
+    // through cell 2, which covers x in [1/2, 3/4).
+    const auto s = d.sample_continuous(Vec2(0.5f, 0.625f));
+    EXPECT_FLOAT_EQ(s.point.x, 0.625f);
+    EXPECT_FLOAT_EQ(s.point.y, 5.0f / 6.0f);
+    EXPECT_FLOAT_EQ(s.pdf, 2.0f / d.integral());
+    // The empty row and the empty cell are never reached, even from their cdf edges.
+    const auto edge = d.sample_continuous(Vec2(0.0f, 0.25f));
+    EXPECT_GE(edge.point.y, 2.0f / 3.0f);
+    EXPECT_LT(d.sample_continuous(Vec2(1.0f, 1.0f)).point.x, 1.0f);
+    EXPECT_LT(d.sample_continuous(Vec2(1.0f, 1.0f)).point.y, 1.0f);
+}
+
+TEST(Distribution2D, HistogramMatchesPdf) {
+    const Distribution2D d(kGrid, 4, 3);
+    constexpr int kSub = 2;  // histogram bins per cell along each axis
+    constexpr int kBinsX = 4 * kSub, kBinsY = 3 * kSub;
+    constexpr int kSamples = 200000;
+    std::vector<double> hist(kBinsX * kBinsY, 0.0);
+    Rng rng(5);
+    for (int n = 0; n < kSamples; ++n) {
+        const auto s = d.sample_continuous(Vec2(rng.next_float(), rng.next_float()));
+        ASSERT_GE(s.point.x, 0.0f);
+        ASSERT_LT(s.point.x, 1.0f);
+        ASSERT_GE(s.point.y, 0.0f);
+        ASSERT_LT(s.point.y, 1.0f);
+        EXPECT_FLOAT_EQ(s.pdf, d.pdf(s.point));
+        hist[static_cast<int>(s.point.y * kBinsY) * kBinsX +
+             static_cast<int>(s.point.x * kBinsX)] += 1.0;
+    }
+    double chi2 = 0.0;
+    int dof = -1;
+    for (int by = 0; by < kBinsY; ++by) {
+        for (int bx = 0; bx < kBinsX; ++bx) {
+            const double p = d.pdf(Vec2((bx + 0.5f) / kBinsX, (by + 0.5f) / kBinsY));
+            const double expected = kSamples * p / (kBinsX * kBinsY);
+            const double observed = hist[by * kBinsX + bx];
+            if (expected == 0.0) {
+                EXPECT_EQ(observed, 0.0) << "empty bin " << bx << ", " << by;
+                continue;
+            }
+            chi2 += (observed - expected) * (observed - expected) / expected;
+            ++dof;
+        }
+    }
+    EXPECT_EQ(dof, 27);     // 7 non-empty cells of 4 bins each, less one
+    EXPECT_LT(chi2, 55.5);  // 27 dof, 0.1 % tail
+}
+
+TEST(Distribution2D, AllZeroFallsBackToUniform) {
+    const Distribution2D d(std::vector<float>(6, 0.0f), 3, 2);
+    EXPECT_EQ(d.integral(), 0.0f);
+    const auto s = d.sample_continuous(Vec2(0.25f, 0.75f));
+    EXPECT_FLOAT_EQ(s.point.x, 0.25f);
+    EXPECT_FLOAT_EQ(s.point.y, 0.75f);
+    EXPECT_FLOAT_EQ(s.pdf, 1.0f);
+    EXPECT_FLOAT_EQ(d.pdf(Vec2(0.9f, 0.1f)), 1.0f);
+}
+
+TEST(Distribution2D, RejectsBadInput) {
+    EXPECT_THROW(Distribution2D({1.0f, 2.0f, 3.0f}, 2, 2), Error);
+    EXPECT_THROW(Distribution2D({}, 0, 0), Error);
+    EXPECT_THROW(Distribution2D({1.0f, -1.0f}, 2, 1), Error);
+}
+
 }  // namespace
 }  // namespace glint

@@ -93,4 +93,51 @@ Distribution1D::DiscreteSample Distribution1D::sample_discrete(float u) const {
     return {i, pmf(i), du};
 }
 
+namespace {
+
+std::vector<Distribution1D> make_rows(const std::vector<float>& values, std::size_t width,
+                                      std::size_t height) {
+    if (width == 0 || height == 0 || values.size() != width * height) {
+        throw Error("Distribution2D: " + std::to_string(values.size()) + " values for a " +
+                    std::to_string(width) + " x " + std::to_string(height) + " grid");
+    }
+    std::vector<Distribution1D> rows;
+    rows.reserve(height);
+    for (std::size_t j = 0; j < height; ++j) {
+        const auto row_start = values.begin() + static_cast<std::ptrdiff_t>(j * width);
+        rows.emplace_back(
+            std::vector<float>(row_start, row_start + static_cast<std::ptrdiff_t>(width)));
+    }
+    return rows;
+}
+
+std::vector<float> row_integrals(const std::vector<Distribution1D>& rows) {
+    std::vector<float> integrals;
+    integrals.reserve(rows.size());
+    for (const Distribution1D& row : rows) integrals.push_back(row.integral());
+    return integrals;
+}
+
+}  // namespace
+
+Distribution2D::Distribution2D(const std::vector<float>& values, std::size_t width,
+                               std::size_t height)
+    : m_rows(make_rows(values, width, height)), m_marginal(row_integrals(m_rows)) {}
+
+// The density factors as p(x, y) = p(y) p(x | y) = (row integral / integral) *
+// (value / row integral) = value / integral, which pdf() evaluates the same way.
+Distribution2D::ContinuousSample Distribution2D::sample_continuous(const Vec2& u) const {
+    const Distribution1D::ContinuousSample row = m_marginal.sample_continuous(u.y);
+    const Distribution1D::ContinuousSample along = m_rows[row.index].sample_continuous(u.x);
+    return {Vec2(along.x, row.x), row.pdf * along.pdf};
+}
+
+float Distribution2D::pdf(const Vec2& point) const {
+    if (!(point.y >= 0.0f && point.y < 1.0f)) return 0.0f;
+    const std::size_t n = m_rows.size();
+    const std::size_t j =
+        std::min(static_cast<std::size_t>(point.y * static_cast<float>(n)), n - 1);
+    return m_marginal.pdf(point.y) * m_rows[j].pdf(point.x);
+}
+
 }  // namespace glint

@@ -2,6 +2,9 @@
 // A piecewise-constant 1D distribution over [0, 1) built from n non-negative bin values.
 // Used for pixel filter importance sampling (one per axis) and for choosing lights in
 // proportion to their power, so it offers both a continuous and a discrete view.
+// Distribution2D builds on it for image-based lighting.
+#include <glint/math/vector.h>
+
 #include <cstddef>
 #include <vector>
 
@@ -48,6 +51,39 @@ private:
     float m_sum = 0.0f;
     float m_integral = 0.0f;
     bool m_uniform_fallback = false;
+};
+
+/// A piecewise-constant 2D distribution over [0, 1)^2 built from a grid of non-negative
+/// cell values: a marginal distribution over the rows (by each row's integral) and one
+/// conditional distribution per row. Points are (x, y) with x along a row (the column
+/// axis) and y across the rows, so for an image, cell (column i, row j) covers
+/// [i / width, (i + 1) / width) x [j / height, (j + 1) / height).
+class Distribution2D {
+public:
+    struct ContinuousSample {
+        Vec2 point;  ///< (x, y) in [0, 1)^2
+        float pdf;   ///< density with respect to area on [0, 1)^2
+    };
+
+    /// `values` holds height rows of width cells, row after row. Values must be finite and
+    /// non-negative (throws glint::Error otherwise, as does a size that does not match).
+    /// All-zero values fall back to a uniform distribution, as Distribution1D does.
+    Distribution2D(const std::vector<float>& values, std::size_t width, std::size_t height);
+
+    std::size_t width() const { return m_rows.front().size(); }
+    std::size_t height() const { return m_rows.size(); }
+    /// Integral of the step function over [0, 1)^2: the mean cell value.
+    float integral() const { return m_marginal.integral(); }
+
+    /// Deterministic in u; each coordinate is clamped into [0, 1). u.y picks the row,
+    /// u.x the position along it.
+    ContinuousSample sample_continuous(const Vec2& u) const;
+    /// Density at a point of [0, 1)^2 under sample_continuous (0 outside).
+    float pdf(const Vec2& point) const;
+
+private:
+    std::vector<Distribution1D> m_rows;  // conditional densities of x given the row
+    Distribution1D m_marginal;           // row integrals
 };
 
 }  // namespace glint
