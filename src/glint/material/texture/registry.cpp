@@ -1,5 +1,9 @@
+#include <glint/material/texture/checker_texture.h>
 #include <glint/material/texture/image_texture.h>
+#include <glint/material/texture/marble_texture.h>
+#include <glint/material/texture/noise_texture.h>
 #include <glint/material/texture/registry.h>
+#include <glint/material/texture/wood_texture.h>
 
 #include <map>
 
@@ -10,7 +14,13 @@ using TextureFactory = std::unique_ptr<Texture> (*)(const Params&, TextureTable&
 
 const std::map<std::string, TextureFactory>& factories() {
     static const std::map<std::string, TextureFactory> table = {
+        {"checker", make_checker_texture},
+        {"fbm", make_fbm_texture},
         {"image", make_image_texture},
+        {"marble", make_marble_texture},
+        {"noise", make_noise_texture},
+        {"turbulence", make_turbulence_texture},
+        {"wood", make_wood_texture},
     };
     return table;
 }
