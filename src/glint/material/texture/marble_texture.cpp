@@ -7,10 +7,10 @@ namespace glint {
 namespace {
 
 struct MarbleSettings {
-    float frequency = 6.0f;          // radians of the vein wave per unit along x
+    float frequency = 4.0f;          // radians of the vein wave per unit along x
     float turbulence_amount = 6.0f;  // radians of phase added by turbulence
-    float noise_scale = 2.0f;        // frequency of the turbulence
-    float sharpness = 3.0f;          // larger: thinner veins
+    float noise_scale = 1.5f;        // frequency of the turbulence
+    float sharpness = 12.0f;         // larger: thinner veins
     FractalSettings fractal{6, 2.0f, 0.5f};
     Spectrum base{0.88f, 0.86f, 0.82f};
     Spectrum vein{0.22f, 0.22f, 0.26f};
@@ -38,11 +38,10 @@ public:
     }
 
 private:
-    // Smoothstep keeps the ramp flat at both ends (no visible edge where the wave turns);
-    // the power narrows the part near the crest that shows the vein colour.
+    // A power of the wave's position m in [0, 1]: flat where the wave is low (the base),
+    // rising only near the crest, so veins are thin lines; smooth, so they have no edge.
     float vein_ramp(float m) const {
-        const float smooth = std::clamp(m * m * (3.0f - 2.0f * m), 0.0f, 1.0f);
-        return std::pow(smooth, m_settings.sharpness);
+        return std::pow(std::clamp(m, 0.0f, 1.0f), m_settings.sharpness);
     }
 
     SolidMapping m_mapping;
@@ -53,10 +52,10 @@ private:
 
 // glint.texture.marble{...}
 //   base, vein          colours                         defaults {0.88,0.86,0.82}, {0.22,0.22,0.26}
-//   frequency           vein wave, radians per unit along x, >= 0       default 6
+//   frequency           vein wave, radians per unit along x, >= 0       default 4
 //   turbulence_amount   phase disturbance in radians, >= 0              default 6
-//   noise_scale         frequency of the turbulence, > 0                default 2
-//   sharpness           ramp exponent, > 0 (larger: thinner veins)      default 3
+//   noise_scale         frequency of the turbulence, > 0                default 1.5
+//   sharpness           ramp exponent, > 0 (larger: thinner veins)      default 12
 //   octaves, lacunarity, gain   of the turbulence (pattern_params.h)    defaults 6, 2, 0.5
 //   transform, scale            place the pattern (solid_mapping.h)
 std::unique_ptr<Texture> make_marble_texture(const Params& params, TextureTable&) {

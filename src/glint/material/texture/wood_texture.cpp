@@ -8,7 +8,7 @@ namespace {
 
 struct WoodSettings {
     float rings = 8.0f;         // rings per unit of distance from the axis
-    float noise_amount = 0.5f;  // displacement of the rings, in rings
+    float noise_amount = 1.5f;  // displacement of the rings, in rings
     float noise_scale = 1.5f;   // frequency of that displacement
     float grain = 4.0f;         // how much slower the displacement varies along the axis
     FractalSettings fractal{4, 2.0f, 0.5f};
@@ -57,7 +57,7 @@ private:
 // glint.texture.wood{...}
 //   light, dark    colours of early and late wood          defaults {0.7,0.5,0.3}, {0.4,0.23,0.11}
 //   rings          rings per unit distance from the axis, > 0     default 8
-//   noise_amount   ring displacement by fbm, in rings, >= 0       default 0.5
+//   noise_amount   ring displacement by fbm, in rings, >= 0       default 1.5
 //   noise_scale    frequency of the displacing noise, > 0         default 1.5
 //   grain          noise stretch along the axis, > 0              default 4
 //   octaves, lacunarity, gain   of the fbm (pattern_params.h)     defaults 4, 2, 0.5
