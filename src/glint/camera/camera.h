@@ -26,7 +26,8 @@ public:
     // With many samples per pixel each one need only filter a fraction of the pixel; pbrt-v4
     // scales differentials by max(1/8, 1/sqrt(spp)).
     void set_samples_per_pixel(int spp) {
-        m_footprint_scale = std::max(0.125f, 1.0f / std::sqrt(static_cast<float>(std::max(1, spp))));
+        m_footprint_scale =
+            std::max(0.125f, 1.0f / std::sqrt(static_cast<float>(std::max(1, spp))));
     }
 
 protected:
@@ -40,14 +41,11 @@ public:
     PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const Vec3& up, float fov_y_degrees,
                       Vec2i resolution, float aperture_radius, float focus_distance);
     Ray generate_ray(const Vec2& film, const Vec2& lens) const override;
-    void approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx,
-                               Vec3& dpdy) const override;
+    void approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx, Vec3& dpdy) const override;
 
 private:
-    // Unit direction through film position `film` from the pinhole.
+    // Direction through film position `film` from the pinhole, with forward component 1.
     Vec3 pinhole_direction(const Vec2& film) const;
-    // The ray through `film` using lens point `disk` (already on the aperture).
-    void lens_ray(const Vec2& film, const Vec2& disk, Vec3& origin, Vec3& direction) const;
 
     Vec3 m_eye, m_forward, m_right, m_up;
     float m_tan_half_fov;

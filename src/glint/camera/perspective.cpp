@@ -18,41 +18,39 @@ PerspectiveCamera::PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const
 }
 
 Vec3 PerspectiveCamera::pinhole_direction(const Vec2& film) const {
-    // Screen coordinates in [-1, 1], y up.
+    // Screen coordinates in [-1, 1], y up. Not normalised: its component along the
+    // forward axis is exactly 1, which the thin lens below relies on.
     const float sx = 2.0f * film.x / m_resolution.x - 1.0f;
     const float sy = 1.0f - 2.0f * film.y / m_resolution.y;
-    return glm::normalize(m_forward + (sx * m_tan_half_fov * m_aspect) * m_right +
-                          (sy * m_tan_half_fov) * m_up);
-}
-
-void PerspectiveCamera::lens_ray(const Vec2& film, const Vec2& disk, Vec3& origin,
-                                 Vec3& direction) const {
-    direction = pinhole_direction(film);
-    if (m_aperture_radius <= 0.0f) {
-        origin = m_eye;
-        return;
-    }
-    // Thin lens: all rays through the lens meet at the plane of focus.
-    const float t_focus = m_focus_distance / glm::dot(direction, m_forward);
-    const Vec3 focus_point = m_eye + t_focus * direction;
-    origin = m_eye + disk.x * m_right + disk.y * m_up;
-    direction = glm::normalize(focus_point - origin);
+    return m_forward + (sx * m_tan_half_fov * m_aspect) * m_right + (sy * m_tan_half_fov) * m_up;
 }
 
 Ray PerspectiveCamera::generate_ray(const Vec2& film, const Vec2& lens) const {
-    const Vec2 disk = m_aperture_radius > 0.0f
-                          ? m_aperture_radius * warp::square_to_uniform_disk_concentric(lens)
-                          : Vec2(0.0f);
+    const Vec3 direction = pinhole_direction(film);
+    // One pixel to the right and one down, scaled by the footprint scale.
+    const float pixel = 2.0f * m_tan_half_fov / m_resolution.y * m_footprint_scale;
+    const Vec3 step_x = pixel * m_right, step_y = -pixel * m_up;
     Ray ray;
-    lens_ray(film, disk, ray.origin, ray.direction);
     ray.has_differentials = true;
     RayDifferentials& d = ray.differentials;
-    lens_ray(film + Vec2(1.0f, 0.0f), disk, d.rx_origin, d.rx_direction);
-    lens_ray(film + Vec2(0.0f, 1.0f), disk, d.ry_origin, d.ry_direction);
-    d.rx_origin = ray.origin + m_footprint_scale * (d.rx_origin - ray.origin);
-    d.ry_origin = ray.origin + m_footprint_scale * (d.ry_origin - ray.origin);
-    d.rx_direction = ray.direction + m_footprint_scale * (d.rx_direction - ray.direction);
-    d.ry_direction = ray.direction + m_footprint_scale * (d.ry_direction - ray.direction);
+    if (m_aperture_radius <= 0.0f) {
+        ray.origin = d.rx_origin = d.ry_origin = m_eye;
+        ray.direction = glm::normalize(direction);
+        // Differential directions need not be unit length: only where they meet a surface
+        // matters.
+        d.rx_direction = direction + step_x;
+        d.ry_direction = direction + step_y;
+        return ray;
+    }
+    // Thin lens: every ray through the lens from one film point meets the plane of focus
+    // at the same point, eye + focus_distance * direction (direction has forward part 1).
+    const Vec2 disk = m_aperture_radius * warp::square_to_uniform_disk_concentric(lens);
+    const Vec3 origin = m_eye + disk.x * m_right + disk.y * m_up;
+    const Vec3 focus_point = m_eye + m_focus_distance * direction;
+    ray.origin = d.rx_origin = d.ry_origin = origin;
+    ray.direction = glm::normalize(focus_point - origin);
+    d.rx_direction = focus_point + m_focus_distance * step_x - origin;
+    d.ry_direction = focus_point + m_focus_distance * step_y - origin;
     return ray;
 }
 
