@@ -88,6 +88,16 @@ TEST(PerlinNoise, IsZeroAtLatticePoints) {
     }
 }
 
+TEST(PerlinNoise, HandlesHugeAndNonFiniteCoordinates) {
+    EXPECT_EQ(perlin_noise(Vec3(1e12f, -3e15f, 7e9f)), 0.0f);  // floats this large are integers
+    EXPECT_EQ(perlin_noise(Vec3(kInfinity, 0.5f, 0.5f)), 0.0f);
+    EXPECT_EQ(perlin_noise(Vec3(0.5f, std::nanf(""), 0.5f)), 0.0f);
+    // Past int range the lattice still repeats every 256 cells.
+    const float big = 68719476736.0f;  // 2^36, a multiple of 256
+    EXPECT_EQ(fbm(Vec3(big, 0.3f, 0.7f), 3), fbm(Vec3(0.0f, 0.3f, 0.7f), 3));
+    EXPECT_NE(fbm(Vec3(0.0f, 0.3f, 0.7f), 3), 0.0f);
+}
+
 // The value Perlin's Java reference implementation gives (ImprovedNoise.noise(3.14, 42, 7)).
 TEST(PerlinNoise, MatchesPerlinsReferenceImplementation) {
     EXPECT_NEAR(perlin_noise(Vec3(3.14f, 42.0f, 7.0f)), 0.136919959f, 2e-6f);

@@ -83,6 +83,13 @@ float lerp(float t, float a, float b) {
     return a + t * (b - a);
 }
 
+// The cell coordinate modulo 256, for any finite (integral) float. Beyond int range a cast
+// would overflow; fmod is exact there (and slower, so only used there).
+int lattice_index(float cell) {
+    const float reduced = std::abs(cell) < 1e9f ? cell : std::fmod(cell, 256.0f);
+    return static_cast<int>(reduced) & 255;
+}
+
 }  // namespace
 
 // The bounds in noise.h. Inside a cell, with f in [0,1)^3 the position in it and c its 8
@@ -102,10 +109,9 @@ float lerp(float t, float a, float b) {
 // At a lattice point f = 0 only the corner c = 0 has weight, and its linear function is
 // zero there: the noise vanishes at every integer point.
 float perlin_noise(const Vec3& p) {
+    if (!is_finite(p)) return 0.0f;
     const Vec3 cell = glm::floor(p);
-    const int x = static_cast<int>(cell.x) & 255;
-    const int y = static_cast<int>(cell.y) & 255;
-    const int z = static_cast<int>(cell.z) & 255;
+    const int x = lattice_index(cell.x), y = lattice_index(cell.y), z = lattice_index(cell.z);
     const Vec3 f = p - cell;  // position inside the cell, in [0, 1)
 
     const auto& P = kRepeated;

@@ -9,7 +9,8 @@
 //   fbm(p, ...)          in [-kNoiseBound, kNoiseBound] (a weighted mean of noise values);
 //   turbulence(p, ...)   in [0, kNoiseBound] (a weighted mean of |noise| values).
 // Everything is a pure function of its arguments: deterministic, thread-safe, and free of
-// global mutable state. Coordinates beyond about 2^23 lose their fractional part (float).
+// global mutable state. Coordinates beyond about 2^23 lose their fractional part (float);
+// non-finite ones give 0.
 #include <glint/math/vector.h>
 
 namespace glint {
@@ -29,7 +30,7 @@ float perlin_noise(const Vec3& p);
 
 // Fractional Brownian motion: octaves i = 0 .. octaves-1 of noise at frequency
 // lacunarity^i with weight gain^i, divided by the sum of the weights, so that the range
-// does not depend on octaves or gain. Requires octaves >= 1, gain > 0.
+// does not depend on octaves or gain. Requires octaves >= 1, gain >= 0.
 float fbm(const Vec3& p, int octaves, float lacunarity = 2.0f, float gain = 0.5f);
 
 // As fbm, but summing |noise|: a pattern with creases where the noise changes sign
