@@ -50,6 +50,25 @@ public:
     virtual Spectrum power() const = 0;
     virtual bool is_delta() const = 0;
 
+    /// Lights at infinity (the environment) surround the scene instead of sitting in it:
+    /// no surface hit finds them, a ray that escapes the scene does. A scene has at most
+    /// one; Scene::environment() returns it.
+    virtual bool is_infinite() const { return false; }
+    /// For an infinite light: the radiance (W sr^-1 m^-2) a ray escaping the scene along
+    /// `direction` (world space, need not be unit) receives, i.e. the light arriving from
+    /// that direction. Zero for every other light.
+    virtual Spectrum le_escaped(const Vec3& direction) const {
+        (void)direction;
+        return Spectrum(0.0f);
+    }
+    /// For an infinite light: the solid-angle density with which sample_li chooses
+    /// `direction` (world space, need not be unit; the same from every reference point),
+    /// for weighting escaped rays against light sampling. Zero for every other light.
+    virtual float pdf_li_escaped(const Vec3& direction) const {
+        (void)direction;
+        return 0.0f;
+    }
+
     // Position of this light in the scene's light list (set by the LightSampler).
     int index() const { return m_index; }
     void set_index(int index) { m_index = index; }

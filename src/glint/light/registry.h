@@ -11,6 +11,7 @@
 namespace glint {
 
 std::vector<std::string> light_types();
-std::unique_ptr<Light> make_light(const Params& params);
+// Builds the light named by params.type(); relative file names start at `directory`.
+std::unique_ptr<Light> make_light(const Params& params, const std::string& directory);
 
 }  // namespace glint

@@ -26,7 +26,7 @@ public:
             m_scene->m_textures->add(make_texture(p, *m_scene->m_textures));
         for (const Params& p : m_desc.materials)
             m_scene->m_materials.push_back(make_material(p, *m_scene->m_textures));
-        for (const Params& p : m_desc.lights) m_scene->m_lights.push_back(make_light(p));
+        build_lights();
         if (m_desc.background) {
             const Spectrum radiance = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));
             if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f) {
@@ -48,6 +48,28 @@ public:
     }
 
 private:
+    // The lights that are not shapes; at most one environment, which replaces the
+    // constant background.
+    void build_lights() {
+        const Params* environment = nullptr;
+        for (const Params& p : m_desc.lights) {
+            m_scene->m_lights.push_back(make_light(p, m_desc.directory));
+            if (!m_scene->m_lights.back()->is_infinite()) continue;
+            if (environment) {
+                p.fail(fmt::format("a scene has at most one environment light; the first is at {}",
+                                   environment->where()));
+            }
+            environment = &p;
+            m_scene->m_environment = m_scene->m_lights.back().get();
+        }
+        if (environment && m_desc.background) {
+            m_desc.background->fail(
+                fmt::format("a scene with an environment light (at {}) has no background: "
+                            "escaped rays see the environment",
+                            environment->where()));
+        }
+    }
+
     void build_camera() {
         const Params fallback("camera", "default camera");
         m_scene->m_camera = make_camera(m_desc.camera ? *m_desc.camera : fallback,

@@ -31,6 +31,13 @@ public:
     const std::vector<std::unique_ptr<Light>>& lights() const { return m_lights; }
     const LightSampler& light_sampler() const { return m_light_sampler; }
     const Spectrum& background() const { return m_background; }
+    // The scene's light at infinity (an environment map), or nullptr: at most one.
+    const Light* environment() const { return m_environment; }
+    // Radiance a ray receives when it leaves the scene along `direction` (need not be
+    // unit): the environment light's if there is one, else the constant background.
+    Spectrum escaped_radiance(const Vec3& direction) const {
+        return m_environment ? m_environment->le_escaped(direction) : m_background;
+    }
     const SceneStats& stats() const { return m_stats; }
     // The raw ray-query structure, for benchmarks that measure Embree alone.
     const Accel& accel() const { return m_accel; }
@@ -66,6 +73,7 @@ private:
     std::unique_ptr<Camera> m_camera;
     LightSampler m_light_sampler;
     Spectrum m_background;
+    const Light* m_environment = nullptr;  // one of m_lights
     SceneStats m_stats;
 };
 
