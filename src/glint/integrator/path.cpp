@@ -32,6 +32,18 @@ Spectrum sample_direct(const Scene& scene, const SurfaceInteraction& si, const B
     return f * ls->L * (weight / light_pdf);
 }
 
+// Weight of emission that BSDF sampling reached (an area light hit or an escaped ray into
+// an environment light), against light sampling's chance of finding the same light there:
+// counted fully after a specular bounce, which light sampling cannot follow, and by the
+// BSDF-only strategy; not at all by the light-only one, which already counted it.
+template <typename LightPdf>
+float bsdf_emission_weight(DirectLighting strategy, bool specular_bounce, float bsdf_pdf,
+                           const LightPdf& light_pdf) {
+    if (specular_bounce || strategy == DirectLighting::kBsdfOnly) return 1.0f;
+    if (strategy == DirectLighting::kLightOnly) return 0.0f;
+    return power_heuristic(bsdf_pdf, light_pdf());
+}
+
 void record_aov(AovSample* aov, const SurfaceInteraction& si, const Material* material) {
     aov->albedo = material ? material->albedo(si) : Spectrum(0.0f);
     aov->normal = si.shading.n();
@@ -54,8 +66,17 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         ++counter.rays;
         std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) {
-            L += beta * scene.background();
-            if (aov && depth == 0) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
+            const Spectrum escaped = scene.escaped_radiance(ray.direction);
+            if (aov && depth == 0) *aov = AovSample{escaped, Vec3(0.0f), kInfinity};
+            if (const Light* environment = scene.environment()) {
+                L += beta * escaped *
+                     bsdf_emission_weight(m_strategy, specular_bounce, bsdf_pdf, [&] {
+                         return scene.light_sampler().pmf(*environment) *
+                                environment->pdf_li_escaped(ray.direction);
+                     });
+            } else {
+                L += beta * escaped;  // a constant background is no light: nothing samples it
+            }
             break;
         }
         SurfaceInteraction& si = *hit;
@@ -64,13 +85,10 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         if (si.area_light) {
             const Spectrum Le = si.area_light->le(si, si.wo);
             if (!Le.is_black()) {
-                if (specular_bounce || m_strategy == DirectLighting::kBsdfOnly) {
-                    L += beta * Le;
-                } else if (m_strategy == DirectLighting::kMis) {
-                    const float light_pdf = scene.light_sampler().pmf(*si.area_light) *
-                                            si.area_light->pdf_li(previous_point, si);
-                    L += beta * Le * power_heuristic(bsdf_pdf, light_pdf);
-                }
+                L += beta * Le * bsdf_emission_weight(m_strategy, specular_bounce, bsdf_pdf, [&] {
+                         return scene.light_sampler().pmf(*si.area_light) *
+                                si.area_light->pdf_li(previous_point, si);
+                     });
             }
         }
 

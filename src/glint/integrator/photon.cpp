@@ -132,7 +132,9 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
             ++counter.rays;
             std::optional<SurfaceInteraction> hit = scene.intersect(ray);
             if (!hit) {
-                sum += weight * scene.background();
+                // An environment light seen here is direct or caustic light too; only a
+                // constant background, which no light sampling or photon carries, counts.
+                if (!scene.environment()) sum += weight * scene.background();
                 break;
             }
             if (!hit->front_face) {
@@ -163,8 +165,9 @@ Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler
         ++counter.rays;
         std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) {
-            if (aov && depth == 0) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
-            return L + beta * scene.background();
+            const Spectrum escaped = scene.escaped_radiance(ray.direction);
+            if (aov && depth == 0) *aov = AovSample{escaped, Vec3(0.0f), kInfinity};
+            return L + beta * escaped;
         }
         SurfaceInteraction& si = *hit;
         const Bsdf* bsdf = shade(scene, ray, si, arena);

@@ -37,7 +37,7 @@ VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, A
         ++rays;
         std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) {
-            direct += beta * scene.background();
+            direct += beta * scene.escaped_radiance(ray.direction);
             return {};
         }
         SurfaceInteraction& si = *hit;

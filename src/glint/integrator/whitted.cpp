@@ -80,8 +80,9 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
     ++counter.rays;
     std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
-        if (aov) *aov = AovSample{scene.background(), Vec3(0.0f), kInfinity};
-        return scene.background();
+        const Spectrum escaped = scene.escaped_radiance(ray.direction);
+        if (aov) *aov = AovSample{escaped, Vec3(0.0f), kInfinity};
+        return escaped;
     }
     SurfaceInteraction& si = *hit;
     const Bsdf* bsdf = shade(scene, ray, si, arena);
@@ -170,10 +171,11 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
     };
 
     bool assume_all_visible = false;
-    if (m_settings.penumbra_shortcut && n > 1) {
+    if (m_settings.penumbra_shortcut && n > 1 && !light.is_infinite()) {
         // Test the four samples at the extremes of the light as seen from the point: for a
         // convex light and occluder, all four blocked means the whole light is hidden and
-        // all four clear means no edge crosses it.
+        // all four clear means no edge crosses it. (An environment surrounds the point:
+        // it has no extremes.)
         int tested = 0, clear = 0;
         for (int k : extreme_samples(samples, si.p)) {
             if (k < 0) continue;
