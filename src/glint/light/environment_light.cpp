@@ -16,9 +16,11 @@ namespace {
 // Largest float below 1, so map coordinates stay inside [0, 1).
 constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 
-// Cosine of the polar angle at the top edge of row `y` of `height`.
-float cos_theta_at_row_edge(int y, int height) {
-    return std::cos(kPi * static_cast<float>(y) / static_cast<float>(height));
+// cos(theta) at the top edge of row `y` of `height` less cos(theta) at its bottom edge,
+// as 2 sin(mid) sin(half width): the plain difference of cosines near 1 would cancel.
+float row_cos_theta_span(int y, int height) {
+    const float mid = kPi * (static_cast<float>(y) + 0.5f) / static_cast<float>(height);
+    return 2.0f * std::sin(mid) * std::sin(0.5f * kPi / static_cast<float>(height));
 }
 
 // Weights of the bilinear lookup's integral over one pixel: the pixel itself and each
@@ -84,8 +86,7 @@ EnvironmentLight::EnvironmentLight(std::vector<Spectrum> radiance, int width, in
     // cos(theta): that is its solid angle.
     const float phi_width = 2.0f * kPi / static_cast<float>(m_width);
     for (int y = 0; y < m_height; ++y) {
-        const float solid_angle = phi_width * (cos_theta_at_row_edge(y, m_height) -
-                                               cos_theta_at_row_edge(y + 1, m_height));
+        const float solid_angle = phi_width * row_cos_theta_span(y, m_height);
         Spectrum row(0.0f);
         for (int x = 0; x < m_width; ++x) row += pixel(x, y);
         m_radiance_integral += row * solid_angle;
@@ -118,9 +119,7 @@ std::vector<float> EnvironmentLight::sampling_weights() const {
     for (int y = 0; y < m_height; ++y) {
         const int above = std::max(y - 1, 0), below = std::min(y + 1, m_height - 1);
         const float row_angle = kPi / static_cast<float>(m_height);
-        const float mean_sin_theta =
-            (cos_theta_at_row_edge(y, m_height) - cos_theta_at_row_edge(y + 1, m_height)) /
-            row_angle;
+        const float mean_sin_theta = row_cos_theta_span(y, m_height) / row_angle;
         for (int x = 0; x < m_width; ++x) {
             const float tent =
                 kTentCentre * along_rows[y * m_width + x] +
@@ -162,7 +161,10 @@ Vec3 EnvironmentLight::direction_of(const Vec2& uv) const {
 }
 
 Vec2 EnvironmentLight::uv_of(const Vec3& world_direction) const {
-    const Vec3 d = glm::normalize(m_to_map * world_direction);
+    return uv_in_map(glm::normalize(m_to_map * world_direction));
+}
+
+Vec2 EnvironmentLight::uv_in_map(const Vec3& d) {
     float phi = std::atan2(-d.x, d.z);
     if (phi < 0.0f) phi += 2.0f * kPi;
     const float theta = std::acos(std::clamp(d.y, -1.0f, 1.0f));
@@ -195,7 +197,7 @@ std::optional<LightSample> EnvironmentLight::sample_li(const Vec3& ref, const Ve
 float EnvironmentLight::pdf_li_escaped(const Vec3& direction) const {
     const Vec3 d = glm::normalize(m_to_map * direction);
     const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
-    return solid_angle_pdf(m_distribution.pdf(uv_of(direction)), sin_theta);
+    return solid_angle_pdf(m_distribution.pdf(uv_in_map(d)), sin_theta);
 }
 
 Spectrum EnvironmentLight::le_escaped(const Vec3& direction) const {
@@ -224,6 +226,12 @@ Spectrum EnvironmentLight::power() const {
     return m_radiance_integral * (kPi * m_radius * m_radius);
 }
 
+// glint.environment{...}: image-based lighting from a lat-long image (mapping in the header).
+//   file       string     required  image OpenImageIO reads, relative to the script's folder;
+//                                    float files linear, 8-bit files sRGB-decoded
+//   rotation   float      0         degrees about +y (right-handed: 90 turns -z to -x)
+//   transform  transform  identity  a further rotation, after `rotation`; translation ignored
+//   intensity  spectrum   1         >= 0, multiplies the image
 std::unique_ptr<Light> make_environment_light(const Params& params, const std::string& directory) {
     std::filesystem::path path = params.get_string("file");
     const float rotation = params.get_float("rotation", 0.0f);

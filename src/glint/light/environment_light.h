@@ -55,6 +55,8 @@ public:
 
 private:
     const Spectrum& pixel(int x, int y) const { return m_pixels[y * m_width + x]; }
+    // Map coordinates of a unit direction in the map's frame.
+    static Vec2 uv_in_map(const Vec3& d);
     std::vector<float> sampling_weights() const;
     // Solid-angle density of a direction with map coordinates `uv` and polar sine
     // `sin_theta`, given the map-space density.
@@ -71,12 +73,8 @@ private:
     float m_radius = 1.0f;
 };
 
-/// `environment{ file, rotation = 0, transform = identity, intensity = 1 }` (see the
-/// scene-language reference). `file`: any image OpenImageIO reads, relative names from
-/// `directory`; float images are linear, 8-bit ones sRGB-decoded; channels R, G, B (or a
-/// single grey channel). `rotation`: degrees about +y. `transform`: a further rotation
-/// (translation ignored; scale, shear or mirroring is an error). `intensity`: a number or
-/// colour multiplying the image.
+/// Reads and checks `glint.environment{...}` (parameters documented at the definition);
+/// relative file names start at `directory`.
 std::unique_ptr<Light> make_environment_light(const Params& params, const std::string& directory);
 
 }  // namespace glint
