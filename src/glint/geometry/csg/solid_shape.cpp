@@ -102,9 +102,14 @@ void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit,
     si.p = ray.at(hit.t);
     si.p_object = si.p;
     si.ng = glm::normalize(hit.normal);
-    si.shading = Frame::from_normal(si.ng);
-    si.dpdu = si.shading.s();
-    si.dpdv = si.shading.t();
+    // Solids have no uv, but bump and normal maps need a tangent frame that varies smoothly
+    // over the surface: u runs around the y axis and v towards +y, as on a sphere, which
+    // matches the "spherical" and "cylindrical" texture projections.
+    const Vec3 around_y = glm::cross(si.ng, Vec3(0.0f, 1.0f, 0.0f));
+    const float length = glm::length(around_y);
+    si.dpdu = length > 1e-4f ? around_y / length : Frame::from_normal(si.ng).s();
+    si.dpdv = glm::cross(si.dpdu, si.ng);
+    si.shading = Frame::from_normal_tangent(si.ng, si.dpdu);
     si.uv = Vec2(0.0f);
     si.part = static_cast<int>(hit.primitive);
 }
