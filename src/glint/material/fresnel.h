@@ -1,5 +1,8 @@
 #pragma once
+#include <glint/core/spectrum.h>
 #include <glint/math/vector.h>
+
+#include <complex>
 
 namespace glint {
 
@@ -18,6 +21,28 @@ inline float fresnel_dielectric(float cos_theta_i, float eta) {
     const float r_perpendicular =
         (cos_theta_i - eta * cos_theta_t) / (cos_theta_i + eta * cos_theta_t);
     return 0.5f * (r_parallel * r_parallel + r_perpendicular * r_perpendicular);
+}
+
+// Unpolarised Fresnel reflectance of a conductor (a metal) whose complex index relative to
+// the outside medium is eta + i k, for light arriving from outside at cos_theta_i in [0, 1].
+// The same equations as the dielectric case with a complex index: Snell's law gives a complex
+// cos_theta_t, and the reflectance is the mean of the squared magnitudes of the parallel and
+// perpendicular amplitude ratios (Born & Wolf, sec. 14.2). k = 0 gives fresnel_dielectric.
+inline float fresnel_conductor(float cos_theta_i, float eta, float k) {
+    using Complex = std::complex<float>;
+    cos_theta_i = std::clamp(cos_theta_i, 0.0f, 1.0f);
+    const Complex n(eta, k);
+    const float sin2_i = 1.0f - cos_theta_i * cos_theta_i;
+    const Complex cos_t = std::sqrt(Complex(1.0f) - sin2_i / (n * n));
+    const Complex r_parallel = (n * cos_theta_i - cos_t) / (n * cos_theta_i + cos_t);
+    const Complex r_perpendicular = (cos_theta_i - n * cos_t) / (cos_theta_i + n * cos_t);
+    return 0.5f * (std::norm(r_parallel) + std::norm(r_perpendicular));
+}
+
+// Per colour channel, with eta and k given per channel.
+inline Spectrum fresnel_conductor(float cos_theta_i, const Spectrum& eta, const Spectrum& k) {
+    return {fresnel_conductor(cos_theta_i, eta.r, k.r), fresnel_conductor(cos_theta_i, eta.g, k.g),
+            fresnel_conductor(cos_theta_i, eta.b, k.b)};
 }
 
 // Refracts `wi` (pointing away from the surface) about normal `n` on its side, with
