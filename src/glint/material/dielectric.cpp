@@ -1,4 +1,5 @@
 #include <glint/material/materials.h>
+#include <glint/material/rough_dielectric.h>
 #include <glint/material/smooth_dielectric.h>
 
 namespace glint {
@@ -6,10 +7,15 @@ namespace {
 
 class DielectricMaterial final : public Material {
 public:
-    DielectricMaterial(float ior, const Spectrum& absorption)
-        : m_ior(ior), m_absorption(absorption) {}
-    const Bsdf* bsdf(const SurfaceInteraction&, Arena& arena) const override {
-        return arena.make<SmoothDielectricBsdf>(m_ior);
+    DielectricMaterial(float ior, const Spectrum& absorption, const FloatInput& roughness)
+        : m_ior(ior), m_absorption(absorption), m_roughness(roughness) {}
+    const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        const GgxDistribution distribution(roughness_to_alpha(m_roughness.eval(si)));
+        // An index-matched interface is invisible however rough: light passes straight on.
+        if (distribution.effectively_smooth() || m_ior == 1.0f) {
+            return arena.make<SmoothDielectricBsdf>(m_ior);
+        }
+        return arena.make<RoughDielectricBsdf>(m_ior, distribution);
     }
     Spectrum albedo(const SurfaceInteraction&) const override { return Spectrum(1.0f); }
     Spectrum interior_absorption() const override { return m_absorption; }
@@ -17,18 +23,25 @@ public:
 private:
     float m_ior;
     Spectrum m_absorption;
+    FloatInput m_roughness;
 };
 
 }  // namespace
 
-std::unique_ptr<Material> make_dielectric_material(const Params& params, TextureTable&) {
+// glint.dielectric{...}: glass, water, any clear interface; smooth or rough.
+//   ior         float             1.5  index inside over index outside, positive
+//   absorption  spectrum          0    Beer-Lambert coefficient of the inside, per scene unit
+//   roughness   float or texture  0    in [0, 1], alpha = roughness^2 (GGX, rough_dielectric.h);
+//                                       0 is smooth glass (smooth_dielectric.h)
+std::unique_ptr<Material> make_dielectric_material(const Params& params, TextureTable& textures) {
     const float ior = params.get_float("ior", 1.5f);
     if (!(ior > 0.0f)) params.fail("'ior' must be positive");
     const Spectrum absorption = params.get_spectrum("absorption", Spectrum(0.0f));
     if (std::min({absorption.r, absorption.g, absorption.b}) < 0.0f) {
         params.fail("'absorption' must not be negative");
     }
-    return std::make_unique<DielectricMaterial>(ior, absorption);
+    const FloatInput roughness = textures.scalar(params, "roughness", 0.0f, 0.0f, 1.0f);
+    return std::make_unique<DielectricMaterial>(ior, absorption, roughness);
 }
 
 }  // namespace glint

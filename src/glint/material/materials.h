@@ -15,5 +15,7 @@ std::unique_ptr<Material> make_mirror_material(const Params& params, TextureTabl
 std::unique_ptr<Material> make_dielectric_material(const Params& params, TextureTable& textures);
 std::unique_ptr<Material> make_emissive_material(const Params& params, TextureTable& textures);
 std::unique_ptr<Material> make_phong_material(const Params& params, TextureTable& textures);
+std::unique_ptr<Material> make_conductor_material(const Params& params, TextureTable& textures);
+std::unique_ptr<Material> make_plastic_material(const Params& params, TextureTable& textures);
 
 }  // namespace glint

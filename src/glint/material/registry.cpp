@@ -16,6 +16,8 @@ const std::map<std::string, MaterialFactory>& factories() {
         {"dielectric", make_dielectric_material},
         {"emissive", make_emissive_material},
         {"phong", make_phong_material},
+        {"conductor", make_conductor_material},
+        {"plastic", make_plastic_material},
     };
     return table;
 }

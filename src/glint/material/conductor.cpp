@@ -1,0 +1,84 @@
+#include <glint/material/conductor_presets.h>
+#include <glint/material/materials.h>
+#include <glint/material/rough_conductor.h>
+
+#include <fmt/format.h>
+
+namespace glint {
+namespace {
+
+class ConductorMaterial final : public Material {
+public:
+    ConductorMaterial(const Spectrum& eta, const Spectrum& k, const FloatInput& roughness,
+                      float anisotropy, const SpectrumInput& tint)
+        : m_eta(eta), m_k(k), m_roughness(roughness), m_anisotropy(anisotropy), m_tint(tint) {}
+
+    const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        const float alpha = roughness_to_alpha(m_roughness.eval(si));
+        const ConductorFresnel fresnel{m_eta, m_k, m_tint.eval(si), false};
+        return arena.make<RoughConductorBsdf>(GgxDistribution::anisotropic(alpha, m_anisotropy),
+                                              fresnel);
+    }
+    // The reflectance at normal incidence, the colour one sees in a metal.
+    Spectrum albedo(const SurfaceInteraction& si) const override {
+        return m_tint.eval(si) * fresnel_conductor(1.0f, m_eta, m_k);
+    }
+
+private:
+    Spectrum m_eta;
+    Spectrum m_k;
+    FloatInput m_roughness;
+    float m_anisotropy;
+    SpectrumInput m_tint;
+};
+
+std::string preset_names() {
+    std::string names;
+    for (const ConductorPreset& preset : kConductorPresets) {
+        names += fmt::format("{}'{}'", names.empty() ? "" : ", ", preset.name);
+    }
+    return names;
+}
+
+}  // namespace
+
+// glint.conductor{...}: a metal, smooth or rough.
+//   preset      string    "aluminium"  measured metal: "gold", "silver", "copper" or
+//                                       "aluminium" (conductor_presets.h); or give both of
+//   eta, k      spectrum  -            the complex index eta + i k per channel (eta > 0, k >= 0)
+//   roughness   float or texture  0.1  in [0, 1], alpha = roughness^2; 0 is a mirror
+//   anisotropy  float     0            in [-1, 1]: > 0 stretches highlights along the surface
+//                                       tangent (the u direction), < 0 across it
+//   tint        spectrum or texture 1  in [0, 1], multiplies the Fresnel reflectance
+std::unique_ptr<Material> make_conductor_material(const Params& params, TextureTable& textures) {
+    const bool has_eta = params.has("eta"), has_k = params.has("k");
+    if (params.has("preset") && (has_eta || has_k)) {
+        params.fail("give either 'preset' or 'eta' and 'k', not both");
+    }
+    if (has_eta != has_k) params.fail("give both 'eta' and 'k' (the complex index eta + i k)");
+    Spectrum eta, k;
+    if (has_eta) {
+        eta = params.get_spectrum("eta");
+        k = params.get_spectrum("k");
+        if (std::min({eta.r, eta.g, eta.b}) <= 0.0f) params.fail("'eta' must be positive");
+        if (std::min({k.r, k.g, k.b}) < 0.0f) params.fail("'k' must not be negative");
+    } else {
+        const std::string name = params.get_string("preset", "aluminium");
+        const ConductorPreset* preset = find_conductor_preset(name);
+        if (!preset) {
+            params.fail(
+                fmt::format("unknown 'preset' '{}'; known presets: {}", name, preset_names()));
+        }
+        eta = preset->eta;
+        k = preset->k;
+    }
+    const FloatInput roughness = textures.scalar(params, "roughness", 0.1f, 0.0f, 1.0f);
+    const float anisotropy = params.get_float("anisotropy", 0.0f);
+    if (!(anisotropy >= -1.0f && anisotropy <= 1.0f)) {
+        params.fail("'anisotropy' must lie in [-1, 1]");
+    }
+    const SpectrumInput tint = textures.spectrum(params, "tint", Spectrum(1.0f), 0.0f, 1.0f);
+    return std::make_unique<ConductorMaterial>(eta, k, roughness, anisotropy, tint);
+}
+
+}  // namespace glint
