@@ -88,25 +88,28 @@ void write_normal_map(const std::string& path, int n) {
     }
 }
 
-// A lat-long sky: +y up, the top row the zenith. Blue zenith, pale horizon, a sun at 35
-// degrees elevation, and a dim brownish ground below the horizon.
+// A lat-long sky in glint's environment convention (src/glint/light/environment_light.h):
+// the top row is the zenith (+y); the left edge looks along +z, the centre column along
+// -z. Blue zenith, pale horizon, a sun 35 degrees high in front of a camera looking along
+// -z, to its right, and a dim brownish ground below the horizon.
 Image sky(int width, int height) {
     Image image = make_image(width, height, {"R", "G", "B"});
-    const float sun_elevation = glm::radians(35.0f), sun_azimuth = glm::radians(220.0f);
-    const Vec3 sun(std::cos(sun_elevation) * std::cos(sun_azimuth), std::sin(sun_elevation),
-                   std::cos(sun_elevation) * std::sin(sun_azimuth));
+    const float sun_elevation = glm::radians(35.0f);
+    const Vec3 sun = glm::normalize(
+        Vec3(0.7f * std::cos(sun_elevation), std::sin(sun_elevation), 0.7f * std::cos(sun_elevation)));
     for (int y = 0; y < height; ++y) {
         const float theta = (y + 0.5f) / height * kPi;  // from the zenith
         for (int x = 0; x < width; ++x) {
             const float phi = (x + 0.5f) / width * 2.0f * kPi;
-            const Vec3 w(std::sin(theta) * std::cos(phi), std::cos(theta),
-                         std::sin(theta) * std::sin(phi));
+            const Vec3 w(-std::sin(theta) * std::sin(phi), std::cos(theta),
+                         std::sin(theta) * std::cos(phi));
             Vec3 c;
             if (w.y > 0.0f) {
                 const float a = std::pow(1.0f - w.y, 3.0f);
                 c = glm::mix(Vec3(0.25f, 0.45f, 0.9f), Vec3(1.0f, 0.95f, 0.9f), a) * 1.2f;
-                if (glm::dot(w, sun) > std::cos(glm::radians(2.0f)))
-                    c = Vec3(3000.0f, 2800.0f, 2500.0f);
+                // A sun of 4 degrees radius: larger and dimmer than the real one (0.27
+                // degrees), for softer shadows and fewer fireflies at few samples.
+                if (glm::dot(w, sun) > std::cos(glm::radians(4.0f))) c = Vec3(800.0f, 750.0f, 680.0f);
             } else {
                 c = Vec3(0.25f, 0.2f, 0.15f) * (0.5f + 0.5f * std::exp(8.0f * w.y));
             }
