@@ -9,9 +9,12 @@
 namespace glint {
 
 TextureTable::TextureTable(std::string directory, bool mipmapping)
-    : m_directory(std::move(directory)),
-      m_mipmapping(mipmapping),
-      m_images(std::make_unique<ImageTextureSystem>()) {}
+    : m_directory(std::move(directory)), m_mipmapping(mipmapping) {}
+
+ImageTextureSystem& TextureTable::images() {
+    if (!m_images) m_images = std::make_unique<ImageTextureSystem>();
+    return *m_images;
+}
 
 TextureTable::~TextureTable() {
     // Textures hold handles into the image system: release them first.

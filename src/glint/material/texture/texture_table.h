@@ -42,7 +42,8 @@ public:
     // uses textures and needs the pixel footprint.
     size_t textures_handed_out() const { return m_handed_out; }
 
-    ImageTextureSystem& images() { return *m_images; }
+    // OpenImageIO's texture system, started by the first image texture.
+    ImageTextureSystem& images();
     const std::string& directory() const { return m_directory; }
     bool mipmapping() const { return m_mipmapping; }
 
