@@ -12,27 +12,11 @@
 #include <optional>
 
 using namespace glint;
+using glint::test::expect_all_pixels;
 using glint::test::mean_channel;
 using glint::test::render_lua;
 
 namespace {
-
-// Every pixel's RGB must be within `tolerance` (relative) of `expected`.
-void expect_all_pixels(const Image& image, const Spectrum& expected, double tolerance) {
-    int failures = 0;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            for (int c = 0; c < 3; ++c) {
-                const double v = image.at(x, y, c);
-                if (std::abs(v - expected[c]) > tolerance * expected[c] && failures++ < 5) {
-                    ADD_FAILURE() << fmt::format("pixel ({}, {}) channel {}: {} expected {}", x, y,
-                                                 c, v, expected[c]);
-                }
-            }
-        }
-    }
-    EXPECT_EQ(failures, 0);
-}
 
 const char* kFurnace = R"(
     glint.background{ radiance = {0.5, 0.5, 0.5} }

@@ -24,6 +24,7 @@
 #include <string>
 
 using namespace glint;
+using glint::test::expect_all_pixels;
 using glint::test::render_lua;
 
 namespace {
@@ -311,23 +312,6 @@ TEST(EnvironmentLight, PhotonsCarryThePowerASphereIntercepts) {
 }
 
 namespace {
-
-// Every pixel's RGB must be within `tolerance` (relative) of `expected`.
-void expect_all_pixels(const Image& image, const Spectrum& expected, double tolerance) {
-    int failures = 0;
-    for (int y = 0; y < image.height; ++y) {
-        for (int x = 0; x < image.width; ++x) {
-            for (int c = 0; c < 3; ++c) {
-                const double v = image.at(x, y, c);
-                if (std::abs(v - expected[c]) > tolerance * expected[c] && failures++ < 5) {
-                    ADD_FAILURE() << fmt::format("pixel ({}, {}) channel {}: {} expected {}", x, y,
-                                                 c, v, expected[c]);
-                }
-            }
-        }
-    }
-    EXPECT_EQ(failures, 0);
-}
 
 // A diffuse sphere on a diffuse floor under the sun-and-sky map.
 std::string sphere_on_floor(const char* integrator, int spp, int seed) {

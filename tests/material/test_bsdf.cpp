@@ -10,21 +10,16 @@
 
 #include <gtest/gtest.h>
 #include <support/chi_square.h>
+#include <support/test_util.h>
 
 #include <cmath>
 #include <string>
 #include <vector>
 
 using namespace glint;
+using glint::test::direction;
 
 namespace {
-
-// A unit direction at polar angle `degrees` from +z (or -z when `inside`), azimuth `phi`.
-Vec3 direction(float degrees, float phi = 0.7f, bool inside = false) {
-    const float theta = glm::radians(degrees);
-    const Vec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-    return inside ? Vec3(w.x, w.y, -w.z) : w;
-}
 
 float sin_theta(const Vec3& w) {
     return std::sqrt(std::max(0.0f, w.x * w.x + w.y * w.y));

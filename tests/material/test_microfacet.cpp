@@ -22,6 +22,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/chi_square.h>
+#include <support/test_util.h>
 
 #include <cmath>
 #include <functional>
@@ -30,15 +31,9 @@
 #include <vector>
 
 using namespace glint;
+using glint::test::direction;
 
 namespace {
-
-// A unit direction at polar angle `degrees` from +z (or -z when `inside`), azimuth `phi`.
-Vec3 direction(float degrees, float phi = 0.7f, bool inside = false) {
-    const float theta = glm::radians(degrees);
-    const Vec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
-    return inside ? Vec3(w.x, w.y, -w.z) : w;
-}
 
 std::string describe(const Vec3& wo) {
     return fmt::format("wo = ({:.3f}, {:.3f}, {:.3f})", wo.x, wo.y, wo.z);

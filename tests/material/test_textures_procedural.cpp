@@ -9,12 +9,14 @@
 #include <glint/scene/lua/lua_loader.h>
 
 #include <gtest/gtest.h>
+#include <support/test_util.h>
 
 #include <functional>
 #include <random>
 #include <thread>
 
 using namespace glint;
+using glint::test::error_of;
 
 namespace {
 
@@ -29,15 +31,6 @@ Vec3 random_direction(std::mt19937& rng) {
     do d = Vec3(n(rng), n(rng), n(rng));
     while (glm::length(d) < 1e-3f);
     return glm::normalize(d);
-}
-
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
 }
 
 // Builds a texture through the registry, as a scene does.

@@ -6,22 +6,15 @@
 #include <glint/scene/lua/lua_loader.h>
 
 #include <gtest/gtest.h>
+#include <support/test_util.h>
 
 #include <functional>
 #include <string>
 
 using namespace glint;
+using glint::test::error_of;
 
 namespace {
-
-std::string error_of(const std::function<void()>& f) {
-    try {
-        f();
-    } catch (const Error& e) {
-        return e.what();
-    }
-    return "";
-}
 
 std::unique_ptr<Scene> build(const std::string& code) {
     const SceneDesc desc = load_scene_string(code, "scene.lua", GLINT_SOURCE_DIR "/tests/scenes");

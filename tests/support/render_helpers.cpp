@@ -4,8 +4,12 @@
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 
+#include <fmt/format.h>
+#include <gtest/gtest.h>
 #include <support/render_helpers.h>
+
 #include <tbb/global_control.h>
+#include <cmath>
 
 #include <sys/wait.h>
 #include <array>
@@ -40,6 +44,22 @@ std::string read_text(const std::string& path) {
     while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, n);
     std::fclose(file);
     return text;
+}
+
+void expect_all_pixels(const Image& image, const Spectrum& expected, double tolerance) {
+    int failures = 0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const double v = image.at(x, y, c);
+                if (std::abs(v - expected[c]) > tolerance * expected[c] && failures++ < 5) {
+                    ADD_FAILURE() << fmt::format("pixel ({}, {}) channel {}: {} expected {}", x, y,
+                                                 c, v, expected[c]);
+                }
+            }
+        }
+    }
+    EXPECT_EQ(failures, 0);
 }
 
 double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1) {

@@ -1,5 +1,6 @@
 #pragma once
 // Renders scene scripts in-process for tests, and runs the glint binary for CLI tests.
+#include <glint/core/spectrum.h>
 #include <glint/film/image.h>
 #include <glint/scene/render_settings.h>
 
@@ -13,6 +14,10 @@ Image render_lua(const std::string& code, int threads = 0);
 
 // The whole content of a text file (throws glint::Error when it cannot be read).
 std::string read_text(const std::string& path);
+
+// Every pixel's RGB must be within `tolerance` (relative) of `expected`; reports the
+// first few that are not as test failures.
+void expect_all_pixels(const Image& image, const Spectrum& expected, double tolerance);
 
 // Mean of channel `c` over a rectangle of the image.
 double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1);
