@@ -118,8 +118,7 @@ private:
 };
 
 uint32_t reverse_bits(uint32_t x) {
-    x = (x << 16) | (x >> 16);
-    x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+    x = __builtin_bswap32(x);  // bytes in one instruction; then the bits inside each byte
     x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
     x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
     x = ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
@@ -129,7 +128,7 @@ uint32_t reverse_bits(uint32_t x) {
 // The Laine-Karras permutation (with Burley's constants): applied to bit-reversed values it
 // scrambles each bit depending only on the bits above it, i.e. a nested uniform (Owen)
 // scramble, which keeps the sequence's stratification (Burley 2020, "Practical Hash-based
-// Owen Scrambling").
+// Owen Scrambling"). The scramble of x is thus reverse_bits(laine_karras(reverse_bits(x))).
 uint32_t laine_karras(uint32_t x, uint32_t seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
@@ -138,8 +137,6 @@ uint32_t laine_karras(uint32_t x, uint32_t seed) {
     x ^= x * 0x8d22f6e6u;
     return x;
 }
-
-uint32_t nested_uniform_scramble(uint32_t x, uint32_t seed) { return reverse_bits(laine_karras(reverse_bits(x), seed)); }
 
 // The second Sobol dimension: its generator matrix is Pascal's triangle mod 2, so the
 // direction numbers follow v <- v ^ (v >> 1). Tabulated per byte of the index, so any
@@ -156,13 +153,15 @@ public:
                 for (int bit = 0; bit < 8; ++bit) {
                     if (value & (1u << bit)) result ^= direction[8 * byte + bit];
                 }
-                m_table[byte][value] = result;
+                // Stored bit-reversed: the scramble works on reversed values (see below).
+                m_table[byte][value] = reverse_bits(result);
             }
         }
     }
-    uint32_t operator()(uint32_t index) const {
-        return m_table[0][index & 0xff] ^ m_table[1][(index >> 8) & 0xff] ^ m_table[2][(index >> 16) & 0xff] ^
-               m_table[3][index >> 24];
+    // reverse_bits of the dimension's value for `index`.
+    uint32_t reversed(uint32_t index) const {
+        return m_table[0][index & 0xff] ^ m_table[1][(index >> 8) & 0xff] ^
+               m_table[2][(index >> 16) & 0xff] ^ m_table[3][index >> 24];
     }
 
 private:
@@ -174,7 +173,9 @@ const SobolSecondDimension& sobol_dimension_1() {
     return table;
 }
 
-float to_unit_float(uint32_t bits) { return std::min(static_cast<float>(bits >> 8) * 0x1p-24f, 0x1.fffffep-1f); }
+float to_unit_float(uint32_t bits) {
+    return std::min(static_cast<float>(bits >> 8) * 0x1p-24f, 0x1.fffffep-1f);
+}
 
 // Owen-scrambled Sobol, "padded" per dimension pair: each pair of dimensions uses the
 // (0,2)-sequence with its own index shuffle and scramble, keyed by (seed, pixel, dimension).
@@ -185,7 +186,7 @@ public:
 
     void start_pixel_sample(Vec2i pixel, int index) override {
         m_pixel_key = pixel_sample_key(m_seed, pixel, 0);
-        m_index = static_cast<uint32_t>(index);
+        m_reversed_index = reverse_bits(static_cast<uint32_t>(index));
         m_dimension = 0;
     }
 
@@ -193,25 +194,36 @@ public:
     // reverse(LK(index)): one reversal instead of three.
     float get_1d() override {
         const uint32_t key = next_dimension_key();
-        const uint32_t shuffled = nested_uniform_scramble(m_index, key);
-        return to_unit_float(reverse_bits(laine_karras(shuffled, key * 0x9e3779b9u + 1u)));
+        return to_unit_float(
+            reverse_bits(laine_karras(shuffled_index(key), key * 0x9e3779b9u + 1u)));
     }
 
     Vec2 get_2d() override {
         const uint32_t key = next_dimension_key();
-        const uint32_t shuffled = nested_uniform_scramble(m_index, key);
+        const uint32_t shuffled = shuffled_index(key);
         const uint32_t x = reverse_bits(laine_karras(shuffled, key * 0x9e3779b9u + 1u));
-        const uint32_t y = nested_uniform_scramble(sobol_dimension_1()(shuffled), key * 0x85ebca6bu + 2u);
+        // nested_uniform_scramble of the second dimension, whose table is already reversed.
+        const uint32_t y = reverse_bits(
+            laine_karras(sobol_dimension_1().reversed(shuffled), key * 0x85ebca6bu + 2u));
         return Vec2(to_unit_float(x), to_unit_float(y));
     }
 
-    std::unique_ptr<Sampler> clone() const override { return std::make_unique<SobolSampler>(m_spp, m_seed); }
+    std::unique_ptr<Sampler> clone() const override {
+        return std::make_unique<SobolSampler>(m_spp, m_seed);
+    }
 
 private:
-    uint32_t next_dimension_key() { return static_cast<uint32_t>(hash_combine(m_pixel_key, m_dimension++)); }
+    uint32_t next_dimension_key() {
+        return static_cast<uint32_t>(hash_combine(m_pixel_key, m_dimension++));
+    }
+    // The sample index shuffled for this dimension (pair): nested_uniform_scramble(index),
+    // with the index's reversal done once per sample.
+    uint32_t shuffled_index(uint32_t key) const {
+        return reverse_bits(laine_karras(m_reversed_index, key));
+    }
 
     uint64_t m_pixel_key = 0;
-    uint32_t m_index = 0;
+    uint32_t m_reversed_index = 0;
     uint64_t m_dimension = 0;
 };
 
@@ -223,7 +235,8 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_p
     if (name == "independent") return std::make_unique<IndependentSampler>(samples_per_pixel, seed);
     if (name == "stratified") return std::make_unique<StratifiedSampler>(samples_per_pixel, seed);
     if (name == "sobol") return std::make_unique<SobolSampler>(samples_per_pixel, seed);
-    throw Error(fmt::format("unknown sampler '{}' (expected: independent, stratified, sobol)", name));
+    throw Error(
+        fmt::format("unknown sampler '{}' (expected: independent, stratified, sobol)", name));
 }
 
 }  // namespace glint
