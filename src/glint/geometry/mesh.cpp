@@ -118,6 +118,7 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
     }
     data.indices = std::move(kept);
     m_data = std::move(data);
+    m_placed_by_transform = !m_data.to_object.is_identity();
 }
 
 RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
@@ -144,7 +145,7 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
     const Vec3& p2 = m_data.positions[idx[2]];
     const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
     si.p = b0 * p0 + b1 * p1 + b2 * p2;
-    si.p_object = m_data.to_object.is_identity() ? si.p : m_data.to_object.point(si.p);
+    si.p_object = m_placed_by_transform ? m_data.to_object.point(si.p) : si.p;
     si.ng = glm::normalize(triangle_cross(p0, p1, p2));
 
     Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);

@@ -38,6 +38,7 @@ private:
     std::string m_name;
     MeshData m_data;
     Bounds3 m_bounds;
+    bool m_placed_by_transform = false;  // to_object is not the identity (checked once)
 };
 
 // A planar quad with corners in counter-clockwise order seen from its front (the side its
