@@ -120,6 +120,21 @@ TEST_F(CliTest, ThreadCountDoesNotChangeTheImage) {
     EXPECT_TRUE(one == read_bytes(out("t2.exr"))) << "EXR files differ between 1 and 2 threads";
 }
 
+// The same with everything the appearance work added: image textures through OpenImageIO's
+// texture cache (mipmaps built on first use, by whichever thread gets there first),
+// procedural textures, bump and normal maps, rough materials and the environment light.
+TEST_F(CliTest, ThreadCountDoesNotChangeTheTexturedImage) {
+    for (int threads : {1, 2}) {
+        const auto result = run_glint(fmt::format(
+            "render {}/examples/textures.lua -o {} --threads {} --res 96x54 --spp 2 --quiet",
+            GLINT_SOURCE_DIR, out(fmt::format("t{}.exr", threads)), threads));
+        ASSERT_EQ(result.exit_code, 0) << result.output;
+    }
+    const std::string one = read_bytes(out("t1.exr"));
+    EXPECT_FALSE(one.empty());
+    EXPECT_TRUE(one == read_bytes(out("t2.exr"))) << "EXR files differ between 1 and 2 threads";
+}
+
 TEST_F(CliTest, ProgressAndSummaryGoToStderr) {
     const auto result = run_glint(fmt::format("render {}small.lua -o {}", kScenes, out("p.exr")));
     ASSERT_EQ(result.exit_code, 0) << result.output;
