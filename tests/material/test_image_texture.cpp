@@ -253,3 +253,90 @@ TEST(ImageTexture, MipmappingLowersErrorAtGrazingAngles) {
                              with_mipmaps, without);
     EXPECT_LT(with_mipmaps, 0.5 * without);
 }
+
+namespace {
+
+// A hit on the plane through the origin with normal n, reached by `ray`.
+SurfaceInteraction flat_hit(const Ray& ray, const Vec3& p, const Vec3& n) {
+    SurfaceInteraction si;
+    si.p = p;
+    si.ng = n;
+    si.shading = Frame::from_normal(n);
+    si.dpdu = si.shading.s();
+    si.dpdv = si.shading.t();
+    si.wo = -glm::normalize(ray.direction);
+    return si;
+}
+
+// Exact refraction of unit `d` through a surface with normal n (on d's incoming side,
+// dot(d, n) < 0) into a medium eta times denser.
+Vec3 refract(const Vec3& d, const Vec3& n, float eta) {
+    const float cos_i = -glm::dot(d, n);
+    const float cos_t = std::sqrt(1.0f - (1.0f - cos_i * cos_i) / (eta * eta));
+    return d / eta + (cos_i / eta - cos_t) * n;
+}
+
+}  // namespace
+
+// A texture seen in a flat mirror has the footprint it would have seen directly from the
+// mirrored camera: differentials are reflected with the ray, not approximated.
+TEST(Footprint, MirrorReflectsTheDifferentials) {
+    const Vec2i resolution(100, 100);
+    PerspectiveCamera camera(Vec3(0, 1, 5), Vec3(0, 0, 0), Vec3(0, 1, 0), 40.0f, resolution, 0.0f,
+                             1.0f);
+    const Ray ray = camera.generate_ray(Vec2(50.0f, 50.0f), Vec2(0.5f));
+    SurfaceInteraction mirror = flat_hit(ray, Vec3(0.0f), Vec3(0, 1, 0));
+    const Vec3 wi = glm::reflect(glm::normalize(ray.direction), Vec3(0, 1, 0));
+    const Ray reflected = spawn_specular_ray(mirror, ray, wi, false, 1.0f);
+    ASSERT_TRUE(reflected.has_differentials);
+
+    // The wall z = -5, reached along the reflected ray and along the mirrored camera's ray.
+    auto wall_footprint = [](const Ray& r) {
+        const float t = (-5.0f - r.origin.z) / r.direction.z;
+        SurfaceInteraction wall = flat_hit(r, r.origin + t * r.direction, Vec3(0, 0, 1));
+        EXPECT_TRUE(footprint_from_differentials(r, wall));
+        return std::make_pair(wall.dpdx, wall.dpdy);
+    };
+    PerspectiveCamera mirrored(Vec3(0, -1, 5), Vec3(0, 0, 0), Vec3(0, -1, 0), 40.0f, resolution,
+                               0.0f, 1.0f);
+    const auto [dpdx, dpdy] = wall_footprint(reflected);
+    const auto [ref_dpdx, ref_dpdy] =
+        wall_footprint(mirrored.generate_ray(Vec2(50.0f, 50.0f), Vec2(0.5f)));
+    EXPECT_NEAR(glm::length(dpdx), glm::length(ref_dpdx), 1e-3f * glm::length(ref_dpdx));
+    EXPECT_NEAR(glm::length(dpdy), glm::length(ref_dpdy), 1e-3f * glm::length(ref_dpdy));
+    // Across the ray (x), the footprint is one pixel's angle times the whole path length,
+    // eye to mirror to wall: 2 * sqrt(26).
+    const float pixel_angle = 2.0f * std::tan(glm::radians(20.0f)) / 100.0f;
+    EXPECT_NEAR(glm::length(dpdx), pixel_angle * 2.0f * std::sqrt(26.0f),
+                1e-2f * glm::length(dpdx));
+}
+
+// Refracted differentials are the first-order change of the refracted direction: they
+// match refracting the neighbouring rays exactly, to second order in their offset.
+TEST(Footprint, RefractionTurnsTheDifferentialsBySnellsLaw) {
+    const float eta = 1.5f;
+    const Vec3 n(0, 1, 0);
+    for (const float degrees : {0.0f, 30.0f, 60.0f}) {
+        Ray ray;
+        ray.origin = Vec3(0.0f);
+        ray.direction =
+            -Vec3(std::sin(glm::radians(degrees)), std::cos(glm::radians(degrees)), 0.0f);
+        ray.origin = -ray.direction;  // one unit before the surface
+        ray.has_differentials = true;
+        const float step = 1e-3f;
+        ray.differentials = {ray.origin, ray.direction + Vec3(step, 0, 0), ray.origin,
+                             ray.direction + Vec3(0, 0, step)};
+        SurfaceInteraction glass = flat_hit(ray, Vec3(0.0f), n);
+        const Vec3 wi = refract(ray.direction, n, eta);
+        const Ray refracted = spawn_specular_ray(glass, ray, wi, true, eta);
+        ASSERT_TRUE(refracted.has_differentials);
+        const Vec3 exact_x = refract(glm::normalize(ray.differentials.rx_direction), n, eta);
+        const Vec3 exact_z = refract(glm::normalize(ray.differentials.ry_direction), n, eta);
+        const Vec3 turned_x = refracted.differentials.rx_direction;
+        const Vec3 turned_z = refracted.differentials.ry_direction;
+        EXPECT_LT(glm::length(turned_x - exact_x), 0.02f * glm::length(exact_x - wi)) << degrees;
+        EXPECT_LT(glm::length(turned_z - exact_z), 0.02f * glm::length(exact_z - wi)) << degrees;
+        // At normal incidence angles shrink by 1/eta.
+        if (degrees == 0.0f) EXPECT_NEAR(glm::length(turned_x - wi), step / eta, 0.01f * step);
+    }
+}

@@ -189,7 +189,7 @@ Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler
         const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(si.wo), u, sampler.get_1d());
         if (!bs || bs->pdf <= 0.0f) return L;
         beta *= bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-        ray = spawn_ray(si, si.to_world(bs->wi));
+        ray = spawn_specular_ray(si, ray, si.to_world(bs->wi), bs->is_transmission(), bs->eta);
     }
     return L;
 }

@@ -30,6 +30,42 @@ inline void set_texture_footprint(const Camera& camera, const Ray& ray, SurfaceI
     si.set_footprint(dpdx, dpdy);
 }
 
+// The ray leaving a delta (mirror or smooth glass) bounce at si in direction wi. When the
+// incoming ray carried differentials, so does this one: its neighbours are reflected or
+// refracted like it (Igehy 1999, as pbrt-v4's SurfaceInteraction::SpawnRay does), so a
+// texture seen in a mirror or through glass is filtered by the footprint it really has
+// there. The surface is taken as locally flat (no change of normal across the
+// footprint): exact for planar mirrors and slabs, an approximation on curved ones. Other
+// bounces spawn rays without differentials, and the camera approximates their footprint.
+// `eta` is BsdfSample::eta (index of wi's side over wo's side).
+inline Ray spawn_specular_ray(SurfaceInteraction& si, const Ray& incoming, const Vec3& wi,
+                              bool transmission, float eta) {
+    Ray ray = spawn_ray(si, wi);
+    if (!footprint_from_differentials(incoming, si)) return ray;
+    const Vec3 wo = si.wo;
+    const Vec3 n = glm::dot(wo, si.shading.n()) < 0.0f ? -si.shading.n() : si.shading.n();
+    const float cos_o = glm::dot(wo, n);
+    RayDifferentials& d = ray.differentials;
+    d.rx_origin = si.p + si.dpdx;
+    d.ry_origin = si.p + si.dpdy;
+    auto turned = [&](const Vec3& neighbour_direction) {
+        // The change of wo towards the neighbouring ray (both unit length).
+        const Vec3 dwo = -glm::normalize(neighbour_direction) - wo;
+        const float dcos_o = glm::dot(dwo, n);
+        if (!transmission) return wi + (-dwo + 2.0f * dcos_o * n);  // wi = -wo + 2 (wo.n) n
+        // wi = -wo / eta + mu n with mu = cos_o / eta - cos_t, cos_t^2 = 1 - (1 - cos_o^2) / eta^2.
+        const float cos_t = std::abs(glm::dot(wi, n));
+        if (!(cos_t > 1e-6f)) return wi;
+        const float dmu = (1.0f / eta - cos_o / (eta * eta * cos_t)) * dcos_o;
+        return wi + (-dwo / eta + dmu * n);
+    };
+    d.rx_direction = turned(incoming.differentials.rx_direction);
+    d.ry_direction = turned(incoming.differentials.ry_direction);
+    ray.has_differentials = std::isfinite(d.rx_direction.x + d.rx_direction.y + d.rx_direction.z +
+                                          d.ry_direction.x + d.ry_direction.y + d.ry_direction.z);
+    return ray;
+}
+
 // The BSDF at a hit reached by `ray` (nullptr for surfaces that only emit); may change
 // si's shading frame (bump and normal maps).
 inline const Bsdf* shade(const Scene& scene, const Ray& ray, SurfaceInteraction& si, Arena& arena) {

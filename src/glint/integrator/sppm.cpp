@@ -57,7 +57,7 @@ VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, A
         const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(si.wo), u, sampler.get_1d());
         if (!bs || bs->pdf <= 0.0f) return {};
         beta *= bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-        ray = spawn_ray(si, si.to_world(bs->wi));
+        ray = spawn_specular_ray(si, ray, si.to_world(bs->wi), bs->is_transmission(), bs->eta);
     }
     return {};
 }

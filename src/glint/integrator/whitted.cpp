@@ -109,7 +109,9 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
                 followed |= bs->flags & (kBsdfReflection | kBsdfTransmission);
                 const Vec3 wi = si.to_world(bs->wi);
                 const Spectrum weight = bs->f * abs_cos_theta(bs->wi);
-                L += weight * trace(spawn_ray(si, wi), scene, sampler, arena, counter, nullptr, depth + 1);
+                const Ray next =
+                    spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta);
+                L += weight * trace(next, scene, sampler, arena, counter, nullptr, depth + 1);
             }
         }
     }
