@@ -337,6 +337,8 @@ TEST(Footprint, RefractionTurnsTheDifferentialsBySnellsLaw) {
         EXPECT_LT(glm::length(turned_x - exact_x), 0.02f * glm::length(exact_x - wi)) << degrees;
         EXPECT_LT(glm::length(turned_z - exact_z), 0.02f * glm::length(exact_z - wi)) << degrees;
         // At normal incidence angles shrink by 1/eta.
-        if (degrees == 0.0f) EXPECT_NEAR(glm::length(turned_x - wi), step / eta, 0.01f * step);
+        if (degrees == 0.0f) {
+            EXPECT_NEAR(glm::length(turned_x - wi), step / eta, 0.01f * step);
+        }
     }
 }

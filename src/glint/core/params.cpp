@@ -40,6 +40,17 @@ bool Params::is_ref(const std::string& name, const std::string& kind) const {
     return ref && ref->kind == kind;
 }
 
+bool Params::is_number_or_numbers(const std::string& name) const {
+    auto it = m_values.find(name);
+    return it != m_values.end() && (std::holds_alternative<double>(it->second) ||
+                                    std::holds_alternative<std::vector<double>>(it->second));
+}
+
+bool Params::is_string(const std::string& name) const {
+    auto it = m_values.find(name);
+    return it != m_values.end() && std::holds_alternative<std::string>(it->second);
+}
+
 const ParamValue* Params::lookup(const std::string& name) const {
     m_asked.insert(name);
     auto it = m_values.find(name);

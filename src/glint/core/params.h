@@ -33,6 +33,9 @@ public:
     bool has(const std::string& name) const;
     // Whether `name` was given as a handle of this kind (e.g. a "texture").
     bool is_ref(const std::string& name, const std::string& kind) const;
+    // Whether `name` holds a number or a list of numbers; a string.
+    bool is_number_or_numbers(const std::string& name) const;
+    bool is_string(const std::string& name) const;
 
     float get_float(const std::string& name, float fallback) const;
     float get_float(const std::string& name) const;

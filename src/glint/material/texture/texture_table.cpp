@@ -34,6 +34,12 @@ const Texture* TextureTable::declared(const Params& params, const std::string& n
 SpectrumInput TextureTable::spectrum(const Params& params, const std::string& name,
                                      const Spectrum& fallback, float lo, float hi) const {
     if (const Texture* texture = declared(params, name)) return SpectrumInput(texture, lo, hi);
+    if (params.has(name) && !params.is_number_or_numbers(name)) {
+        params.fail(
+            fmt::format("'{}' must be a colour (a number or {{r, g, b}}) or a texture "
+                        "(glint.texture.*)",
+                        name));
+    }
     const Spectrum value = params.get_spectrum(name, fallback);
     if (std::min({value.r, value.g, value.b}) < lo || value.max_value() > hi) {
         params.fail(fmt::format("'{}' must lie in [{}, {}]", name, lo, hi));
@@ -44,6 +50,8 @@ SpectrumInput TextureTable::spectrum(const Params& params, const std::string& na
 FloatInput TextureTable::scalar(const Params& params, const std::string& name, float fallback,
                                 float lo, float hi) const {
     if (const Texture* texture = declared(params, name)) return FloatInput(texture, lo, hi);
+    if (params.has(name) && !params.is_number_or_numbers(name))
+        params.fail(fmt::format("'{}' must be a number or a texture (glint.texture.*)", name));
     const float value = params.get_float(name, fallback);
     if (!(value >= lo && value <= hi))
         params.fail(fmt::format("'{}' must lie in [{}, {}]", name, lo, hi));
@@ -53,6 +61,10 @@ FloatInput TextureTable::scalar(const Params& params, const std::string& name, f
 const Texture* TextureTable::texture_or_file(const Params& params, const std::string& name) {
     if (!params.has(name)) return nullptr;
     if (const Texture* texture = declared(params, name)) return texture;
+    if (!params.is_string(name)) {
+        params.fail(fmt::format(
+            "'{}' must be a texture (glint.texture.*) or the file name of an image", name));
+    }
     std::filesystem::path path = params.get_string(name);
     if (path.is_relative()) path = std::filesystem::path(m_directory) / path;
     ImageTextureOptions options;
