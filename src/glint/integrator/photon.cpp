@@ -36,16 +36,16 @@ PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted) {
 
 PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, uint64_t& rays) {
     const int max_bounces = settings.max_depth >= 0 ? settings.max_depth : 32;
-    // Caustic photons from point-like lights go only where specular objects are.
+    // Caustic photons from point, spot and area lights go only where specular objects are.
     std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
     if (settings.projection_maps) {
         for (size_t i = 0; i < scene.lights().size(); ++i) {
-            if (scene.lights()[i]->emission_point()) projections[i].emplace(scene, *scene.lights()[i]);
+            if (ProjectionMap::supports(*scene.lights()[i])) projections[i].emplace(scene, *scene.lights()[i]);
         }
     }
     PhotonEmitter emitter = [&](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
         const auto& projection = projections[static_cast<size_t>(light.index())];
-        return projection ? projection->sample(light, u2, u3) : light.sample_le(u1, u2, u3);
+        return projection ? projection->sample(light, u1, u2, u3) : light.sample_le(u1, u2, u3);
     };
     const PhotonTracer tracer(scene, max_bounces, emitter);
     const uint64_t count = static_cast<uint64_t>(settings.caustic_photons);

@@ -1,8 +1,14 @@
 #pragma once
-// Projection map (Jensen 2001, ch. 5): the cells of directions from a point light that
-// reach specular geometry. Caustic photons are emitted only into those cells, with their
-// power scaled by the fraction of the sphere the cells cover, so the caustic map gets
-// many more photons for the same effort and stays unbiased for the caustics it covers.
+// Projection map (Jensen 2001, ch. 5): the cells of directions from a light that reach
+// specular geometry. Caustic photons are emitted only into those cells, with their power
+// scaled by the fraction of the sphere the cells cover, so the caustic map gets many more
+// photons for the same effort and stays unbiased for the caustics it covers.
+//
+// Point and spot lights are probed from their emission point. Area lights are probed from
+// a 3 x 3 grid of points spread over their surface, and a photon then leaves a point
+// uniform on the surface into a marked cell: a direction that reaches glass or a mirror
+// from a point between the probes is found as long as some probe sees the same object
+// through a cell at most one away (the map grows by one cell for that).
 #include <glint/light/light.h>
 #include <glint/scene/scene.h>
 
@@ -13,12 +19,17 @@ namespace glint {
 
 class ProjectionMap {
 public:
-    // Marks the cells around `light`'s emission point that see a specular surface (tested
-    // by a few rays per cell, then grown by one cell so narrow objects are not missed).
+    // Marks the cells around `light` that see a specular surface (tested by a few rays per
+    // cell and probe point, then grown by one cell so narrow objects are not missed).
     ProjectionMap(const Scene& scene, const Light& light);
 
-    // A photon into a marked cell, or nullopt when no cell is marked.
-    std::optional<LightEmission> sample(const Light& light, const Vec2& u, float u_cell) const;
+    // Whether projection maps can aim this light's photons (point, spot and area lights).
+    static bool supports(const Light& light);
+
+    // A photon into a marked cell, or nullopt when no cell is marked or it carries nothing.
+    // u_position picks the point on an area light, u_direction and u_cell the direction.
+    std::optional<LightEmission> sample(const Light& light, const Vec2& u_position,
+                                        const Vec2& u_direction, float u_cell) const;
     // Fraction of all directions that are marked.
     float coverage() const;
 
@@ -26,8 +37,14 @@ private:
     static constexpr int kThetaCells = 64;  // uniform in cos(theta): every cell has equal solid angle
     static constexpr int kPhiCells = 128;
     Vec3 direction(int cell, const Vec2& u) const;
+    // Marks cell entries of `specular` whose probe rays from `origin` hit a delta BSDF;
+    // `emits` says whether the light sends anything that way.
+    template <typename Emits>
+    void probe(const Scene& scene, const Vec3& origin, const Emits& emits,
+               std::vector<uint8_t>& specular) const;
 
-    Vec3 m_origin{0.0f};
+    bool m_surface = false;  // an area light: photons start anywhere on it
+    Vec3 m_origin{0.0f};     // a point light's position
     std::vector<int> m_marked;  // indices of marked cells
 };
 

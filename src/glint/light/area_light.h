@@ -19,6 +19,13 @@ public:
     Spectrum power() const override;
     std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
     bool is_delta() const override { return false; }
+    std::optional<SurfacePoint> sample_surface_point(const Vec2& u, float u_select) const override {
+        const ShapeSample s = m_shape->sample_area(u, u_select);
+        return SurfacePoint{s.p, s.n, s.pdf};
+    }
+    Spectrum emitted_from(const SurfacePoint& point, const Vec3& w) const override {
+        return emitted(point.n, w);
+    }
 
     // Radiance leaving a surface point with normal `n` towards `w`.
     Spectrum emitted(const Vec3& n, const Vec3& w) const {

@@ -16,6 +16,13 @@ struct LightSample {
     bool is_delta = false;
 };
 
+// A point on an emitting surface, drawn with density `pdf_area` per unit area.
+struct SurfacePoint {
+    Vec3 p;
+    Vec3 n;  // unit normal (the emitting side, for one-sided lights)
+    float pdf_area = 0.0f;
+};
+
 // A ray leaving a light, for photon tracing and light paths.
 struct LightEmission {
     Ray ray;        // unit direction
@@ -46,6 +53,15 @@ public:
     // intensity per direction, so photons can be aimed (projection maps).
     virtual std::optional<Vec3> emission_point() const { return std::nullopt; }
     virtual Spectrum intensity(const Vec3&) const { return Spectrum(0.0f); }
+    // Lights with a surface (area lights) give points on it, uniform by area, and what a
+    // point emits towards a direction, so photons can be aimed (projection maps) from them
+    // too. nullopt for lights without a surface.
+    virtual std::optional<SurfacePoint> sample_surface_point(const Vec2& u, float u_select) const {
+        (void)u;
+        (void)u_select;
+        return std::nullopt;
+    }
+    virtual Spectrum emitted_from(const SurfacePoint&, const Vec3&) const { return Spectrum(0.0f); }
     // Total emitted power, for choosing lights in proportion to it.
     virtual Spectrum power() const = 0;
     virtual bool is_delta() const = 0;
