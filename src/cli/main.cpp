@@ -34,6 +34,7 @@ struct RenderOptions {
     std::string adaptive;
     std::optional<int> photons;
     bool no_mipmap = false;
+    std::optional<int> intermediate;
     std::vector<std::string> debug;
     bool aovs = false;
     bool quiet = false;
@@ -74,6 +75,7 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     if (options.exposure) settings.exposure = *options.exposure;
     if (options.aovs) settings.aovs = true;
     if (options.no_mipmap) settings.mipmapping = false;
+    if (options.intermediate) settings.intermediate = *options.intermediate;
     if (!options.adaptive.empty()) {
         settings.adaptive = options.adaptive;
         settings.where = "--adaptive";
@@ -230,6 +232,9 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--debug", render.debug,
                            "Also write a debug view: edges (with --adaptive sobel), photons (with --integrator photon)")
         ->allow_extra_args(false);
+    render_cmd->add_option("--intermediate", render.intermediate,
+                           "sppm: also write the image every N passes (NAME.passNNNN.EXT)")
+        ->check(CLI::NonNegativeNumber);
     render_cmd->add_flag("--no-mipmap", render.no_mipmap,
                          "Look image textures up in their full-resolution level only");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");

@@ -135,6 +135,24 @@ TEST_F(CliTest, ThreadCountDoesNotChangeTheTexturedImage) {
     EXPECT_TRUE(one == read_bytes(out("t2.exr"))) << "EXR files differ between 1 and 2 threads";
 }
 
+// sppm writes the image so far every N passes on request, next to each output, and the
+// early image already estimates the same picture as the final one.
+TEST_F(CliTest, SppmWritesIntermediateImages) {
+    const auto result = run_glint(fmt::format(
+        "render {}/examples/caustics.lua --integrator sppm --spp 4 --intermediate 2 --res 48x36 "
+        "--photons 20000 -o {} -o {} --quiet",
+        GLINT_SOURCE_DIR, out("c.exr"), out("c.png")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_TRUE(fs::exists(out("c.pass0002.exr")));
+    EXPECT_TRUE(fs::exists(out("c.pass0002.png")));
+    EXPECT_FALSE(fs::exists(out("c.pass0004.exr")));  // the last pass is the output itself
+    const Image early = read_image(out("c.pass0002.exr"));
+    const Image final = read_image(out("c.exr"));
+    const CompareResult c = compare_images(early, final);
+    EXPECT_NEAR(c.test_mean[1], c.ref_mean[1], 0.1 * c.ref_mean[1]);
+    EXPECT_GT(c.ref_mean[1], 0.0);
+}
+
 TEST_F(CliTest, ProgressAndSummaryGoToStderr) {
     const auto result = run_glint(fmt::format("render {}small.lua -o {}", kScenes, out("p.exr")));
     ASSERT_EQ(result.exit_code, 0) << result.output;

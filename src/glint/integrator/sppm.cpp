@@ -1,12 +1,15 @@
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
-#include <glint/integrator/shading.h>
+#include <glint/film/image_io.h>
 #include <glint/integrator/direct_lighting.h>
 #include <glint/integrator/photon_tracer.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/sppm.h>
 
+#include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <filesystem>
 #include <unordered_map>
 
 namespace glint {
@@ -29,8 +32,8 @@ struct PixelState {
 };
 
 // Follows a camera ray through specular surfaces to its first non-specular surface.
-VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, Arena& arena, Spectrum& direct,
-                                uint64_t& rays) {
+VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, Arena& arena,
+                                Spectrum& direct, uint64_t& rays) {
     Spectrum beta(1.0f);
     bool specular = true;
     for (int depth = 0; depth < kMaxCameraDepth; ++depth) {
@@ -79,16 +82,20 @@ public:
             const glm::ivec3 hi = cell_of(points[i].si.p + Vec3(pixels[i].radius));
             for (int z = lo.z; z <= hi.z; ++z)
                 for (int y = lo.y; y <= hi.y; ++y)
-                    for (int x = lo.x; x <= hi.x; ++x) m_buckets[bucket(glm::ivec3(x, y, z))].push_back(static_cast<uint32_t>(i));
+                    for (int x = lo.x; x <= hi.x; ++x)
+                        m_buckets[bucket(glm::ivec3(x, y, z))].push_back(static_cast<uint32_t>(i));
         }
     }
-    const std::vector<uint32_t>& candidates(const Vec3& p) const { return m_buckets[bucket(cell_of(p))]; }
+    const std::vector<uint32_t>& candidates(const Vec3& p) const {
+        return m_buckets[bucket(cell_of(p))];
+    }
 
 private:
     glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p / m_cell)); }
     size_t bucket(const glm::ivec3& c) const {
-        const uint64_t h = hash_combine(hash_combine(static_cast<uint32_t>(c.x), static_cast<uint32_t>(c.y)),
-                                        static_cast<uint32_t>(c.z));
+        const uint64_t h =
+            hash_combine(hash_combine(static_cast<uint32_t>(c.x), static_cast<uint32_t>(c.y)),
+                         static_cast<uint32_t>(c.z));
         return h % m_buckets.size();
     }
 
@@ -101,6 +108,33 @@ struct Deposit {
     Spectrum flux;
 };
 
+// The estimate after `passes` passes of `photons_per_pass` photons: the mean direct light
+// plus the photon flux over the disc each pixel's radius has shrunk to.
+Spectrum pixel_estimate(const PixelState& p, int passes, uint64_t photons_per_pass) {
+    const double total_photons =
+        static_cast<double>(passes) * static_cast<double>(photons_per_pass);
+    const Spectrum indirect = p.tau / static_cast<float>(total_photons * kPi * p.radius * p.radius);
+    return p.direct / static_cast<float>(passes) + indirect;
+}
+
+// Writes the image so far next to each output: NAME.pass0008.exr for OUT = NAME.exr.
+void write_intermediate(const std::vector<PixelState>& pixels, int width, int height, int passes,
+                        uint64_t photons_per_pass, const RenderSettings& settings) {
+    Image image = make_image(width, height, {"R", "G", "B"});
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const Spectrum L = pixel_estimate(pixels[static_cast<size_t>(y) * width + x], passes,
+                                              photons_per_pass);
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = L[c];
+        }
+    }
+    for (const std::string& output : settings.outputs) {
+        std::filesystem::path path(output);
+        path.replace_extension(fmt::format(".pass{:04d}{}", passes, path.extension().string()));
+        write_image(path.string(), image, WriteOptions{settings.exposure});
+    }
+}
+
 }  // namespace
 
 RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
@@ -110,8 +144,10 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
     const int passes = m_settings.spp;
     const uint64_t photons_per_pass = static_cast<uint64_t>(m_settings.photons);
     const SceneStats& stats_in = scene.stats();
-    const float scene_size = stats_in.bounds.is_empty() ? 1.0f : glm::length(stats_in.bounds.extent());
-    const float initial_radius = m_settings.photon_radius > 0.0f ? m_settings.photon_radius : scene_size / 256.0f;
+    const float scene_size =
+        stats_in.bounds.is_empty() ? 1.0f : glm::length(stats_in.bounds.extent());
+    const float initial_radius =
+        m_settings.photon_radius > 0.0f ? m_settings.photon_radius : scene_size / 256.0f;
 
     std::vector<PixelState> pixels(pixel_count);
     for (PixelState& p : pixels) p.radius = initial_radius;
@@ -119,6 +155,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
     const auto prototype = make_sampler(m_settings.sampler, passes, m_settings.seed);
     const PhotonTracer tracer(scene, m_settings.max_depth >= 0 ? m_settings.max_depth : 32);
     RenderStats stats;
+    int stats_intermediate = 0;
 
     for (int pass = 0; pass < passes; ++pass) {
         // 1. Visible points, one per pixel, keyed by (seed, pixel, pass).
@@ -157,7 +194,8 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
                         arena.reset();
                         // vp.si already has its final shading frame: no second bump.
                         const Bsdf* bsdf = vp.si.material->bsdf(vp.si, arena);
-                        const Spectrum f = bsdf->eval(vp.si.to_local(vp.si.wo), vp.si.to_local(hit.wi));
+                        const Spectrum f =
+                            bsdf->eval(vp.si.to_local(vp.si.wo), vp.si.to_local(hit.wi));
                         if (f.is_black()) continue;
                         deposits.push_back({i, vp.beta * f * hit.power});
                     }
@@ -165,8 +203,8 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
             };
             return Sink{&points, &pixels, &grid, {}, Arena{4096}};
         };
-        const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass, photons_per_pass,
-                                        m_settings.seed, stats.rays, make_sink);
+        const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass,
+                                        photons_per_pass, m_settings.seed, stats.rays, make_sink);
 
         // 4. Progressive update, in a fixed order.
         std::vector<Spectrum> flux(pixel_count);
@@ -181,20 +219,31 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
             PixelState& p = pixels[i];
             if (found[i] == 0) continue;
             const double n_new = p.photons + kAlpha * found[i];
-            const float r_new = p.radius * static_cast<float>(std::sqrt(n_new / (p.photons + found[i])));
+            const float r_new =
+                p.radius * static_cast<float>(std::sqrt(n_new / (p.photons + found[i])));
             p.tau = (p.tau + flux[i]) * ((r_new * r_new) / (p.radius * p.radius));
             p.photons = n_new;
             p.radius = r_new;
         }
         progress.advance(pixel_count);
+        const int done = pass + 1;
+        if (m_settings.intermediate > 0 && done % m_settings.intermediate == 0 && done < passes) {
+            write_intermediate(pixels, w, h, done, photons_per_pass, m_settings);
+            ++stats_intermediate;
+        }
+    }
+    if (stats_intermediate > 0) {
+        stats.notes.push_back(
+            fmt::format("sppm: wrote the image after every {} passes ({} intermediate images)",
+                        m_settings.intermediate, stats_intermediate));
     }
 
-    const double total_photons = static_cast<double>(passes) * static_cast<double>(photons_per_pass);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
-            const PixelState& p = pixels[static_cast<size_t>(y) * w + x];
-            const Spectrum indirect = p.tau / static_cast<float>(total_photons * kPi * p.radius * p.radius);
-            film.add_sample(Vec2i(x, y), p.direct / static_cast<float>(passes) + indirect, 1.0f, nullptr);
+            film.add_sample(
+                Vec2i(x, y),
+                pixel_estimate(pixels[static_cast<size_t>(y) * w + x], passes, photons_per_pass),
+                1.0f, nullptr);
         }
     }
     stats.samples = pixel_count * static_cast<uint64_t>(passes);

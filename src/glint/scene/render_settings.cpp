@@ -30,6 +30,7 @@ RenderSettings parse_render_settings(const Params* params) {
     s.photons = p.get_int("photons", s.photons);
     s.caustic_photons = p.get_int("caustic_photons", s.caustic_photons);
     s.photon_radius = p.get_float("photon_radius", s.photon_radius);
+    s.intermediate = p.get_int("intermediate", s.intermediate);
     s.photon_neighbours = p.get_int("photon_neighbours", s.photon_neighbours);
     s.gather_rays = p.get_int("gather_rays", s.gather_rays);
     s.projection_maps = p.get_bool("projection_maps", s.projection_maps);
@@ -51,6 +52,7 @@ RenderSettings parse_render_settings(const Params* params) {
     if (s.shadow_samples < 1 || s.shadow_samples > 64) p.fail("'shadow_samples' must be in [1, 64]");
     if (s.photons < 1 || s.caustic_photons < 0) p.fail("'photons' must be at least 1 and 'caustic_photons' not negative");
     if (s.photon_radius < 0.0f) p.fail("'photon_radius' must not be negative");
+    if (s.intermediate < 0) p.fail("'intermediate' must not be negative (0 writes no intermediate images)");
     if (s.photon_neighbours < 1 || s.gather_rays < 0) p.fail("'photon_neighbours' must be at least 1 and 'gather_rays' not negative");
     if (s.edge_radius < 0 || s.edge_radius > 16) p.fail("'edge_radius' must be in [0, 16]");
     if (s.supersample < 1 || s.supersample > 32) p.fail("'supersample' must be in [1, 32]");

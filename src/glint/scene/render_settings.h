@@ -37,6 +37,7 @@ struct RenderSettings {
     int photons = 100000;          // photons per pass (sppm) or in the global map (photon)
     int caustic_photons = 100000;  // photons in the caustic map (photon)
     float photon_radius = 0.0f;    // sppm initial radius; 0 = 1/256 of the scene's size
+    int intermediate = 0;          // sppm: also write the image every N passes (0 = never)
     int photon_neighbours = 50;    // photon: photons per radiance estimate
     int gather_rays = 16;          // photon: final-gathering rays per visible point
     bool projection_maps = true;   // photon: aim caustic photons at specular objects
