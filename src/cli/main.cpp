@@ -92,17 +92,22 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
 // Samples the render will take: exact for uniform sampling, an upper bound when adaptive.
 uint64_t expected_samples(const RenderSettings& settings) {
     const uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
-    if (settings.adaptive == "sobel") return pixels * (2 + static_cast<uint64_t>(settings.supersample * settings.supersample));
+    if (settings.adaptive == "sobel")
+        return pixels * (2 + static_cast<uint64_t>(settings.supersample * settings.supersample));
     if (settings.adaptive == "variance") {
-        return pixels * static_cast<uint64_t>(settings.max_spp > 0 ? std::max(settings.max_spp, settings.spp) : 8 * settings.spp);
+        return pixels * static_cast<uint64_t>(settings.max_spp > 0
+                                                  ? std::max(settings.max_spp, settings.spp)
+                                                  : 8 * settings.spp);
     }
     return pixels * settings.spp;
 }
 
 void check_debug_views(const RenderSettings& settings) {
     for (const std::string& view : settings.debug) {
-        if (view == "edges" && settings.adaptive != "sobel") throw Error("--debug edges needs --adaptive sobel");
-        if (view == "photons" && settings.integrator != "photon") throw Error("--debug photons needs --integrator photon");
+        if (view == "edges" && settings.adaptive != "sobel")
+            throw Error("--debug edges needs --adaptive sobel");
+        if (view == "photons" && settings.integrator != "photon")
+            throw Error("--debug photons needs --integrator photon");
         if (view != "edges" && view != "photons") {
             throw Error(fmt::format("unknown debug view '{}' (known: edges, photons)", view));
         }
@@ -139,14 +144,17 @@ int run_render(const RenderOptions& options) {
     progress.finish();
 
     const Image image = final_image(film, stats);
-    for (const std::string& path : settings.outputs) write_image(path, image, WriteOptions{settings.exposure});
+    for (const std::string& path : settings.outputs)
+        write_image(path, image, WriteOptions{settings.exposure});
     write_debug_images(settings, stats);
     if (!options.quiet) {
         for (const std::string& note : stats.notes) fmt::print(stderr, "{}\n", note);
     }
     if (!options.quiet && settings.adaptive != "none") {
-        fmt::print(stderr, "adaptive ({}): {:.2f} samples per pixel on average\n", settings.adaptive,
-                   static_cast<double>(stats.samples) / (static_cast<double>(settings.width) * settings.height));
+        fmt::print(stderr, "adaptive ({}): {:.2f} samples per pixel on average\n",
+                   settings.adaptive,
+                   static_cast<double>(stats.samples) /
+                       (static_cast<double>(settings.width) * settings.height));
     }
     if (!options.quiet) {
         fmt::print(stderr,
@@ -173,6 +181,9 @@ int run_info(const std::string& scene_path) {
     fmt::print("lights:     {}\n", s.lights);
     fmt::print("groups:     {} ({} instances)\n", s.groups, s.instances);
     fmt::print("materials:  {}\n", desc.materials.size());
+    fmt::print("textures:   {}\n", desc.textures.size());
+    if (scene->environment())
+        fmt::print("environment: yes (lights the scene and is seen behind it)\n");
     if (s.bounds.is_empty()) {
         fmt::print("bounds:     empty\n");
     } else {
@@ -224,16 +235,21 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
     render_cmd->add_flag("--aovs", render.aovs,
                          "Add albedo, normal and depth channels to EXR output");
-    render_cmd->add_option("--adaptive", render.adaptive,
-                           "Adaptive sampling: none, sobel (supersample edges), variance (stop converged pixels)");
-    render_cmd->add_option("--photons", render.photons,
-                           "Photons per pass (sppm) or per photon map (photon)")
+    render_cmd->add_option(
+        "--adaptive", render.adaptive,
+        "Adaptive sampling: none, sobel (supersample edges), variance (stop converged pixels)");
+    render_cmd
+        ->add_option("--photons", render.photons,
+                     "Photons per pass (sppm) or per photon map (photon)")
         ->check(CLI::PositiveNumber);
-    render_cmd->add_option("--debug", render.debug,
-                           "Also write a debug view: edges (with --adaptive sobel), photons (with --integrator photon)")
+    render_cmd
+        ->add_option("--debug", render.debug,
+                     "Also write a debug view: edges (with --adaptive sobel), photons (with "
+                     "--integrator photon)")
         ->allow_extra_args(false);
-    render_cmd->add_option("--intermediate", render.intermediate,
-                           "sppm: also write the image every N passes (NAME.passNNNN.EXT)")
+    render_cmd
+        ->add_option("--intermediate", render.intermediate,
+                     "sppm: also write the image every N passes (NAME.passNNNN.EXT)")
         ->check(CLI::NonNegativeNumber);
     render_cmd->add_flag("--no-mipmap", render.no_mipmap,
                          "Look image textures up in their full-resolution level only");
