@@ -335,9 +335,9 @@ std::string sphere_on_floor(const char* integrator, int spp, int seed) {
 // the BSDF's escaped rays together count the environment once; for Whitted, whose direct
 // light is the whole answer on a convex sphere, if light sampling alone is unbiased.
 TEST(EnvironmentLight, WhiteFurnaceSphereDisappears) {
-    // Light sampling's density peaks at the map's poles (the 1 / sin(theta) of the lat-long
-    // mapping), which the BSDF does not follow, so the top and bottom of the sphere need
-    // many samples to be within 1 %.
+    // A uniform map is light-sampled uniformly over the sphere, so half the light samples
+    // fall below each point's horizon: within 1 % at every pixel, the sphere's rim included,
+    // takes a few thousand samples.
     for (const auto& [integrator, spp] : {std::pair{"path", 4096}, std::pair{"whitted", 1024}}) {
         const Image image = render_lua(fmt::format(R"(
             glint.environment{{ file = "{}" }}

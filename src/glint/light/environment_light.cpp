@@ -172,32 +172,55 @@ Vec2 EnvironmentLight::uv_in_map(const Vec3& d) {
                 std::min(theta / kPi, kOneMinusEpsilon));
 }
 
-// Map coordinates cover the sphere with dA = du dv = d(phi) d(theta) / (2 pi^2) and
-// d(omega) = sin(theta) d(theta) d(phi), so p(omega) = p(u, v) / (2 pi^2 sin(theta)).
-float EnvironmentLight::solid_angle_pdf(float uv_pdf, float sin_theta) {
-    if (!(sin_theta > 0.0f)) return 0.0f;
-    return uv_pdf / (2.0f * kPi * kPi * sin_theta);
+// A pixel covers 2 pi / width in phi and row_cos_theta_span in cos(theta); the map-space
+// density is constant over it, so the solid-angle density is that over width * height times
+// the pixel's solid angle.
+float EnvironmentLight::direction_pdf(const Vec2& uv) const {
+    const int row = std::min(static_cast<int>(uv.y * static_cast<float>(m_height)), m_height - 1);
+    const float pixel_solid_angle =
+        2.0f * kPi * row_cos_theta_span(row, m_height) / static_cast<float>(m_width);
+    return m_distribution.pdf(uv) /
+           (static_cast<float>(m_width) * static_cast<float>(m_height) * pixel_solid_angle);
+}
+
+EnvironmentLight::DirectionSample EnvironmentLight::sample_direction(const Vec2& u) const {
+    const Distribution2D::ContinuousSample s = m_distribution.sample_continuous(u);
+    // Where the sample fell inside its row, reused as a uniform fraction of the row's
+    // cos(theta) span (from its top edge down).
+    const float rows = static_cast<float>(m_height);
+    const int row = std::min(static_cast<int>(s.point.y * rows), m_height - 1);
+    const float fraction = std::clamp(s.point.y * rows - static_cast<float>(row), 0.0f, 1.0f);
+    const float theta_top = kPi * static_cast<float>(row) / rows;
+    // cos(theta_top) - cos(theta) = fraction * span, written without cancellation:
+    // cos(theta) = cos(theta_top) - fraction * span.
+    const float cos_theta =
+        std::clamp(std::cos(theta_top) - fraction * row_cos_theta_span(row, m_height), -1.0f, 1.0f);
+    DirectionSample d;
+    d.uv = Vec2(s.point.x, std::min(std::acos(cos_theta) / kPi, kOneMinusEpsilon));
+    // Keep the sample in its own row whatever rounding did.
+    d.uv.y = std::clamp(d.uv.y, static_cast<float>(row) / rows,
+                        std::nextafter(static_cast<float>(row + 1) / rows, 0.0f));
+    d.direction = direction_of(d.uv);
+    d.pdf = direction_pdf(d.uv);
+    return d;
 }
 
 std::optional<LightSample> EnvironmentLight::sample_li(const Vec3& ref, const Vec2& u,
                                                        float) const {
-    const Distribution2D::ContinuousSample s = m_distribution.sample_continuous(u);
-    const float pdf = solid_angle_pdf(s.pdf, std::sin(kPi * s.point.y));
-    if (!(pdf > 0.0f)) return std::nullopt;
+    const DirectionSample d = sample_direction(u);
+    if (!(d.pdf > 0.0f)) return std::nullopt;
     LightSample ls;
-    ls.L = lookup(s.point);
+    ls.L = lookup(d.uv);
     if (ls.L.is_black()) return std::nullopt;
-    ls.wi = direction_of(s.point);
-    ls.pdf = pdf;
+    ls.wi = d.direction;
+    ls.pdf = d.pdf;
     // Farther than anything in the scene, whatever side of it `ref` is on.
     ls.p = ref + ls.wi * (2.0f * m_radius + glm::length(ref - m_center));
     return ls;
 }
 
 float EnvironmentLight::pdf_li_escaped(const Vec3& direction) const {
-    const Vec3 d = glm::normalize(m_to_map * direction);
-    const float sin_theta = std::sqrt(d.x * d.x + d.z * d.z);
-    return solid_angle_pdf(m_distribution.pdf(uv_in_map(d)), sin_theta);
+    return direction_pdf(uv_of(direction));
 }
 
 Spectrum EnvironmentLight::le_escaped(const Vec3& direction) const {
@@ -209,12 +232,12 @@ Spectrum EnvironmentLight::le_escaped(const Vec3& direction) const {
 // and travels back into the scene. Its weight is Le / (p(omega) p(disk point)).
 std::optional<LightEmission> EnvironmentLight::sample_le(const Vec2& u1, const Vec2& u2,
                                                          float) const {
-    const Distribution2D::ContinuousSample s = m_distribution.sample_continuous(u2);
-    const float pdf_direction = solid_angle_pdf(s.pdf, std::sin(kPi * s.point.y));
+    const DirectionSample d = sample_direction(u2);
+    const float pdf_direction = d.pdf;
     if (!(pdf_direction > 0.0f)) return std::nullopt;
-    const Spectrum L = lookup(s.point);
+    const Spectrum L = lookup(d.uv);
     if (L.is_black()) return std::nullopt;
-    const Vec3 to_sky = direction_of(s.point);
+    const Vec3 to_sky = d.direction;
     const Frame frame = Frame::from_normal(to_sky);
     const Vec2 disk = warp::square_to_uniform_disk_concentric(u1);
     const Vec3 origin = m_center + m_radius * (to_sky + disk.x * frame.s() + disk.y * frame.t());

@@ -58,9 +58,18 @@ private:
     // Map coordinates of a unit direction in the map's frame.
     static Vec2 uv_in_map(const Vec3& d);
     std::vector<float> sampling_weights() const;
-    // Solid-angle density of a direction with map coordinates `uv` and polar sine
-    // `sin_theta`, given the map-space density.
-    static float solid_angle_pdf(float uv_pdf, float sin_theta);
+    // A direction drawn in proportion to the sampling weights: a pixel from the 2D
+    // distribution, then a point uniform in solid angle inside it (uniform in phi and in
+    // cos(theta)), so the density is constant over each pixel and has no 1/sin(theta)
+    // peak at the poles.
+    struct DirectionSample {
+        Vec2 uv;  // map coordinates, for lookup()
+        Vec3 direction;
+        float pdf = 0.0f;  // per unit solid angle
+    };
+    DirectionSample sample_direction(const Vec2& u) const;
+    // Solid-angle density of sample_direction at map coordinates `uv`.
+    float direction_pdf(const Vec2& uv) const;
 
     std::vector<Spectrum> m_pixels;
     int m_width;
