@@ -52,7 +52,7 @@ local relief = glint.texture.fbm{ scale = 4, octaves = 6 }
 local planet_colour = glint.texture.fbm{ scale = 4, octaves = 6,
                                          low = {0.05, 0.15, 0.45}, high = {0.55, 0.45, 0.3} }
 glint.sphere{ center = {-3.0, 0.5, -1.0}, radius = 0.5,
-              material = glint.diffuse{ reflectance = planet_colour, bump = relief, bump_scale = 0.03 } }
+              material = glint.diffuse{ reflectance = planet_colour, bump = relief, bump_scale = 0.06 } }
 glint.sphere{ center = {-1.8, 0.5, -1.0}, radius = 0.5,
               material = glint.diffuse{ reflectance = {0.6, 0.35, 0.25},
                                         bump = glint.texture.turbulence{ scale = 6, octaves = 5 },

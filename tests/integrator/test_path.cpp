@@ -139,6 +139,29 @@ TEST(PathIntegrator, RoughTintedGlassSlabFollowsBeerLambert) {
     EXPECT_NEAR(measured, expected, 0.02 * expected);
 }
 
+// The index of refraction can be a texture: one that is 1.5 everywhere (a checker of two
+// equal squares) gives the smooth slab's closed form, and one of 1.0 makes the slab vanish.
+TEST(PathIntegrator, TexturedIndexOfRefraction) {
+    auto slab = [](double ior) {
+        return render_lua(fmt::format(R"(
+            glint.camera{{ eye = {{0, 0, 10}}, look_at = {{0, 0, 0}}, fov = 2 }}
+            glint.render{{ width = 8, height = 8, spp = 1024, seed = 11 }}
+            local index = glint.texture.checker{{ even = {0}, odd = {0}, dimension = 3 }}
+            glint.box{{ min = {{-100, -100, -1}}, max = {{100, 100, 0}},
+                        material = glint.dielectric{{ ior = index }} }}
+            glint.quad{{ vertices = {{ {{-500, -500, -5}}, {{500, -500, -5}}, {{500, 500, -5}}, {{-500, 500, -5}} }},
+                         material = glint.emissive{{ radiance = 1 }} }}
+        )",
+                                      ior));
+    };
+    const double R = std::pow((1.5 - 1.0) / (1.5 + 1.0), 2.0);
+    const double expected = (1.0 - R) * (1.0 - R) / (1.0 - R * R);
+    const Image glass = slab(1.5);
+    EXPECT_NEAR(mean_channel(glass, 0, 0, 0, glass.width, glass.height), expected, 0.01 * expected);
+    const Image matched = slab(1.0);
+    EXPECT_NEAR(mean_channel(matched, 0, 0, 0, matched.width, matched.height), 1.0, 1e-4);
+}
+
 namespace {
 
 std::string cornell_box(int res, int spp) {

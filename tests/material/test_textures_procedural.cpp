@@ -216,7 +216,7 @@ TEST(CheckerTexture, ExactValuesIn2D) {
     auto fine = maker.make("checker", {{"scale", 4.0}});
     expect_spectrum_eq(fine->eval(at_uv(0.3f, 0.1f)), Spectrum(0.2f));
     expect_spectrum_eq(fine->eval(at_uv(0.3f, 0.3f)), Spectrum(0.8f));
-    EXPECT_EQ(fine->eval_float(at_uv(0.3f, 0.1f)), 1.0f);
+    EXPECT_EQ(fine->pattern(at_uv(0.3f, 0.1f)), 1.0f);
 }
 
 TEST(CheckerTexture, ExactValuesIn3DInObjectSpace) {
@@ -303,10 +303,10 @@ TEST(SolidTextures, FollowTheObjectNotTheWorld) {
         for (int i = 0; i < 100; ++i) {
             TextureContext ctx = at_object_point(random_point(rng, 3.0f));
             const Spectrum value = texture->eval(ctx);
-            const float scalar = texture->eval_float(ctx);
+            const float scalar = texture->pattern(ctx);
             ctx.p += random_point(rng, 100.0f);  // the object moved; its own point did not
             EXPECT_EQ(texture->eval(ctx), value);
-            EXPECT_EQ(texture->eval_float(ctx), scalar);
+            EXPECT_EQ(texture->pattern(ctx), scalar);
         }
     }
 }
@@ -329,7 +329,7 @@ TEST(SolidTextures, MovingAnInstanceMovesThePattern) {
         const float x = std::stof(offset);
         const auto hit = scene->intersect(Ray{Vec3(x + 0.3f, 0.2f, 5.0f), Vec3(0, 0, -1)});
         ASSERT_TRUE(hit.has_value());
-        seen.push_back(wood->eval_float(TextureContext(*hit)));
+        seen.push_back(wood->pattern(TextureContext(*hit)));
     }
     EXPECT_NEAR(seen[0], seen[1], 1e-4f);
 }
@@ -346,16 +346,15 @@ TEST(SolidTextures, TransformAndScalePlaceThePattern) {
     std::mt19937 rng(12);
     for (int i = 0; i < 200; ++i) {
         const Vec3 p = random_point(rng, 2.0f);
-        const float value = plain->eval_float(at_object_point(p));
+        const float value = plain->pattern(at_object_point(p));
         // translate(offset) moves the pattern by +offset.
-        EXPECT_NEAR(moved->eval_float(at_object_point(p + offset)), value, 1e-4f);
+        EXPECT_NEAR(moved->pattern(at_object_point(p + offset)), value, 1e-4f);
         // scale(2) makes features twice as large; the `scale` frequency 2 half as large.
-        EXPECT_NEAR(enlarged->eval_float(at_object_point(2.0f * p)), value, 1e-4f);
-        EXPECT_NEAR(finer->eval_float(at_object_point(0.5f * p)), value, 1e-4f);
-        EXPECT_NEAR(stretched->eval_float(at_object_point(Vec3(p.x, 0.25f * p.y, p.z))), value,
-                    1e-4f);
+        EXPECT_NEAR(enlarged->pattern(at_object_point(2.0f * p)), value, 1e-4f);
+        EXPECT_NEAR(finer->pattern(at_object_point(0.5f * p)), value, 1e-4f);
+        EXPECT_NEAR(stretched->pattern(at_object_point(Vec3(p.x, 0.25f * p.y, p.z))), value, 1e-4f);
         // A quarter turn about z carries the pattern's x axis onto y.
-        EXPECT_NEAR(turned->eval_float(at_object_point(Vec3(-p.y, p.x, p.z))), value, 1e-4f);
+        EXPECT_NEAR(turned->pattern(at_object_point(Vec3(-p.y, p.x, p.z))), value, 1e-4f);
     }
 }
 
@@ -370,13 +369,13 @@ TEST(NoiseTextures, ColourBetweenLowAndHighAndScalarIsThePattern) {
     for (int i = 0; i < 10000; ++i) {
         const Vec3 p = random_point(rng, 10.0f);
         const TextureContext ctx = at_object_point(p);
-        EXPECT_EQ(noise->eval_float(ctx), perlin_noise(p));
+        EXPECT_EQ(noise->pattern(ctx), perlin_noise(p));
         const Spectrum c = noise->eval(ctx);
         EXPECT_GE(c.r, 0.1f - 1e-6f);
         EXPECT_LE(c.r, 0.9f + 1e-6f);
         EXPECT_NEAR(c.r, 0.5f + 0.4f * perlin_noise(p), 1e-5f);  // 0 maps half-way
         EXPECT_NEAR(c.b, 0.3f, 1e-6f);
-        EXPECT_EQ(turbulent->eval_float(ctx), turbulence(p, 3));
+        EXPECT_EQ(turbulent->pattern(ctx), turbulence(p, 3));
         EXPECT_NEAR(turbulent->eval(ctx).g, 2.0f * turbulence(p, 3), 1e-5f);
     }
 }
@@ -391,7 +390,7 @@ TEST(WoodTexture, StaysBetweenItsColours) {
     float darkest = 0.0f, lightest = 1.0f;
     for (int i = 0; i < 100000; ++i) {
         const TextureContext ctx = at_object_point(random_point(rng, 5.0f));
-        const float t = wood->eval_float(ctx);
+        const float t = wood->pattern(ctx);
         ASSERT_GE(t, 0.0f);
         ASSERT_LE(t, 1.0f);
         darkest = std::max(darkest, t);
@@ -415,15 +414,14 @@ TEST(WoodTexture, WithoutNoiseIsPeriodicInTheDistanceFromTheAxis) {
     for (int i = 0; i < 1000; ++i) {
         const float r = radius(rng), phi = angle(rng), y = height(rng);
         auto at = [&](float rr, float h) {
-            return wood->eval_float(
-                at_object_point(Vec3(rr * std::cos(phi), h, rr * std::sin(phi))));
+            return wood->pattern(at_object_point(Vec3(rr * std::cos(phi), h, rr * std::sin(phi))));
         };
         EXPECT_NEAR(at(r, y), at(r + 0.2f, y), 2e-4f);  // one ring is 1/5
         EXPECT_NEAR(at(r, y), at(r, 0.0f), 1e-6f);      // the same all along the axis
     }
     // Light at each ring boundary, darkest half-way between.
-    EXPECT_NEAR(wood->eval_float(at_object_point(Vec3(0.4f, 0, 0))), 0.0f, 1e-5f);
-    EXPECT_NEAR(wood->eval_float(at_object_point(Vec3(0, 1, 0.5f))), 1.0f, 1e-5f);
+    EXPECT_NEAR(wood->pattern(at_object_point(Vec3(0.4f, 0, 0))), 0.0f, 1e-5f);
+    EXPECT_NEAR(wood->pattern(at_object_point(Vec3(0, 1, 0.5f))), 1.0f, 1e-5f);
 }
 
 TEST(MarbleTexture, StaysBetweenItsColoursAndVeinsFollowX) {
@@ -434,7 +432,7 @@ TEST(MarbleTexture, StaysBetweenItsColoursAndVeinsFollowX) {
     float most_vein = 0.0f, least_vein = 1.0f;
     for (int i = 0; i < 100000; ++i) {
         const TextureContext ctx = at_object_point(random_point(rng, 5.0f));
-        const float t = marble->eval_float(ctx);
+        const float t = marble->pattern(ctx);
         ASSERT_GE(t, 0.0f);
         ASSERT_LE(t, 1.0f);
         most_vein = std::max(most_vein, t);
@@ -453,9 +451,9 @@ TEST(MarbleTexture, StaysBetweenItsColoursAndVeinsFollowX) {
     auto calm = maker.make("marble", {{"turbulence_amount", 0.0}, {"frequency", 4.0}});
     for (int i = 0; i < 1000; ++i) {
         const Vec3 p = random_point(rng, 3.0f);
-        const float value = calm->eval_float(at_object_point(p));
-        EXPECT_NEAR(calm->eval_float(at_object_point(Vec3(p.x, 0, 0))), value, 1e-6f);
-        EXPECT_NEAR(calm->eval_float(at_object_point(p + Vec3(0.5f * kPi, 0, 0))), value, 1e-4f);
+        const float value = calm->pattern(at_object_point(p));
+        EXPECT_NEAR(calm->pattern(at_object_point(Vec3(p.x, 0, 0))), value, 1e-6f);
+        EXPECT_NEAR(calm->pattern(at_object_point(p + Vec3(0.5f * kPi, 0, 0))), value, 1e-4f);
     }
 }
 

@@ -7,21 +7,23 @@ namespace {
 
 class DielectricMaterial final : public Material {
 public:
-    DielectricMaterial(float ior, const Spectrum& absorption, const FloatInput& roughness)
+    DielectricMaterial(const FloatInput& ior, const Spectrum& absorption,
+                       const FloatInput& roughness)
         : m_ior(ior), m_absorption(absorption), m_roughness(roughness) {}
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        const float ior = m_ior.eval(si);
         const GgxDistribution distribution(roughness_to_alpha(m_roughness.eval(si)));
         // An index-matched interface is invisible however rough: light passes straight on.
-        if (distribution.effectively_smooth() || m_ior == 1.0f) {
-            return arena.make<SmoothDielectricBsdf>(m_ior);
+        if (distribution.effectively_smooth() || ior == 1.0f) {
+            return arena.make<SmoothDielectricBsdf>(ior);
         }
-        return arena.make<RoughDielectricBsdf>(m_ior, distribution);
+        return arena.make<RoughDielectricBsdf>(ior, distribution);
     }
     Spectrum albedo(const SurfaceInteraction&) const override { return Spectrum(1.0f); }
     Spectrum interior_absorption() const override { return m_absorption; }
 
 private:
-    float m_ior;
+    FloatInput m_ior;
     Spectrum m_absorption;
     FloatInput m_roughness;
 };
@@ -29,13 +31,13 @@ private:
 }  // namespace
 
 // glint.dielectric{...}: glass, water, any clear interface; smooth or rough.
-//   ior         float             1.5  index inside over index outside, positive
+//   ior         float or texture  1.5  index inside over index outside, in [0.01, 100]
 //   absorption  spectrum          0    Beer-Lambert coefficient of the inside, per scene unit
 //   roughness   float or texture  0    in [0, 1], alpha = roughness^2 (GGX, rough_dielectric.h);
 //                                       0 is smooth glass (smooth_dielectric.h)
 std::unique_ptr<Material> make_dielectric_material(const Params& params, TextureTable& textures) {
-    const float ior = params.get_float("ior", 1.5f);
-    if (!(ior > 0.0f)) params.fail("'ior' must be positive");
+    // A texture (say a noise between 1.45 and 1.55) makes the index vary over the surface.
+    const FloatInput ior = textures.scalar(params, "ior", 1.5f, 0.01f, 100.0f);
     const Spectrum absorption = params.get_spectrum("absorption", Spectrum(0.0f));
     if (std::min({absorption.r, absorption.g, absorption.b}) < 0.0f) {
         params.fail("'absorption' must not be negative");

@@ -30,7 +30,7 @@ public:
     Spectrum eval(const TextureContext& ctx) const override {
         return mix(m_even, m_odd, odd_fraction(ctx));
     }
-    float eval_float(const TextureContext& ctx) const override { return odd_fraction(ctx); }
+    float pattern(const TextureContext& ctx) const override { return odd_fraction(ctx); }
 
 private:
     // The box filter over the footprint is separable and the square is odd when exactly
@@ -59,7 +59,7 @@ public:
         : m_mapping(mapping), m_even(even), m_odd(odd) {}
 
     Spectrum eval(const TextureContext& ctx) const override { return is_odd(ctx) ? m_odd : m_even; }
-    float eval_float(const TextureContext& ctx) const override { return is_odd(ctx) ? 1.0f : 0.0f; }
+    float pattern(const TextureContext& ctx) const override { return is_odd(ctx) ? 1.0f : 0.0f; }
 
 private:
     bool is_odd(const TextureContext& ctx) const {

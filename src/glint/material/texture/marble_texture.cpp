@@ -22,12 +22,12 @@ public:
         : m_mapping(mapping), m_settings(settings) {}
 
     Spectrum eval(const TextureContext& ctx) const override {
-        const float t = eval_float(ctx);
+        const float t = pattern(ctx);
         return m_settings.base * (1.0f - t) + m_settings.vein * t;
     }
 
     // How much vein colour, in [0, 1].
-    float eval_float(const TextureContext& ctx) const override {
+    float pattern(const TextureContext& ctx) const override {
         const Vec3 q = m_mapping.map(ctx);
         const FractalSettings& f = m_settings.fractal;
         const float disturbance =

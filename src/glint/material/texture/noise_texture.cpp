@@ -15,13 +15,13 @@ public:
         : m_pattern(pattern), m_mapping(mapping), m_fractal(fractal), m_low(low), m_high(high) {}
 
     Spectrum eval(const TextureContext& ctx) const override {
-        const float t = std::clamp(colour_position(eval_float(ctx)), 0.0f, 1.0f);
+        const float t = std::clamp(colour_position(pattern(ctx)), 0.0f, 1.0f);
         return m_low * (1.0f - t) + m_high * t;
     }
 
     // The pattern value: in [-kNoiseBound, kNoiseBound] for noise and fbm, in
     // [0, kNoiseBound] for turbulence.
-    float eval_float(const TextureContext& ctx) const override {
+    float pattern(const TextureContext& ctx) const override {
         const Vec3 q = m_mapping.map(ctx);
         switch (m_pattern) {
             case NoisePattern::kNoise:

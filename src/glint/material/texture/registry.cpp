@@ -14,12 +14,9 @@ using TextureFactory = std::unique_ptr<Texture> (*)(const Params&, TextureTable&
 
 const std::map<std::string, TextureFactory>& factories() {
     static const std::map<std::string, TextureFactory> table = {
-        {"checker", make_checker_texture},
-        {"fbm", make_fbm_texture},
-        {"image", make_image_texture},
-        {"marble", make_marble_texture},
-        {"noise", make_noise_texture},
-        {"turbulence", make_turbulence_texture},
+        {"checker", make_checker_texture}, {"fbm", make_fbm_texture},
+        {"image", make_image_texture},     {"marble", make_marble_texture},
+        {"noise", make_noise_texture},     {"turbulence", make_turbulence_texture},
         {"wood", make_wood_texture},
     };
     return table;

@@ -41,8 +41,13 @@ public:
     virtual ~Texture() = default;
     // Linear RGB value.
     virtual Spectrum eval(const TextureContext& ctx) const = 0;
-    // Scalar value (roughness, bump height, ...): by default the channels' average.
-    virtual float eval_float(const TextureContext& ctx) const { return eval(ctx).average(); }
+    // Scalar value (roughness, index of refraction, bump height, ...): the average of the
+    // colour's channels, for every texture, so that a scalar parameter reads what the
+    // texture's colours say (a noise between low = 0.1 and high = 0.4 gives 0.1 .. 0.4).
+    float eval_float(const TextureContext& ctx) const { return eval(ctx).average(); }
+    // The pattern before colouring (procedural textures: the noise, the ring darkness, ...;
+    // images: the same as eval_float). For tests and tools; materials use eval_float.
+    virtual float pattern(const TextureContext& ctx) const { return eval_float(ctx); }
 };
 
 }  // namespace glint
