@@ -14,28 +14,12 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
-
-#include <filesystem>
-#include <random>
+#include <support/test_util.h>
 
 using namespace glint;
+using glint::test::TempDir;
 
 namespace {
-
-// A folder of its own for each test, removed afterwards.
-class TempDir {
-public:
-    TempDir() {
-        std::random_device device;
-        m_path = std::filesystem::temp_directory_path() / fmt::format("glint-tex-{}", device());
-        std::filesystem::create_directories(m_path);
-    }
-    ~TempDir() { std::filesystem::remove_all(m_path); }
-    std::string file(const std::string& name) const { return (m_path / name).string(); }
-
-private:
-    std::filesystem::path m_path;
-};
 
 // A checkerboard of `squares` x `squares` squares of `size` pixels, values lo and hi.
 Image checker_image(int squares, int size, float lo, float hi) {

@@ -7,10 +7,9 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
-#include <filesystem>
 #include <functional>
-#include <random>
 
 using namespace glint;
 
@@ -102,9 +101,7 @@ TEST(NormalMapping, TangentSpaceConventions) {
 // The issue's test: a wall with one raised bump, lit by a point light high above it, is
 // brighter on the bump's upper slope than on the flat wall, and darker on its lower slope.
 TEST(BumpMapping, BumpLitFromAboveIsBrighterOnItsUpperSlope) {
-    const auto dir = std::filesystem::temp_directory_path() /
-                     fmt::format("glint-bump-{}", std::random_device()());
-    std::filesystem::create_directories(dir);
+    const glint::test::TempDir dir("glint-bump");
     const int n = 64;
     Image heights = make_image(n, n, {"R", "G", "B"});
     for (int y = 0; y < n; ++y) {
@@ -114,7 +111,7 @@ TEST(BumpMapping, BumpLitFromAboveIsBrighterOnItsUpperSlope) {
             for (int c = 0; c < 3; ++c) heights.at(x, y, c) = gaussian_bump(uv);
         }
     }
-    const std::string file = (dir / "bump.exr").string();
+    const std::string file = dir.file("bump.exr");
     write_image(file, heights);
     const std::string code = fmt::format(R"(
         glint.camera{{ eye = {{0, 0, 3}}, look_at = {{0, 0, 0}}, fov = 40 }}
@@ -127,7 +124,6 @@ TEST(BumpMapping, BumpLitFromAboveIsBrighterOnItsUpperSlope) {
     )",
                                          file);
     const Image image = glint::test::render_lua(code);
-    std::filesystem::remove_all(dir);
     // The wall spans the image rows 20 +- 14.6 (fov 40 at distance 3); v = 0.6 and 0.4 are
     // 0.2 units above and below the centre: rows 20 -+ 2.7.
     auto luminance = [&](int x, int y) {

@@ -4,7 +4,9 @@
 #include <glint/math/vector.h>
 
 #include <cmath>
+#include <filesystem>
 #include <functional>
+#include <random>
 #include <string>
 
 namespace glint::test {
@@ -25,5 +27,22 @@ inline Vec3 direction(float degrees, float phi = 0.7f, bool inside = false) {
     const Vec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
     return inside ? Vec3(w.x, w.y, -w.z) : w;
 }
+
+// A folder of its own for a test, removed when it goes out of scope (also on failure).
+class TempDir {
+public:
+    explicit TempDir(const std::string& prefix = "glint-test") {
+        m_path = std::filesystem::temp_directory_path() /
+                 (prefix + "-" + std::to_string(std::random_device()()));
+        std::filesystem::create_directories(m_path);
+    }
+    ~TempDir() { std::filesystem::remove_all(m_path); }
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    std::string file(const std::string& name) const { return (m_path / name).string(); }
+
+private:
+    std::filesystem::path m_path;
+};
 
 }  // namespace glint::test

@@ -16,11 +16,7 @@ ImageTextureSystem& TextureTable::images() {
     return *m_images;
 }
 
-TextureTable::~TextureTable() {
-    // Textures hold handles into the image system: release them first.
-    m_declared.clear();
-    m_from_files.clear();
-}
+TextureTable::~TextureTable() = default;  // here, where ImageTextureSystem is complete
 
 const Texture* TextureTable::declared(const Params& params, const std::string& name) const {
     if (!params.is_ref(name, "texture")) return nullptr;

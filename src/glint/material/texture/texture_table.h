@@ -52,6 +52,7 @@ private:
 
     std::string m_directory;
     bool m_mipmapping;
+    // Declared before the textures, so it is destroyed after them: they hold handles into it.
     std::unique_ptr<ImageTextureSystem> m_images;
     std::vector<std::unique_ptr<Texture>> m_declared;
     std::vector<std::unique_ptr<Texture>> m_from_files;
