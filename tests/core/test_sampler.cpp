@@ -84,8 +84,10 @@ TEST(Sampler, SobolPrefixesAreStratified) {
             for (int a = 0; a <= k; ++a) {
                 const int nx = 1 << a, ny = 1 << (k - a);
                 std::vector<int> hits(count, 0);
-                for (const Vec2& p : pair) ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
-                for (int h : hits) EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
+                for (const Vec2& p : pair)
+                    ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
+                for (int h : hits)
+                    EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
             }
         }
     }
@@ -99,4 +101,64 @@ TEST(Sampler, SobolDiffersBetweenPixelsAndDimensions) {
     const Vec2 c = s->get_2d();
     EXPECT_NE(a, b);
     EXPECT_NE(a, c);
+}
+
+// The Sobol sampler hands out dimensions in groups of four: a 2D request takes a group's
+// first two, 1D requests the next free ones. The path tracer's pattern per bounce (a 2D
+// value, then two 1D values) must keep every power-of-two prefix stratified in each 1D
+// dimension (Sobol dimensions 2 and 3 included) and in the 2D pairs' elementary intervals,
+// also when a 2D request follows 1D requests that left the group half used.
+TEST(Sampler, SobolGroupsKeepEveryDimensionStratified) {
+    auto s = make_sampler("sobol", 1024, 3);
+    for (int count : {4, 16, 64, 256}) {
+        std::vector<float> ones[5];
+        std::vector<Vec2> twos[2];
+        for (int i = 0; i < count; ++i) {
+            s->start_pixel_sample(Vec2i(2, 9), i);
+            ones[0].push_back(s->get_1d());  // opens group 0: dimension 0
+            twos[0].push_back(s->get_2d());  // group 1, dimensions 0 and 1
+            ones[1].push_back(s->get_1d());  // group 1, dimension 2
+            ones[2].push_back(s->get_1d());  // group 1, dimension 3
+            ones[3].push_back(s->get_1d());  // group 2, dimension 0
+            twos[1].push_back(s->get_2d());  // group 3
+            ones[4].push_back(s->get_1d());
+        }
+        for (const auto& values : ones) {
+            std::vector<int> hits(count, 0);
+            for (float v : values) ++hits[static_cast<int>(v * count)];
+            for (int h : hits) EXPECT_EQ(h, 1) << count << " samples";
+        }
+        const int k = static_cast<int>(std::log2(count));
+        for (const auto& pair : twos) {
+            for (int a = 0; a <= k; ++a) {
+                const int nx = 1 << a, ny = 1 << (k - a);
+                std::vector<int> hits(count, 0);
+                for (const Vec2& p : pair)
+                    ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
+                for (int h : hits)
+                    EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
+            }
+        }
+    }
+}
+
+// Dimensions of different groups are scrambled independently: over a pixel's samples, the
+// first dimensions of two groups are uncorrelated (an unshuffled index would make them
+// move together).
+TEST(Sampler, SobolGroupsAreDecorrelated) {
+    auto s = make_sampler("sobol", 256, 8);
+    double sum_a = 0, sum_b = 0, sum_ab = 0, sum_aa = 0, sum_bb = 0;
+    const int n = 256;
+    for (int i = 0; i < n; ++i) {
+        s->start_pixel_sample(Vec2i(5, 5), i);
+        const double a = s->get_2d().x;
+        const double b = s->get_2d().x;
+        sum_a += a, sum_b += b, sum_ab += a * b, sum_aa += a * a, sum_bb += b * b;
+    }
+    const double cov = sum_ab / n - (sum_a / n) * (sum_b / n);
+    const double var_a = sum_aa / n - (sum_a / n) * (sum_a / n);
+    const double var_b = sum_bb / n - (sum_b / n) * (sum_b / n);
+    const double correlation = cov / std::sqrt(var_a * var_b);
+    // Independent uniforms: the sample correlation's standard deviation is 1/sqrt(n) = 0.0625.
+    EXPECT_LT(std::abs(correlation), 0.25) << correlation;
 }

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <array>
+
 namespace glint {
 namespace {
 
@@ -138,74 +140,106 @@ uint32_t laine_karras(uint32_t x, uint32_t seed) {
     return x;
 }
 
-// The second Sobol dimension: its generator matrix is Pascal's triangle mod 2, so the
-// direction numbers follow v <- v ^ (v >> 1). Tabulated per byte of the index, so any
-// 32-bit index takes four lookups.
-class SobolSecondDimension {
+// Sobol's dimensions 1 to 3 (dimension 0, the radical inverse, needs no table), from their
+// primitive polynomials and initial direction numbers (Joe & Kuo 2008): the value for an
+// index is the XOR of the direction numbers of its set bits. Tabulated per byte of the
+// index, so any 32-bit index takes four lookups, and stored bit-reversed, because the
+// scramble works on reversed values (see SobolSampler).
+class SobolTables {
 public:
-    SobolSecondDimension() {
-        uint32_t direction[32];
-        uint32_t v = 1u << 31;
-        for (int bit = 0; bit < 32; ++bit, v ^= v >> 1) direction[bit] = v;
-        for (int byte = 0; byte < 4; ++byte) {
-            for (uint32_t value = 0; value < 256; ++value) {
-                uint32_t result = 0;
-                for (int bit = 0; bit < 8; ++bit) {
-                    if (value & (1u << bit)) result ^= direction[8 * byte + bit];
+    static constexpr int kDimensions = 4;
+
+    SobolTables() {
+        struct Polynomial {
+            int degree;
+            uint32_t coefficients;  // the inner coefficients a_1..a_{degree-1}, a_1 highest
+            uint32_t initial[3];    // m_1..m_degree, odd and below 2^k
+        };
+        const Polynomial polynomials[kDimensions - 1] = {
+            {1, 0, {1}}, {2, 1, {1, 3}}, {3, 1, {1, 3, 1}}};
+        for (int d = 1; d < kDimensions; ++d) {
+            const Polynomial& poly = polynomials[d - 1];
+            uint32_t direction[32];
+            for (int k = 0; k < 32; ++k) {
+                if (k < poly.degree) {
+                    direction[k] = poly.initial[k] << (31 - k);
+                    continue;
                 }
-                // Stored bit-reversed: the scramble works on reversed values (see below).
-                m_table[byte][value] = reverse_bits(result);
+                direction[k] =
+                    direction[k - poly.degree] ^ (direction[k - poly.degree] >> poly.degree);
+                for (int j = 1; j < poly.degree; ++j) {
+                    if ((poly.coefficients >> (poly.degree - 1 - j)) & 1u)
+                        direction[k] ^= direction[k - j];
+                }
+            }
+            for (int byte = 0; byte < 4; ++byte) {
+                for (uint32_t value = 0; value < 256; ++value) {
+                    uint32_t result = 0;
+                    for (int bit = 0; bit < 8; ++bit) {
+                        if (value & (1u << bit)) result ^= direction[8 * byte + bit];
+                    }
+                    m_table[d - 1][byte][value] = reverse_bits(result);
+                }
             }
         }
     }
-    // reverse_bits of the dimension's value for `index`.
-    uint32_t reversed(uint32_t index) const {
-        return m_table[0][index & 0xff] ^ m_table[1][(index >> 8) & 0xff] ^
-               m_table[2][(index >> 16) & 0xff] ^ m_table[3][index >> 24];
+
+    // reverse_bits of Sobol dimension `dimension` (1..3) for `index`.
+    uint32_t reversed(int dimension, uint32_t index) const {
+        const auto& table = m_table[dimension - 1];
+        return table[0][index & 0xff] ^ table[1][(index >> 8) & 0xff] ^
+               table[2][(index >> 16) & 0xff] ^ table[3][index >> 24];
     }
 
 private:
-    uint32_t m_table[4][256];
+    uint32_t m_table[kDimensions - 1][4][256];
 };
 
-const SobolSecondDimension& sobol_dimension_1() {
-    static const SobolSecondDimension table;
-    return table;
+const SobolTables& sobol_tables() {
+    static const SobolTables tables;
+    return tables;
 }
 
+// bits >> 8 is below 2^24, so the result is exact and at most 1 - 2^-24.
 float to_unit_float(uint32_t bits) {
-    return std::min(static_cast<float>(bits >> 8) * 0x1p-24f, 0x1.fffffep-1f);
+    return static_cast<float>(bits >> 8) * 0x1p-24f;
 }
 
-// Owen-scrambled Sobol, "padded" per dimension pair: each pair of dimensions uses the
-// (0,2)-sequence with its own index shuffle and scramble, keyed by (seed, pixel, dimension).
-// Any prefix of a pixel's samples is well stratified, which adaptive sampling relies on.
+// Owen-scrambled Sobol, "padded" in groups of four dimensions: each group is Sobol's first
+// four dimensions with its own shuffle of the sample index and its own scramble, keyed by
+// (seed, pixel, group) (Burley 2020). A 2D request always starts a group, so it gets the
+// first two dimensions, a (0,2)-sequence; 1D requests take the group's next free dimension,
+// each a (0,1)-sequence. An integrator that asks for a 2D and two 1D values per step (the
+// light sample, then the BSDF sample with its lobe choice and roulette) thus pays for one
+// index shuffle per step instead of one per request. Any prefix of a pixel's samples is
+// well stratified, which adaptive sampling relies on.
 class SobolSampler final : public Sampler {
 public:
-    using Sampler::Sampler;
+    SobolSampler(int spp, uint64_t seed) : Sampler(spp, seed), m_tables(&sobol_tables()) {}
 
     void start_pixel_sample(Vec2i pixel, int index) override {
-        m_pixel_key = pixel_sample_key(m_seed, pixel, 0);
+        // A pixel's samples are taken one after another, and the group keys depend only on
+        // (seed, pixel, group): they are hashed once per pixel, not per sample.
+        if (!m_keys_valid || pixel != m_key_pixel) {
+            m_pixel_key = pixel_sample_key(m_seed, pixel, 0);
+            m_key_pixel = pixel;
+            m_keys_valid = true;
+            m_keys_cached = 0;
+        }
         m_reversed_index = reverse_bits(static_cast<uint32_t>(index));
-        m_dimension = 0;
+        m_next_group = 0;
+        m_slot = SobolTables::kDimensions;  // no group open
     }
 
-    // The first Sobol dimension is the bit reversal of the index, so scrambling it is
-    // reverse(LK(index)): one reversal instead of three.
     float get_1d() override {
-        const uint32_t key = next_dimension_key();
-        return to_unit_float(
-            reverse_bits(laine_karras(shuffled_index(key), key * 0x9e3779b9u + 1u)));
+        if (m_slot == SobolTables::kDimensions) open_group();
+        return to_unit_float(coordinate(m_slot++));
     }
 
     Vec2 get_2d() override {
-        const uint32_t key = next_dimension_key();
-        const uint32_t shuffled = shuffled_index(key);
-        const uint32_t x = reverse_bits(laine_karras(shuffled, key * 0x9e3779b9u + 1u));
-        // nested_uniform_scramble of the second dimension, whose table is already reversed.
-        const uint32_t y = reverse_bits(
-            laine_karras(sobol_dimension_1().reversed(shuffled), key * 0x85ebca6bu + 2u));
-        return Vec2(to_unit_float(x), to_unit_float(y));
+        open_group();
+        m_slot = 2;
+        return Vec2(to_unit_float(coordinate(0)), to_unit_float(coordinate(1)));
     }
 
     std::unique_ptr<Sampler> clone() const override {
@@ -213,18 +247,45 @@ public:
     }
 
 private:
-    uint32_t next_dimension_key() {
-        return static_cast<uint32_t>(hash_combine(m_pixel_key, m_dimension++));
-    }
-    // The sample index shuffled for this dimension (pair): nested_uniform_scramble(index),
-    // with the index's reversal done once per sample.
-    uint32_t shuffled_index(uint32_t key) const {
-        return reverse_bits(laine_karras(m_reversed_index, key));
+    static constexpr uint32_t kCachedKeys = 32;  // deeper groups are hashed each time
+
+    void open_group() {
+        m_key = group_key(m_next_group++);
+        // nested_uniform_scramble(index), with the index's reversal done once per sample.
+        m_shuffled = reverse_bits(laine_karras(m_reversed_index, m_key));
+        m_slot = 0;
     }
 
+    // Owen-scrambled Sobol dimension `d` of the shuffled index, as 32 bits. Dimension 0 is
+    // the bit reversal of the index, so its scramble reverse(LK(reverse(value))) is
+    // reverse(LK(index)); the other dimensions' tables are already reversed.
+    uint32_t coordinate(int d) const {
+        const uint32_t seed = m_key * kSeedMultipliers[d] + static_cast<uint32_t>(d) + 1u;
+        const uint32_t reversed_value = d == 0 ? m_shuffled : m_tables->reversed(d, m_shuffled);
+        return reverse_bits(laine_karras(reversed_value, seed));
+    }
+
+    uint32_t group_key(uint32_t group) {
+        if (group < m_keys_cached) return m_keys[group];
+        const auto key = static_cast<uint32_t>(hash_combine(m_pixel_key, group));
+        if (group == m_keys_cached && group < kCachedKeys) m_keys[m_keys_cached++] = key;
+        return key;
+    }
+
+    static constexpr uint32_t kSeedMultipliers[SobolTables::kDimensions] = {
+        0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u, 0x27d4eb2fu};
+
+    const SobolTables* m_tables;
     uint64_t m_pixel_key = 0;
+    Vec2i m_key_pixel{0, 0};
+    bool m_keys_valid = false;
+    uint32_t m_keys_cached = 0;  // m_keys[0, m_keys_cached) hold this pixel's first keys
+    std::array<uint32_t, kCachedKeys> m_keys{};
     uint32_t m_reversed_index = 0;
-    uint64_t m_dimension = 0;
+    uint32_t m_next_group = 0;
+    uint32_t m_key = 0;       // the open group's key
+    uint32_t m_shuffled = 0;  // the open group's shuffled sample index
+    int m_slot = 0;           // the open group's next free dimension
 };
 
 }  // namespace

@@ -9,8 +9,8 @@ namespace glint {
 
 inline Spectrum sample_one_light(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                                  Sampler& sampler, uint64_t& rays) {
+    const Vec2 u = sampler.get_2d();  // 2D first, see sample_direct in path.cpp
     const LightSampler::Choice choice = scene.light_sampler().sample(sampler.get_1d());
-    const Vec2 u = sampler.get_2d();
     const float u_select = sampler.get_1d();
     if (!choice.light) return Spectrum(0.0f);
     const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);

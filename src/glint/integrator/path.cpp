@@ -1,6 +1,6 @@
 #include <glint/core/sampler.h>
-#include <glint/integrator/shading.h>
 #include <glint/integrator/path.h>
+#include <glint/integrator/shading.h>
 #include <glint/material/material.h>
 
 namespace glint {
@@ -14,8 +14,9 @@ float power_heuristic(float pdf_a, float pdf_b) {
 // Direct light at `si` from one light chosen by power, weighted against BSDF sampling.
 Spectrum sample_direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                        const Vec3& wo_local, Sampler& sampler, RayCounter& counter, bool use_mis) {
-    const float u_light = sampler.get_1d();
+    // 2D first: the Sobol sampler hands out a 2D value and two 1D values per index shuffle.
     const Vec2 u = sampler.get_2d();
+    const float u_light = sampler.get_1d();
     const float u_select = sampler.get_1d();
     const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
     if (!choice.light) return Spectrum(0.0f);
@@ -123,9 +124,8 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         bsdf_pdf = bs->pdf;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         previous_point = si.p;
-        ray = bs->is_delta()
-                  ? spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta)
-                  : spawn_ray(si, wi);
+        ray = bs->is_delta() ? spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta)
+                             : spawn_ray(si, wi);
 
         // Russian roulette on the throughput without the radiance scaling of refraction,
         // which would otherwise kill paths that are about to leave the glass.
