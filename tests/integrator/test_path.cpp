@@ -260,14 +260,17 @@ TEST(PathIntegrator, PlaneUnderSphericalEmitterMatchesClosedFormForEveryStrategy
     const Vec3 center(0.0f, 1.5f, 0.0f), eye(0.0f, 1.0f, 6.0f), target(0.0f, 0.3f, 0.0f);
     const PerspectiveCamera camera(eye, target, Vec3(0, 1, 0), 60.0f, Vec2i(res, res), 0.0f, 1.0f);
     for (const char* variant : {"path", "path_light", "path_bsdf"}) {
+        // BSDF sampling alone finds the small emitter rarely: at 256 spp the aggregate's
+        // spread over seeds is 0.7 %, too close to the 1 % tolerance; 1024 spp halves it.
+        const int spp = std::string(variant) == "path_bsdf" ? 1024 : 256;
         const Image image = render_lua(fmt::format(R"(
             glint.camera{{ eye = {{0, 1, 6}}, look_at = {{0, 0.3, 0}}, fov = 60 }}
-            glint.render{{ width = {}, height = {}, spp = 256, integrator = '{}' }}
+            glint.render{{ width = {}, height = {}, spp = {}, integrator = '{}' }}
             glint.sphere{{ center = {{0, 1.5, 0}}, radius = {}, material = glint.emissive{{ radiance = {} }} }}
             glint.quad{{ vertices = {{ {{-20, 0, 20}}, {{20, 0, 20}}, {{20, 0, -20}}, {{-20, 0, -20}} }},
                          material = glint.diffuse{{ reflectance = {} }} }}
         )",
-                                                   res, res, variant, radius, radiance, rho));
+                                                   res, res, spp, variant, radius, radiance, rho));
         double measured_sum = 0.0, expected_sum = 0.0;
         int pixels = 0, far_off = 0;
         // The closed form at a film position, or nothing where the plane is not what is seen.

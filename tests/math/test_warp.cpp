@@ -125,6 +125,27 @@ TEST(Warp, ConcentricDiskIsUniform) {
                 1e-6f);
 }
 
+// The mapping evaluates sin and cos by polynomials on [-pi/4, pi/4]; it must agree with
+// Shirley and Chiu's formulas through libm to float precision everywhere on the square.
+TEST(Warp, ConcentricDiskMatchesTheClosedForm) {
+    float worst = 0.0f;
+    for (int j = 0; j <= 200; ++j) {
+        for (int i = 0; i <= 200; ++i) {
+            const Vec2 u(i / 200.0f, j / 200.0f);
+            const double ox = 2.0 * u.x - 1.0, oy = 2.0 * u.y - 1.0;
+            if (ox == 0.0 && oy == 0.0) continue;
+            const bool x_major = std::abs(ox) > std::abs(oy);
+            const double r = x_major ? ox : oy;
+            const double theta =
+                x_major ? (kPi / 4.0) * (oy / ox) : kPi / 2.0 - (kPi / 4.0) * (ox / oy);
+            const Vec2 d = warp::square_to_uniform_disk_concentric(u);
+            worst = std::max(worst, std::abs(d.x - static_cast<float>(r * std::cos(theta))));
+            worst = std::max(worst, std::abs(d.y - static_cast<float>(r * std::sin(theta))));
+        }
+    }
+    EXPECT_LT(worst, 4e-7f);
+}
+
 TEST(Warp, TriangleIsUniform) {
     // The inverse of the square-root warp, (u0, u1) = ((1 - b0)^2, b1 / (1 - b0)), takes a
     // uniform triangle to a uniform square, so uniformity over the triangle becomes uniformity

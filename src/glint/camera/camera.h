@@ -16,6 +16,8 @@ public:
     // The ray carries differentials towards the neighbouring pixels, scaled by the
     // footprint scale, for texture filtering.
     virtual Ray generate_ray(const Vec2& film, const Vec2& lens) const = 0;
+    // False for a pinhole: its rays ignore `lens`, so integrators need not draw the sample.
+    virtual bool needs_lens_sample() const { return true; }
 
     // How far a point p on a surface with normal n moves per pixel step, for hits that
     // carry no ray differentials (after a bounce): pbrt-v4's approximation, which sees the
@@ -41,6 +43,7 @@ public:
     PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const Vec3& up, float fov_y_degrees,
                       Vec2i resolution, float aperture_radius, float focus_distance);
     Ray generate_ray(const Vec2& film, const Vec2& lens) const override;
+    bool needs_lens_sample() const override { return m_aperture_radius > 0.0f; }
     void approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx, Vec3& dpdy) const override;
 
 private:

@@ -79,9 +79,10 @@ std::optional<HitRecord> Accel::intersect(const Ray& ray) const {
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(m_world, &context, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    std::optional<HitRecord> result;  // one named result, built in the caller's storage
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
 
-    HitRecord hit;
+    HitRecord& hit = result.emplace();
     hit.t = rh.ray.tfar;
     hit.primitive = rh.hit.primID;
     hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
@@ -92,7 +93,7 @@ std::optional<HitRecord> Accel::intersect(const Ray& ray) const {
     } else {
         hit.top_geometry = rh.hit.geomID;
     }
-    return hit;
+    return result;
 }
 
 bool Accel::occluded(const Ray& ray) const {

@@ -41,7 +41,8 @@ public:
     ShapeSample sample_area(const Vec2& u, float u_select) const override {
         const double target = u_select * static_cast<double>(m_area);
         auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
-        const size_t tri = std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
+        const size_t tri =
+            std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
         const Vec3* v = &m_vertices[3 * tri];
         const Vec2 b = warp::square_to_uniform_triangle(u);
         return {(1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2], m_normals[tri], 1.0f / m_area};
@@ -137,6 +138,9 @@ RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
     return geometry;
 }
 
+// Everything is computed in locals and stored once: reading back a vector just stored
+// component by component into `si` (as copying si.p to si.p_object did) makes the CPU wait
+// for the stores to land, at every hit.
 void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
                                     SurfaceInteraction& si) const {
     const uint32_t* idx = &m_data.indices[3 * hit.primitive];
@@ -144,9 +148,8 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
     const Vec3& p1 = m_data.positions[idx[1]];
     const Vec3& p2 = m_data.positions[idx[2]];
     const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
-    si.p = b0 * p0 + b1 * p1 + b2 * p2;
-    si.p_object = m_placed_by_transform ? m_data.to_object.point(si.p) : si.p;
-    si.ng = glm::normalize(triangle_cross(p0, p1, p2));
+    const Vec3 p = b0 * p0 + b1 * p1 + b2 * p2;
+    Vec3 ng = glm::normalize(triangle_cross(p0, p1, p2));
 
     Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
     if (!m_data.uvs.empty()) {
@@ -154,21 +157,21 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
         uv1 = m_data.uvs[idx[1]];
         uv2 = m_data.uvs[idx[2]];
     }
-    si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
     const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
     const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
     const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+    Vec3 dpdu, dpdv;
     if (std::abs(det) > 1e-12f) {
         const float inv = 1.0f / det;
-        si.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
-        si.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+        dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+        dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
     } else {
-        const Frame f = Frame::from_normal(si.ng);
-        si.dpdu = f.s();
-        si.dpdv = f.t();
+        const Frame f = Frame::from_normal(ng);
+        dpdu = f.s();
+        dpdv = f.t();
     }
 
-    Vec3 ns = si.ng;
+    Vec3 ns = ng;
     if (!m_data.normals.empty()) {
         const Vec3 interpolated =
             b0 * m_data.normals[idx[0]] + b1 * m_data.normals[idx[1]] + b2 * m_data.normals[idx[2]];
@@ -176,10 +179,16 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
         if (len2 > 0.0f) {
             ns = interpolated / std::sqrt(len2);
             // The artist's normals define the outside when they disagree with the winding.
-            if (glm::dot(si.ng, ns) < 0.0f) si.ng = -si.ng;
+            if (glm::dot(ng, ns) < 0.0f) ng = -ng;
         }
     }
-    si.shading = Frame::from_normal_tangent(ns, si.dpdu);
+    si.p = p;
+    si.p_object = m_placed_by_transform ? m_data.to_object.point(p) : p;
+    si.ng = ng;
+    si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
+    si.dpdu = dpdu;
+    si.dpdv = dpdv;
+    si.shading = Frame::from_normal_tangent(ns, dpdu);
 }
 
 std::unique_ptr<ShapeSampler> TriangleMesh::make_sampler(const Transform& to_world) const {

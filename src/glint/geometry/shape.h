@@ -66,11 +66,13 @@ public:
 // Converts an area density at `p` (normal `n`) into a solid-angle density seen from `ref`.
 inline float area_to_solid_angle_pdf(float pdf_area, const Vec3& ref, const Vec3& p,
                                      const Vec3& n) {
+    // pdf_area * dist^2 / cos_light with cos_light = |n.d| / dist: one division, and the
+    // square root does not wait for it.
     const Vec3 d = p - ref;
     const float dist2 = glm::dot(d, d);
-    const float cos_light = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
-    if (cos_light <= 0.0f || dist2 <= 0.0f) return 0.0f;
-    return pdf_area * dist2 / cos_light;
+    const float n_dot_d = std::abs(glm::dot(n, d));
+    if (!(n_dot_d > 0.0f) || !(dist2 > 0.0f)) return 0.0f;
+    return pdf_area * dist2 * std::sqrt(dist2) / n_dot_d;
 }
 
 }  // namespace glint

@@ -124,8 +124,11 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
         bsdf_pdf = bs->pdf;
         if (bs->is_transmission()) eta_scale *= bs->eta * bs->eta;
         previous_point = si.p;
-        ray = bs->is_delta() ? spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta)
-                             : spawn_ray(si, wi);
+        if (bs->is_delta()) {
+            ray = spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta);
+        } else {
+            respawn_ray(ray, si, wi);
+        }
 
         // Russian roulette on the throughput without the radiance scaling of refraction,
         // which would otherwise kill paths that are about to leave the glass.

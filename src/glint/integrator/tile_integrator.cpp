@@ -19,7 +19,8 @@ constexpr int kTileSize = 16;
 // Luminance compressed to [0, 1) so that edge thresholds mean the same in dark and bright
 // images.
 float tone(const Image& image, int x, int y) {
-    const float l = 0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) + 0.0722f * image.at(x, y, 2);
+    const float l =
+        0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) + 0.0722f * image.at(x, y, 2);
     return l / (1.0f + std::max(0.0f, l));
 }
 
@@ -27,7 +28,9 @@ float tone(const Image& image, int x, int y) {
 // by `radius` pixels so that both sides of every edge are refined.
 std::vector<uint8_t> sobel_edge_mask(const Image& image, float threshold, int radius) {
     const int w = image.width, h = image.height;
-    auto at = [&](int x, int y) { return tone(image, std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1)); };
+    auto at = [&](int x, int y) {
+        return tone(image, std::clamp(x, 0, w - 1), std::clamp(y, 0, h - 1));
+    };
     std::vector<uint8_t> edges(static_cast<size_t>(w) * h, 0);
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
@@ -45,7 +48,8 @@ std::vector<uint8_t> sobel_edge_mask(const Image& image, float threshold, int ra
             for (int dy = -radius; dy <= radius; ++dy) {
                 for (int dx = -radius; dx <= radius; ++dx) {
                     const int nx = x + dx, ny = y + dy;
-                    if (nx >= 0 && ny >= 0 && nx < w && ny < h) mask[static_cast<size_t>(ny) * w + nx] = 1;
+                    if (nx >= 0 && ny >= 0 && nx < w && ny < h)
+                        mask[static_cast<size_t>(ny) * w + nx] = 1;
                 }
             }
         }
@@ -60,8 +64,10 @@ TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(sett
     try {
         m_filter = make_filter(settings.filter, settings.filter_radius);
         make_sampler(settings.sampler, settings.spp, settings.seed);
-        if (settings.adaptive != "none" && settings.adaptive != "sobel" && settings.adaptive != "variance") {
-            throw Error(fmt::format("unknown adaptive mode '{}' (expected: none, sobel, variance)", settings.adaptive));
+        if (settings.adaptive != "none" && settings.adaptive != "sobel" &&
+            settings.adaptive != "variance") {
+            throw Error(fmt::format("unknown adaptive mode '{}' (expected: none, sobel, variance)",
+                                    settings.adaptive));
         }
     } catch (const Error& e) {
         throw Error(fmt::format("{}: {}", settings.where, e.what()));
@@ -71,45 +77,53 @@ TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(sett
 RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
-    if (m_settings.adaptive == "sobel") render_edge_adaptive(scene, film, progress, stats);
-    else if (m_settings.adaptive == "variance") render_variance_adaptive(scene, film, progress, stats);
-    else render_uniform(scene, film, progress, stats);
+    if (m_settings.adaptive == "sobel")
+        render_edge_adaptive(scene, film, progress, stats);
+    else if (m_settings.adaptive == "variance")
+        render_variance_adaptive(scene, film, progress, stats);
+    else
+        render_uniform(scene, film, progress, stats);
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }
 
 template <typename Work>
-uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& prototype, Progress& progress,
-                                        const std::vector<uint8_t>* wanted, Work&& work) const {
+uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& prototype,
+                                        Progress& progress, const std::vector<uint8_t>* wanted,
+                                        Work&& work) const {
     const int tiles_x = (width + kTileSize - 1) / kTileSize;
     const int tiles_y = (height + kTileSize - 1) / kTileSize;
     std::atomic<uint64_t> total_rays{0};
     // Each pixel is rendered by exactly one task and its random numbers depend only on
     // (seed, pixel, sample index), so the image does not depend on scheduling.
-    tbb::parallel_for(tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1), [&](const tbb::blocked_range2d<int>& range) {
-        auto sampler = prototype.clone();
-        Arena arena;
-        RayCounter counter;
-        for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
-            for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
-                const int x0 = tx * kTileSize, y0 = ty * kTileSize;
-                const int x1 = std::min(x0 + kTileSize, width), y1 = std::min(y0 + kTileSize, height);
-                uint64_t samples = 0;
-                for (int y = y0; y < y1; ++y) {
-                    for (int x = x0; x < x1; ++x) {
-                        if (wanted && !(*wanted)[static_cast<size_t>(y) * width + x]) continue;
-                        samples += work(Vec2i(x, y), *sampler, arena, counter);
+    tbb::parallel_for(
+        tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
+        [&](const tbb::blocked_range2d<int>& range) {
+            auto sampler = prototype.clone();
+            Arena arena;
+            RayCounter counter;
+            for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
+                for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
+                    const int x0 = tx * kTileSize, y0 = ty * kTileSize;
+                    const int x1 = std::min(x0 + kTileSize, width),
+                              y1 = std::min(y0 + kTileSize, height);
+                    uint64_t samples = 0;
+                    for (int y = y0; y < y1; ++y) {
+                        for (int x = x0; x < x1; ++x) {
+                            if (wanted && !(*wanted)[static_cast<size_t>(y) * width + x]) continue;
+                            samples += work(Vec2i(x, y), *sampler, arena, counter);
+                        }
                     }
+                    progress.advance(samples);
                 }
-                progress.advance(samples);
             }
-        }
-        total_rays += counter.rays;
-    });
+            total_rays += counter.rays;
+        });
     return total_rays.load();
 }
 
-void TileIntegrator::render_uniform(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const {
+void TileIntegrator::render_uniform(const Scene& scene, Film& film, Progress& progress,
+                                    RenderStats& stats) const {
     const auto sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
     const int spp = m_settings.spp;
     stats.rays = for_each_pixel(film.width(), film.height(), *sampler, progress, nullptr,
@@ -127,24 +141,28 @@ void TileIntegrator::render_edge_adaptive(const Scene& scene, Film& film, Progre
     const int w = film.width(), h = film.height();
     Film preview(w, h, film.has_aovs());
     const auto single = make_sampler("stratified", 1, m_settings.seed);
-    stats.rays = for_each_pixel(w, h, *single, progress, nullptr, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-        render_pixel(scene, preview, pixel, s, a, c, 0, 1);
-        return uint64_t{1};
-    });
-    const std::vector<uint8_t> mask = sobel_edge_mask(preview.resolve(), m_settings.edge_threshold, m_settings.edge_radius);
+    stats.rays = for_each_pixel(w, h, *single, progress, nullptr,
+                                [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+                                    render_pixel(scene, preview, pixel, s, a, c, 0, 1);
+                                    return uint64_t{1};
+                                });
+    const std::vector<uint8_t> mask =
+        sobel_edge_mask(preview.resolve(), m_settings.edge_threshold, m_settings.edge_radius);
 
     const int n = m_settings.supersample;
     const auto grid = make_sampler("stratified", n * n, m_settings.seed);
-    stats.rays += for_each_pixel(w, h, *grid, progress, &mask, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-        render_pixel(scene, film, pixel, s, a, c, 0, n * n);
-        return static_cast<uint64_t>(n * n);
-    });
+    stats.rays += for_each_pixel(w, h, *grid, progress, &mask,
+                                 [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+                                     render_pixel(scene, film, pixel, s, a, c, 0, n * n);
+                                     return static_cast<uint64_t>(n * n);
+                                 });
     std::vector<uint8_t> flat(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) flat[i] = !mask[i];
-    stats.rays += for_each_pixel(w, h, *single, progress, &flat, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-        render_pixel(scene, film, pixel, s, a, c, 0, 1);
-        return uint64_t{1};
-    });
+    stats.rays += for_each_pixel(w, h, *single, progress, &flat,
+                                 [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+                                     render_pixel(scene, film, pixel, s, a, c, 0, 1);
+                                     return uint64_t{1};
+                                 });
 
     ExtraChannel edges{"edges.Y", std::vector<float>(mask.begin(), mask.end())};
     ExtraChannel counts{"samples.Y", {}};
@@ -160,7 +178,8 @@ void TileIntegrator::render_edge_adaptive(const Scene& scene, Film& film, Progre
 void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Progress& progress,
                                               RenderStats& stats) const {
     const int w = film.width(), h = film.height();
-    const int cap = m_settings.max_spp > 0 ? std::max(m_settings.max_spp, m_settings.spp) : 8 * m_settings.spp;
+    const int cap =
+        m_settings.max_spp > 0 ? std::max(m_settings.max_spp, m_settings.spp) : 8 * m_settings.spp;
     // Strata over the cap, so any prefix of a pixel's samples is an unbiased estimate.
     const auto sampler = make_sampler(m_settings.sampler, cap, m_settings.seed);
     std::vector<PixelMoments> moments(static_cast<size_t>(w) * h);
@@ -170,7 +189,8 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
     auto converged = [&](size_t i) {
         const double n = taken[i];
         const double mean = moments[i].sum / n;
-        const double variance = std::max(0.0, moments[i].sum_squares / n - mean * mean) * n / std::max(1.0, n - 1.0);
+        const double variance =
+            std::max(0.0, moments[i].sum_squares / n - mean * mean) * n / std::max(1.0, n - 1.0);
         const double standard_error = std::sqrt(variance / n);
         // Relative to the mean, regularised like glint compare's relative MSE (r^2 + 0.01),
         // so dark pixels are not chased to a precision nobody can see.
@@ -178,17 +198,20 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
     };
 
     for (bool any = true; any;) {
-        stats.rays += for_each_pixel(w, h, *sampler, progress, &active, [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-            const size_t i = static_cast<size_t>(pixel.y) * w + pixel.x;
-            // Doubling keeps sample counts at powers of two times spp, where the Sobol
-            // sampler's prefixes are best stratified.
-            const int count = std::min(taken[i] == 0 ? m_settings.spp : taken[i], cap - taken[i]);
-            const PixelMoments m = render_pixel(scene, film, pixel, s, a, c, taken[i], count);
-            moments[i].sum += m.sum;
-            moments[i].sum_squares += m.sum_squares;
-            taken[i] += count;
-            return static_cast<uint64_t>(count);
-        });
+        stats.rays += for_each_pixel(
+            w, h, *sampler, progress, &active,
+            [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+                const size_t i = static_cast<size_t>(pixel.y) * w + pixel.x;
+                // Doubling keeps sample counts at powers of two times spp, where the Sobol
+                // sampler's prefixes are best stratified.
+                const int count =
+                    std::min(taken[i] == 0 ? m_settings.spp : taken[i], cap - taken[i]);
+                const PixelMoments m = render_pixel(scene, film, pixel, s, a, c, taken[i], count);
+                moments[i].sum += m.sum;
+                moments[i].sum_squares += m.sum_squares;
+                taken[i] += count;
+                return static_cast<uint64_t>(count);
+            });
         // Between rounds: a pixel stops only when it and its 8 neighbours all look
         // converged. A few samples can miss a pixel's rare bright paths and understate its
         // error; its neighbours, which see the same light, catch that.
@@ -201,7 +224,8 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
                 bool neighbourhood_converged = true;
                 for (int ny = std::max(0, y - 1); ny <= std::min(h - 1, y + 1); ++ny) {
                     for (int nx = std::max(0, x - 1); nx <= std::min(w - 1, x + 1); ++nx) {
-                        neighbourhood_converged &= looks_converged[static_cast<size_t>(ny) * w + nx] != 0;
+                        neighbourhood_converged &=
+                            looks_converged[static_cast<size_t>(ny) * w + nx] != 0;
                     }
                 }
                 active[i] = taken[i] < cap && !neighbourhood_converged;
@@ -217,8 +241,9 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
     stats.channels = {std::move(counts)};
 }
 
-TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Film& film, Vec2i pixel,
-                                                          Sampler& sampler, Arena& arena, RayCounter& counter,
+TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Film& film,
+                                                          Vec2i pixel, Sampler& sampler,
+                                                          Arena& arena, RayCounter& counter,
                                                           int first, int count) const {
     const bool want_aovs = film.has_aovs();
     PixelMoments moments;
@@ -226,7 +251,9 @@ TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Fi
         sampler.start_pixel_sample(pixel, index);
         const FilterSample fs = m_filter->sample(sampler.get_pixel_2d());
         const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + fs.offset;
-        const Ray ray = scene.camera().generate_ray(film_point, sampler.get_2d());
+        const Camera& camera = scene.camera();
+        const Ray ray = camera.generate_ray(
+            film_point, camera.needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
         AovSample aov{};
         arena.reset();
         const Spectrum L = li(ray, scene, sampler, arena, counter, want_aovs ? &aov : nullptr);

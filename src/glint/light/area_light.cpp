@@ -5,17 +5,20 @@ namespace glint {
 
 std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
                                                 float u_select) const {
+    std::optional<LightSample> result;  // one named result: see Scene::intersect
     const ShapeSample s = m_shape->sample(ref, u, u_select);
     const Vec3 d = s.p - ref;
     const float dist2 = glm::dot(d, d);
-    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf) || !(dist2 > 0.0f)) return std::nullopt;
-    LightSample ls;
-    ls.wi = d / std::sqrt(dist2);
-    ls.L = emitted(s.n, -ls.wi);
-    if (ls.L.is_black()) return std::nullopt;
+    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf) || !(dist2 > 0.0f)) return result;
+    const Vec3 wi = d * (1.0f / std::sqrt(dist2));
+    const Spectrum L = emitted(s.n, -wi);
+    if (L.is_black()) return result;
+    LightSample& ls = result.emplace();
+    ls.wi = wi;
+    ls.L = L;
     ls.pdf = s.pdf;
     ls.p = s.p;
-    return ls;
+    return result;
 }
 
 float AreaLight::pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const {
@@ -28,7 +31,8 @@ Spectrum AreaLight::le(const SurfaceInteraction& si, const Vec3& w) const {
 
 // Position uniform by area, direction cosine-weighted about the normal (on a random side
 // when two-sided), so every photon carries L * pi * area (times 2 if two-sided).
-std::optional<LightEmission> AreaLight::sample_le(const Vec2& u1, const Vec2& u2, float u_select) const {
+std::optional<LightEmission> AreaLight::sample_le(const Vec2& u1, const Vec2& u2,
+                                                  float u_select) const {
     float u_side = 0.0f;
     if (m_two_sided) {
         u_side = u_select < 0.5f ? 0.0f : 1.0f;

@@ -16,12 +16,18 @@ public:
         return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
     }
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float) const override {
-        if (wo.z == 0.0f) return std::nullopt;
+        std::optional<BsdfSample> result;  // one named result: see Scene::intersect
+        if (wo.z == 0.0f) return result;
         Vec3 wi = warp::square_to_cosine_hemisphere(u);
         if (wo.z < 0.0f) wi.z = -wi.z;
         const float p = abs_cos_theta(wi) * kInvPi;
-        if (p <= 0.0f) return std::nullopt;
-        return BsdfSample{m_reflectance * kInvPi, wi, p, kBsdfReflection | kBsdfDiffuse, 1.0f};
+        if (p <= 0.0f) return result;
+        BsdfSample& s = result.emplace();
+        s.f = m_reflectance * kInvPi;
+        s.wi = wi;
+        s.pdf = p;
+        s.flags = kBsdfReflection | kBsdfDiffuse;
+        return result;
     }
     uint32_t flags() const override { return kBsdfReflection | kBsdfDiffuse; }
 

@@ -24,7 +24,7 @@ public:
         Vec3 s = tangent - n * glm::dot(n, tangent);
         const float len2 = glm::dot(s, s);
         if (!(len2 > 1e-12f)) return from_normal(n);
-        s /= std::sqrt(len2);
+        s *= 1.0f / std::sqrt(len2);  // one division instead of three
         return Frame(s, glm::cross(n, s), n);
     }
 

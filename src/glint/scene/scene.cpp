@@ -3,10 +3,14 @@
 namespace glint {
 
 std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
+    // Filled where it is returned (one named result, so the compiler builds it in the
+    // caller's storage): copying a freshly written SurfaceInteraction reads it back in wider
+    // pieces than it was stored in, which stalls the CPU at every hit.
+    std::optional<SurfaceInteraction> result;
     const std::optional<HitRecord> hit = m_accel.intersect(ray);
-    if (!hit) return std::nullopt;
+    if (!hit) return result;
     const WorldEntry& entry = m_world[hit->top_geometry];
-    SurfaceInteraction si;
+    SurfaceInteraction& si = result.emplace();
     if (hit->instanced()) {
         const Geometry& geometry = m_group_geometry[entry.group][hit->local_geometry];
         const Transform to_local = entry.to_world.inverse();
@@ -30,7 +34,7 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
     si.t = hit->t;
     si.wo = -glm::normalize(ray.direction);
     si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
-    return si;
+    return result;
 }
 
 }  // namespace glint
