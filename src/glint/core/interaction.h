@@ -93,12 +93,9 @@ inline void respawn_ray(Ray& ray, const SurfaceInteraction& si, const Vec3& dire
     ray.has_differentials = false;
 }
 
-// A ray from the surface towards `target` that stops just short of it: used for shadow
-// rays, so the surface at `target` (a light) does not occlude itself.
-inline Ray spawn_ray_to(const SurfaceInteraction& si, const Vec3& target) {
-    const Vec3 origin = offset_ray_origin(si.p, si.ng, target - si.p);
-    const Vec3 d = target - origin;
-    return Ray{origin, d, 0.0f, 1.0f - 1e-4f};
-}
+// Shadow rays run from the offset origin towards a target point and stop this fraction of
+// the way, so the surface at the target (a light) does not occlude itself. See
+// Scene::occluded.
+constexpr float kShadowRayEnd = 1.0f - 1e-4f;
 
 }  // namespace glint

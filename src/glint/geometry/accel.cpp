@@ -97,17 +97,21 @@ std::optional<HitRecord> Accel::intersect(const Ray& ray) const {
 }
 
 bool Accel::occluded(const Ray& ray) const {
+    return occluded(ray.origin, ray.direction, ray.t_min, ray.t_max);
+}
+
+bool Accel::occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const {
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
     RTCRay r;
-    r.org_x = ray.origin.x;
-    r.org_y = ray.origin.y;
-    r.org_z = ray.origin.z;
-    r.dir_x = ray.direction.x;
-    r.dir_y = ray.direction.y;
-    r.dir_z = ray.direction.z;
-    r.tnear = ray.t_min;
-    r.tfar = ray.t_max;
+    r.org_x = origin.x;
+    r.org_y = origin.y;
+    r.org_z = origin.z;
+    r.dir_x = direction.x;
+    r.dir_y = direction.y;
+    r.dir_z = direction.z;
+    r.tnear = t_min;
+    r.tfar = t_max;
     r.time = 0.0f;
     r.mask = 0xffffffffu;
     r.id = 0;

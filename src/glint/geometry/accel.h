@@ -28,6 +28,9 @@ public:
 
     std::optional<HitRecord> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
+    // The same for a segment given by its parts, for shadow rays, which need no Ray (and so
+    // no differentials) built and copied.
+    bool occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const;
 
     static const char* embree_version();
 

@@ -19,7 +19,7 @@ inline Spectrum sample_one_light(const Scene& scene, const SurfaceInteraction& s
     const Spectrum f = bsdf.eval(si.to_local(si.wo), wi) * abs_cos_theta(wi);
     if (f.is_black()) return Spectrum(0.0f);
     ++rays;
-    if (scene.occluded(spawn_ray_to(si, ls->p))) return Spectrum(0.0f);
+    if (scene.occluded(si, ls->p)) return Spectrum(0.0f);
     return f * ls->L / (choice.pmf * ls->pdf);
 }
 

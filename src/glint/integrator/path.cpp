@@ -26,7 +26,7 @@ Spectrum sample_direct(const Scene& scene, const SurfaceInteraction& si, const B
     const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
     if (f.is_black()) return Spectrum(0.0f);
     ++counter.rays;
-    if (scene.occluded(spawn_ray_to(si, ls->p))) return Spectrum(0.0f);
+    if (scene.occluded(si, ls->p)) return Spectrum(0.0f);
     const float light_pdf = choice.pmf * ls->pdf;
     if (ls->is_delta || !use_mis) return f * ls->L / light_pdf;
     const float weight = power_heuristic(light_pdf, bsdf.pdf(wo_local, wi_local));

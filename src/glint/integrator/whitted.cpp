@@ -1,6 +1,6 @@
 #include <glint/core/sampler.h>
-#include <glint/integrator/shading.h>
 #include <glint/integrator/photon.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/whitted.h>
 #include <glint/material/material.h>
 
@@ -14,7 +14,9 @@ namespace {
 
 constexpr int kDefaultMaxDepth = 10;
 
-float fract(float x) { return x - std::floor(x); }
+float fract(float x) {
+    return x - std::floor(x);
+}
 
 struct ShadowSample {
     Spectrum contribution;  // unoccluded f L cos / pdf
@@ -56,7 +58,8 @@ std::array<int, 4> extreme_samples(const std::vector<ShadowSample>& samples, con
 }  // namespace
 
 WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings)
-    : TileIntegrator(settings), m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
+    : TileIntegrator(settings),
+      m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
 
 RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     uint64_t photon_rays = 0;
@@ -66,7 +69,8 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
     }
     RenderStats stats = TileIntegrator::render(scene, film, progress);
     stats.rays += photon_rays;
-    if (m_settings.caustics) stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));
+    if (m_settings.caustics)
+        stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));
     return stats;
 }
 
@@ -75,8 +79,9 @@ Spectrum WhittedIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
     return trace(ray, scene, sampler, arena, counter, aov, 0);
 }
 
-Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
-                                  RayCounter& counter, AovSample* aov, int depth) const {
+Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& sampler,
+                                  Arena& arena, RayCounter& counter, AovSample* aov,
+                                  int depth) const {
     ++counter.rays;
     std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
@@ -98,7 +103,8 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
             L += direct(scene, si, *bsdf, sampler, counter);
             L += m_settings.ambient * si.material->albedo(si);
             if (m_caustics.size() > 0) {
-                L += radiance_estimate(m_caustics, si, *bsdf, m_settings.photon_neighbours, m_caustic_radius2);
+                L += radiance_estimate(m_caustics, si, *bsdf, m_settings.photon_neighbours,
+                                       m_caustic_radius2);
             }
         } else {
             // Follow every delta lobe (reflection, refraction) with its exact weight.
@@ -109,8 +115,7 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
                 followed |= bs->flags & (kBsdfReflection | kBsdfTransmission);
                 const Vec3 wi = si.to_world(bs->wi);
                 const Spectrum weight = bs->f * abs_cos_theta(bs->wi);
-                const Ray next =
-                    spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta);
+                const Ray next = spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta);
                 L += weight * trace(next, scene, sampler, arena, counter, nullptr, depth + 1);
             }
         }
@@ -123,8 +128,8 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
     return L;
 }
 
-Spectrum WhittedIntegrator::direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
-                                   Sampler& sampler, RayCounter& counter) const {
+Spectrum WhittedIntegrator::direct(const Scene& scene, const SurfaceInteraction& si,
+                                   const Bsdf& bsdf, Sampler& sampler, RayCounter& counter) const {
     const Vec3 wo_local = si.to_local(si.wo);
     Spectrum L(0.0f);
     for (const auto& light : scene.lights()) {
@@ -140,7 +145,7 @@ Spectrum WhittedIntegrator::direct(const Scene& scene, const SurfaceInteraction&
         const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
         if (f.is_black()) continue;
         ++counter.rays;
-        if (!scene.occluded(spawn_ray_to(si, ls->p))) L += f * ls->L / ls->pdf;
+        if (!scene.occluded(si, ls->p)) L += f * ls->L / ls->pdf;
     }
     return L;
 }
@@ -154,7 +159,8 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
     thread_local std::vector<ShadowSample> samples;
     samples.assign(count, ShadowSample{});
     for (int k = 0; k < count; ++k) {
-        const Vec2 u(fract((k % n + 0.5f) / n + rotation.x), fract((k / n + 0.5f) / n + rotation.y));
+        const Vec2 u(fract((k % n + 0.5f) / n + rotation.x),
+                     fract((k / n + 0.5f) / n + rotation.y));
         const float u_select = fract((k + 0.5f) / count + rotation.x * rotation.y);
         const std::optional<LightSample> ls = light.sample_li(si.p, u, u_select);
         if (!ls) continue;
@@ -167,7 +173,7 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
     auto visible = [&](int k) {
         if (samples[k].visible < 0) {
             ++counter.rays;
-            samples[k].visible = scene.occluded(spawn_ray_to(si, samples[k].target)) ? 0 : 1;
+            samples[k].visible = scene.occluded(si, samples[k].target) ? 0 : 1;
         }
         return samples[k].visible == 1;
     };

@@ -26,6 +26,12 @@ class Scene {
 public:
     std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const { return m_accel.occluded(ray); }
+    // Whether anything blocks the shadow ray from `si` (its origin offset as spawn_ray's)
+    // to just short of `target`.
+    bool occluded(const SurfaceInteraction& si, const Vec3& target) const {
+        const Vec3 origin = offset_ray_origin(si.p, si.ng, target - si.p);
+        return m_accel.occluded(origin, target - origin, 0.0f, kShadowRayEnd);
+    }
 
     const Camera& camera() const { return *m_camera; }
     const std::vector<std::unique_ptr<Light>>& lights() const { return m_lights; }
