@@ -66,6 +66,24 @@ TEST(Sampler, UnknownNameThrows) {
     EXPECT_THROW(make_sampler("sobolx", 4, 0), Error);
 }
 
+namespace {
+
+// The (0,2)-net property of a power-of-two number of points: elementary intervals of shape
+// 2^-a x 2^-(k-a) each hold exactly one point.
+void expect_one_point_per_elementary_interval(const std::vector<Vec2>& points) {
+    const int count = static_cast<int>(points.size());
+    const int k = static_cast<int>(std::log2(count));
+    for (int a = 0; a <= k; ++a) {
+        const int nx = 1 << a, ny = 1 << (k - a);
+        std::vector<int> hits(count, 0);
+        for (const Vec2& p : points)
+            ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
+        for (int h : hits) EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
+    }
+}
+
+}  // namespace
+
 // Owen-scrambled Sobol: every power-of-two prefix of a pixel's samples is stratified in
 // each dimension and in each pair's elementary intervals (the (0,2)-sequence property),
 // so adaptive sampling can stop a pixel after any such prefix.
@@ -78,18 +96,7 @@ TEST(Sampler, SobolPrefixesAreStratified) {
             s->start_pixel_sample(Vec2i(7, 3), i);
             for (int d = 0; d < dims / 2; ++d) points[d].push_back(s->get_2d());
         }
-        for (const auto& pair : points) {
-            // Elementary intervals of shape 2^-a x 2^-(k-a) each hold exactly one point.
-            const int k = static_cast<int>(std::log2(count));
-            for (int a = 0; a <= k; ++a) {
-                const int nx = 1 << a, ny = 1 << (k - a);
-                std::vector<int> hits(count, 0);
-                for (const Vec2& p : pair)
-                    ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
-                for (int h : hits)
-                    EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
-            }
-        }
+        for (const auto& pair : points) expect_one_point_per_elementary_interval(pair);
     }
 }
 
@@ -128,17 +135,7 @@ TEST(Sampler, SobolGroupsKeepEveryDimensionStratified) {
             for (float v : values) ++hits[static_cast<int>(v * count)];
             for (int h : hits) EXPECT_EQ(h, 1) << count << " samples";
         }
-        const int k = static_cast<int>(std::log2(count));
-        for (const auto& pair : twos) {
-            for (int a = 0; a <= k; ++a) {
-                const int nx = 1 << a, ny = 1 << (k - a);
-                std::vector<int> hits(count, 0);
-                for (const Vec2& p : pair)
-                    ++hits[static_cast<int>(p.y * ny) * nx + static_cast<int>(p.x * nx)];
-                for (int h : hits)
-                    EXPECT_EQ(h, 1) << count << " samples, intervals " << nx << "x" << ny;
-            }
-        }
+        for (const auto& pair : twos) expect_one_point_per_elementary_interval(pair);
     }
 }
 

@@ -220,10 +220,9 @@ public:
     void start_pixel_sample(Vec2i pixel, int index) override {
         // A pixel's samples are taken one after another, and the group keys depend only on
         // (seed, pixel, group): they are hashed once per pixel, not per sample.
-        if (!m_keys_valid || pixel != m_key_pixel) {
+        if (pixel != m_key_pixel) {
             m_pixel_key = pixel_sample_key(m_seed, pixel, 0);
             m_key_pixel = pixel;
-            m_keys_valid = true;
             m_keys_cached = 0;
         }
         m_reversed_index = reverse_bits(static_cast<uint32_t>(index));
@@ -277,8 +276,7 @@ private:
 
     const SobolTables* m_tables;
     uint64_t m_pixel_key = 0;
-    Vec2i m_key_pixel{0, 0};
-    bool m_keys_valid = false;
+    Vec2i m_key_pixel{-1, -1};   // no pixel yet: film pixels are never negative
     uint32_t m_keys_cached = 0;  // m_keys[0, m_keys_cached) hold this pixel's first keys
     std::array<uint32_t, kCachedKeys> m_keys{};
     uint32_t m_reversed_index = 0;
