@@ -161,6 +161,7 @@ int run_render(const RenderOptions& options) {
                    "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
                    settings.width, settings.height, settings.spp, threads, stats.seconds,
                    stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
+        fmt::print(stderr, "{} samples and {} rays in all\n", stats.samples, stats.rays);
         for (const std::string& path : settings.outputs) fmt::print(stderr, "wrote {}\n", path);
     }
     if (film.non_finite_samples() > 0) {
