@@ -47,7 +47,7 @@ inclusive() {
         grep -E "$2" | awk '{ gsub(",", "", $1); sum += $1 } END { printf "%.0f\n", sum }'
 }
 # Embree's entry points for ray queries (single rays and packets).
-embree_re='(rtcIntersect|rtcOccluded)(1|4|8|16|1M|1Mp|NM|NM)? \['
+embree_re='(rtcIntersect|rtcOccluded)(1|4|8|16|1M|1Mp|NM|NMp) \['
 
 valgrind --tool=callgrind --callgrind-out-file="$tmp/render.out" "$BUILD_DIR/glint" render \
     "$SCENE" --res "$RES" --spp "$SPP" --threads 1 -o "$tmp/out.exr" 2>"$tmp/render.log" \
