@@ -1,14 +1,13 @@
 #include <glint/core/error.h>
 #include <glint/geometry/sphere.h>
+#include <glint/geometry/user_geometry.h>
 #include <glint/math/warp.h>
 
 namespace glint {
 namespace {
 
 void sphere_bounds(const RTCBoundsFunctionArguments* args) {
-    const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
-    const Bounds3 b = sphere->bounds();
-    *args->bounds_o = RTCBounds{b.min.x, b.min.y, b.min.z, 0.0f, b.max.x, b.max.y, b.max.z, 0.0f};
+    *args->bounds_o = to_embree_bounds(static_cast<const Sphere*>(args->geometryUserPtr)->bounds());
 }
 
 void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -18,18 +17,13 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
-        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i),
-                     RTCRayN_org_z(rays, n, i));
-        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i),
-                     RTCRayN_dir_z(rays, n, i));
+        const Ray ray = ray_from_packet(rays, n, i);
         float t0, t1;
-        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
-        const float t_near = RTCRayN_tnear(rays, n, i);
-        float& t_far = RTCRayN_tfar(rays, n, i);
-        const float t = t0 > t_near ? t0 : t1;
-        if (!(t > t_near && t < t_far)) continue;
-        t_far = t;
-        const Vec3 p = o + t * d;
+        if (!sphere->intersect_interval(ray.origin, ray.direction, t0, t1)) continue;
+        const float t = t0 > ray.t_min ? t0 : t1;
+        if (!(t > ray.t_min && t < ray.t_max)) continue;
+        RTCRayN_tfar(rays, n, i) = t;
+        const Vec3 p = ray.at(t);
         RTCHitN_Ng_x(hits, n, i) = p.x;
         RTCHitN_Ng_y(hits, n, i) = p.y;
         RTCHitN_Ng_z(hits, n, i) = p.z;
@@ -47,16 +41,11 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
-        const Vec3 o(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i),
-                     RTCRayN_org_z(rays, n, i));
-        const Vec3 d(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i),
-                     RTCRayN_dir_z(rays, n, i));
+        const Ray ray = ray_from_packet(rays, n, i);
         float t0, t1;
-        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
-        const float t_near = RTCRayN_tnear(rays, n, i);
-        float& t_far = RTCRayN_tfar(rays, n, i);
-        const bool hit = (t0 > t_near && t0 < t_far) || (t1 > t_near && t1 < t_far);
-        if (hit) t_far = -kInfinity;  // Embree's convention for "occluded"
+        if (!sphere->intersect_interval(ray.origin, ray.direction, t0, t1)) continue;
+        const bool hit = (t0 > ray.t_min && t0 < ray.t_max) || (t1 > ray.t_min && t1 < ray.t_max);
+        if (hit) RTCRayN_tfar(rays, n, i) = -kInfinity;  // Embree's convention for "occluded"
     }
 }
 
@@ -103,14 +92,7 @@ bool Sphere::intersect_interval(const Vec3& origin, const Vec3& direction, float
 }
 
 RTCGeometry Sphere::create_embree_geometry(RTCDevice device) const {
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, 1);
-    rtcSetGeometryUserData(geometry, const_cast<Sphere*>(this));
-    rtcSetGeometryBoundsFunction(geometry, sphere_bounds, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, sphere_intersect);
-    rtcSetGeometryOccludedFunction(geometry, sphere_occluded);
-    rtcCommitGeometry(geometry);
-    return geometry;
+    return make_user_geometry(device, *this, sphere_bounds, sphere_intersect, sphere_occluded);
 }
 
 void Sphere::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {

@@ -1,5 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/geometry/csg/solid_shape.h>
+#include <glint/geometry/user_geometry.h>
 
 #include <fmt/format.h>
 
@@ -11,20 +12,9 @@ IntervalScratch& thread_scratch() {
     return scratch;
 }
 
-Ray ray_from(RTCRayN* rays, unsigned n, unsigned i) {
-    Ray ray;
-    ray.origin =
-        Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    ray.direction =
-        Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
-    ray.t_min = RTCRayN_tnear(rays, n, i);
-    ray.t_max = RTCRayN_tfar(rays, n, i);
-    return ray;
-}
-
 void solid_bounds(const RTCBoundsFunctionArguments* args) {
-    const Bounds3 b = static_cast<const SolidShape*>(args->geometryUserPtr)->bounds();
-    *args->bounds_o = RTCBounds{b.min.x, b.min.y, b.min.z, 0.0f, b.max.x, b.max.y, b.max.z, 0.0f};
+    *args->bounds_o =
+        to_embree_bounds(static_cast<const SolidShape*>(args->geometryUserPtr)->bounds());
 }
 
 void solid_intersect(const RTCIntersectFunctionNArguments* args) {
@@ -33,7 +23,8 @@ void solid_intersect(const RTCIntersectFunctionNArguments* args) {
     RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        const std::optional<Crossing> crossing = shape->first_hit(ray_from(rays, args->N, i));
+        const std::optional<Crossing> crossing =
+            shape->first_hit(ray_from_packet(rays, args->N, i));
         if (!crossing) continue;
         RTCRayN_tfar(rays, args->N, i) = crossing->t;
         RTCHitN_Ng_x(hits, args->N, i) = crossing->normal.x;
@@ -52,7 +43,7 @@ void solid_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* shape = static_cast<const SolidShape*>(args->geometryUserPtr);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] != -1) continue;
-        if (shape->any_hit(ray_from(args->ray, args->N, i)))
+        if (shape->any_hit(ray_from_packet(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
     }
 }
@@ -87,14 +78,7 @@ bool SolidShape::any_hit(const Ray& ray) const {
 }
 
 RTCGeometry SolidShape::create_embree_geometry(RTCDevice device) const {
-    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(geometry, 1);
-    rtcSetGeometryUserData(geometry, const_cast<SolidShape*>(this));
-    rtcSetGeometryBoundsFunction(geometry, solid_bounds, nullptr);
-    rtcSetGeometryIntersectFunction(geometry, solid_intersect);
-    rtcSetGeometryOccludedFunction(geometry, solid_occluded);
-    rtcCommitGeometry(geometry);
-    return geometry;
+    return make_user_geometry(device, *this, solid_bounds, solid_intersect, solid_occluded);
 }
 
 void SolidShape::fill_interaction(const Ray& ray, const HitRecord& hit,

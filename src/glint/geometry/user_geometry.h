@@ -1,0 +1,42 @@
+#pragma once
+// What every analytic shape (sphere, CSG solid) needs to live in Embree as user geometry:
+// one primitive whose bounds, intersection and occlusion are callbacks on the shape, and
+// the reading of Embree's ray packets (RTCRayN) inside those callbacks.
+#include <glint/core/ray.h>
+#include <glint/math/bounds.h>
+
+#include <embree3/rtcore.h>
+
+namespace glint {
+
+// Ray i of an n-wide Embree packet, with its current [tnear, tfar].
+inline Ray ray_from_packet(RTCRayN* rays, unsigned n, unsigned i) {
+    Ray ray;
+    ray.origin =
+        Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+    ray.direction =
+        Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    ray.t_min = RTCRayN_tnear(rays, n, i);
+    ray.t_max = RTCRayN_tfar(rays, n, i);
+    return ray;
+}
+
+inline RTCBounds to_embree_bounds(const Bounds3& b) {
+    return RTCBounds{b.min.x, b.min.y, b.min.z, 0.0f, b.max.x, b.max.y, b.max.z, 0.0f};
+}
+
+// A committed user geometry of one primitive, whose callbacks get `shape` as user data.
+template <typename ShapeType>
+RTCGeometry make_user_geometry(RTCDevice device, const ShapeType& shape, RTCBoundsFunction bounds,
+                               RTCIntersectFunctionN intersect, RTCOccludedFunctionN occluded) {
+    RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(geometry, 1);
+    rtcSetGeometryUserData(geometry, const_cast<ShapeType*>(&shape));
+    rtcSetGeometryBoundsFunction(geometry, bounds, nullptr);
+    rtcSetGeometryIntersectFunction(geometry, intersect);
+    rtcSetGeometryOccludedFunction(geometry, occluded);
+    rtcCommitGeometry(geometry);
+    return geometry;
+}
+
+}  // namespace glint
