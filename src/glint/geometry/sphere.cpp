@@ -17,13 +17,16 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
-        const Ray ray = ray_from_packet(rays, n, i);
+        // Only the parts the test needs: a whole Ray would also clear its differentials.
+        const Vec3 o = packet_origin(rays, n, i), d = packet_direction(rays, n, i);
         float t0, t1;
-        if (!sphere->intersect_interval(ray.origin, ray.direction, t0, t1)) continue;
-        const float t = t0 > ray.t_min ? t0 : t1;
-        if (!(t > ray.t_min && t < ray.t_max)) continue;
-        RTCRayN_tfar(rays, n, i) = t;
-        const Vec3 p = ray.at(t);
+        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
+        const float t_near = RTCRayN_tnear(rays, n, i);
+        float& t_far = RTCRayN_tfar(rays, n, i);
+        const float t = t0 > t_near ? t0 : t1;
+        if (!(t > t_near && t < t_far)) continue;
+        t_far = t;
+        const Vec3 p = o + t * d;
         RTCHitN_Ng_x(hits, n, i) = p.x;
         RTCHitN_Ng_y(hits, n, i) = p.y;
         RTCHitN_Ng_z(hits, n, i) = p.z;
@@ -41,11 +44,13 @@ void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const unsigned n = args->N;
     for (unsigned i = 0; i < n; ++i) {
         if (args->valid[i] != -1) continue;
-        const Ray ray = ray_from_packet(rays, n, i);
+        const Vec3 o = packet_origin(rays, n, i), d = packet_direction(rays, n, i);
         float t0, t1;
-        if (!sphere->intersect_interval(ray.origin, ray.direction, t0, t1)) continue;
-        const bool hit = (t0 > ray.t_min && t0 < ray.t_max) || (t1 > ray.t_min && t1 < ray.t_max);
-        if (hit) RTCRayN_tfar(rays, n, i) = -kInfinity;  // Embree's convention for "occluded"
+        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
+        const float t_near = RTCRayN_tnear(rays, n, i);
+        float& t_far = RTCRayN_tfar(rays, n, i);
+        const bool hit = (t0 > t_near && t0 < t_far) || (t1 > t_near && t1 < t_far);
+        if (hit) t_far = -kInfinity;  // Embree's convention for "occluded"
     }
 }
 

@@ -9,13 +9,19 @@
 
 namespace glint {
 
+// Origin and direction of ray i of an n-wide Embree packet.
+inline Vec3 packet_origin(RTCRayN* rays, unsigned n, unsigned i) {
+    return Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
+}
+inline Vec3 packet_direction(RTCRayN* rays, unsigned n, unsigned i) {
+    return Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+}
+
 // Ray i of an n-wide Embree packet, with its current [tnear, tfar].
 inline Ray ray_from_packet(RTCRayN* rays, unsigned n, unsigned i) {
     Ray ray;
-    ray.origin =
-        Vec3(RTCRayN_org_x(rays, n, i), RTCRayN_org_y(rays, n, i), RTCRayN_org_z(rays, n, i));
-    ray.direction =
-        Vec3(RTCRayN_dir_x(rays, n, i), RTCRayN_dir_y(rays, n, i), RTCRayN_dir_z(rays, n, i));
+    ray.origin = packet_origin(rays, n, i);
+    ray.direction = packet_direction(rays, n, i);
     ray.t_min = RTCRayN_tnear(rays, n, i);
     ray.t_max = RTCRayN_tfar(rays, n, i);
     return ray;
