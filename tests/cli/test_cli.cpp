@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <thread>
 
 using namespace glint;
@@ -158,6 +159,19 @@ TEST_F(CliTest, ProgressAndSummaryGoToStderr) {
     ASSERT_EQ(result.exit_code, 0) << result.output;
     EXPECT_NE(result.output.find("samples/s"), std::string::npos) << result.output;
     EXPECT_NE(result.output.find("rays/s"), std::string::npos) << result.output;
+}
+
+// The exact totals line that bench/instructions.sh divides instruction counts by.
+TEST_F(CliTest, SummaryGivesExactSampleAndRayTotals) {
+    const auto result =
+        run_glint(fmt::format("render {}small.lua --res 8x6 --spp 3 -o {}", kScenes, out("t.exr")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    std::smatch totals;
+    ASSERT_TRUE(std::regex_search(result.output, totals,
+                                  std::regex(R"((\d+) samples and (\d+) rays in all)")))
+        << result.output;
+    EXPECT_EQ(std::stoull(totals[1]), 8u * 6u * 3u);
+    EXPECT_GE(std::stoull(totals[2]), 8u * 6u * 3u);  // at least one camera ray per sample
 }
 
 TEST_F(CliTest, InfoPrintsCounts) {
