@@ -59,6 +59,8 @@ if [[ -z "$totals" ]]; then
     exit 1
 fi
 read -r samples rays < <(awk '{ print $1, $4 }' <<<"$totals")
+# The tile loop: for the path tracers all of the render (photon mapping's passes that trace
+# photons are outside it and not counted).
 render_total=$(inclusive "$tmp/render.out" 'glint::TileIntegrator::render\(')
 render_embree=$(inclusive "$tmp/render.out" "$embree_re")
 
@@ -66,7 +68,9 @@ valgrind --tool=callgrind --callgrind-out-file="$tmp/bare.out" \
     "$BUILD_DIR/bench/glint_bench_embree" "$SCENE" --threads 1 --rays "$RAYS" >/dev/null 2>&1
 bare_total=$(inclusive "$tmp/bare.out" 'trace_chunk\(')
 bare_embree=$(inclusive "$tmp/bare.out" "$embree_re")
-bare_rays=$(awk -v r="$RAYS" 'BEGIN { printf "%.0f\n", r * 1.05 }')  # the loop adds a 5 % warm-up
+# trace_chunk also runs for the loop's untimed warm-up of min(rays / 20 + 1, 10^6) rays.
+bare_rays=$(awk -v r="$RAYS" 'BEGIN { r = int(r); w = int(r / 20) + 1; if (w > 1e6) w = 1e6;
+                                      printf "%.0f\n", r + w }')
 
 awk -v s="$samples" -v r="$rays" -v t="$render_total" -v e="$render_embree" \
     -v bt="$bare_total" -v be="$bare_embree" -v br="$bare_rays" -v scene="$SCENE" \
