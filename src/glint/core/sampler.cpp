@@ -119,6 +119,12 @@ private:
     Rng m_rng;
 };
 
+// Four 32-bit lanes (GCC/Clang vector extension; SSE2 on x86-64): a Sobol group's four
+// dimensions are scrambled together, which costs about what one of them costs alone.
+using U32x4 = uint32_t __attribute__((vector_size(16)));
+using I32x4 = int32_t __attribute__((vector_size(16)));
+using F32x4 = float __attribute__((vector_size(16)));
+
 uint32_t reverse_bits(uint32_t x) {
     x = __builtin_bswap32(x);  // bytes in one instruction; then the bits inside each byte
     x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
@@ -127,11 +133,23 @@ uint32_t reverse_bits(uint32_t x) {
     return x;
 }
 
+// reverse_bits lane by lane; SSE2 has no byte shuffle, so the bytes move by shifts too.
+U32x4 reverse_bits(U32x4 x) {
+    x = (x << 16) | (x >> 16);
+    x = ((x & 0x00ff00ffu) << 8) | ((x >> 8) & 0x00ff00ffu);
+    x = ((x & 0x0f0f0f0fu) << 4) | ((x >> 4) & 0x0f0f0f0fu);
+    x = ((x & 0x33333333u) << 2) | ((x >> 2) & 0x33333333u);
+    x = ((x & 0x55555555u) << 1) | ((x >> 1) & 0x55555555u);
+    return x;
+}
+
 // The Laine-Karras permutation (with Burley's constants): applied to bit-reversed values it
 // scrambles each bit depending only on the bits above it, i.e. a nested uniform (Owen)
 // scramble, which keeps the sequence's stratification (Burley 2020, "Practical Hash-based
 // Owen Scrambling"). The scramble of x is thus reverse_bits(laine_karras(reverse_bits(x))).
-uint32_t laine_karras(uint32_t x, uint32_t seed) {
+// One template for a single value and for four lanes, so both compute the same thing.
+template <typename Bits>
+Bits laine_karras(Bits x, Bits seed) {
     x += seed;
     x ^= x * 0x6c50b47cu;
     x ^= x * 0xb82f1e52u;
@@ -140,11 +158,12 @@ uint32_t laine_karras(uint32_t x, uint32_t seed) {
     return x;
 }
 
-// Sobol's dimensions 1 to 3 (dimension 0, the radical inverse, needs no table), from their
-// primitive polynomials and initial direction numbers (Joe & Kuo 2008): the value for an
-// index is the XOR of the direction numbers of its set bits. Tabulated per byte of the
-// index, so any 32-bit index takes four lookups, and stored bit-reversed, because the
-// scramble works on reversed values (see SobolSampler).
+// Sobol's first four dimensions, from their primitive polynomials and initial direction
+// numbers (Joe & Kuo 2008; dimension 0 is the radical inverse): the value for an index is
+// the XOR of the direction numbers of its set bits. Tabulated per byte of the index, with
+// the four dimensions side by side in one vector, so any 32-bit index takes four lookups
+// for all of them; stored bit-reversed, because the scramble works on reversed values (see
+// SobolSampler). Reversed dimension 0 is the index itself.
 class SobolTables {
 public:
     static constexpr int kDimensions = 4;
@@ -157,42 +176,44 @@ public:
         };
         const Polynomial polynomials[kDimensions - 1] = {
             {1, 0, {1}}, {2, 1, {1, 3}}, {3, 1, {1, 3, 1}}};
+        uint32_t direction[kDimensions][32];
+        for (int k = 0; k < 32; ++k) direction[0][k] = 1u << (31 - k);
         for (int d = 1; d < kDimensions; ++d) {
             const Polynomial& poly = polynomials[d - 1];
-            uint32_t direction[32];
             for (int k = 0; k < 32; ++k) {
                 if (k < poly.degree) {
-                    direction[k] = poly.initial[k] << (31 - k);
+                    direction[d][k] = poly.initial[k] << (31 - k);
                     continue;
                 }
-                direction[k] =
-                    direction[k - poly.degree] ^ (direction[k - poly.degree] >> poly.degree);
+                direction[d][k] = direction[d][k - poly.degree] ^
+                                  (direction[d][k - poly.degree] >> poly.degree);
                 for (int j = 1; j < poly.degree; ++j) {
                     if ((poly.coefficients >> (poly.degree - 1 - j)) & 1u)
-                        direction[k] ^= direction[k - j];
+                        direction[d][k] ^= direction[d][k - j];
                 }
             }
-            for (int byte = 0; byte < 4; ++byte) {
-                for (uint32_t value = 0; value < 256; ++value) {
+        }
+        for (int byte = 0; byte < 4; ++byte) {
+            for (uint32_t value = 0; value < 256; ++value) {
+                for (int d = 0; d < kDimensions; ++d) {
                     uint32_t result = 0;
                     for (int bit = 0; bit < 8; ++bit) {
-                        if (value & (1u << bit)) result ^= direction[8 * byte + bit];
+                        if (value & (1u << bit)) result ^= direction[d][8 * byte + bit];
                     }
-                    m_table[d - 1][byte][value] = reverse_bits(result);
+                    m_table[byte][value][d] = reverse_bits(result);
                 }
             }
         }
     }
 
-    // reverse_bits of Sobol dimension `dimension` (1..3) for `index`.
-    uint32_t reversed(int dimension, uint32_t index) const {
-        const auto& table = m_table[dimension - 1];
-        return table[0][index & 0xff] ^ table[1][(index >> 8) & 0xff] ^
-               table[2][(index >> 16) & 0xff] ^ table[3][index >> 24];
+    // reverse_bits of Sobol dimensions 0 to 3 for `index`.
+    U32x4 reversed(uint32_t index) const {
+        return m_table[0][index & 0xff] ^ m_table[1][(index >> 8) & 0xff] ^
+               m_table[2][(index >> 16) & 0xff] ^ m_table[3][index >> 24];
     }
 
 private:
-    uint32_t m_table[kDimensions - 1][4][256];
+    U32x4 m_table[4][256];
 };
 
 const SobolTables& sobol_tables() {
@@ -200,19 +221,14 @@ const SobolTables& sobol_tables() {
     return tables;
 }
 
-// bits >> 8 is below 2^24, so the result is exact and at most 1 - 2^-24.
-float to_unit_float(uint32_t bits) {
-    return static_cast<float>(bits >> 8) * 0x1p-24f;
-}
-
 // Owen-scrambled Sobol, "padded" in groups of four dimensions: each group is Sobol's first
 // four dimensions with its own shuffle of the sample index and its own scramble, keyed by
 // (seed, pixel, group) (Burley 2020). A 2D request always starts a group, so it gets the
 // first two dimensions, a (0,2)-sequence; 1D requests take the group's next free dimension,
 // each a (0,1)-sequence. An integrator that asks for a 2D and two 1D values per step (the
-// light sample, then the BSDF sample with its lobe choice and roulette) thus pays for one
-// index shuffle per step instead of one per request. Any prefix of a pixel's samples is
-// well stratified, which adaptive sampling relies on.
+// light sample, then the BSDF sample with its lobe choice and roulette) thus uses a whole
+// group per step, and a group's four values are computed together, in vector lanes. Any
+// prefix of a pixel's samples is well stratified, which adaptive sampling relies on.
 class SobolSampler final : public Sampler {
 public:
     SobolSampler(int spp, uint64_t seed) : Sampler(spp, seed), m_tables(&sobol_tables()) {}
@@ -232,13 +248,13 @@ public:
 
     float get_1d() override {
         if (m_slot == SobolTables::kDimensions) open_group();
-        return to_unit_float(coordinate(m_slot++));
+        return m_values[m_slot++];
     }
 
     Vec2 get_2d() override {
         open_group();
         m_slot = 2;
-        return Vec2(to_unit_float(coordinate(0)), to_unit_float(coordinate(1)));
+        return Vec2(m_values[0], m_values[1]);
     }
 
     std::unique_ptr<Sampler> clone() const override {
@@ -248,20 +264,18 @@ public:
 private:
     static constexpr uint32_t kCachedKeys = 32;  // deeper groups are hashed each time
 
+    // Computes the next group's four values: Owen-scrambled Sobol dimensions 0 to 3 of the
+    // group's shuffled index, each scrambled with its own seed derived from the group key.
     void open_group() {
-        m_key = group_key(m_next_group++);
+        const uint32_t key = group_key(m_next_group++);
         // nested_uniform_scramble(index), with the index's reversal done once per sample.
-        m_shuffled = reverse_bits(laine_karras(m_reversed_index, m_key));
+        const uint32_t shuffled = reverse_bits(laine_karras(m_reversed_index, key));
+        const U32x4 seeds = key * kSeedMultipliers + U32x4{1, 2, 3, 4};
+        const U32x4 bits = reverse_bits(laine_karras(m_tables->reversed(shuffled), seeds));
+        // bits >> 8 is below 2^24, so the floats are exact and at most 1 - 2^-24.
+        m_values = __builtin_convertvector(reinterpret_cast<I32x4>(bits >> 8), F32x4) *
+                   0x1p-24f;
         m_slot = 0;
-    }
-
-    // Owen-scrambled Sobol dimension `d` of the shuffled index, as 32 bits. Dimension 0 is
-    // the bit reversal of the index, so its scramble reverse(LK(reverse(value))) is
-    // reverse(LK(index)); the other dimensions' tables are already reversed.
-    uint32_t coordinate(int d) const {
-        const uint32_t seed = m_key * kSeedMultipliers[d] + static_cast<uint32_t>(d) + 1u;
-        const uint32_t reversed_value = d == 0 ? m_shuffled : m_tables->reversed(d, m_shuffled);
-        return reverse_bits(laine_karras(reversed_value, seed));
     }
 
     uint32_t group_key(uint32_t group) {
@@ -271,19 +285,18 @@ private:
         return key;
     }
 
-    static constexpr uint32_t kSeedMultipliers[SobolTables::kDimensions] = {
-        0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u, 0x27d4eb2fu};
+    static constexpr U32x4 kSeedMultipliers = {0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u,
+                                               0x27d4eb2fu};
 
     const SobolTables* m_tables;
+    F32x4 m_values{};  // the open group's four values
     uint64_t m_pixel_key = 0;
     Vec2i m_key_pixel{-1, -1};   // no pixel yet: film pixels are never negative
     uint32_t m_keys_cached = 0;  // m_keys[0, m_keys_cached) hold this pixel's first keys
     std::array<uint32_t, kCachedKeys> m_keys{};
     uint32_t m_reversed_index = 0;
     uint32_t m_next_group = 0;
-    uint32_t m_key = 0;       // the open group's key
-    uint32_t m_shuffled = 0;  // the open group's shuffled sample index
-    int m_slot = 0;           // the open group's next free dimension
+    int m_slot = 0;  // the open group's next free dimension
 };
 
 }  // namespace
