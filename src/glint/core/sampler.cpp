@@ -185,8 +185,8 @@ public:
                     direction[d][k] = poly.initial[k] << (31 - k);
                     continue;
                 }
-                direction[d][k] = direction[d][k - poly.degree] ^
-                                  (direction[d][k - poly.degree] >> poly.degree);
+                direction[d][k] =
+                    direction[d][k - poly.degree] ^ (direction[d][k - poly.degree] >> poly.degree);
                 for (int j = 1; j < poly.degree; ++j) {
                     if ((poly.coefficients >> (poly.degree - 1 - j)) & 1u)
                         direction[d][k] ^= direction[d][k - j];
@@ -273,8 +273,7 @@ private:
         const U32x4 seeds = key * kSeedMultipliers + U32x4{1, 2, 3, 4};
         const U32x4 bits = reverse_bits(laine_karras(m_tables->reversed(shuffled), seeds));
         // bits >> 8 is below 2^24, so the floats are exact and at most 1 - 2^-24.
-        m_values = __builtin_convertvector(reinterpret_cast<I32x4>(bits >> 8), F32x4) *
-                   0x1p-24f;
+        m_values = __builtin_convertvector(reinterpret_cast<I32x4>(bits >> 8), F32x4) * 0x1p-24f;
         m_slot = 0;
     }
 
@@ -285,8 +284,7 @@ private:
         return key;
     }
 
-    static constexpr U32x4 kSeedMultipliers = {0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u,
-                                               0x27d4eb2fu};
+    static constexpr U32x4 kSeedMultipliers = {0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u, 0x27d4eb2fu};
 
     const SobolTables* m_tables;
     F32x4 m_values{};  // the open group's four values

@@ -120,6 +120,36 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
     data.indices = std::move(kept);
     m_data = std::move(data);
     m_placed_by_transform = !m_data.to_object.is_identity();
+    m_frames.reserve(m_data.indices.size() / 3);
+    for (size_t t = 0; t < m_data.indices.size(); t += 3) m_frames.push_back(triangle_frame(t));
+}
+
+TriangleMesh::TriangleFrame TriangleMesh::triangle_frame(size_t first_index) const {
+    const uint32_t* idx = &m_data.indices[first_index];
+    const Vec3& p0 = m_data.positions[idx[0]];
+    const Vec3& p1 = m_data.positions[idx[1]];
+    const Vec3& p2 = m_data.positions[idx[2]];
+    TriangleFrame frame;
+    frame.ng = glm::normalize(triangle_cross(p0, p1, p2));
+    Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
+    if (!m_data.uvs.empty()) {
+        uv0 = m_data.uvs[idx[0]];
+        uv1 = m_data.uvs[idx[1]];
+        uv2 = m_data.uvs[idx[2]];
+    }
+    const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
+    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
+    const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+    if (std::abs(det) > 1e-12f) {
+        const float inv = 1.0f / det;
+        frame.dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
+        frame.dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
+    } else {
+        const Frame f = Frame::from_normal(frame.ng);
+        frame.dpdu = f.s();
+        frame.dpdv = f.t();
+    }
+    return frame;
 }
 
 RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
@@ -144,31 +174,18 @@ RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
 void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
                                     SurfaceInteraction& si) const {
     const uint32_t* idx = &m_data.indices[3 * hit.primitive];
-    const Vec3& p0 = m_data.positions[idx[0]];
-    const Vec3& p1 = m_data.positions[idx[1]];
-    const Vec3& p2 = m_data.positions[idx[2]];
     const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
-    const Vec3 p = b0 * p0 + b1 * p1 + b2 * p2;
-    Vec3 ng = glm::normalize(triangle_cross(p0, p1, p2));
-
+    const Vec3 p = b0 * m_data.positions[idx[0]] + b1 * m_data.positions[idx[1]] +
+                   b2 * m_data.positions[idx[2]];
+    const TriangleFrame& frame = m_frames[hit.primitive];
+    Vec3 ng = frame.ng;
+    const Vec3& dpdu = frame.dpdu;
+    const Vec3& dpdv = frame.dpdv;
     Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
     if (!m_data.uvs.empty()) {
         uv0 = m_data.uvs[idx[0]];
         uv1 = m_data.uvs[idx[1]];
         uv2 = m_data.uvs[idx[2]];
-    }
-    const Vec2 duv02 = uv0 - uv2, duv12 = uv1 - uv2;
-    const Vec3 dp02 = p0 - p2, dp12 = p1 - p2;
-    const float det = duv02.x * duv12.y - duv02.y * duv12.x;
-    Vec3 dpdu, dpdv;
-    if (std::abs(det) > 1e-12f) {
-        const float inv = 1.0f / det;
-        dpdu = (duv12.y * dp02 - duv02.y * dp12) * inv;
-        dpdv = (duv02.x * dp12 - duv12.x * dp02) * inv;
-    } else {
-        const Frame f = Frame::from_normal(ng);
-        dpdu = f.s();
-        dpdv = f.t();
     }
 
     Vec3 ns = ng;
