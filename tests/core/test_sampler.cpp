@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/rng.h>
 #include <glint/core/sampler.h>
 
 #include <gtest/gtest.h>
@@ -158,4 +159,20 @@ TEST(Sampler, SobolGroupsAreDecorrelated) {
     const double correlation = cov / std::sqrt(var_a * var_b);
     // Independent uniforms: the sample correlation's standard deviation is 1/sqrt(n) = 0.0625.
     EXPECT_LT(std::abs(correlation), 0.25) << correlation;
+}
+
+// The SIMD path chosen for this CPU must give exactly the portable path's values, or images
+// would depend on the machine. Random inputs cover every byte of the table lookups.
+TEST(Sampler, SobolGroupPathsAgreeBitForBit) {
+    Rng rng(2024);
+    for (int i = 0; i < 100000; ++i) {
+        const uint32_t index = rng.next_u32(), key = rng.next_u32();
+        const detail::SobolGroupPaths paths = detail::sobol_group_by_each_path(index, key);
+        for (int d = 0; d < 4; ++d) {
+            ASSERT_EQ(paths.portable[d], paths.fastest[d])
+                << "index " << index << ", key " << key << ", dimension " << d;
+            ASSERT_GE(paths.portable[d], 0.0f);
+            ASSERT_LT(paths.portable[d], 1.0f);
+        }
+    }
 }

@@ -3,6 +3,8 @@
 // (seed, pixel, sample index, dimension) so an image is bit-identical for any thread count.
 #include <glint/math/vector.h>
 
+#include <array>
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -33,5 +35,16 @@ protected:
 // Names: "independent", "stratified", "sobol". Throws glint::Error for anything else.
 std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_pixel,
                                       uint64_t seed);
+
+namespace detail {
+// For tests: the Sobol sampler computes a group's four values with SIMD code chosen by
+// what the CPU supports; each path's values for one (shuffled index, group key), which
+// must agree bit for bit. `fastest` is the path the sampler uses on this CPU.
+struct SobolGroupPaths {
+    std::array<float, 4> portable;
+    std::array<float, 4> fastest;
+};
+SobolGroupPaths sobol_group_by_each_path(uint32_t shuffled_index, uint32_t group_key);
+}  // namespace detail
 
 }  // namespace glint
