@@ -174,6 +174,37 @@ TEST(Solids, ARayThroughTwoPartsSeesBothMaterials) {
     EXPECT_TRUE(is_blue(second->material->albedo(*second)));
 }
 
+// Integrators keep one SurfaceInteraction for a whole path and let each hit overwrite the
+// last: a CSG part index or a texture footprint must not carry over to the next surface.
+TEST(Solids, AReusedInteractionKeepsNothingFromThePreviousHit) {
+    const auto scene = build(std::string(kMaterials) + R"(
+        local a = glint.solid.box{ min = {0, -1, -1}, max = {1, 1, 1}, material = red }
+        local b = glint.solid.sphere{ center = {3, 0, 0}, radius = 1, material = blue }
+        glint.add(glint.union{ a, b })
+        glint.quad{ vertices = {{-4, 10, -1}, {-4, 10, 1}, {-2, 10, 1}, {-2, 10, -1}},
+                    material = green }
+    )");
+    SurfaceInteraction si;
+    ASSERT_TRUE(scene->intersect(Ray{Vec3(3, 5, 0), Vec3(0, -1, 0)}, si));
+    EXPECT_TRUE(is_blue(si.material->albedo(si)));
+    EXPECT_NE(si.part, 0);
+    si.set_footprint(Vec3(0.1f, 0, 0), Vec3(0, 0, 0.1f));
+    ASSERT_TRUE(scene->intersect(Ray{Vec3(-3, 0, 0), Vec3(0, 1, 0)}, si));
+    EXPECT_TRUE(is_green(si.material->albedo(si)));
+    EXPECT_EQ(si.part, 0);
+    EXPECT_EQ(si.dpdx, Vec3(0.0f));
+    EXPECT_EQ(si.dpdy, Vec3(0.0f));
+    EXPECT_EQ(si.dudx, 0.0f);
+    EXPECT_EQ(si.dvdy, 0.0f);
+    EXPECT_NEAR(si.p.y, 10.0f, 1e-4f);
+    // The reference form gives the same hit as the value form.
+    const auto value = scene->intersect(Ray{Vec3(-3, 0, 0), Vec3(0, 1, 0)});
+    ASSERT_TRUE(value.has_value());
+    EXPECT_EQ(value->p, si.p);
+    EXPECT_EQ(value->ng, si.ng);
+    EXPECT_FALSE(scene->intersect(Ray{Vec3(-3, 0, 0), Vec3(0, -1, 0)}, si));
+}
+
 // A CSG solid in a group placed twice is one prototype with two instances; both are hit,
 // with the right material per part and normals carried to the world.
 TEST(Solids, CsgInAGroupIsInstanced) {

@@ -15,14 +15,19 @@ class Material;
 class Light;
 
 struct SurfaceInteraction {
-    Vec3 p;         // world-space hit point
-    Vec3 p_object;  // the hit in the shape's own space (before its transform and placement)
-    Vec3 ng;        // geometric normal, unit length, pointing to the shape's outside
-    Frame shading;  // shading frame, normal on the same side as ng
-    Vec2 uv;
-    Vec3 dpdu, dpdv;
+    // Every member has an initialiser and the constructor is user-provided, so that
+    // `optional.emplace()` sets each member once: value-initialising an aggregate-like type
+    // first zeroes all ~200 bytes (a `rep stos`, twice per hit in Scene::intersect).
+    SurfaceInteraction() noexcept {}
+
+    Vec3 p{0.0f};         // world-space hit point
+    Vec3 p_object{0.0f};  // the hit in the shape's own space (before its transform and placement)
+    Vec3 ng{0.0f};        // geometric normal, unit length, pointing to the shape's outside
+    Frame shading;        // shading frame, normal on the same side as ng
+    Vec2 uv{0.0f};
+    Vec3 dpdu{0.0f}, dpdv{0.0f};
     float t = 0.0f;          // ray parameter of the hit
-    Vec3 wo;                 // direction towards the ray origin, unit length
+    Vec3 wo{0.0f};           // direction towards the ray origin, unit length
     bool front_face = true;  // the ray arrived on the side ng points to
     int part = 0;  // which part of the shape was hit (CSG primitives have their own materials)
     const Material* material = nullptr;

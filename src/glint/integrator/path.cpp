@@ -62,11 +62,11 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
     float bsdf_pdf = 0.0f;
     Vec3 previous_point(0.0f);  // where the last BSDF sample was taken, for MIS
     float eta_scale = 1.0f;
+    SurfaceInteraction si;  // each bounce's hit, written over the last one's
 
     for (int depth = 0;; ++depth) {
         ++counter.rays;
-        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
-        if (!hit) {
+        if (!scene.intersect(ray, si)) {
             const Spectrum escaped = scene.escaped_radiance(ray.direction);
             if (aov && depth == 0) *aov = AovSample{escaped, Vec3(0.0f), kInfinity};
             if (const Light* environment = scene.environment()) {
@@ -80,7 +80,6 @@ Spectrum PathIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& 
             }
             break;
         }
-        SurfaceInteraction& si = *hit;
 
         // Emission reached by BSDF sampling; light sampling already counted the rest of it.
         if (si.area_light) {

@@ -2,15 +2,14 @@
 
 namespace glint {
 
-std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
-    // Filled where it is returned (one named result, so the compiler builds it in the
-    // caller's storage): copying a freshly written SurfaceInteraction reads it back in wider
-    // pieces than it was stored in, which stalls the CPU at every hit.
-    std::optional<SurfaceInteraction> result;
+bool Scene::intersect(const Ray& ray, SurfaceInteraction& si) const {
     const std::optional<HitRecord> hit = m_accel.intersect(ray);
-    if (!hit) return result;
+    if (!hit) return false;
     const WorldEntry& entry = m_world[hit->top_geometry];
-    SurfaceInteraction& si = result.emplace();
+    // What the shapes may leave unset, reset here, since `si` may hold the previous hit.
+    si.part = 0;
+    si.dpdx = si.dpdy = Vec3(0.0f);
+    si.dudx = si.dvdx = si.dudy = si.dvdy = 0.0f;
     if (hit->instanced()) {
         const Geometry& geometry = m_group_geometry[entry.group][hit->local_geometry];
         const Transform to_local = entry.to_world.inverse();
@@ -34,7 +33,7 @@ std::optional<SurfaceInteraction> Scene::intersect(const Ray& ray) const {
     si.t = hit->t;
     si.wo = -glm::normalize(ray.direction);
     si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
-    return result;
+    return true;
 }
 
 }  // namespace glint

@@ -24,7 +24,16 @@ struct SceneStats {
 
 class Scene {
 public:
-    std::optional<SurfaceInteraction> intersect(const Ray& ray) const;
+    // The closest hit along `ray`, written into `si`; false on a miss (si is then left
+    // unspecified). Every field of `si` is written, so one SurfaceInteraction can serve a
+    // whole path, bounce after bounce: hot loops should use this form.
+    bool intersect(const Ray& ray, SurfaceInteraction& si) const;
+    // The same, as a value (a copy of ~200 bytes per hit): for code off the hot path.
+    std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
+        std::optional<SurfaceInteraction> result(std::in_place);
+        if (!intersect(ray, *result)) result.reset();
+        return result;
+    }
     bool occluded(const Ray& ray) const { return m_accel.occluded(ray); }
     // Whether anything blocks the shadow ray from `si` (its origin offset as spawn_ray's)
     // to just short of `target`.
