@@ -28,7 +28,7 @@ LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights) {
     if (!m_cdf.empty()) m_cdf.back() = 1.0f;
 }
 
-LightSampler::Choice LightSampler::sample(float u) const {
+LightSampler::Choice LightSampler::sample_among_several(float u) const {
     if (m_lights.empty()) return {};
     auto it = std::upper_bound(m_cdf.begin(), m_cdf.end(), u);
     size_t i = std::min<size_t>(it - m_cdf.begin(), m_lights.size() - 1);
