@@ -382,3 +382,48 @@ INSTANTIATE_TEST_SUITE_P(Scales, SelfIntersection, ::testing::Values(1e-3f, 1.0f
                              return info.index == 0 ? std::string("Milli")
                                                     : (info.index == 1 ? "Unit" : "TenThousand");
                          });
+
+// offset_ray_origin against the rule it implements (Wächter & Binder), written out axis by
+// axis: a few ulps along the normal, on the side the ray leaves by, or a fixed small step
+// near the origin, where ulps vanish. Random points of all magnitudes and signs, and the
+// edge cases: zero of either sign, the near-origin threshold, normals along the axes.
+TEST(SpawnRay, OffsetOriginFollowsThePerAxisRule) {
+    auto expected = [](const Vec3& p, const Vec3& ng, const Vec3& direction) {
+        const Vec3 n = glm::dot(ng, direction) < 0.0f ? -ng : ng;
+        Vec3 result;
+        for (int i = 0; i < 3; ++i) {
+            if (std::abs(p[i]) < 1.0f / 32.0f) {
+                result[i] = p[i] + n[i] / 65536.0f;
+                continue;
+            }
+            const int offset = static_cast<int>(256.0f * n[i]);
+            const int32_t bits = std::bit_cast<int32_t>(p[i]);
+            result[i] = std::bit_cast<float>(bits + (p[i] < 0.0f ? -offset : offset));
+        }
+        return result;
+    };
+    auto same_bits = [](const Vec3& a, const Vec3& b) {
+        for (int i = 0; i < 3; ++i) {
+            if (std::bit_cast<uint32_t>(a[i]) != std::bit_cast<uint32_t>(b[i])) return false;
+        }
+        return true;
+    };
+    Rng rng(99);
+    std::vector<Vec3> points = {Vec3(0.0f), Vec3(-0.0f), Vec3(1.0f / 32.0f, -1.0f / 32.0f, 0.03f),
+                                Vec3(-1e30f, 1e-30f, 5.0f)};
+    for (int i = 0; i < 20000; ++i) {
+        const float magnitude = std::pow(10.0f, 8.0f * rng.next_float() - 4.0f);
+        const Vec3 u(rng.next_float(), rng.next_float(), rng.next_float());
+        points.push_back(magnitude * (2.0f * u - Vec3(1.0f)));
+    }
+    for (size_t i = 0; i < points.size(); ++i) {
+        const Vec3 ng =
+            i % 5 == 0 ? Vec3(0, 0, 1)
+                       : warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+        const Vec3 direction =
+            warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+        const Vec3 got = offset_ray_origin(points[i], ng, direction);
+        ASSERT_TRUE(same_bits(got, expected(points[i], ng, direction)))
+            << "p = (" << points[i].x << ", " << points[i].y << ", " << points[i].z << ")";
+    }
+}

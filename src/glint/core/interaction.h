@@ -72,15 +72,25 @@ inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& directi
     constexpr float kOrigin = 1.0f / 32.0f;
     constexpr float kFloatScale = 1.0f / 65536.0f;
     constexpr float kIntScale = 256.0f;
+    // The three axes in the lanes of one SSE register (GCC/Clang vector extension): the
+    // same operations as axis by axis, so the same bits, in a third of the instructions.
+    using F32x4 = float __attribute__((vector_size(16)));
+    using I32x4 = int32_t __attribute__((vector_size(16)));
     const Vec3 n = glm::dot(ng, direction) < 0.0f ? -ng : ng;
-    Vec3 result;
-    for (int i = 0; i < 3; ++i) {
-        const int offset = static_cast<int>(kIntScale * n[i]);
-        const int32_t bits = std::bit_cast<int32_t>(p[i]);
-        const float moved = std::bit_cast<float>(bits + (p[i] < 0.0f ? -offset : offset));
-        result[i] = std::abs(p[i]) < kOrigin ? p[i] + kFloatScale * n[i] : moved;
-    }
-    return result;
+    const F32x4 pv = {p.x, p.y, p.z, 0.0f};
+    const F32x4 nv = {n.x, n.y, n.z, 0.0f};
+    // Move p by a few ulps away from the surface: add the offset to its bits, negated
+    // where p is negative, since a float's bits grow with its magnitude.
+    const I32x4 offset = __builtin_convertvector(kIntScale * nv, I32x4);
+    const I32x4 negative = pv < 0.0f;  // all ones where p < 0
+    const I32x4 moved = reinterpret_cast<I32x4>(pv) + ((offset ^ negative) - negative);
+    // Near the origin ulps are tiny, so there p moves by a fixed small distance instead.
+    // |p| < kOrigin on the bits: for magnitudes the order of the bits is that of the floats.
+    const I32x4 magnitude = reinterpret_cast<I32x4>(pv) & 0x7fffffff;
+    const I32x4 near_origin = magnitude < std::bit_cast<int32_t>(kOrigin);
+    const I32x4 nudged = reinterpret_cast<I32x4>(pv + kFloatScale * nv);
+    const F32x4 result = reinterpret_cast<F32x4>((nudged & near_origin) | (moved & ~near_origin));
+    return Vec3(result[0], result[1], result[2]);
 }
 
 inline Ray spawn_ray(const SurfaceInteraction& si, const Vec3& direction) {
