@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <array>
+#include <cstring>
 
 namespace glint {
 namespace {
@@ -23,7 +24,7 @@ public:
     void start_pixel_sample(Vec2i pixel, int index) override {
         m_rng.seed(pixel_sample_key(m_seed, pixel, index));
     }
-    float get_1d() override { return m_rng.next_float(); }
+    float next_1d() override { return m_rng.next_float(); }
     Vec2 get_2d() override {
         const float x = m_rng.next_float();
         return Vec2(x, m_rng.next_float());
@@ -84,7 +85,7 @@ public:
         m_rng.seed(pixel_sample_key(m_seed, pixel, index));
     }
 
-    float get_1d() override {
+    float next_1d() override {
         const uint32_t stratum = permute(m_index, m_spp, next_dimension_key());
         return (static_cast<float>(stratum) + jitter()) / static_cast<float>(m_spp);
     }
@@ -297,18 +298,13 @@ public:
         }
         m_reversed_index = reverse_bits(static_cast<uint32_t>(index));
         m_next_group = 0;
-        m_slot = SobolTables::kDimensions;  // no group open
-    }
-
-    float get_1d() override {
-        if (m_slot == SobolTables::kDimensions) open_group();
-        return m_values[m_slot++];
+        m_ahead_next = m_ahead_end = 0;  // no group open
     }
 
     Vec2 get_2d() override {
         open_group();
-        m_slot = 2;
-        return Vec2(m_values[0], m_values[1]);
+        m_ahead_next = 2;
+        return Vec2(m_ahead[0], m_ahead[1]);
     }
 
     std::unique_ptr<Sampler> clone() const override {
@@ -324,8 +320,18 @@ private:
         const uint32_t key = group_key(m_next_group++);
         // nested_uniform_scramble(index), with the index's reversal done once per sample.
         const uint32_t shuffled = reverse_bits(laine_karras(m_reversed_index, key));
-        m_values = m_scramble_group(*m_tables, shuffled, key);
-        m_slot = 0;
+        const F32x4 values = m_scramble_group(*m_tables, shuffled, key);
+        static_assert(sizeof(values) == sizeof(m_ahead));
+        std::memcpy(m_ahead, &values, sizeof(values));
+        m_ahead_next = 0;
+        m_ahead_end = SobolTables::kDimensions;
+    }
+
+    // Called when the open group is used up (or none is open): 1D values take the next
+    // group's dimensions in turn.
+    float next_1d() override {
+        open_group();
+        return m_ahead[m_ahead_next++];
     }
 
     uint32_t group_key(uint32_t group) {
@@ -339,14 +345,12 @@ private:
 
     const SobolTables* m_tables;
     ScrambleGroup m_scramble_group = scramble_group();
-    F32x4 m_values{};  // the open group's four values
     uint64_t m_pixel_key = 0;
     Vec2i m_key_pixel{-1, -1};   // no pixel yet: film pixels are never negative
     uint32_t m_keys_cached = 0;  // m_keys[0, m_keys_cached) hold this pixel's first keys
     std::array<uint32_t, kCachedKeys> m_keys{};
     uint32_t m_reversed_index = 0;
     uint32_t m_next_group = 0;
-    int m_slot = 0;  // the open group's next free dimension
 };
 
 }  // namespace
