@@ -122,6 +122,13 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
     m_placed_by_transform = !m_data.to_object.is_identity();
     m_frames.reserve(m_data.indices.size() / 3);
     for (size_t t = 0; t < m_data.indices.size(); t += 3) m_frames.push_back(triangle_frame(t));
+    if (m_data.normals.empty()) {
+        m_flat_shading.reserve(m_frames.size());
+        for (const TriangleFrame& frame : m_frames) {
+            const Frame shading = Frame::from_normal_tangent(frame.ng, frame.dpdu);
+            m_flat_shading.push_back({shading.s(), shading.t()});
+        }
+    }
 }
 
 TriangleMesh::TriangleFrame TriangleMesh::triangle_frame(size_t first_index) const {
@@ -188,8 +195,11 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
         uv2 = m_data.uvs[idx[2]];
     }
 
-    Vec3 ns = ng;
-    if (!m_data.normals.empty()) {
+    if (m_data.normals.empty()) {
+        const FlatShading& flat = m_flat_shading[hit.primitive];
+        si.shading = Frame(flat.s, flat.t, ng);
+    } else {
+        Vec3 ns = ng;
         const Vec3 interpolated =
             b0 * m_data.normals[idx[0]] + b1 * m_data.normals[idx[1]] + b2 * m_data.normals[idx[2]];
         const float len2 = glm::dot(interpolated, interpolated);
@@ -198,6 +208,7 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
             // The artist's normals define the outside when they disagree with the winding.
             if (glm::dot(ng, ns) < 0.0f) ng = -ng;
         }
+        si.shading = Frame::from_normal_tangent(ns, dpdu);
     }
     si.p = p;
     si.p_object = m_placed_by_transform ? m_data.to_object.point(p) : p;
@@ -205,7 +216,6 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
     si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
     si.dpdu = dpdu;
     si.dpdv = dpdv;
-    si.shading = Frame::from_normal_tangent(ns, dpdu);
 }
 
 std::unique_ptr<ShapeSampler> TriangleMesh::make_sampler(const Transform& to_world) const {

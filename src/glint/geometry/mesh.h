@@ -47,6 +47,12 @@ private:
     std::string m_name;
     MeshData m_data;
     std::vector<TriangleFrame> m_frames;  // one per triangle
+    // Without vertex normals the shading frame is constant over a triangle too: its two
+    // tangents (24 bytes per triangle, only for such meshes) around TriangleFrame::ng.
+    struct FlatShading {
+        Vec3 s, t;
+    };
+    std::vector<FlatShading> m_flat_shading;
     Bounds3 m_bounds;
     bool m_placed_by_transform = false;  // to_object is not the identity (checked once)
 };
