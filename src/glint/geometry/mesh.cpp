@@ -36,43 +36,49 @@ public:
             m_cumulative_area.push_back(total);
         }
         m_area = static_cast<float>(total);
+        m_inverse_area = 1.0f / m_area;
     }
 
     ShapeSample sample_area(const Vec2& u, float u_select) const override {
-        const double target = u_select * static_cast<double>(m_area);
-        auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
-        const size_t tri =
-            std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
-        const Vec3* v = &m_vertices[3 * tri];
-        const Vec2 b = warp::square_to_uniform_triangle(u);
-        return {(1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2], m_normals[tri], 1.0f / m_area};
+        const size_t tri = pick_triangle(u_select);
+        return {point_in(tri, u), m_normals[tri], m_inverse_area};
     }
 
     ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override {
-        const double target = u_select * static_cast<double>(m_area);
-        auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
-        const size_t tri =
-            std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
-        const Vec3* v = &m_vertices[3 * tri];
-        const Vec2 b = warp::square_to_uniform_triangle(u);
+        const size_t tri = pick_triangle(u_select);
         ShapeSample s;
-        s.p = (1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2];
+        s.p = point_in(tri, u);
         s.n = m_normals[tri];
-        s.pdf = area_to_solid_angle_pdf(1.0f / m_area, ref, s.p, s.n);
+        s.pdf = area_to_solid_angle_pdf(m_inverse_area, ref, s.p, s.n);
         return s;
     }
 
     float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override {
-        return area_to_solid_angle_pdf(1.0f / m_area, ref, p, n);
+        return area_to_solid_angle_pdf(m_inverse_area, ref, p, n);
     }
 
     float area() const override { return m_area; }
 
 private:
+    // A triangle chosen with probability proportional to its area.
+    size_t pick_triangle(float u_select) const {
+        const double target = u_select * static_cast<double>(m_area);
+        auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
+        return std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
+    }
+
+    // A point uniformly distributed over triangle `tri`.
+    Vec3 point_in(size_t tri, const Vec2& u) const {
+        const Vec3* v = &m_vertices[3 * tri];
+        const Vec2 b = warp::square_to_uniform_triangle(u);
+        return (1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2];
+    }
+
     std::vector<Vec3> m_vertices;
     std::vector<Vec3> m_normals;  // unit, per triangle, on the emitting side
     std::vector<double> m_cumulative_area;
     float m_area = 0.0f;
+    float m_inverse_area = 0.0f;  // the density per unit area
 };
 
 }  // namespace
