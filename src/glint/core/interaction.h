@@ -15,9 +15,9 @@ class Material;
 class Light;
 
 struct SurfaceInteraction {
-    // Every member has an initialiser and the constructor is user-provided, so that
-    // `optional.emplace()` sets each member once: value-initialising an aggregate-like type
-    // first zeroes all ~200 bytes (a `rep stos`, twice per hit in Scene::intersect).
+    // Every member has an initialiser and the constructor is user-provided, so that making
+    // one (a local, `optional::emplace()`) sets each member once: value-initialising a type
+    // with an implicit constructor first zeroes all ~200 bytes, with a slow `rep stos`.
     SurfaceInteraction() noexcept {}
 
     Vec3 p{0.0f};         // world-space hit point
@@ -73,7 +73,7 @@ inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& directi
     constexpr float kFloatScale = 1.0f / 65536.0f;
     constexpr float kIntScale = 256.0f;
     // The three axes in the lanes of one SSE register (GCC/Clang vector extension): the
-    // same operations as axis by axis, so the same bits, in a third of the instructions.
+    // same operations as axis by axis, so the same bits, in fewer instructions.
     using F32x4 = float __attribute__((vector_size(16)));
     using I32x4 = int32_t __attribute__((vector_size(16)));
     const Vec3 n = glm::dot(ng, direction) < 0.0f ? -ng : ng;

@@ -28,7 +28,7 @@ public:
     // unspecified). Every field of `si` is written, so one SurfaceInteraction can serve a
     // whole path, bounce after bounce: hot loops should use this form.
     bool intersect(const Ray& ray, SurfaceInteraction& si) const;
-    // The same, as a value (a copy of ~200 bytes per hit): for code off the hot path.
+    // The same, as a value: a fresh SurfaceInteraction (~200 bytes set up) per call.
     std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
         std::optional<SurfaceInteraction> result(std::in_place);
         if (!intersect(ray, *result)) result.reset();
