@@ -222,6 +222,34 @@ const SobolTables& sobol_tables() {
     return tables;
 }
 
+// The SSE4.1 path below uses GCC's generic vector shuffle, which Clang spells differently;
+// other compilers and CPUs take the portable path, with the same results.
+#if (defined(__x86_64__) || defined(__i386__)) && defined(__GNUC__) && !defined(__clang__)
+#define GLINT_SOBOL_SSE41 1
+#else
+#define GLINT_SOBOL_SSE41 0
+#endif
+
+// reverse_bits lane by lane with byte shuffles (SSSE3): reverse the bytes of each lane,
+// then the bits of each byte by looking up each nibble's reversal. Only inlined into the
+// SSE4.1 path, which enables the instruction.
+[[gnu::always_inline]] inline U32x4 reverse_bits_by_shuffles(U32x4 bits) {
+#if GLINT_SOBOL_SSE41
+    using U8x16 = uint8_t __attribute__((vector_size(16)));
+    constexpr U8x16 kByteSwap = {3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12};
+    constexpr U8x16 kReversedNibble = {0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe,
+                                       0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf};
+    const U8x16 bytes = __builtin_shuffle(reinterpret_cast<U8x16>(bits), kByteSwap);
+    const U8x16 low = bytes & 0x0f;
+    const U8x16 high = reinterpret_cast<U8x16>(reinterpret_cast<U32x4>(bytes) >> 4) & 0x0f;
+    const U8x16 reversed =
+        (__builtin_shuffle(kReversedNibble, low) << 4) | __builtin_shuffle(kReversedNibble, high);
+    return reinterpret_cast<U32x4>(reversed);
+#else
+    return reverse_bits(bits);
+#endif
+}
+
 // The four values of a Sobol group: Owen-scrambled Sobol dimensions 0 to 3 of the group's
 // shuffled index, each scrambled with its own seed derived from the group key. Compiled
 // twice (see scramble_group): for SSE2, which every x86-64 has, and for SSE4.1, whose
@@ -232,22 +260,7 @@ template <bool kSse41>
     constexpr U32x4 kSeedMultipliers = {0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u, 0x27d4eb2fu};
     const U32x4 seeds = key * kSeedMultipliers + U32x4{1, 2, 3, 4};
     U32x4 bits = laine_karras(tables.reversed(shuffled), seeds);
-    if constexpr (kSse41) {
-        // Reverse the bytes of each lane, then the bits of each byte by looking up each
-        // nibble's reversal: shuffles instead of shifts and masks.
-        using U8x16 = uint8_t __attribute__((vector_size(16)));
-        constexpr U8x16 kByteSwap = {3, 2, 1, 0, 7, 6, 5, 4, 11, 10, 9, 8, 15, 14, 13, 12};
-        constexpr U8x16 kReversedNibble = {0x0, 0x8, 0x4, 0xc, 0x2, 0xa, 0x6, 0xe,
-                                           0x1, 0x9, 0x5, 0xd, 0x3, 0xb, 0x7, 0xf};
-        const U8x16 bytes = __builtin_shuffle(reinterpret_cast<U8x16>(bits), kByteSwap);
-        const U8x16 low = bytes & 0x0f;
-        const U8x16 high = reinterpret_cast<U8x16>(reinterpret_cast<U32x4>(bytes) >> 4) & 0x0f;
-        const U8x16 reversed = (__builtin_shuffle(kReversedNibble, low) << 4) |
-                               __builtin_shuffle(kReversedNibble, high);
-        bits = reinterpret_cast<U32x4>(reversed);
-    } else {
-        bits = reverse_bits(bits);
-    }
+    bits = kSse41 ? reverse_bits_by_shuffles(bits) : reverse_bits(bits);
     // bits >> 8 is below 2^24, so the floats are exact and at most 1 - 2^-24.
     return __builtin_convertvector(reinterpret_cast<I32x4>(bits >> 8), F32x4) * 0x1p-24f;
 }
@@ -256,7 +269,7 @@ F32x4 scramble_group_sse2(const SobolTables& tables, uint32_t shuffled, uint32_t
     return scramble_group_with<false>(tables, shuffled, key);
 }
 
-#if defined(__x86_64__) || defined(__i386__)
+#if GLINT_SOBOL_SSE41
 [[gnu::target("sse4.1")]] F32x4 scramble_group_sse41(const SobolTables& tables, uint32_t shuffled,
                                                      uint32_t key) {
     return scramble_group_with<true>(tables, shuffled, key);
@@ -267,7 +280,7 @@ using ScrambleGroup = F32x4 (*)(const SobolTables&, uint32_t, uint32_t);
 
 // The fastest version this CPU runs, chosen once.
 ScrambleGroup scramble_group() {
-#if defined(__x86_64__) || defined(__i386__)
+#if GLINT_SOBOL_SSE41
     static const ScrambleGroup chosen =
         __builtin_cpu_supports("sse4.1") ? scramble_group_sse41 : scramble_group_sse2;
     return chosen;
@@ -340,8 +353,6 @@ private:
         if (group == m_keys_cached && group < kCachedKeys) m_keys[m_keys_cached++] = key;
         return key;
     }
-
-    static constexpr U32x4 kSeedMultipliers = {0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u, 0x27d4eb2fu};
 
     const SobolTables* m_tables;
     ScrambleGroup m_scramble_group = scramble_group();
