@@ -11,7 +11,7 @@
 # It counts one render of SCENE on one thread and the bare Embree loop on the same scene,
 # and prints instructions per ray for each, and their ratio, which is roughly what
 # bench/run's "render rays/s / bare rays/s" would be if both ran at the same IPC.
-# Takes about three minutes. Needs valgrind (apt-get install valgrind).
+# Takes about half a minute. Needs valgrind (apt-get install valgrind).
 #
 # Environment (all optional):
 #   BUILD_DIR  build directory (default build); configured as Release when it does not exist
