@@ -100,26 +100,6 @@ bool Accel::occluded(const Ray& ray) const {
     return occluded(ray.origin, ray.direction, ray.t_min, ray.t_max);
 }
 
-bool Accel::occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRay r;
-    r.org_x = origin.x;
-    r.org_y = origin.y;
-    r.org_z = origin.z;
-    r.dir_x = direction.x;
-    r.dir_y = direction.y;
-    r.dir_z = direction.z;
-    r.tnear = t_min;
-    r.tfar = t_max;
-    r.time = 0.0f;
-    r.mask = 0xffffffffu;
-    r.id = 0;
-    r.flags = 0;
-    rtcOccluded1(m_world, &context, &r);
-    return r.tfar < 0.0f;
-}
-
 const char* Accel::embree_version() {
     return RTC_VERSION_STRING;
 }

@@ -29,8 +29,26 @@ public:
     std::optional<HitRecord> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
     // The same for a segment given by its parts, for shadow rays, which need no Ray (and so
-    // no differentials) built and copied.
-    bool occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const;
+    // no differentials) built and copied. Inline: the path tracer traces one per bounce.
+    bool occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay r;
+        r.org_x = origin.x;
+        r.org_y = origin.y;
+        r.org_z = origin.z;
+        r.dir_x = direction.x;
+        r.dir_y = direction.y;
+        r.dir_z = direction.z;
+        r.tnear = t_min;
+        r.tfar = t_max;
+        r.time = 0.0f;
+        r.mask = 0xffffffffu;
+        r.id = 0;
+        r.flags = 0;
+        rtcOccluded1(m_world, &context, &r);
+        return r.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the segment
+    }
 
     static const char* embree_version();
 
