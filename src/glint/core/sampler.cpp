@@ -161,10 +161,11 @@ Bits laine_karras(Bits x, Bits seed) {
 
 // Sobol's first four dimensions, from their primitive polynomials and initial direction
 // numbers (Joe & Kuo 2008; dimension 0 is the radical inverse): the value for an index is
-// the XOR of the direction numbers of its set bits. Tabulated per byte of the index, with
-// the four dimensions side by side in one vector, so any 32-bit index takes four lookups
-// for all of them; stored bit-reversed, because the scramble works on reversed values (see
-// SobolSampler). Reversed dimension 0 is the index itself.
+// the XOR of the direction numbers of its set bits. Tabulated per byte of the index's bit
+// reversal (which is what the index shuffle produces), with the four dimensions side by
+// side in one vector, so any 32-bit index takes four lookups for all of them; stored
+// bit-reversed, because the scramble works on reversed values (see SobolSampler). Reversed
+// dimension 0 is the index itself.
 class SobolTables {
 public:
     static constexpr int kDimensions = 4;
@@ -194,12 +195,14 @@ public:
                 }
             }
         }
+        // Byte j of the reversed index is byte 3 - j of the index, with its bits reversed.
         for (int byte = 0; byte < 4; ++byte) {
             for (uint32_t value = 0; value < 256; ++value) {
+                const uint32_t index_byte = reverse_bits(value) >> 24;
                 for (int d = 0; d < kDimensions; ++d) {
                     uint32_t result = 0;
                     for (int bit = 0; bit < 8; ++bit) {
-                        if (value & (1u << bit)) result ^= direction[d][8 * byte + bit];
+                        if (index_byte & (1u << bit)) result ^= direction[d][8 * (3 - byte) + bit];
                     }
                     m_table[byte][value][d] = reverse_bits(result);
                 }
@@ -207,10 +210,12 @@ public:
         }
     }
 
-    // reverse_bits of Sobol dimensions 0 to 3 for `index`.
-    U32x4 reversed(uint32_t index) const {
-        return m_table[0][index & 0xff] ^ m_table[1][(index >> 8) & 0xff] ^
-               m_table[2][(index >> 16) & 0xff] ^ m_table[3][index >> 24];
+    // reverse_bits of Sobol dimensions 0 to 3 for the index whose bit reversal is
+    // `reversed_index`: the scramble produces the shuffled index reversed, and the tables
+    // are indexed by its bytes, so it never has to be reversed back.
+    U32x4 for_reversed_index(uint32_t reversed_index) const {
+        return m_table[0][reversed_index & 0xff] ^ m_table[1][(reversed_index >> 8) & 0xff] ^
+               m_table[2][(reversed_index >> 16) & 0xff] ^ m_table[3][reversed_index >> 24];
     }
 
 private:
@@ -251,28 +256,29 @@ const SobolTables& sobol_tables() {
 }
 
 // The four values of a Sobol group: Owen-scrambled Sobol dimensions 0 to 3 of the group's
-// shuffled index, each scrambled with its own seed derived from the group key. Compiled
+// shuffled index (given bit-reversed), each scrambled with its own seed derived from the
+// group key. Compiled
 // twice (see scramble_group): for SSE2, which every x86-64 has, and for SSE4.1, whose
 // lane-wise multiply and byte shuffle take half the instructions. Both give the same bits.
 template <bool kSse41>
 [[gnu::always_inline]] inline F32x4 scramble_group_with(const SobolTables& tables,
-                                                        uint32_t shuffled, uint32_t key) {
+                                                        uint32_t reversed_shuffled, uint32_t key) {
     constexpr U32x4 kSeedMultipliers = {0x9e3779b9u, 0x85ebca6bu, 0xc2b2ae35u, 0x27d4eb2fu};
     const U32x4 seeds = key * kSeedMultipliers + U32x4{1, 2, 3, 4};
-    U32x4 bits = laine_karras(tables.reversed(shuffled), seeds);
+    U32x4 bits = laine_karras(tables.for_reversed_index(reversed_shuffled), seeds);
     bits = kSse41 ? reverse_bits_by_shuffles(bits) : reverse_bits(bits);
     // bits >> 8 is below 2^24, so the floats are exact and at most 1 - 2^-24.
     return __builtin_convertvector(reinterpret_cast<I32x4>(bits >> 8), F32x4) * 0x1p-24f;
 }
 
-F32x4 scramble_group_sse2(const SobolTables& tables, uint32_t shuffled, uint32_t key) {
-    return scramble_group_with<false>(tables, shuffled, key);
+F32x4 scramble_group_sse2(const SobolTables& tables, uint32_t reversed_shuffled, uint32_t key) {
+    return scramble_group_with<false>(tables, reversed_shuffled, key);
 }
 
 #if GLINT_SOBOL_SSE41
-[[gnu::target("sse4.1")]] F32x4 scramble_group_sse41(const SobolTables& tables, uint32_t shuffled,
-                                                     uint32_t key) {
-    return scramble_group_with<true>(tables, shuffled, key);
+[[gnu::target("sse4.1")]] F32x4 scramble_group_sse41(const SobolTables& tables,
+                                                     uint32_t reversed_shuffled, uint32_t key) {
+    return scramble_group_with<true>(tables, reversed_shuffled, key);
 }
 #endif
 
@@ -331,9 +337,11 @@ private:
     // group's shuffled index, each scrambled with its own seed derived from the group key.
     void open_group() {
         const uint32_t key = group_key(m_next_group++);
-        // nested_uniform_scramble(index), with the index's reversal done once per sample.
-        const uint32_t shuffled = reverse_bits(laine_karras(m_reversed_index, key));
-        const F32x4 values = m_scramble_group(*m_tables, shuffled, key);
+        // The group's shuffle of the index, nested_uniform_scramble(index), is
+        // reverse_bits(laine_karras(reverse_bits(index))): the index is reversed once per
+        // sample, and the tables take the result still reversed.
+        const uint32_t reversed_shuffled = laine_karras(m_reversed_index, key);
+        const F32x4 values = m_scramble_group(*m_tables, reversed_shuffled, key);
         static_assert(sizeof(values) == sizeof(m_ahead));
         std::memcpy(m_ahead, &values, sizeof(values));
         m_ahead_next = 0;
@@ -368,8 +376,9 @@ private:
 
 detail::SobolGroupPaths detail::sobol_group_by_each_path(uint32_t shuffled_index,
                                                          uint32_t group_key) {
-    const F32x4 portable = scramble_group_sse2(sobol_tables(), shuffled_index, group_key);
-    const F32x4 fastest = scramble_group()(sobol_tables(), shuffled_index, group_key);
+    const uint32_t reversed = reverse_bits(shuffled_index);
+    const F32x4 portable = scramble_group_sse2(sobol_tables(), reversed, group_key);
+    const F32x4 fastest = scramble_group()(sobol_tables(), reversed, group_key);
     detail::SobolGroupPaths paths;
     for (int d = 0; d < 4; ++d) {
         paths.portable[d] = portable[d];
