@@ -1,6 +1,7 @@
 #pragma once
 #include <glint/core/params.h>
 #include <glint/core/ray.h>
+#include <glint/core/sampler.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,6 +19,11 @@ public:
     virtual Ray generate_ray(const Vec2& film, const Vec2& lens) const = 0;
     // False for a pinhole: its rays ignore `lens`, so integrators need not draw the sample.
     virtual bool needs_lens_sample() const { return true; }
+    // generate_ray with the lens sample drawn from `sampler`, only when the camera uses one,
+    // so every integrator consumes the same sample dimensions for its camera rays.
+    Ray sample_ray(const Vec2& film, Sampler& sampler) const {
+        return generate_ray(film, needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
+    }
 
     // How far a point p on a surface with normal n moves per pixel step, for hits that
     // carry no ray differentials (after a bounce): pbrt-v4's approximation, which sees the

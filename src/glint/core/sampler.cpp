@@ -257,9 +257,9 @@ const SobolTables& sobol_tables() {
 
 // The four values of a Sobol group: Owen-scrambled Sobol dimensions 0 to 3 of the group's
 // shuffled index (given bit-reversed), each scrambled with its own seed derived from the
-// group key. Compiled
-// twice (see scramble_group): for SSE2, which every x86-64 has, and for SSE4.1, whose
-// lane-wise multiply and byte shuffle take half the instructions. Both give the same bits.
+// group key. Compiled twice (see scramble_group): for SSE2, which every x86-64 has, and for
+// SSE4.1, whose lane-wise multiply and byte shuffle take half the instructions. Both give
+// the same bits.
 template <bool kSse41>
 [[gnu::always_inline]] inline F32x4 scramble_group_with(const SobolTables& tables,
                                                         uint32_t reversed_shuffled, uint32_t key) {

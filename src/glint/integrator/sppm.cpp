@@ -167,9 +167,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
             for (int x = 0; x < w; ++x) {
                 sampler->start_pixel_sample(Vec2i(x, y), pass);
                 const Vec2 film_point = Vec2(x, y) + sampler->get_pixel_2d();
-                const Camera& camera = scene.camera();
-                const Ray ray = camera.generate_ray(
-                    film_point, camera.needs_lens_sample() ? sampler->get_2d() : Vec2(0.5f));
+                const Ray ray = scene.camera().sample_ray(film_point, *sampler);
                 const size_t i = static_cast<size_t>(y) * w + x;
                 arena.reset();
                 points[i] = find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, rays);

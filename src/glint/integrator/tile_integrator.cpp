@@ -251,9 +251,7 @@ TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Fi
         sampler.start_pixel_sample(pixel, index);
         const FilterSample fs = m_filter->sample(sampler.get_pixel_2d());
         const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + fs.offset;
-        const Camera& camera = scene.camera();
-        const Ray ray = camera.generate_ray(
-            film_point, camera.needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
+        const Ray ray = scene.camera().sample_ray(film_point, sampler);
         AovSample aov{};
         arena.reset();
         const Spectrum L = li(ray, scene, sampler, arena, counter, want_aovs ? &aov : nullptr);

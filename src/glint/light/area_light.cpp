@@ -5,7 +5,7 @@ namespace glint {
 
 std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
                                                 float u_select) const {
-    std::optional<LightSample> result;  // one named result: see Scene::intersect
+    std::optional<LightSample> result;  // one named result, built in the caller's storage
     const ShapeSample s = m_shape->sample(ref, u, u_select);
     const Vec3 d = s.p - ref;
     const float dist2 = glm::dot(d, d);

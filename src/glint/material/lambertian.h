@@ -16,7 +16,7 @@ public:
         return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
     }
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float) const override {
-        std::optional<BsdfSample> result;  // one named result: see Scene::intersect
+        std::optional<BsdfSample> result;  // one named result, built in the caller's storage
         if (wo.z == 0.0f) return result;
         Vec3 wi = warp::square_to_cosine_hemisphere(u);
         if (wo.z < 0.0f) wi.z = -wi.z;
