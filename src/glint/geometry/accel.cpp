@@ -60,42 +60,6 @@ void Accel::commit() {
     check_device("building the acceleration structure");
 }
 
-std::optional<HitRecord> Accel::intersect(const Ray& ray) const {
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
-    RTCRayHit rh;
-    rh.ray.org_x = ray.origin.x;
-    rh.ray.org_y = ray.origin.y;
-    rh.ray.org_z = ray.origin.z;
-    rh.ray.dir_x = ray.direction.x;
-    rh.ray.dir_y = ray.direction.y;
-    rh.ray.dir_z = ray.direction.z;
-    rh.ray.tnear = ray.t_min;
-    rh.ray.tfar = ray.t_max;
-    rh.ray.time = 0.0f;
-    rh.ray.mask = 0xffffffffu;
-    rh.ray.id = 0;
-    rh.ray.flags = 0;
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_world, &context, &rh);
-    std::optional<HitRecord> result;  // one named result, built in the caller's storage
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return result;
-
-    HitRecord& hit = result.emplace();
-    hit.t = rh.ray.tfar;
-    hit.primitive = rh.hit.primID;
-    hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
-    hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-    if (rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID) {
-        hit.top_geometry = rh.hit.instID[0];
-        hit.local_geometry = rh.hit.geomID;
-    } else {
-        hit.top_geometry = rh.hit.geomID;
-    }
-    return result;
-}
-
 bool Accel::occluded(const Ray& ray) const {
     return occluded(ray.origin, ray.direction, ray.t_min, ray.t_max);
 }

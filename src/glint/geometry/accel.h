@@ -26,7 +26,43 @@ public:
     // Builds all BVHs. Throws glint::Error when Embree reports a problem.
     void commit();
 
-    std::optional<HitRecord> intersect(const Ray& ray) const;
+    // The closest hit along `ray`, written into `hit`; false (and `hit` untouched) when the
+    // ray escapes. Inline and into the caller's record: the renderer calls it once per
+    // bounce, and a returned optional<HitRecord> costs a copy and a default initialisation.
+    bool intersect(const Ray& ray, HitRecord& hit) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh;
+        rh.ray.org_x = ray.origin.x;
+        rh.ray.org_y = ray.origin.y;
+        rh.ray.org_z = ray.origin.z;
+        rh.ray.dir_x = ray.direction.x;
+        rh.ray.dir_y = ray.direction.y;
+        rh.ray.dir_z = ray.direction.z;
+        rh.ray.tnear = ray.t_min;
+        rh.ray.tfar = ray.t_max;
+        rh.ray.time = 0.0f;
+        rh.ray.mask = 0xffffffffu;
+        rh.ray.id = 0;
+        rh.ray.flags = 0;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(m_world, &context, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        hit.t = rh.ray.tfar;
+        hit.primitive = rh.hit.primID;
+        hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
+        hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+        const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+        hit.top_geometry = instanced ? rh.hit.instID[0] : rh.hit.geomID;
+        hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
+        return true;
+    }
+    std::optional<HitRecord> intersect(const Ray& ray) const {
+        std::optional<HitRecord> result(std::in_place);
+        if (!intersect(ray, *result)) result.reset();
+        return result;
+    }
     bool occluded(const Ray& ray) const;
     // The same for a segment given by its parts, for shadow rays, which need no Ray (and so
     // no differentials) built and copied. Inline: the path tracer traces one per bounce.

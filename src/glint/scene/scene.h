@@ -27,7 +27,27 @@ public:
     // The closest hit along `ray`, written into `si`; false on a miss (si is then left
     // unspecified). Every field of `si` is written, so one SurfaceInteraction can serve a
     // whole path, bounce after bounce: hot loops should use this form.
-    bool intersect(const Ray& ray, SurfaceInteraction& si) const;
+    // Inline: the path tracer calls it once per bounce.
+    bool intersect(const Ray& ray, SurfaceInteraction& si) const {
+        HitRecord hit;
+        if (!m_accel.intersect(ray, hit)) return false;
+        const WorldEntry& entry = m_world[hit.top_geometry];
+        // What the shapes may leave unset, reset here, since `si` may hold the previous hit.
+        si.part = 0;
+        si.dpdx = si.dpdy = Vec3(0.0f);
+        si.dudx = si.dvdx = si.dudy = si.dvdy = 0.0f;
+        if (hit.instanced()) {
+            fill_instanced(ray, hit, entry, si);
+        } else {
+            entry.geometry.shape->fill_interaction(ray, hit, si);
+            si.material = entry.geometry.material(si.part);
+            si.area_light = entry.light;
+        }
+        si.t = hit.t;
+        si.wo = -glm::normalize(ray.direction);
+        si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
+        return true;
+    }
     // The same, as a value: a fresh SurfaceInteraction (~200 bytes set up) per call.
     std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
         std::optional<SurfaceInteraction> result(std::in_place);
@@ -77,6 +97,11 @@ private:
         std::vector<const Light*> lights;  // instances: area light per local geometry id
         const Light* light = nullptr;      // root shapes
     };
+
+    // Scene::intersect for a hit inside a group instance: the shape fills `si` in the
+    // group's space, and the result is carried to the world.
+    void fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
+                        SurfaceInteraction& si) const;
 
     Accel m_accel;
     std::vector<std::unique_ptr<Shape>> m_shapes;
