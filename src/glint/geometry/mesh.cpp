@@ -63,9 +63,18 @@ private:
     // A triangle chosen with probability proportional to its area.
     size_t pick_triangle(float u_select) const {
         const double target = u_select * static_cast<double>(m_area);
+        const size_t last = m_cumulative_area.size() - 1;
+        // Emitters are often a few triangles (a quad is two): a scan that stops at the first
+        // cumulative area above the target is what upper_bound finds, without its loop setup.
+        if (last < kScanLimit) {
+            size_t tri = 0;
+            while (tri < last && !(target < m_cumulative_area[tri])) ++tri;
+            return tri;
+        }
         auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
-        return std::min<size_t>(it - m_cumulative_area.begin(), m_cumulative_area.size() - 1);
+        return std::min<size_t>(it - m_cumulative_area.begin(), last);
     }
+    static constexpr size_t kScanLimit = 8;
 
     // A point uniformly distributed over triangle `tri`.
     Vec3 point_in(size_t tri, const Vec2& u) const {

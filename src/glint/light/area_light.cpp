@@ -11,11 +11,10 @@ std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
     const float dist2 = glm::dot(d, d);
     if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf) || !(dist2 > 0.0f)) return result;
     const Vec3 wi = d * (1.0f / std::sqrt(dist2));
-    const Spectrum L = emitted(s.n, -wi);
-    if (L.is_black()) return result;
+    if (!emits_towards(s.n, -wi)) return result;
     LightSample& ls = result.emplace();
     ls.wi = wi;
-    ls.L = L;
+    ls.L = m_radiance;
     ls.pdf = s.pdf;
     ls.p = s.p;
     return result;

@@ -10,14 +10,18 @@ namespace glint {
 class AreaLight final : public Light {
 public:
     AreaLight(std::unique_ptr<ShapeSampler> shape, const Spectrum& radiance, bool two_sided)
-        : m_shape(std::move(shape)), m_radiance(radiance), m_two_sided(two_sided) {}
+        : m_shape(std::move(shape)),
+          m_radiance(radiance),
+          m_two_sided(two_sided),
+          m_dark(radiance.is_black()) {}
 
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     float pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const override;
     Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
     Spectrum power() const override;
-    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
+    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2,
+                                           float u_select) const override;
     bool is_delta() const override { return false; }
     std::optional<SurfacePoint> sample_surface_point(const Vec2& u, float u_select) const override {
         const ShapeSample s = m_shape->sample_area(u, u_select);
@@ -29,13 +33,18 @@ public:
 
     // Radiance leaving a surface point with normal `n` towards `w`.
     Spectrum emitted(const Vec3& n, const Vec3& w) const {
-        return (m_two_sided || glm::dot(n, w) > 0.0f) ? m_radiance : Spectrum(0.0f);
+        return emits_towards(n, w) ? m_radiance : Spectrum(0.0f);
+    }
+    // Whether emitted(n, w) is non-zero, without building the spectrum.
+    bool emits_towards(const Vec3& n, const Vec3& w) const {
+        return !m_dark && (m_two_sided || glm::dot(n, w) > 0.0f);
     }
 
 private:
     std::unique_ptr<ShapeSampler> m_shape;
     Spectrum m_radiance;
     bool m_two_sided;
+    bool m_dark;  // zero radiance: emits nothing anywhere
 };
 
 }  // namespace glint

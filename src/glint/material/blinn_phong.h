@@ -19,7 +19,11 @@ namespace glint {
 class BlinnPhongBsdf final : public Bsdf {
 public:
     BlinnPhongBsdf(const Spectrum& diffuse, const Spectrum& specular, float exponent)
-        : m_diffuse(diffuse), m_specular(specular), m_exponent(exponent) {
+        : Bsdf(kBsdfReflection | (specular.is_black() ? 0u : kBsdfGlossy) |
+               (diffuse.is_black() ? 0u : kBsdfDiffuse)),
+          m_diffuse(diffuse),
+          m_specular(specular),
+          m_exponent(exponent) {
         const float d = m_diffuse.average(), s = m_specular.average();
         m_specular_probability = d + s > 0.0f ? s / (d + s) : 0.0f;
     }
@@ -60,11 +64,6 @@ public:
         if (!(p > 0.0f)) return std::nullopt;
         const uint32_t lobe = specular ? kBsdfGlossy : kBsdfDiffuse;
         return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
-    }
-
-    uint32_t flags() const override {
-        return kBsdfReflection | (m_specular.is_black() ? 0u : kBsdfGlossy) |
-               (m_diffuse.is_black() ? 0u : kBsdfDiffuse);
     }
 
 private:

@@ -52,14 +52,19 @@ public:
     virtual Spectrum eval(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const = 0;
-    // Union of the flags of all lobes.
-    virtual uint32_t flags() const = 0;
+    // Union of the flags of all lobes. A member, set once when the BSDF is built, rather
+    // than a virtual call: integrators ask for it at every bounce.
+    uint32_t flags() const { return m_flags; }
     bool is_delta() const {
         return (flags() & ~(kBsdfReflection | kBsdfTransmission)) == kBsdfDelta;
     }
 
 protected:
+    explicit Bsdf(uint32_t flags) : m_flags(flags) {}
     ~Bsdf() = default;  // not virtual: arena objects are never destroyed
+
+private:
+    uint32_t m_flags;
 };
 
 }  // namespace glint

@@ -7,10 +7,11 @@ namespace glint {
 
 class LambertianBsdf final : public Bsdf {
 public:
-    explicit LambertianBsdf(const Spectrum& reflectance) : m_reflectance(reflectance) {}
+    explicit LambertianBsdf(const Spectrum& reflectance)
+        : Bsdf(kBsdfReflection | kBsdfDiffuse), m_f(reflectance * kInvPi) {}
 
     Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
-        return same_hemisphere(wo, wi) ? m_reflectance * kInvPi : Spectrum(0.0f);
+        return same_hemisphere(wo, wi) ? m_f : Spectrum(0.0f);
     }
     float pdf(const Vec3& wo, const Vec3& wi) const override {
         return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
@@ -23,16 +24,15 @@ public:
         const float p = abs_cos_theta(wi) * kInvPi;
         if (p <= 0.0f) return result;
         BsdfSample& s = result.emplace();
-        s.f = m_reflectance * kInvPi;
+        s.f = m_f;
         s.wi = wi;
         s.pdf = p;
         s.flags = kBsdfReflection | kBsdfDiffuse;
         return result;
     }
-    uint32_t flags() const override { return kBsdfReflection | kBsdfDiffuse; }
 
 private:
-    Spectrum m_reflectance;
+    Spectrum m_f;  // reflectance / pi, the same in every direction
 };
 
 }  // namespace glint

@@ -12,7 +12,11 @@ namespace glint {
 class PhongBsdf final : public Bsdf {
 public:
     PhongBsdf(const Spectrum& diffuse, const Spectrum& specular, float exponent)
-        : m_diffuse(diffuse), m_specular(specular), m_exponent(exponent) {
+        : Bsdf(kBsdfReflection | (specular.is_black() ? 0u : kBsdfGlossy) |
+               (diffuse.is_black() ? 0u : kBsdfDiffuse)),
+          m_diffuse(diffuse),
+          m_specular(specular),
+          m_exponent(exponent) {
         const float d = m_diffuse.average(), s = m_specular.average();
         m_specular_probability = d + s > 0.0f ? s / (d + s) : 0.0f;
     }
@@ -40,8 +44,9 @@ public:
             const float cos_alpha = std::pow(u.x, 1.0f / (m_exponent + 1.0f));
             const float sin_alpha = safe_sqrt(1.0f - cos_alpha * cos_alpha);
             const float phi = 2.0f * kPi * u.y;
-            wi = Frame::from_normal(mirror(wo)).to_world(
-                Vec3(sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), cos_alpha));
+            wi = Frame::from_normal(mirror(wo))
+                     .to_world(
+                         Vec3(sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), cos_alpha));
             if (!same_hemisphere(wo, wi)) return std::nullopt;  // the lobe dipped below the surface
         } else {
             wi = warp::square_to_cosine_hemisphere(u);
@@ -51,11 +56,6 @@ public:
         if (p <= 0.0f) return std::nullopt;
         const uint32_t lobe = u_lobe < m_specular_probability ? kBsdfGlossy : kBsdfDiffuse;
         return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
-    }
-
-    uint32_t flags() const override {
-        return kBsdfReflection | (m_specular.is_black() ? 0u : kBsdfGlossy) |
-               (m_diffuse.is_black() ? 0u : kBsdfDiffuse);
     }
 
 private:

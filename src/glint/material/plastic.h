@@ -32,7 +32,11 @@ public:
     // and covering its alpha; it must outlive the BSDF.
     PlasticBsdf(const Spectrum& diffuse, const GgxDistribution& coat,
                 const CoatAlbedoTable& coat_albedo)
-        : m_coat(coat), m_coat_albedo(&coat_albedo), m_eta(coat_albedo.eta()) {
+        : Bsdf(kBsdfReflection | kBsdfDiffuse |
+               (coat.effectively_smooth() ? kBsdfDelta : kBsdfGlossy)),
+          m_coat(coat),
+          m_coat_albedo(&coat_albedo),
+          m_eta(coat_albedo.eta()) {
         const float internal_reflectance =
             1.0f - (1.0f - coat_albedo.average_albedo(coat.alpha_x())) / (m_eta * m_eta);
         float albedo_sum = 0.0f;
@@ -88,11 +92,6 @@ public:
         if (!(p > 0.0f)) return std::nullopt;
         const uint32_t lobe = coat ? kBsdfGlossy : kBsdfDiffuse;
         return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
-    }
-
-    uint32_t flags() const override {
-        return kBsdfReflection | kBsdfDiffuse |
-               (m_coat.effectively_smooth() ? kBsdfDelta : kBsdfGlossy);
     }
 
 private:

@@ -34,7 +34,9 @@ struct ConductorFresnel {
 class RoughConductorBsdf final : public Bsdf {
 public:
     RoughConductorBsdf(const GgxDistribution& distribution, const ConductorFresnel& fresnel)
-        : m_distribution(distribution), m_fresnel(fresnel) {}
+        : Bsdf(kBsdfReflection | (distribution.effectively_smooth() ? kBsdfDelta : kBsdfGlossy)),
+          m_distribution(distribution),
+          m_fresnel(fresnel) {}
 
     Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
         if (m_distribution.effectively_smooth() || !same_hemisphere(wo, wi)) return Spectrum(0.0f);
@@ -67,10 +69,6 @@ public:
         const float p = pdf(wo, wi);
         if (!(p > 0.0f)) return std::nullopt;
         return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | kBsdfGlossy, 1.0f};
-    }
-
-    uint32_t flags() const override {
-        return kBsdfReflection | (m_distribution.effectively_smooth() ? kBsdfDelta : kBsdfGlossy);
     }
 
 private:

@@ -30,7 +30,9 @@ public:
     // `eta` = index inside / index outside. The distribution must not be effectively smooth
     // (use SmoothDielectricBsdf then: the material chooses).
     RoughDielectricBsdf(float eta, const GgxDistribution& distribution)
-        : m_eta(eta), m_distribution(distribution) {}
+        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfGlossy),
+          m_eta(eta),
+          m_distribution(distribution) {}
 
     Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
         const Config c = configure(wo, wi);
@@ -77,8 +79,6 @@ public:
         const uint32_t lobe = reflection ? kBsdfReflection : kBsdfTransmission;
         return BsdfSample{eval(wo, wi), wi, p, lobe | kBsdfGlossy, reflection ? 1.0f : eta};
     }
-
-    uint32_t flags() const override { return kBsdfReflection | kBsdfTransmission | kBsdfGlossy; }
 
 private:
     // The pair (wo, wi) mirrored so that wo is in the upper hemisphere, with the relative

@@ -10,7 +10,8 @@ namespace glint {
 class SmoothDielectricBsdf final : public Bsdf {
 public:
     // `eta` = index inside / index outside (outside is the side the normal points to).
-    explicit SmoothDielectricBsdf(float eta) : m_eta(eta) {}
+    explicit SmoothDielectricBsdf(float eta)
+        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfDelta), m_eta(eta) {}
 
     Spectrum eval(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
     float pdf(const Vec3&, const Vec3&) const override { return 0.0f; }
@@ -33,8 +34,6 @@ public:
         const Spectrum f(transmittance / (eta * eta) / abs_cos_theta(wi));
         return BsdfSample{f, wi, transmittance, kBsdfTransmission | kBsdfDelta, eta};
     }
-
-    uint32_t flags() const override { return kBsdfReflection | kBsdfTransmission | kBsdfDelta; }
 
 private:
     float m_eta;

@@ -6,7 +6,8 @@ namespace glint {
 
 class SpecularReflectionBsdf final : public Bsdf {
 public:
-    explicit SpecularReflectionBsdf(const Spectrum& tint) : m_tint(tint) {}
+    explicit SpecularReflectionBsdf(const Spectrum& tint)
+        : Bsdf(kBsdfReflection | kBsdfDelta), m_tint(tint) {}
 
     Spectrum eval(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
     float pdf(const Vec3&, const Vec3&) const override { return 0.0f; }
@@ -15,7 +16,6 @@ public:
         const Vec3 wi(-wo.x, -wo.y, wo.z);
         return BsdfSample{m_tint / abs_cos_theta(wi), wi, 1.0f, kBsdfReflection | kBsdfDelta, 1.0f};
     }
-    uint32_t flags() const override { return kBsdfReflection | kBsdfDelta; }
 
 private:
     Spectrum m_tint;
