@@ -1,19 +1,27 @@
 #include <glint/material/lambertian.h>
 #include <glint/material/materials.h>
 
+#include <optional>
+
 namespace glint {
 namespace {
 
 class DiffuseMaterial final : public Material {
 public:
-    explicit DiffuseMaterial(const SpectrumInput& reflectance) : m_reflectance(reflectance) {}
+    explicit DiffuseMaterial(const SpectrumInput& reflectance) : m_reflectance(reflectance) {
+        if (!reflectance.is_textured()) m_uniform_bsdf.emplace(reflectance.representative());
+    }
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        if (m_uniform_bsdf) return &*m_uniform_bsdf;
         return arena.make<LambertianBsdf>(m_reflectance.eval(si));
     }
     Spectrum albedo(const SurfaceInteraction& si) const override { return m_reflectance.eval(si); }
 
 private:
     SpectrumInput m_reflectance;
+    // Without a texture the BSDF is the same at every hit (it lives in the shading frame),
+    // so it is built once and shared, read-only, by all threads.
+    std::optional<LambertianBsdf> m_uniform_bsdf;
 };
 
 }  // namespace

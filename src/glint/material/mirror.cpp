@@ -1,19 +1,25 @@
 #include <glint/material/materials.h>
 #include <glint/material/specular_reflection.h>
 
+#include <optional>
+
 namespace glint {
 namespace {
 
 class MirrorMaterial final : public Material {
 public:
-    explicit MirrorMaterial(const SpectrumInput& tint) : m_tint(tint) {}
+    explicit MirrorMaterial(const SpectrumInput& tint) : m_tint(tint) {
+        if (!tint.is_textured()) m_uniform_bsdf.emplace(tint.representative());
+    }
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
+        if (m_uniform_bsdf) return &*m_uniform_bsdf;
         return arena.make<SpecularReflectionBsdf>(m_tint.eval(si));
     }
     Spectrum albedo(const SurfaceInteraction& si) const override { return m_tint.eval(si); }
 
 private:
     SpectrumInput m_tint;
+    std::optional<SpecularReflectionBsdf> m_uniform_bsdf;  // untextured: one BSDF for every hit
 };
 
 }  // namespace
