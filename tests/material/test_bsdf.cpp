@@ -133,6 +133,27 @@ TEST(LambertianBsdf, ReciprocalAndZeroAcrossTheSurface) {
     EXPECT_FALSE(bsdf.sample(Vec3(1, 0, 0), Vec2(0.3f, 0.6f), 0.5f).has_value());
 }
 
+// Light sampling takes f and pdf from one eval_pdf() call: it must give exactly what eval()
+// and pdf() give, on both sides of the surface.
+TEST(LambertianBsdf, EvalPdfGivesEvalAndPdfBitForBit) {
+    const LambertianBsdf bsdf(Spectrum(0.2f, 0.5f, 0.9f));
+    Rng rng(17);
+    int across = 0;
+    for (int i = 0; i < 10000; ++i) {
+        const Vec3 wo = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+        const Vec3 wi = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+        float pdf = -1.0f;
+        const Spectrum f = bsdf.eval_pdf(wo, wi, pdf);
+        const Spectrum expected = bsdf.eval(wo, wi);
+        ASSERT_EQ(pdf, bsdf.pdf(wo, wi));
+        ASSERT_EQ(f.r, expected.r);
+        ASSERT_EQ(f.g, expected.g);
+        ASSERT_EQ(f.b, expected.b);
+        across += !same_hemisphere(wo, wi);
+    }
+    EXPECT_GT(across, 1000);  // both branches were taken
+}
+
 TEST(SpecularReflectionBsdf, MirrorDirectionWithTintWeight) {
     const Spectrum tint(0.9f, 0.6f, 0.25f);
     const SpecularReflectionBsdf bsdf(tint);

@@ -23,13 +23,14 @@ Spectrum sample_direct(const Scene& scene, const SurfaceInteraction& si, const B
     const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);
     if (!ls || ls->L.is_black()) return Spectrum(0.0f);
     const Vec3 wi_local = si.to_local(ls->wi);
-    const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
+    float bsdf_pdf = 0.0f;
+    const Spectrum f = bsdf.eval_pdf(wo_local, wi_local, bsdf_pdf) * abs_cos_theta(wi_local);
     if (f.is_black()) return Spectrum(0.0f);
     ++counter.rays;
     if (scene.occluded(si, ls->p)) return Spectrum(0.0f);
     const float light_pdf = choice.pmf * ls->pdf;
     if (ls->is_delta || !use_mis) return f * ls->L / light_pdf;
-    const float weight = power_heuristic(light_pdf, bsdf.pdf(wo_local, wi_local));
+    const float weight = power_heuristic(light_pdf, bsdf_pdf);
     return f * ls->L * (weight / light_pdf);
 }
 

@@ -7,6 +7,8 @@
 //
 //   eval(wo, wi)      f(wo, wi) WITHOUT the cosine factor; 0 for delta lobes.
 //   pdf(wo, wi)       solid-angle density with which sample() returns wi; 0 for delta lobes.
+//   eval_pdf(wo, wi, pdf)  both of the above in one call, for light sampling, which needs
+//                     both: the same values, bit for bit.
 //   sample(wo, u, uc) a direction wi with f and pdf; for delta lobes `pdf` is the discrete
 //                     probability of the chosen lobe and `f` already contains the delta
 //                     (f * |cos wi| / pdf is the path weight). nullopt when no direction
@@ -52,6 +54,12 @@ public:
     virtual Spectrum eval(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf(const Vec3& wo, const Vec3& wi) const = 0;
     virtual std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const = 0;
+    // eval() and pdf() together: one virtual call, and BSDFs that override it share the
+    // work the two have in common.
+    virtual Spectrum eval_pdf(const Vec3& wo, const Vec3& wi, float& pdf_out) const {
+        pdf_out = pdf(wo, wi);
+        return eval(wo, wi);
+    }
     // Union of the flags of all lobes. A member, set once when the BSDF is built, rather
     // than a virtual call: integrators ask for it at every bounce.
     uint32_t flags() const { return m_flags; }

@@ -16,6 +16,14 @@ public:
     float pdf(const Vec3& wo, const Vec3& wi) const override {
         return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
     }
+    Spectrum eval_pdf(const Vec3& wo, const Vec3& wi, float& pdf_out) const override {
+        if (!same_hemisphere(wo, wi)) {
+            pdf_out = 0.0f;
+            return Spectrum(0.0f);
+        }
+        pdf_out = abs_cos_theta(wi) * kInvPi;
+        return m_f;
+    }
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float) const override {
         std::optional<BsdfSample> result;  // one named result, built in the caller's storage
         if (wo.z == 0.0f) return result;
