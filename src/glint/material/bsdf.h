@@ -20,7 +20,9 @@
 // with eta_o the index on wo's side (Veach 1997, eq. 5.14; see tests/material).
 //
 // BSDFs are built per hit in an Arena and never destroyed, so they must be trivially
-// destructible (no virtual destructor, no owning members).
+// destructible (no virtual destructor, no owning members). A material whose BSDF is the
+// same at every hit (no textures) may build it once and hand out that one: BSDFs are
+// immutable, so threads share it safely.
 #include <glint/core/spectrum.h>
 #include <glint/math/frame.h>
 

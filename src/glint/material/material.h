@@ -1,6 +1,7 @@
 #pragma once
-// A Material turns a surface hit into a BSDF (built in the per-thread arena) and states
-// what the surface emits and what the medium behind it absorbs.
+// A Material turns a surface hit into a BSDF (built in the per-thread arena, or once for all
+// hits when it does not vary over the surface) and states what the surface emits and what
+// the medium behind it absorbs.
 #include <glint/core/arena.h>
 #include <glint/core/interaction.h>
 #include <glint/material/bsdf.h>
