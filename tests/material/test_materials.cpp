@@ -40,6 +40,20 @@ void expect_same_bsdf(const Bsdf& actual, const Bsdf& expected) {
     EXPECT_EQ(actual.flags(), expected.flags());
 }
 
+// The material `make` builds from `params` hands out the same BSDF at two different hits,
+// and it behaves as `expected`.
+template <typename Factory>
+void expect_one_shared_bsdf(Factory make, const Params& params, const Bsdf& expected) {
+    TextureTable textures(".", true);
+    const auto material = make(params, textures);
+    Arena arena;
+    const Bsdf* first = material->bsdf(hit_at(Vec2(0.1f, 0.2f)), arena);
+    const Bsdf* second = material->bsdf(hit_at(Vec2(0.7f, 0.9f)), arena);
+    ASSERT_NE(first, nullptr);
+    EXPECT_EQ(first, second);
+    expect_same_bsdf(*first, expected);
+}
+
 }  // namespace
 
 // Without a texture the BSDF does not vary over the surface: it is built once and the same
@@ -47,25 +61,13 @@ void expect_same_bsdf(const Bsdf& actual, const Bsdf& expected) {
 TEST(DiffuseMaterial, UntexturedHandsOutOneBsdfWithItsReflectance) {
     Params params("diffuse", "scene.lua:1");
     params.set("reflectance", std::vector<double>{0.2, 0.4, 0.6});
-    TextureTable textures(".", true);
-    const auto material = make_diffuse_material(params, textures);
-    Arena arena;
-    const Bsdf* first = material->bsdf(hit_at(Vec2(0.1f, 0.2f)), arena);
-    const Bsdf* second = material->bsdf(hit_at(Vec2(0.7f, 0.9f)), arena);
-    ASSERT_NE(first, nullptr);
-    EXPECT_EQ(first, second);
-    expect_same_bsdf(*first, LambertianBsdf(Spectrum(0.2f, 0.4f, 0.6f)));
+    expect_one_shared_bsdf(make_diffuse_material, params,
+                           LambertianBsdf(Spectrum(0.2f, 0.4f, 0.6f)));
 }
 
 TEST(MirrorMaterial, UntexturedHandsOutOneBsdfWithItsTint) {
     Params params("mirror", "scene.lua:1");
     params.set("tint", std::vector<double>{0.9, 0.8, 0.7});
-    TextureTable textures(".", true);
-    const auto material = make_mirror_material(params, textures);
-    Arena arena;
-    const Bsdf* first = material->bsdf(hit_at(Vec2(0.1f, 0.2f)), arena);
-    const Bsdf* second = material->bsdf(hit_at(Vec2(0.7f, 0.9f)), arena);
-    ASSERT_NE(first, nullptr);
-    EXPECT_EQ(first, second);
-    expect_same_bsdf(*first, SpecularReflectionBsdf(Spectrum(0.9f, 0.8f, 0.7f)));
+    expect_one_shared_bsdf(make_mirror_material, params,
+                           SpecularReflectionBsdf(Spectrum(0.9f, 0.8f, 0.7f)));
 }
