@@ -33,18 +33,7 @@ public:
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         RTCRayHit rh;
-        rh.ray.org_x = ray.origin.x;
-        rh.ray.org_y = ray.origin.y;
-        rh.ray.org_z = ray.origin.z;
-        rh.ray.dir_x = ray.direction.x;
-        rh.ray.dir_y = ray.direction.y;
-        rh.ray.dir_z = ray.direction.z;
-        rh.ray.tnear = ray.t_min;
-        rh.ray.tfar = ray.t_max;
-        rh.ray.time = 0.0f;
-        rh.ray.mask = 0xffffffffu;
-        rh.ray.id = 0;
-        rh.ray.flags = 0;
+        rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(m_world, &context, &rh);
@@ -69,6 +58,17 @@ public:
     bool occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const {
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
+        RTCRay r = embree_ray(origin, direction, t_min, t_max);
+        rtcOccluded1(m_world, &context, &r);
+        return r.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the segment
+    }
+
+    static const char* embree_version();
+
+private:
+    // The segment [t_min, t_max] of origin + t direction as Embree takes it: every ray
+    // visible to every geometry, at time 0.
+    static RTCRay embree_ray(const Vec3& origin, const Vec3& direction, float t_min, float t_max) {
         RTCRay r;
         r.org_x = origin.x;
         r.org_y = origin.y;
@@ -82,13 +82,8 @@ public:
         r.mask = 0xffffffffu;
         r.id = 0;
         r.flags = 0;
-        rtcOccluded1(m_world, &context, &r);
-        return r.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the segment
+        return r;
     }
-
-    static const char* embree_version();
-
-private:
     void check_device(const char* what) const;
 
     RTCDevice m_device = nullptr;
