@@ -3,6 +3,8 @@
 
 #include <fmt/format.h>
 
+#include <bit>
+
 namespace glint {
 
 Accel::Accel() {
@@ -62,6 +64,99 @@ void Accel::commit() {
 
 bool Accel::occluded(const Ray& ray) const {
     return occluded(ray.origin, ray.direction, ray.t_min, ray.t_max);
+}
+
+namespace {
+
+// Embree's 8-wide calls take an int per lane: -1 traces it, 0 leaves it out.
+PerLane<int> embree_valid(uint32_t active) {
+    PerLane<int> valid;
+    for (int lane = 0; lane < kPacketWidth; ++lane) valid[lane] = (active >> lane) & 1u ? -1 : 0;
+    return valid;
+}
+
+void init_context(RTCIntersectContext& context, bool coherent) {
+    rtcInitIntersectContext(&context);
+    context.flags =
+        coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
+}
+
+}  // namespace
+
+uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
+                                 PerLane<HitRecord>& hits, bool coherent) const {
+    static_assert(kPacketWidth == 8, "the packet calls below are Embree's 8-wide ones");
+    alignas(32) RTCRayHit8 packet;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        // Inactive lanes get a valid ray too, so no lane holds uninitialised floats.
+        const Ray& ray = (active >> lane) & 1u ? *rays[lane] : *rays[std::countr_zero(active)];
+        packet.ray.org_x[lane] = ray.origin.x;
+        packet.ray.org_y[lane] = ray.origin.y;
+        packet.ray.org_z[lane] = ray.origin.z;
+        packet.ray.dir_x[lane] = ray.direction.x;
+        packet.ray.dir_y[lane] = ray.direction.y;
+        packet.ray.dir_z[lane] = ray.direction.z;
+        packet.ray.tnear[lane] = ray.t_min;
+        packet.ray.tfar[lane] = ray.t_max;
+        packet.ray.time[lane] = 0.0f;
+        packet.ray.mask[lane] = 0xffffffffu;
+        packet.ray.id[lane] = 0;
+        packet.ray.flags[lane] = 0;
+        packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
+        packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
+    }
+    const PerLane<int> valid = embree_valid(active);
+    RTCIntersectContext context;
+    init_context(context, coherent);
+    rtcIntersect8(valid.data(), m_world, &context, &packet);
+
+    uint32_t hit_lanes = 0;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        if (!((active >> lane) & 1u) || packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID)
+            continue;
+        hit_lanes |= 1u << lane;
+        HitRecord& hit = hits[lane];
+        hit.t = packet.ray.tfar[lane];
+        hit.primitive = packet.hit.primID[lane];
+        hit.barycentric = Vec2(packet.hit.u[lane], packet.hit.v[lane]);
+        hit.normal = Vec3(packet.hit.Ng_x[lane], packet.hit.Ng_y[lane], packet.hit.Ng_z[lane]);
+        const unsigned instance = packet.hit.instID[0][lane];
+        const bool instanced = instance != RTC_INVALID_GEOMETRY_ID;
+        hit.top_geometry = instanced ? instance : packet.hit.geomID[lane];
+        hit.local_geometry = instanced ? packet.hit.geomID[lane] : RTC_INVALID_GEOMETRY_ID;
+    }
+    return hit_lanes;
+}
+
+uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
+                                float t_max, uint32_t active, bool coherent) const {
+    alignas(32) RTCRay8 packet;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const int source = (active >> lane) & 1u ? lane : std::countr_zero(active);
+        packet.org_x[lane] = origins[source].x;
+        packet.org_y[lane] = origins[source].y;
+        packet.org_z[lane] = origins[source].z;
+        packet.dir_x[lane] = directions[source].x;
+        packet.dir_y[lane] = directions[source].y;
+        packet.dir_z[lane] = directions[source].z;
+        packet.tnear[lane] = 0.0f;
+        packet.tfar[lane] = t_max;
+        packet.time[lane] = 0.0f;
+        packet.mask[lane] = 0xffffffffu;
+        packet.id[lane] = 0;
+        packet.flags[lane] = 0;
+    }
+    const PerLane<int> valid = embree_valid(active);
+    RTCIntersectContext context;
+    init_context(context, coherent);
+    rtcOccluded8(valid.data(), m_world, &context, &packet);
+
+    uint32_t blocked = 0;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        // Embree sets tfar to -inf where something blocks the segment.
+        if ((active >> lane) & 1u && packet.tfar[lane] < 0.0f) blocked |= 1u << lane;
+    }
+    return blocked;
 }
 
 const char* Accel::embree_version() {

@@ -4,10 +4,24 @@
 // of the root group directly in the world scene.
 #include <glint/geometry/shape.h>
 
+#include <array>
+#include <bit>
+#include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace glint {
+
+// Rays traced together as one Embree packet, and the per-lane arrays that go with them.
+// Lanes are picked by a bit mask (bit i for lane i).
+inline constexpr int kPacketWidth = 8;
+template <typename T>
+using PerLane = std::array<T, kPacketWidth>;
+// Calls f(lane) for each lane set in `lanes`, in increasing order.
+template <typename Function>
+void for_each_lane(uint32_t lanes, Function&& f) {
+    for (; lanes != 0; lanes &= lanes - 1) f(std::countr_zero(lanes));
+}
 
 class Accel {
 public:
@@ -62,6 +76,18 @@ public:
         rtcOccluded1(m_world, &context, &r);
         return r.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the segment
     }
+
+    // Closest hits of the rays in the lanes set in `active`, traced together: each hit lane's
+    // record in `hits` is written as intersect() writes it. Returns the lanes that hit.
+    // `coherent` says the rays start close together and point the same way (the camera
+    // rays of one pixel), so Embree traverses them as a group; otherwise it follows each
+    // ray on its own, still sharing the packet's setup. Same hits as intersect() per lane.
+    uint32_t intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
+                              PerLane<HitRecord>& hits, bool coherent) const;
+    // The lanes among `active` whose segment origins[i] + t directions[i], t in
+    // [0, t_max], is blocked; as occluded() per lane.
+    uint32_t occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
+                             float t_max, uint32_t active, bool coherent) const;
 
     static const char* embree_version();
 

@@ -1,5 +1,6 @@
 #pragma once
 // Integrators turn a Scene into an image on a Film.
+#include <glint/core/arena.h>
 #include <glint/film/film.h>
 #include <glint/film/filter.h>
 #include <glint/scene/render_settings.h>
@@ -11,7 +12,6 @@
 namespace glint {
 
 class Sampler;
-class Arena;
 class Progress;
 
 // A per-pixel channel an integrator adds to the image (e.g. samples taken per pixel).
@@ -50,24 +50,49 @@ public:
     virtual Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                         RayCounter& counter, AovSample* aov) const = 0;
 
+    // The samples of one pixel go to the integrator in packets of up to kPacketWidth, lane
+    // i with its camera ray, its own sampler (started on its sample, the camera's values
+    // drawn) and its feature record (or null). Lane i's radiance goes to radiance[i].
+    struct CameraPacket {
+        int count = 0;
+        PerLane<Ray> rays;
+        PerLane<Sampler*> samplers{};
+        PerLane<AovSample*> aovs{};
+    };
+    // li() of every lane, one after the other. Integrators that trace a packet's rays
+    // together (the path tracer) override it; each lane's result must be what li() would
+    // give, up to the rounding of Embree's packet traversal.
+    virtual void li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
+                           RayCounter& counter, PerLane<Spectrum>& radiance) const;
+
 protected:
     // Renders samples [first, first + count) of `pixel` into `film`; returns their mean
     // luminance and mean squared luminance (for error estimates).
     struct PixelMoments {
         double sum = 0.0, sum_squares = 0.0;
     };
-    PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Sampler& sampler,
-                              Arena& arena, RayCounter& counter, int first, int count) const;
+    // What one thread renders pixels with: a sampler per packet lane, scratch memory for
+    // BSDFs, and the rays it traced.
+    struct Worker {
+        PerLane<std::unique_ptr<Sampler>> samplers;
+        Arena arena;
+        RayCounter counter;
+    };
+    PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Worker& worker,
+                              int first, int count) const;
 
-    // Runs `work(pixel, sampler, arena, counter)` for every pixel for which `wanted` is true,
-    // in parallel tiles; returns the rays traced.
+    // Runs `work(pixel, worker)` for every pixel for which `wanted` is true, in parallel
+    // tiles, with one Worker per task made from `prototype`; returns the rays traced.
     template <typename Work>
     uint64_t for_each_pixel(int width, int height, const Sampler& prototype, Progress& progress,
                             const std::vector<uint8_t>* wanted, Work&& work) const;
 
-    void render_uniform(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const;
-    void render_edge_adaptive(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const;
-    void render_variance_adaptive(const Scene& scene, Film& film, Progress& progress, RenderStats& stats) const;
+    void render_uniform(const Scene& scene, Film& film, Progress& progress,
+                        RenderStats& stats) const;
+    void render_edge_adaptive(const Scene& scene, Film& film, Progress& progress,
+                              RenderStats& stats) const;
+    void render_variance_adaptive(const Scene& scene, Film& film, Progress& progress,
+                                  RenderStats& stats) const;
 
     RenderSettings m_settings;
     std::unique_ptr<Filter> m_filter;

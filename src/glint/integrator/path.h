@@ -3,6 +3,8 @@
 // multiple importance sampling (power heuristic, Veach 1997), and Russian roulette.
 #include <glint/integrator/integrator.h>
 
+#include <optional>
+
 namespace glint {
 
 //
@@ -20,8 +22,21 @@ public:
         : TileIntegrator(settings), m_strategy(strategy) {}
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
+    void li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
+                   RayCounter& counter, PerLane<Spectrum>& radiance) const override;
 
 private:
+    struct Path;
+
+    static uint32_t trace_paths(const Scene& scene, PerLane<Path>& paths, uint32_t active,
+                                bool coherent, RayCounter& counter);
+    static uint32_t trace_shadows(const Scene& scene, const PerLane<Vec3>& origins,
+                                  const PerLane<Vec3>& directions, uint32_t active, bool coherent);
+    void escape(const Scene& scene, Path& path, int depth) const;
+    bool scatter_at_hit(const Scene& scene, Path& path, int depth, Arena& arena) const;
+    std::optional<Vec3> sample_light(const Scene& scene, Path& path) const;
+    bool continue_path(Path& path, int depth) const;
+
     DirectLighting m_strategy;
 };
 

@@ -99,9 +99,8 @@ uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& pr
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
         [&](const tbb::blocked_range2d<int>& range) {
-            auto sampler = prototype.clone();
-            Arena arena;
-            RayCounter counter;
+            Worker worker;
+            for (auto& sampler : worker.samplers) sampler = prototype.clone();
             for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
                 for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
                     const int x0 = tx * kTileSize, y0 = ty * kTileSize;
@@ -111,13 +110,13 @@ uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& pr
                     for (int y = y0; y < y1; ++y) {
                         for (int x = x0; x < x1; ++x) {
                             if (wanted && !(*wanted)[static_cast<size_t>(y) * width + x]) continue;
-                            samples += work(Vec2i(x, y), *sampler, arena, counter);
+                            samples += work(Vec2i(x, y), worker);
                         }
                     }
                     progress.advance(samples);
                 }
             }
-            total_rays += counter.rays;
+            total_rays += worker.counter.rays;
         });
     return total_rays.load();
 }
@@ -127,8 +126,8 @@ void TileIntegrator::render_uniform(const Scene& scene, Film& film, Progress& pr
     const auto sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
     const int spp = m_settings.spp;
     stats.rays = for_each_pixel(film.width(), film.height(), *sampler, progress, nullptr,
-                                [&](Vec2i pixel, Sampler& s, Arena& arena, RayCounter& counter) {
-                                    render_pixel(scene, film, pixel, s, arena, counter, 0, spp);
+                                [&](Vec2i pixel, Worker& worker) {
+                                    render_pixel(scene, film, pixel, worker, 0, spp);
                                     return static_cast<uint64_t>(spp);
                                 });
     stats.samples = static_cast<uint64_t>(film.width()) * film.height() * spp;
@@ -141,28 +140,25 @@ void TileIntegrator::render_edge_adaptive(const Scene& scene, Film& film, Progre
     const int w = film.width(), h = film.height();
     Film preview(w, h, film.has_aovs());
     const auto single = make_sampler("stratified", 1, m_settings.seed);
-    stats.rays = for_each_pixel(w, h, *single, progress, nullptr,
-                                [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-                                    render_pixel(scene, preview, pixel, s, a, c, 0, 1);
-                                    return uint64_t{1};
-                                });
+    stats.rays = for_each_pixel(w, h, *single, progress, nullptr, [&](Vec2i pixel, Worker& worker) {
+        render_pixel(scene, preview, pixel, worker, 0, 1);
+        return uint64_t{1};
+    });
     const std::vector<uint8_t> mask =
         sobel_edge_mask(preview.resolve(), m_settings.edge_threshold, m_settings.edge_radius);
 
     const int n = m_settings.supersample;
     const auto grid = make_sampler("stratified", n * n, m_settings.seed);
-    stats.rays += for_each_pixel(w, h, *grid, progress, &mask,
-                                 [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-                                     render_pixel(scene, film, pixel, s, a, c, 0, n * n);
-                                     return static_cast<uint64_t>(n * n);
-                                 });
+    stats.rays += for_each_pixel(w, h, *grid, progress, &mask, [&](Vec2i pixel, Worker& worker) {
+        render_pixel(scene, film, pixel, worker, 0, n * n);
+        return static_cast<uint64_t>(n * n);
+    });
     std::vector<uint8_t> flat(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) flat[i] = !mask[i];
-    stats.rays += for_each_pixel(w, h, *single, progress, &flat,
-                                 [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
-                                     render_pixel(scene, film, pixel, s, a, c, 0, 1);
-                                     return uint64_t{1};
-                                 });
+    stats.rays += for_each_pixel(w, h, *single, progress, &flat, [&](Vec2i pixel, Worker& worker) {
+        render_pixel(scene, film, pixel, worker, 0, 1);
+        return uint64_t{1};
+    });
 
     ExtraChannel edges{"edges.Y", std::vector<float>(mask.begin(), mask.end())};
     ExtraChannel counts{"samples.Y", {}};
@@ -198,15 +194,14 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
     };
 
     for (bool any = true; any;) {
-        stats.rays += for_each_pixel(
-            w, h, *sampler, progress, &active,
-            [&](Vec2i pixel, Sampler& s, Arena& a, RayCounter& c) {
+        stats.rays +=
+            for_each_pixel(w, h, *sampler, progress, &active, [&](Vec2i pixel, Worker& worker) {
                 const size_t i = static_cast<size_t>(pixel.y) * w + pixel.x;
                 // Doubling keeps sample counts at powers of two times spp, where the Sobol
                 // sampler's prefixes are best stratified.
                 const int count =
                     std::min(taken[i] == 0 ? m_settings.spp : taken[i], cap - taken[i]);
-                const PixelMoments m = render_pixel(scene, film, pixel, s, a, c, taken[i], count);
+                const PixelMoments m = render_pixel(scene, film, pixel, worker, taken[i], count);
                 moments[i].sum += m.sum;
                 moments[i].sum_squares += m.sum_squares;
                 taken[i] += count;
@@ -242,25 +237,45 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
 }
 
 TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Film& film,
-                                                          Vec2i pixel, Sampler& sampler,
-                                                          Arena& arena, RayCounter& counter,
-                                                          int first, int count) const {
+                                                          Vec2i pixel, Worker& worker, int first,
+                                                          int count) const {
     const bool want_aovs = film.has_aovs();
     PixelMoments moments;
-    for (int index = first; index < first + count; ++index) {
-        sampler.start_pixel_sample(pixel, index);
-        const FilterSample fs = m_filter->sample(sampler.get_pixel_2d());
-        const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + fs.offset;
-        const Ray ray = scene.camera().sample_ray(film_point, sampler);
-        AovSample aov{};
-        arena.reset();
-        const Spectrum L = li(ray, scene, sampler, arena, counter, want_aovs ? &aov : nullptr);
-        film.add_sample(pixel, L, fs.weight, want_aovs ? &aov : nullptr);
-        const double y = L.is_finite() ? L.luminance() : 0.0;
-        moments.sum += y;
-        moments.sum_squares += y * y;
+    CameraPacket packet;
+    PerLane<FilterSample> filter_samples;
+    PerLane<AovSample> aovs;
+    PerLane<Spectrum> radiance;
+    for (int packet_first = first; packet_first < first + count; packet_first += kPacketWidth) {
+        packet.count = std::min(kPacketWidth, first + count - packet_first);
+        for (int lane = 0; lane < packet.count; ++lane) {
+            Sampler& sampler = *worker.samplers[lane];
+            sampler.start_pixel_sample(pixel, packet_first + lane);
+            filter_samples[lane] = m_filter->sample(sampler.get_pixel_2d());
+            const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter_samples[lane].offset;
+            packet.rays[lane] = scene.camera().sample_ray(film_point, sampler);
+            packet.samplers[lane] = &sampler;
+            aovs[lane] = AovSample{};
+            packet.aovs[lane] = want_aovs ? &aovs[lane] : nullptr;
+        }
+        worker.arena.reset();
+        li_packet(packet, scene, worker.arena, worker.counter, radiance);
+        for (int lane = 0; lane < packet.count; ++lane) {
+            const Spectrum& L = radiance[lane];
+            film.add_sample(pixel, L, filter_samples[lane].weight, packet.aovs[lane]);
+            const double y = L.is_finite() ? L.luminance() : 0.0;
+            moments.sum += y;
+            moments.sum_squares += y * y;
+        }
     }
     return moments;
+}
+
+void TileIntegrator::li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
+                               RayCounter& counter, PerLane<Spectrum>& radiance) const {
+    for (int lane = 0; lane < packet.count; ++lane) {
+        radiance[lane] =
+            li(packet.rays[lane], scene, *packet.samplers[lane], arena, counter, packet.aovs[lane]);
+    }
 }
 
 }  // namespace glint

@@ -31,22 +31,18 @@ public:
     bool intersect(const Ray& ray, SurfaceInteraction& si) const {
         HitRecord hit;
         if (!m_accel.intersect(ray, hit)) return false;
-        const WorldEntry& entry = m_world[hit.top_geometry];
-        // What the shapes may leave unset, reset here, since `si` may hold the previous hit.
-        si.part = 0;
-        si.dpdx = si.dpdy = Vec3(0.0f);
-        si.dudx = si.dvdx = si.dudy = si.dvdy = 0.0f;
-        if (hit.instanced()) {
-            fill_instanced(ray, hit, entry, si);
-        } else {
-            entry.geometry.shape->fill_interaction(ray, hit, si);
-            si.material = entry.geometry.material(si.part);
-            si.area_light = entry.light;
-        }
-        si.t = hit.t;
-        si.wo = -glm::normalize(ray.direction);
-        si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
+        fill_interaction(ray, hit, si);
         return true;
+    }
+    // intersect() for the rays in the lanes set in `active`, traced as one packet (see
+    // Accel::intersect_packet); writes si[i] for each lane i that hit and returns those.
+    uint32_t intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
+                              const PerLane<SurfaceInteraction*>& si, bool coherent) const {
+        PerLane<HitRecord> hits;
+        const uint32_t hit_lanes = m_accel.intersect_packet(rays, active, hits, coherent);
+        for_each_lane(hit_lanes,
+                      [&](int lane) { fill_interaction(*rays[lane], hits[lane], *si[lane]); });
+        return hit_lanes;
     }
     // The same, as a value: a fresh SurfaceInteraction (~200 bytes set up) per call.
     std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
@@ -58,8 +54,23 @@ public:
     // Whether anything blocks the shadow ray from `si` (its origin offset as spawn_ray's)
     // to just short of `target`.
     bool occluded(const SurfaceInteraction& si, const Vec3& target) const {
+        const ShadowRay shadow = shadow_ray(si, target);
+        return m_accel.occluded(shadow.origin, shadow.direction, 0.0f, kShadowRayEnd);
+    }
+    // The shadow ray occluded(si, target) traces: from the offset origin, with the
+    // direction reaching `target` at t = 1 (it stops at kShadowRayEnd).
+    struct ShadowRay {
+        Vec3 origin, direction;
+    };
+    static ShadowRay shadow_ray(const SurfaceInteraction& si, const Vec3& target) {
         const Vec3 origin = offset_ray_origin(si.p, si.ng, target - si.p);
-        return m_accel.occluded(origin, target - origin, 0.0f, kShadowRayEnd);
+        return {origin, target - origin};
+    }
+    // The lanes among `active` whose shadow ray (from shadow_ray()) is blocked, traced as
+    // one packet.
+    uint32_t occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
+                             uint32_t active, bool coherent) const {
+        return m_accel.occluded_packet(origins, directions, kShadowRayEnd, active, coherent);
     }
 
     const Camera& camera() const { return *m_camera; }
@@ -98,6 +109,25 @@ private:
         const Light* light = nullptr;      // root shapes
     };
 
+    // Turns Embree's hit record into the SurfaceInteraction: the shape fills in its part,
+    // and the scene adds material, light and the ray's side. Writes every field of `si`.
+    void fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
+        const WorldEntry& entry = m_world[hit.top_geometry];
+        // What the shapes may leave unset, reset here, since `si` may hold the previous hit.
+        si.part = 0;
+        si.dpdx = si.dpdy = Vec3(0.0f);
+        si.dudx = si.dvdx = si.dudy = si.dvdy = 0.0f;
+        if (hit.instanced()) {
+            fill_instanced(ray, hit, entry, si);
+        } else {
+            entry.geometry.shape->fill_interaction(ray, hit, si);
+            si.material = entry.geometry.material(si.part);
+            si.area_light = entry.light;
+        }
+        si.t = hit.t;
+        si.wo = -glm::normalize(ray.direction);
+        si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
+    }
     // Scene::intersect for a hit inside a group instance: the shape fills `si` in the
     // group's space, and the result is carried to the world.
     void fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
