@@ -1,19 +1,26 @@
 // Analytic scenes for the path integrator: each has a closed-form answer.
 #include <glint/camera/camera.h>
+#include <glint/core/arena.h>
 #include <glint/core/error.h>
+#include <glint/core/sampler.h>
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
+#include <glint/integrator/integrator.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
 
 #include <cmath>
+#include <memory>
 #include <optional>
 
 using namespace glint;
 using glint::test::expect_all_pixels;
 using glint::test::mean_channel;
+using glint::test::read_text;
 using glint::test::render_lua;
 
 namespace {
@@ -338,4 +345,68 @@ TEST(PathIntegrator, MirroredEmitterLightsTheSameAsUnmirrored) {
     const double plain_mean = mean_channel(plain, 0, 0, 0, 16, 16);
     EXPECT_GT(plain_mean, 0.05);
     EXPECT_NEAR(mean_channel(mirrored, 0, 0, 0, 16, 16), plain_mean, 0.02 * plain_mean);
+}
+
+// The path tracer traces a pixel's samples in packets whose paths advance together. Each
+// path must come out as it would alone (li() traces one path with single-ray queries):
+// same radiance, features and ray count, bit for bit, for every packet size, through
+// glass and mirror bounces, paths that end early and paths that escape.
+TEST(PathIntegrator, PacketsGiveWhatEachPathGivesAlone) {
+    const std::string code = read_text(GLINT_SOURCE_DIR "/examples/cornell-spheres.lua");
+    const SceneDesc desc = load_scene_string(code, "cornell-spheres.lua");
+    const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
+    const auto scene = build_scene(desc, settings);
+    const auto integrator = make_integrator(settings);
+    const auto& tile = dynamic_cast<const TileIntegrator&>(*integrator);
+
+    // The camera ray of `sampler`'s sample `index` of `pixel` (drawing the camera's values).
+    auto camera_ray = [&](Sampler& sampler, Vec2i pixel, int index) {
+        sampler.start_pixel_sample(pixel, index);
+        const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+        return scene->camera().sample_ray(film_point, sampler);
+    };
+    auto new_sampler = [&] { return make_sampler(settings.sampler, settings.spp, settings.seed); };
+
+    Arena arena;
+    int lit = 0;
+    for (int py = 0; py < 6; ++py) {
+        for (int px = 0; px < 6; ++px) {
+            const Vec2i pixel((2 * px + 1) * settings.width / 12,
+                              (2 * py + 1) * settings.height / 12);
+            TileIntegrator::CameraPacket packet;
+            packet.count = 1 + (py * 6 + px) % kPacketWidth;
+            PerLane<std::unique_ptr<Sampler>> samplers;
+            PerLane<AovSample> aovs{};
+            for (int lane = 0; lane < packet.count; ++lane) {
+                samplers[lane] = new_sampler();
+                packet.rays[lane] = camera_ray(*samplers[lane], pixel, lane);
+                packet.samplers[lane] = samplers[lane].get();
+                packet.aovs[lane] = &aovs[lane];
+            }
+            RayCounter packet_rays;
+            PerLane<Spectrum> radiance;
+            arena.reset();
+            tile.li_packet(packet, *scene, arena, packet_rays, radiance);
+
+            RayCounter lone_rays;
+            for (int lane = 0; lane < packet.count; ++lane) {
+                const auto sampler = new_sampler();
+                const Ray ray = camera_ray(*sampler, pixel, lane);
+                AovSample aov{};
+                const Spectrum L = tile.li(ray, *scene, *sampler, arena, lone_rays, &aov);
+                const std::string where = fmt::format("pixel ({}, {}), lane {} of {}", pixel.x,
+                                                      pixel.y, lane, packet.count);
+                EXPECT_EQ(radiance[lane].r, L.r) << where;
+                EXPECT_EQ(radiance[lane].g, L.g) << where;
+                EXPECT_EQ(radiance[lane].b, L.b) << where;
+                EXPECT_EQ(aovs[lane].albedo.r, aov.albedo.r) << where;
+                EXPECT_EQ(aovs[lane].normal, aov.normal) << where;
+                EXPECT_EQ(aovs[lane].depth, aov.depth) << where;
+                lit += !L.is_black();
+            }
+            EXPECT_EQ(packet_rays.rays, lone_rays.rays)
+                << "pixel (" << pixel.x << ", " << pixel.y << ")";
+        }
+    }
+    EXPECT_GT(lit, 100);  // the comparisons are of light that got somewhere
 }
