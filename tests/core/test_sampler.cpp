@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 using namespace glint;
@@ -20,6 +21,35 @@ TEST(Sampler, SameKeyGivesSameNumbers) {
         b->start_pixel_sample(Vec2i(3, 6), 9);
         a->start_pixel_sample(Vec2i(3, 5), 9);
         EXPECT_NE(a->get_1d(), b->get_1d()) << name;
+    }
+}
+
+// Lanes cloned for one thread may share per-pixel work (the Sobol group keys), but each
+// gives what a sampler of its own gives, however their draws interleave, across pixels
+// and for paths deeper than the shared key cache.
+TEST(Sampler, LaneClonesGiveWhatLoneSamplersGive) {
+    for (const char* name : {"independent", "stratified", "sobol"}) {
+        auto first = make_sampler(name, 16, 7);
+        auto second = first->clone_for_lane();
+        for (const Vec2i pixel : {Vec2i(3, 5), Vec2i(4, 5), Vec2i(3, 5)}) {
+            first->start_pixel_sample(pixel, 2);
+            second->start_pixel_sample(pixel, 11);
+            std::vector<float> first_values, second_values;
+            for (int d = 0; d < 200; ++d) {  // 50 groups of four: past the 32 cached keys
+                second_values.push_back(d % 3 == 0 ? second->get_2d().y : second->get_1d());
+                first_values.push_back(d % 3 == 0 ? first->get_2d().y : first->get_1d());
+            }
+            for (const auto& [index, values] :
+                 {std::pair{2, &first_values}, std::pair{11, &second_values}}) {
+                auto lone = make_sampler(name, 16, 7);
+                lone->start_pixel_sample(pixel, index);
+                for (int d = 0; d < 200; ++d) {
+                    const float expected = d % 3 == 0 ? lone->get_2d().y : lone->get_1d();
+                    ASSERT_EQ((*values)[d], expected)
+                        << name << ", sample " << index << ", draw " << d;
+                }
+            }
+        }
     }
 }
 

@@ -305,15 +305,17 @@ ScrambleGroup scramble_group() {
 // prefix of a pixel's samples is well stratified, which adaptive sampling relies on.
 class SobolSampler final : public Sampler {
 public:
-    SobolSampler(int spp, uint64_t seed) : Sampler(spp, seed), m_tables(&sobol_tables()) {}
+    SobolSampler(int spp, uint64_t seed)
+        : Sampler(spp, seed), m_tables(&sobol_tables()), m_keys(std::make_shared<PixelKeys>()) {}
 
     void start_pixel_sample(Vec2i pixel, int index) override {
         // A pixel's samples are taken one after another, and the group keys depend only on
         // (seed, pixel, group): they are hashed once per pixel, not per sample.
-        if (pixel != m_key_pixel) {
-            m_pixel_key = pixel_sample_key(m_seed, pixel, 0);
-            m_key_pixel = pixel;
-            m_keys_cached = 0;
+        PixelKeys& keys = *m_keys;
+        if (pixel != keys.pixel) {
+            keys.pixel_key = pixel_sample_key(m_seed, pixel, 0);
+            keys.pixel = pixel;
+            keys.cached = 0;
         }
         m_reversed_index = reverse_bits(static_cast<uint32_t>(index));
         m_next_group = 0;
@@ -329,9 +331,23 @@ public:
     std::unique_ptr<Sampler> clone() const override {
         return std::make_unique<SobolSampler>(m_spp, m_seed);
     }
+    // Lanes of one thread take samples of the same pixel: they share its group keys.
+    std::unique_ptr<Sampler> clone_for_lane() override {
+        auto lane = std::make_unique<SobolSampler>(m_spp, m_seed);
+        lane->m_keys = m_keys;
+        return lane;
+    }
 
 private:
     static constexpr uint32_t kCachedKeys = 32;  // deeper groups are hashed each time
+
+    // The group keys of the pixel last started, hashed as they are first asked for.
+    struct PixelKeys {
+        Vec2i pixel{-1, -1};  // no pixel yet: film pixels are never negative
+        uint64_t pixel_key = 0;
+        uint32_t cached = 0;  // keys[0, cached) hold this pixel's first keys
+        std::array<uint32_t, kCachedKeys> keys{};
+    };
 
     // Computes the next group's four values: Owen-scrambled Sobol dimensions 0 to 3 of the
     // group's shuffled index, each scrambled with its own seed derived from the group key.
@@ -356,18 +372,16 @@ private:
     }
 
     uint32_t group_key(uint32_t group) {
-        if (group < m_keys_cached) return m_keys[group];
-        const auto key = static_cast<uint32_t>(hash_combine(m_pixel_key, group));
-        if (group == m_keys_cached && group < kCachedKeys) m_keys[m_keys_cached++] = key;
+        PixelKeys& keys = *m_keys;
+        if (group < keys.cached) return keys.keys[group];
+        const auto key = static_cast<uint32_t>(hash_combine(keys.pixel_key, group));
+        if (group == keys.cached && group < kCachedKeys) keys.keys[keys.cached++] = key;
         return key;
     }
 
     const SobolTables* m_tables;
     ScrambleGroup m_scramble_group = scramble_group();
-    uint64_t m_pixel_key = 0;
-    Vec2i m_key_pixel{-1, -1};   // no pixel yet: film pixels are never negative
-    uint32_t m_keys_cached = 0;  // m_keys[0, m_keys_cached) hold this pixel's first keys
-    std::array<uint32_t, kCachedKeys> m_keys{};
+    std::shared_ptr<PixelKeys> m_keys;  // shared with the lanes cloned from this sampler
     uint32_t m_reversed_index = 0;
     uint32_t m_next_group = 0;
 };

@@ -28,6 +28,10 @@ public:
     virtual Vec2 get_pixel_2d() { return get_2d(); }
     // A fresh sampler with the same settings, for another thread.
     virtual std::unique_ptr<Sampler> clone() const = 0;
+    // A fresh sampler for another lane of the same thread, which takes other samples of the
+    // same pixels: it may share what this one computes once per pixel (and so must not be
+    // used concurrently with it). Gives the same values as clone() would.
+    virtual std::unique_ptr<Sampler> clone_for_lane() { return clone(); }
 
     int samples_per_pixel() const { return m_spp; }
     uint64_t seed() const { return m_seed; }

@@ -100,7 +100,9 @@ uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& pr
         tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
         [&](const tbb::blocked_range2d<int>& range) {
             Worker worker;
-            for (auto& sampler : worker.samplers) sampler = prototype.clone();
+            worker.samplers[0] = prototype.clone();
+            for (int lane = 1; lane < kPacketWidth; ++lane)
+                worker.samplers[lane] = worker.samplers[0]->clone_for_lane();
             for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
                 for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
                     const int x0 = tx * kTileSize, y0 = ty * kTileSize;
