@@ -192,7 +192,8 @@ void PathIntegrator::escape(const Scene& scene, Path& path, int depth) const {
 
 // At the path's new hit: emission found by BSDF sampling, absorption on the way, and the
 // BSDF there. False when the path ends at this hit.
-bool PathIntegrator::scatter_at_hit(const Scene& scene, Path& path, int depth, Arena& arena) const {
+[[gnu::always_inline]] inline bool PathIntegrator::scatter_at_hit(const Scene& scene, Path& path,
+                                                                  int depth, Arena& arena) const {
     SurfaceInteraction& si = path.si;
     // Emission reached by BSDF sampling; light sampling already counted the rest of it.
     if (si.area_light) {
@@ -222,7 +223,8 @@ bool PathIntegrator::scatter_at_hit(const Scene& scene, Path& path, int depth, A
 
 // Next-event estimation at the path's hit: sets path.direct and returns the point whose
 // visibility decides it, or nullopt when there is nothing to trace.
-std::optional<Vec3> PathIntegrator::sample_light(const Scene& scene, Path& path) const {
+[[gnu::always_inline]] inline std::optional<Vec3> PathIntegrator::sample_light(const Scene& scene,
+                                                                               Path& path) const {
     if (path.bsdf->is_delta() || scene.light_sampler().empty() ||
         m_strategy == DirectLighting::kBsdfOnly) {
         return std::nullopt;
@@ -236,7 +238,7 @@ std::optional<Vec3> PathIntegrator::sample_light(const Scene& scene, Path& path)
 }
 
 // BSDF sampling for the next bounce, and Russian roulette. False when the path ends.
-bool PathIntegrator::continue_path(Path& path, int depth) const {
+[[gnu::always_inline]] inline bool PathIntegrator::continue_path(Path& path, int depth) const {
     SurfaceInteraction& si = path.si;
     Sampler& sampler = *path.sampler;
     const Vec2 u = sampler.get_2d();
