@@ -68,10 +68,13 @@ bool Accel::occluded(const Ray& ray) const {
 
 namespace {
 
-// Embree's 8-wide calls take an int per lane: -1 traces it, 0 leaves it out.
+// Embree's 8-wide calls take an int per lane: -1 traces it, 0 leaves it out. Lanes are
+// handled here by selects and bit masks rather than branches: whether a lane is active or
+// hit something has no pattern a branch predictor could learn.
 PerLane<int> embree_valid(uint32_t active) {
     PerLane<int> valid;
-    for (int lane = 0; lane < kPacketWidth; ++lane) valid[lane] = (active >> lane) & 1u ? -1 : 0;
+    for (int lane = 0; lane < kPacketWidth; ++lane)
+        valid[lane] = -static_cast<int>((active >> lane) & 1u);
     return valid;
 }
 
@@ -87,9 +90,10 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
                                  PerLane<HitRecord>& hits, bool coherent) const {
     static_assert(kPacketWidth == 8, "the packet calls below are Embree's 8-wide ones");
     alignas(32) RTCRayHit8 packet;
+    const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         // Inactive lanes get a valid ray too, so no lane holds uninitialised floats.
-        const Ray& ray = (active >> lane) & 1u ? *rays[lane] : *rays[std::countr_zero(active)];
+        const Ray& ray = *rays[(active >> lane) & 1u ? lane : first];
         packet.ray.org_x[lane] = ray.origin.x;
         packet.ray.org_y[lane] = ray.origin.y;
         packet.ray.org_z[lane] = ray.origin.z;
@@ -111,10 +115,11 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
     rtcIntersect8(valid.data(), m_world, &context, &packet);
 
     uint32_t hit_lanes = 0;
-    for (int lane = 0; lane < kPacketWidth; ++lane) {
-        if (!((active >> lane) & 1u) || packet.hit.geomID[lane] == RTC_INVALID_GEOMETRY_ID)
-            continue;
-        hit_lanes |= 1u << lane;
+    for (int lane = 0; lane < kPacketWidth; ++lane)
+        hit_lanes |= static_cast<uint32_t>(packet.hit.geomID[lane] != RTC_INVALID_GEOMETRY_ID)
+                     << lane;
+    hit_lanes &= active;
+    for_each_lane(hit_lanes, [&](int lane) {
         HitRecord& hit = hits[lane];
         hit.t = packet.ray.tfar[lane];
         hit.primitive = packet.hit.primID[lane];
@@ -124,15 +129,16 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
         const bool instanced = instance != RTC_INVALID_GEOMETRY_ID;
         hit.top_geometry = instanced ? instance : packet.hit.geomID[lane];
         hit.local_geometry = instanced ? packet.hit.geomID[lane] : RTC_INVALID_GEOMETRY_ID;
-    }
+    });
     return hit_lanes;
 }
 
 uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
                                 float t_max, uint32_t active, bool coherent) const {
     alignas(32) RTCRay8 packet;
+    const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
-        const int source = (active >> lane) & 1u ? lane : std::countr_zero(active);
+        const int source = (active >> lane) & 1u ? lane : first;
         packet.org_x[lane] = origins[source].x;
         packet.org_y[lane] = origins[source].y;
         packet.org_z[lane] = origins[source].z;
@@ -151,12 +157,11 @@ uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3
     init_context(context, coherent);
     rtcOccluded8(valid.data(), m_world, &context, &packet);
 
+    // Embree sets tfar to -inf where something blocks the segment.
     uint32_t blocked = 0;
-    for (int lane = 0; lane < kPacketWidth; ++lane) {
-        // Embree sets tfar to -inf where something blocks the segment.
-        if ((active >> lane) & 1u && packet.tfar[lane] < 0.0f) blocked |= 1u << lane;
-    }
-    return blocked;
+    for (int lane = 0; lane < kPacketWidth; ++lane)
+        blocked |= static_cast<uint32_t>(packet.tfar[lane] < 0.0f) << lane;
+    return blocked & active;
 }
 
 const char* Accel::embree_version() {

@@ -15,16 +15,15 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
     RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
     const unsigned n = args->N;
-    for (unsigned i = 0; i < n; ++i) {
-        if (args->valid[i] != -1) continue;
+    for_each_valid_ray(args->valid, n, [&](unsigned i) {
         // Only the parts the test needs: a whole Ray would also clear its differentials.
         const Vec3 o = packet_origin(rays, n, i), d = packet_direction(rays, n, i);
         float t0, t1;
-        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
+        if (!sphere->intersect_interval(o, d, t0, t1)) return;
         const float t_near = RTCRayN_tnear(rays, n, i);
         float& t_far = RTCRayN_tfar(rays, n, i);
         const float t = t0 > t_near ? t0 : t1;
-        if (!(t > t_near && t < t_far)) continue;
+        if (!(t > t_near && t < t_far)) return;
         t_far = t;
         const Vec3 p = o + t * d;
         RTCHitN_Ng_x(hits, n, i) = p.x;
@@ -35,23 +34,22 @@ void sphere_intersect(const RTCIntersectFunctionNArguments* args) {
         RTCHitN_primID(hits, n, i) = args->primID;
         RTCHitN_geomID(hits, n, i) = args->geomID;
         RTCHitN_instID(hits, n, i, 0) = args->context->instID[0];
-    }
+    });
 }
 
 void sphere_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* sphere = static_cast<const Sphere*>(args->geometryUserPtr);
     RTCRayN* rays = args->ray;
     const unsigned n = args->N;
-    for (unsigned i = 0; i < n; ++i) {
-        if (args->valid[i] != -1) continue;
+    for_each_valid_ray(args->valid, n, [&](unsigned i) {
         const Vec3 o = packet_origin(rays, n, i), d = packet_direction(rays, n, i);
         float t0, t1;
-        if (!sphere->intersect_interval(o, d, t0, t1)) continue;
+        if (!sphere->intersect_interval(o, d, t0, t1)) return;
         const float t_near = RTCRayN_tnear(rays, n, i);
         float& t_far = RTCRayN_tfar(rays, n, i);
         const bool hit = (t0 > t_near && t0 < t_far) || (t1 > t_near && t1 < t_far);
         if (hit) t_far = -kInfinity;  // Embree's convention for "occluded"
-    }
+    });
 }
 
 // 1 - cos(theta_max) of the cone a sphere subtends, from sin^2(theta_max), without the

@@ -7,6 +7,9 @@
 
 #include <embree3/rtcore.h>
 
+#include <bit>
+#include <cstdint>
+
 namespace glint {
 
 // Origin and direction of ray i of an n-wide Embree packet.
@@ -25,6 +28,16 @@ inline Ray ray_from_packet(RTCRayN* rays, unsigned n, unsigned i) {
     ray.t_min = RTCRayN_tnear(rays, n, i);
     ray.t_max = RTCRayN_tfar(rays, n, i);
     return ray;
+}
+
+// Calls f(i) for each ray i that Embree's `valid` marks active (-1) among the n of a packet.
+// The mask is built without branches and then walked bit by bit: which lanes of a packet
+// reach a shape has no pattern a branch predictor could learn.
+template <typename Function>
+void for_each_valid_ray(const int* valid, unsigned n, Function&& f) {
+    uint32_t lanes = 0;
+    for (unsigned i = 0; i < n; ++i) lanes |= static_cast<uint32_t>(valid[i] == -1) << i;
+    for (; lanes != 0; lanes &= lanes - 1) f(static_cast<unsigned>(std::countr_zero(lanes)));
 }
 
 inline RTCBounds to_embree_bounds(const Bounds3& b) {

@@ -21,11 +21,10 @@ void solid_intersect(const RTCIntersectFunctionNArguments* args) {
     const auto* shape = static_cast<const SolidShape*>(args->geometryUserPtr);
     RTCRayN* rays = RTCRayHitN_RayN(args->rayhit, args->N);
     RTCHitN* hits = RTCRayHitN_HitN(args->rayhit, args->N);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
+    for_each_valid_ray(args->valid, args->N, [&](unsigned i) {
         const std::optional<Crossing> crossing =
             shape->first_hit(ray_from_packet(rays, args->N, i));
-        if (!crossing) continue;
+        if (!crossing) return;
         RTCRayN_tfar(rays, args->N, i) = crossing->t;
         RTCHitN_Ng_x(hits, args->N, i) = crossing->normal.x;
         RTCHitN_Ng_y(hits, args->N, i) = crossing->normal.y;
@@ -36,16 +35,15 @@ void solid_intersect(const RTCIntersectFunctionNArguments* args) {
         RTCHitN_primID(hits, args->N, i) = static_cast<unsigned>(crossing->leaf);
         RTCHitN_geomID(hits, args->N, i) = args->geomID;
         RTCHitN_instID(hits, args->N, i, 0) = args->context->instID[0];
-    }
+    });
 }
 
 void solid_occluded(const RTCOccludedFunctionNArguments* args) {
     const auto* shape = static_cast<const SolidShape*>(args->geometryUserPtr);
-    for (unsigned i = 0; i < args->N; ++i) {
-        if (args->valid[i] != -1) continue;
+    for_each_valid_ray(args->valid, args->N, [&](unsigned i) {
         if (shape->any_hit(ray_from_packet(args->ray, args->N, i)))
             RTCRayN_tfar(args->ray, args->N, i) = -kInfinity;
-    }
+    });
 }
 
 }  // namespace
