@@ -78,6 +78,24 @@ PerLane<int> embree_valid(uint32_t active) {
     return valid;
 }
 
+// Lane `lane` of an Embree packet: the segment [t_min, t_max] of origin + t direction, seen
+// by every geometry, at time 0 (as embree_ray() for single rays).
+void set_packet_ray(RTCRay8& packet, int lane, const Vec3& origin, const Vec3& direction,
+                    float t_min, float t_max) {
+    packet.org_x[lane] = origin.x;
+    packet.org_y[lane] = origin.y;
+    packet.org_z[lane] = origin.z;
+    packet.dir_x[lane] = direction.x;
+    packet.dir_y[lane] = direction.y;
+    packet.dir_z[lane] = direction.z;
+    packet.tnear[lane] = t_min;
+    packet.tfar[lane] = t_max;
+    packet.time[lane] = 0.0f;
+    packet.mask[lane] = 0xffffffffu;
+    packet.id[lane] = 0;
+    packet.flags[lane] = 0;
+}
+
 void init_context(RTCIntersectContext& context, bool coherent) {
     rtcInitIntersectContext(&context);
     context.flags =
@@ -94,18 +112,7 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         // Inactive lanes get a valid ray too, so no lane holds uninitialised floats.
         const Ray& ray = *rays[(active >> lane) & 1u ? lane : first];
-        packet.ray.org_x[lane] = ray.origin.x;
-        packet.ray.org_y[lane] = ray.origin.y;
-        packet.ray.org_z[lane] = ray.origin.z;
-        packet.ray.dir_x[lane] = ray.direction.x;
-        packet.ray.dir_y[lane] = ray.direction.y;
-        packet.ray.dir_z[lane] = ray.direction.z;
-        packet.ray.tnear[lane] = ray.t_min;
-        packet.ray.tfar[lane] = ray.t_max;
-        packet.ray.time[lane] = 0.0f;
-        packet.ray.mask[lane] = 0xffffffffu;
-        packet.ray.id[lane] = 0;
-        packet.ray.flags[lane] = 0;
+        set_packet_ray(packet.ray, lane, ray.origin, ray.direction, ray.t_min, ray.t_max);
         packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
@@ -139,18 +146,7 @@ uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3
     const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         const int source = (active >> lane) & 1u ? lane : first;
-        packet.org_x[lane] = origins[source].x;
-        packet.org_y[lane] = origins[source].y;
-        packet.org_z[lane] = origins[source].z;
-        packet.dir_x[lane] = directions[source].x;
-        packet.dir_y[lane] = directions[source].y;
-        packet.dir_z[lane] = directions[source].z;
-        packet.tnear[lane] = 0.0f;
-        packet.tfar[lane] = t_max;
-        packet.time[lane] = 0.0f;
-        packet.mask[lane] = 0xffffffffu;
-        packet.id[lane] = 0;
-        packet.flags[lane] = 0;
+        set_packet_ray(packet, lane, origins[source], directions[source], 0.0f, t_max);
     }
     const PerLane<int> valid = embree_valid(active);
     RTCIntersectContext context;
