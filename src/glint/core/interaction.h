@@ -83,7 +83,11 @@ inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& directi
     // where p is negative, since a float's bits grow with its magnitude.
     const I32x4 offset = __builtin_convertvector(kIntScale * nv, I32x4);
     const I32x4 negative = pv < 0.0f;  // all ones where p < 0
-    const I32x4 moved = reinterpret_cast<I32x4>(pv) + ((offset ^ negative) - negative);
+    // The sum in unsigned lanes, which wrap: the bits of -0.0 are INT_MIN as signed, and
+    // moving them down would overflow (that lane is near the origin, so its sum is unused).
+    using U32x4 = uint32_t __attribute__((vector_size(16)));
+    const I32x4 moved = reinterpret_cast<I32x4>(
+        reinterpret_cast<U32x4>(pv) + reinterpret_cast<U32x4>((offset ^ negative) - negative));
     // Near the origin ulps are tiny, so there p moves by a fixed small distance instead.
     // |p| < kOrigin on the bits: for magnitudes the order of the bits is that of the floats.
     const I32x4 magnitude = reinterpret_cast<I32x4>(pv) & 0x7fffffff;
