@@ -60,23 +60,23 @@ public:
         PerLane<AovSample*> aovs{};
     };
     // li() of every lane, one after the other. Integrators that trace a packet's rays
-    // together (the path tracer) override it; each lane's result must be what li() would
-    // give, up to the rounding of Embree's packet traversal.
+    // together (the path tracer) override it; each lane's result must still be what li()
+    // gives it, bit for bit (Embree's packet and single-ray kernels find the same hits).
     virtual void li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
                            RayCounter& counter, PerLane<Spectrum>& radiance) const;
 
 protected:
-    // Renders samples [first, first + count) of `pixel` into `film`; returns their mean
-    // luminance and mean squared luminance (for error estimates).
-    struct PixelMoments {
-        double sum = 0.0, sum_squares = 0.0;
-    };
     // What one thread renders pixels with: a sampler per packet lane, scratch memory for
     // BSDFs, and the rays it traced.
     struct Worker {
         PerLane<std::unique_ptr<Sampler>> samplers;
         Arena arena;
         RayCounter counter;
+    };
+    // Renders samples [first, first + count) of `pixel` into `film`, in packets; returns
+    // their mean luminance and mean squared luminance (for error estimates).
+    struct PixelMoments {
+        double sum = 0.0, sum_squares = 0.0;
     };
     PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Worker& worker,
                               int first, int count) const;

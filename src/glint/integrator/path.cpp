@@ -6,6 +6,12 @@
 namespace glint {
 namespace {
 
+// Whether `lanes` (not empty) holds one lane. Not std::has_single_bit: without POPCNT in
+// the baseline instruction set that is a library call.
+bool is_single_lane(uint32_t lanes) {
+    return (lanes & (lanes - 1)) == 0;
+}
+
 float power_heuristic(float pdf_a, float pdf_b) {
     const float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
     return a + b > 0.0f ? a / (a + b) : 0.0f;
@@ -88,9 +94,12 @@ Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler
     return radiance[0];
 }
 
-// The paths of a packet advance together, one bounce at a time, so that each bounce's
-// rays and shadow rays are traced as Embree packets; each path still draws its own
-// samples in the order a lone path would.
+// The paths of a packet (samples of one pixel) advance together, one bounce at a time, so
+// that each bounce's rays and then its shadow rays are traced as one Embree packet: the
+// camera rays of a pixel, and the shadow rays from where they land, are coherent, which
+// Embree's packet kernels turn into fewer instructions per ray; deeper bounces still share
+// the call. Each path draws its own samples in the order a lone path would, so every lane
+// gets what li() gives it (tests/integrator/test_path.cpp).
 void PathIntegrator::li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
                                RayCounter& counter, PerLane<Spectrum>& radiance) const {
     PerLane<Path> paths;
@@ -136,12 +145,6 @@ void PathIntegrator::li_packet(const CameraPacket& packet, const Scene& scene, A
         });
     }
     for (int lane = 0; lane < packet.count; ++lane) radiance[lane] = paths[lane].L;
-}
-
-// Whether `lanes` (not empty) holds one lane. Not std::has_single_bit: without POPCNT in
-// the baseline instruction set that is a library call.
-bool is_single_lane(uint32_t lanes) {
-    return (lanes & (lanes - 1)) == 0;
 }
 
 // Closest hits of the active paths' rays; returns the paths that hit something. A lone
