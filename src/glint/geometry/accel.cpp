@@ -96,6 +96,12 @@ void set_packet_ray(RTCRay8& packet, int lane, const Vec3& origin, const Vec3& d
     packet.flags[lane] = 0;
 }
 
+// Whether `lanes` (not empty) holds one lane. Not std::has_single_bit: without POPCNT in
+// the baseline instruction set that is a library call.
+bool is_single_lane(uint32_t lanes) {
+    return (lanes & (lanes - 1)) == 0;
+}
+
 void init_context(RTCIntersectContext& context, bool coherent) {
     rtcInitIntersectContext(&context);
     context.flags =
@@ -107,6 +113,11 @@ void init_context(RTCIntersectContext& context, bool coherent) {
 uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
                                  PerLane<HitRecord>& hits, bool coherent) const {
     static_assert(kPacketWidth == 8, "the packet calls below are Embree's 8-wide ones");
+    // A lone ray costs less on its own than as a packet of one.
+    if (is_single_lane(active)) {
+        const int lane = std::countr_zero(active);
+        return intersect(*rays[lane], hits[lane]) ? active : 0;
+    }
     alignas(32) RTCRayHit8 packet;
     const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
@@ -142,6 +153,10 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
 
 uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
                                 float t_max, uint32_t active, bool coherent) const {
+    if (is_single_lane(active)) {
+        const int lane = std::countr_zero(active);
+        return occluded(origins[lane], directions[lane], 0.0f, t_max) ? active : 0;
+    }
     alignas(32) RTCRay8 packet;
     const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {

@@ -81,7 +81,8 @@ public:
     // record in `hits` is written as intersect() writes it. Returns the lanes that hit.
     // `coherent` says the rays start close together and point the same way (the camera
     // rays of one pixel), so Embree traverses them as a group; otherwise it follows each
-    // ray on its own, still sharing the packet's setup. Same hits as intersect() per lane.
+    // ray on its own, still sharing the packet's setup. Same hits as intersect() per lane;
+    // a lone active lane goes through intersect() itself.
     uint32_t intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
                               PerLane<HitRecord>& hits, bool coherent) const;
     // The lanes among `active` whose segment origins[i] + t directions[i], t in

@@ -6,12 +6,6 @@
 namespace glint {
 namespace {
 
-// Whether `lanes` (not empty) holds one lane. Not std::has_single_bit: without POPCNT in
-// the baseline instruction set that is a library call.
-bool is_single_lane(uint32_t lanes) {
-    return (lanes & (lanes - 1)) == 0;
-}
-
 float power_heuristic(float pdf_a, float pdf_b) {
     const float a = pdf_a * pdf_a, b = pdf_b * pdf_b;
     return a + b > 0.0f ? a / (a + b) : 0.0f;
@@ -134,7 +128,7 @@ void PathIntegrator::li_packet(const CameraPacket& packet, const Scene& scene, A
         });
         if (shadowed != 0) {
             const uint32_t blocked =
-                trace_shadows(scene, shadow_origins, shadow_directions, shadowed, coherent);
+                scene.occluded_packet(shadow_origins, shadow_directions, shadowed, coherent);
             for_each_lane(shadowed & ~blocked, [&](int lane) {
                 paths[lane].L += paths[lane].beta * paths[lane].direct;
             });
@@ -147,15 +141,9 @@ void PathIntegrator::li_packet(const CameraPacket& packet, const Scene& scene, A
     for (int lane = 0; lane < packet.count; ++lane) radiance[lane] = paths[lane].L;
 }
 
-// Closest hits of the active paths' rays; returns the paths that hit something. A lone
-// ray goes to Embree on its own, which is cheaper than a packet of one.
+// Closest hits of the active paths' rays, as one packet; returns the paths that hit.
 uint32_t PathIntegrator::trace_paths(const Scene& scene, PerLane<Path>& paths, uint32_t active,
                                      bool coherent, RayCounter& counter) {
-    if (is_single_lane(active)) {
-        ++counter.rays;
-        Path& path = paths[std::countr_zero(active)];
-        return scene.intersect(path.ray, path.si) ? active : 0;
-    }
     PerLane<const Ray*> rays{};
     PerLane<SurfaceInteraction*> interactions{};
     for_each_lane(active, [&](int lane) {
@@ -164,17 +152,6 @@ uint32_t PathIntegrator::trace_paths(const Scene& scene, PerLane<Path>& paths, u
         interactions[lane] = &paths[lane].si;
     });
     return scene.intersect_packet(rays, active, interactions, coherent);
-}
-
-uint32_t PathIntegrator::trace_shadows(const Scene& scene, const PerLane<Vec3>& origins,
-                                       const PerLane<Vec3>& directions, uint32_t active,
-                                       bool coherent) {
-    if (is_single_lane(active)) {
-        const int lane = std::countr_zero(active);
-        return scene.accel().occluded(origins[lane], directions[lane], 0.0f, kShadowRayEnd) ? active
-                                                                                            : 0;
-    }
-    return scene.occluded_packet(origins, directions, active, coherent);
 }
 
 // A path whose ray left the scene: it gathers the background or the environment light.

@@ -30,8 +30,6 @@ private:
 
     static uint32_t trace_paths(const Scene& scene, PerLane<Path>& paths, uint32_t active,
                                 bool coherent, RayCounter& counter);
-    static uint32_t trace_shadows(const Scene& scene, const PerLane<Vec3>& origins,
-                                  const PerLane<Vec3>& directions, uint32_t active, bool coherent);
     void escape(const Scene& scene, Path& path, int depth) const;
     bool scatter_at_hit(const Scene& scene, Path& path, int depth, Arena& arena) const;
     std::optional<Vec3> sample_light(const Scene& scene, Path& path) const;
