@@ -6,6 +6,7 @@
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/path.h>
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 
@@ -351,13 +352,37 @@ TEST(PathIntegrator, MirroredEmitterLightsTheSameAsUnmirrored) {
 // path must come out as it would alone (li() traces one path with single-ray queries):
 // same radiance, features and ray count, bit for bit, for every packet size, through
 // glass and mirror bounces, paths that end early and paths that escape.
+// The path tracer's packet loop, reached from the test (PathIntegrator befriends it).
+namespace glint {
+struct PathPacketTest {
+    // Traces the paths of `rays` as one packet; each lane's radiance, features and the
+    // rays traced in all.
+    static std::vector<Spectrum> trace(const PathIntegrator& path, const Scene& scene,
+                                       const std::vector<Ray>& rays,
+                                       const std::vector<Sampler*>& samplers,
+                                       std::vector<AovSample>& aovs, Arena& arena,
+                                       RayCounter& counter) {
+        PerLane<PathIntegrator::PathState> paths;
+        for (size_t lane = 0; lane < rays.size(); ++lane) {
+            paths[lane].ray = rays[lane];
+            paths[lane].sampler = samplers[lane];
+            paths[lane].aov = &aovs[lane];
+        }
+        path.trace_packet(scene, paths, static_cast<int>(rays.size()), arena, counter);
+        std::vector<Spectrum> radiance;
+        for (size_t lane = 0; lane < rays.size(); ++lane) radiance.push_back(paths[lane].L);
+        return radiance;
+    }
+};
+}  // namespace glint
+
 TEST(PathIntegrator, PacketsGiveWhatEachPathGivesAlone) {
     const std::string code = read_text(GLINT_SOURCE_DIR "/examples/cornell-spheres.lua");
     const SceneDesc desc = load_scene_string(code, "cornell-spheres.lua");
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
     const auto integrator = make_integrator(settings);
-    const auto& tile = dynamic_cast<const TileIntegrator&>(*integrator);
+    const auto& path = dynamic_cast<const PathIntegrator&>(*integrator);
 
     // The camera ray of `sampler`'s sample `index` of `pixel` (drawing the camera's values).
     auto camera_ray = [&](Sampler& sampler, Vec2i pixel, int index) {
@@ -373,29 +398,29 @@ TEST(PathIntegrator, PacketsGiveWhatEachPathGivesAlone) {
         for (int px = 0; px < 6; ++px) {
             const Vec2i pixel((2 * px + 1) * settings.width / 12,
                               (2 * py + 1) * settings.height / 12);
-            TileIntegrator::CameraPacket packet;
-            packet.count = 1 + (py * 6 + px) % kPacketWidth;
-            PerLane<std::unique_ptr<Sampler>> samplers;
-            PerLane<AovSample> aovs{};
-            for (int lane = 0; lane < packet.count; ++lane) {
-                samplers[lane] = new_sampler();
-                packet.rays[lane] = camera_ray(*samplers[lane], pixel, lane);
-                packet.samplers[lane] = samplers[lane].get();
-                packet.aovs[lane] = &aovs[lane];
+            const int count = 1 + (py * 6 + px) % kPacketWidth;
+            std::vector<std::unique_ptr<Sampler>> samplers;
+            std::vector<Sampler*> lane_samplers;
+            std::vector<Ray> rays;
+            std::vector<AovSample> aovs(count);
+            for (int lane = 0; lane < count; ++lane) {
+                samplers.push_back(new_sampler());
+                lane_samplers.push_back(samplers.back().get());
+                rays.push_back(camera_ray(*samplers.back(), pixel, lane));
             }
             RayCounter packet_rays;
-            PerLane<Spectrum> radiance;
             arena.reset();
-            tile.li_packet(packet, *scene, arena, packet_rays, radiance);
+            const std::vector<Spectrum> radiance = PathPacketTest::trace(
+                path, *scene, rays, lane_samplers, aovs, arena, packet_rays);
 
             RayCounter lone_rays;
-            for (int lane = 0; lane < packet.count; ++lane) {
+            for (int lane = 0; lane < count; ++lane) {
                 const auto sampler = new_sampler();
                 const Ray ray = camera_ray(*sampler, pixel, lane);
                 AovSample aov{};
-                const Spectrum L = tile.li(ray, *scene, *sampler, arena, lone_rays, &aov);
-                const std::string where = fmt::format("pixel ({}, {}), lane {} of {}", pixel.x,
-                                                      pixel.y, lane, packet.count);
+                const Spectrum L = path.li(ray, *scene, *sampler, arena, lone_rays, &aov);
+                const std::string where =
+                    fmt::format("pixel ({}, {}), lane {} of {}", pixel.x, pixel.y, lane, count);
                 EXPECT_EQ(radiance[lane].r, L.r) << where;
                 EXPECT_EQ(radiance[lane].g, L.g) << where;
                 EXPECT_EQ(radiance[lane].b, L.b) << where;

@@ -24,7 +24,7 @@ public:
     void start_pixel_sample(Vec2i pixel, int index) override {
         m_rng.seed(pixel_sample_key(m_seed, pixel, index));
     }
-    float next_1d() override { return m_rng.next_float(); }
+    float get_1d() override { return m_rng.next_float(); }
     Vec2 get_2d() override {
         const float x = m_rng.next_float();
         return Vec2(x, m_rng.next_float());
@@ -85,7 +85,7 @@ public:
         m_rng.seed(pixel_sample_key(m_seed, pixel, index));
     }
 
-    float next_1d() override {
+    float get_1d() override {
         const uint32_t stratum = permute(m_index, m_spp, next_dimension_key());
         return (static_cast<float>(stratum) + jitter()) / static_cast<float>(m_spp);
     }
@@ -327,6 +327,11 @@ public:
         m_ahead_next = 2;
         return Vec2(m_ahead[0], m_ahead[1]);
     }
+    // 1D values take the open group's remaining dimensions, then the next group's.
+    float get_1d() override {
+        if (m_ahead_next >= m_ahead_end) open_group();
+        return m_ahead[m_ahead_next++];
+    }
 
     std::unique_ptr<Sampler> clone() const override {
         return std::make_unique<SobolSampler>(m_spp, m_seed);
@@ -364,13 +369,6 @@ private:
         m_ahead_end = SobolTables::kDimensions;
     }
 
-    // Called when the open group is used up (or none is open): 1D values take the next
-    // group's dimensions in turn.
-    float next_1d() override {
-        open_group();
-        return m_ahead[m_ahead_next++];
-    }
-
     uint32_t group_key(uint32_t group) {
         PixelKeys& keys = *m_keys;
         if (group < keys.cached) return keys.keys[group];
@@ -384,6 +382,10 @@ private:
     std::shared_ptr<PixelKeys> m_keys;  // shared with the lanes cloned from this sampler
     uint32_t m_reversed_index = 0;
     uint32_t m_next_group = 0;
+    // The open group's values: m_ahead[m_ahead_next, m_ahead_end) are the next 1D values.
+    float m_ahead[SobolTables::kDimensions] = {};
+    int m_ahead_next = 0;
+    int m_ahead_end = 0;
 };
 
 }  // namespace

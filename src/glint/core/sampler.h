@@ -17,12 +17,9 @@ public:
 
     // Positions the sampler at sample `index` of `pixel`; dimensions restart at 0.
     virtual void start_pixel_sample(Vec2i pixel, int index) = 0;
-    // Values a sampler computes ahead (a Sobol group's remaining dimensions) are handed
-    // out here without a virtual call: an integrator asks for several per bounce.
-    float get_1d() {
-        if (m_ahead_next < m_ahead_end) return m_ahead[m_ahead_next++];
-        return next_1d();
-    }
+    // The next value of the sample, in [0, 1).
+    virtual float get_1d() = 0;
+    // The next two values, as one 2D sample (stratified together where the sampler can).
     virtual Vec2 get_2d() = 0;
     // The 2D sample that positions the film sample inside its pixel.
     virtual Vec2 get_pixel_2d() { return get_2d(); }
@@ -37,15 +34,8 @@ public:
     uint64_t seed() const { return m_seed; }
 
 protected:
-    // The next 1D value when none is computed ahead.
-    virtual float next_1d() = 0;
-
     int m_spp;
     uint64_t m_seed;
-    // Values computed ahead: m_ahead[m_ahead_next, m_ahead_end) are the next 1D values.
-    float m_ahead[4] = {};
-    int m_ahead_next = 0;
-    int m_ahead_end = 0;
 };
 
 // Names: "independent", "stratified", "sobol". Throws glint::Error for anything else.

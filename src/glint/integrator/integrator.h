@@ -50,36 +50,39 @@ public:
     virtual Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                         RayCounter& counter, AovSample* aov) const = 0;
 
-    // The samples of one pixel go to the integrator in packets of up to kPacketWidth, lane
-    // i with its camera ray, its own sampler (started on its sample, the camera's values
-    // drawn) and its feature record (or null). Lane i's radiance goes to radiance[i].
-    struct CameraPacket {
-        int count = 0;
-        PerLane<Ray> rays;
-        PerLane<Sampler*> samplers{};
-        PerLane<AovSample*> aovs{};
-    };
-    // li() of every lane, one after the other. Integrators that trace a packet's rays
-    // together (the path tracer) override it; each lane's result must still be what li()
-    // gives it, bit for bit (Embree's packet and single-ray kernels find the same hits).
-    virtual void li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
-                           RayCounter& counter, PerLane<Spectrum>& radiance) const;
-
 protected:
-    // What one thread renders pixels with: a sampler per packet lane, scratch memory for
-    // BSDFs, and the rays it traced.
+    // What one thread renders pixels with: its sampler, scratch memory for BSDFs, and the
+    // rays it traced. An integrator that needs more per thread derives from it and makes
+    // its own in make_worker().
     struct Worker {
-        PerLane<std::unique_ptr<Sampler>> samplers;
+        virtual ~Worker() = default;
+        std::unique_ptr<Sampler> sampler;
         Arena arena;
         RayCounter counter;
     };
-    // Renders samples [first, first + count) of `pixel` into `film`, in packets; returns
-    // their mean luminance and mean squared luminance (for error estimates).
+    virtual std::unique_ptr<Worker> make_worker(const Sampler& prototype) const;
+
+    // Sums of the luminance of a pixel's samples and of its square (for error estimates).
     struct PixelMoments {
         double sum = 0.0, sum_squares = 0.0;
     };
-    PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Worker& worker,
-                              int first, int count) const;
+    // A pixel sample's start: `sampler` positioned on sample `index` of `pixel`, its filter
+    // sample and its camera ray (the draws every tile integrator makes first, in this order).
+    struct CameraSample {
+        FilterSample filter;
+        Ray ray;
+    };
+    CameraSample start_camera_sample(const Scene& scene, Vec2i pixel, int index,
+                                     Sampler& sampler) const;
+    // Adds a sample's radiance (and features, or null) to the film and to `moments`.
+    static void record_sample(Film& film, Vec2i pixel, const Spectrum& L, float filter_weight,
+                              const AovSample* aov, PixelMoments& moments);
+
+    // Renders samples [first, first + count) of `pixel` into `film`: li() for one sample
+    // after the other. An integrator may override it to trace a pixel's samples together
+    // (the path tracer's packets); each sample must still get what li() gives it.
+    virtual PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel,
+                                      Worker& worker, int first, int count) const;
 
     // Runs `work(pixel, worker)` for every pixel for which `wanted` is true, in parallel
     // tiles, with one Worker per task made from `prototype`; returns the rays traced.

@@ -16,26 +16,53 @@ enum class DirectLighting {
     kBsdfOnly,   // "path_bsdf": no light sampling; point and spot lights are invisible
 };
 
+struct PathPacketTest;  // tests/integrator/test_path.cpp
+
 class PathIntegrator final : public TileIntegrator {
 public:
     PathIntegrator(const RenderSettings& settings, DirectLighting strategy)
         : TileIntegrator(settings), m_strategy(strategy) {}
+    // One path, bounce after bounce: the loop a reader follows (path.cpp).
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
-    void li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
-                   RayCounter& counter, PerLane<Spectrum>& radiance) const override;
 
 private:
-    struct Path;
+    // A path between the steps of a bounce.
+    struct PathState {
+        Spectrum L{0.0f};
+        Spectrum beta{1.0f};
+        Ray ray;
+        bool specular_bounce = true;  // the camera "samples" its ray like a delta lobe
+        float bsdf_pdf = 0.0f;
+        Vec3 previous_point{0.0f};  // where the last BSDF sample was taken, for MIS
+        float eta_scale = 1.0f;
+        SurfaceInteraction si;  // each bounce's hit, written over the last one's
+        const Bsdf* bsdf = nullptr;
+        Vec3 wo_local{0.0f};
+        Spectrum direct{0.0f};  // light sampling's contribution, if its shadow ray gets through
+        Sampler* sampler = nullptr;
+        AovSample* aov = nullptr;
+    };
 
-    static uint32_t trace_paths(const Scene& scene, PerLane<Path>& paths, uint32_t active,
-                                bool coherent, RayCounter& counter);
-    void escape(const Scene& scene, Path& path, int depth) const;
-    bool scatter_at_hit(const Scene& scene, Path& path, int depth, Arena& arena) const;
-    std::optional<Vec3> sample_light(const Scene& scene, Path& path) const;
-    bool continue_path(Path& path, int depth) const;
+    // The steps of one bounce, shared by li() and the packet loop.
+    void escape(const Scene& scene, PathState& path, int depth) const;
+    bool scatter_at_hit(const Scene& scene, PathState& path, int depth, Arena& arena) const;
+    std::optional<Vec3> sample_light(const Scene& scene, PathState& path) const;
+    bool continue_path(PathState& path, int depth) const;
+
+    // The packet form (end of path.cpp): a pixel's samples advance together, one bounce at
+    // a time, so that each bounce's rays and then its shadow rays go to Embree as packets.
+    // Each sample gets what li() gives it, bit for bit (tests/integrator/test_path.cpp).
+    struct PacketWorker;
+    std::unique_ptr<Worker> make_worker(const Sampler& prototype) const override;
+    PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Worker& worker,
+                              int first, int count) const override;
+    void trace_packet(const Scene& scene, PerLane<PathState>& paths, int count, Arena& arena,
+                      RayCounter& counter) const;
 
     DirectLighting m_strategy;
+
+    friend struct PathPacketTest;  // tests compare the packet loop with li()
 };
 
 }  // namespace glint

@@ -1,9 +1,9 @@
 #include <glint/core/progress.h>
-#include <glint/integrator/direct_lighting.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/shading.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/projection_map.h>
+#include <glint/integrator/transport.h>
 
 #include <fmt/format.h>
 
@@ -122,36 +122,20 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
     Spectrum sum(0.0f);
     for (int i = 0; i < n; ++i) {
         const Vec2 u = sampler.get_2d();
-        const std::optional<BsdfSample> bs = bsdf.sample(wo, u, sampler.get_1d());
-        if (!bs || bs->pdf <= 0.0f) continue;
-        Spectrum weight = bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-        Ray ray = spawn_ray(si, si.to_world(bs->wi));
+        const float u_lobe = sampler.get_1d();
+        const std::optional<Scattering> scattering = sample_scattering(si, bsdf, wo, u, u_lobe);
+        if (!scattering) continue;
         // Through specular surfaces to the first diffuse one; emission seen on the way is
         // direct or caustic light, which the other terms already hold.
-        for (int depth = 0; depth < kMaxSpecularChain; ++depth) {
-            ++counter.rays;
-            std::optional<SurfaceInteraction> hit = scene.intersect(ray);
-            if (!hit) {
-                // An environment light seen here is direct or caustic light too; only a
-                // constant background, which no light sampling or photon carries, counts.
-                if (!scene.environment()) sum += weight * scene.background();
-                break;
-            }
-            if (!hit->front_face) {
-                const Spectrum sigma = hit->material->interior_absorption();
-                if (!sigma.is_black()) weight *= exp(sigma * (-hit->t * glm::length(ray.direction)));
-            }
-            const Bsdf* next = shade(scene, ray, *hit, arena);
-            if (!next) break;
-            if (!next->is_delta()) {
-                sum += weight * estimate(m_global, *hit, *next);
-                break;
-            }
-            const Vec2 u2 = sampler.get_2d();
-            const std::optional<BsdfSample> s = next->sample(hit->to_local(hit->wo), u2, sampler.get_1d());
-            if (!s || s->pdf <= 0.0f) break;
-            weight *= s->f * (abs_cos_theta(s->wi) / s->pdf);
-            ray = spawn_ray(*hit, hit->to_world(s->wi));
+        const SpecularChain chain =
+            follow_specular_chain(scene, spawn_ray(si, scattering->wi), scattering->weight,
+                                  sampler, arena, counter, kMaxSpecularChain, nullptr);
+        if (chain.hit) {
+            sum += chain.beta * estimate(m_global, *chain.hit, *chain.bsdf);
+        } else if (chain.escaped && !scene.environment()) {
+            // An environment light seen here is direct or caustic light too; only a
+            // constant background, which no light sampling or photon carries, counts.
+            sum += chain.beta * scene.background();
         }
     }
     return sum / static_cast<float>(n);
@@ -159,39 +143,20 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
 
 Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& sampler, Arena& arena,
                               RayCounter& counter, AovSample* aov) const {
-    Spectrum L(0.0f), beta(1.0f);
-    Ray ray = camera_ray;
-    for (int depth = 0; depth < kMaxSpecularChain; ++depth) {
-        ++counter.rays;
-        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
-        if (!hit) {
-            const Spectrum escaped = scene.escaped_radiance(ray.direction);
-            if (aov && depth == 0) *aov = AovSample{escaped, Vec3(0.0f), kInfinity};
-            return L + beta * escaped;
-        }
-        SurfaceInteraction& si = *hit;
-        const Bsdf* bsdf = shade(scene, ray, si, arena);
-        if (aov && depth == 0) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
-        // Every vertex so far was specular: emission seen here is not in any map.
-        if (si.area_light) L += beta * si.area_light->le(si, si.wo);
-        if (!si.front_face) {
-            const Spectrum sigma = si.material->interior_absorption();
-            if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
-        }
-        if (!bsdf) return L;
-        if (!bsdf->is_delta()) {
-            if (m_show_photons) return L + beta * (estimate(m_caustic, si, *bsdf) + estimate(m_global, si, *bsdf));
-            const Spectrum direct = sample_one_light(scene, si, *bsdf, sampler, counter.rays);
-            const Spectrum caustic = estimate(m_caustic, si, *bsdf);
-            return L + beta * (direct + caustic + final_gather(scene, si, *bsdf, sampler, arena, counter));
-        }
-        const Vec2 u = sampler.get_2d();
-        const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(si.wo), u, sampler.get_1d());
-        if (!bs || bs->pdf <= 0.0f) return L;
-        beta *= bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-        ray = spawn_specular_ray(si, ray, si.to_world(bs->wi), bs->is_transmission(), bs->eta);
-    }
-    return L;
+    // Every vertex before the first diffuse one is specular: emission seen on the way is not
+    // in any map.
+    const SpecularChain chain = follow_specular_chain(scene, camera_ray, Spectrum(1.0f), sampler,
+                                                      arena, counter, kMaxSpecularChain, aov);
+    const Spectrum& L = chain.emitted;
+    if (chain.escaped) return L + chain.beta * scene.escaped_radiance(chain.ray.direction);
+    if (!chain.hit) return L;
+    const SurfaceInteraction& si = *chain.hit;
+    const Bsdf& bsdf = *chain.bsdf;
+    if (m_show_photons) return L + chain.beta * (estimate(m_caustic, si, bsdf) + estimate(m_global, si, bsdf));
+    const Spectrum direct =
+        estimate_direct_light(scene, si, bsdf, sampler, LightWeighting::kNone, counter);
+    const Spectrum caustic = estimate(m_caustic, si, bsdf);
+    return L + chain.beta * (direct + caustic + final_gather(scene, si, bsdf, sampler, arena, counter));
 }
 
 }  // namespace glint

@@ -1,10 +1,10 @@
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
 #include <glint/film/image_io.h>
-#include <glint/integrator/direct_lighting.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/shading.h>
 #include <glint/integrator/sppm.h>
+#include <glint/integrator/transport.h>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -31,38 +31,19 @@ struct PixelState {
     float radius = 0.0f;
 };
 
-// Follows a camera ray through specular surfaces to its first non-specular surface.
-VisiblePoint find_visible_point(const Scene& scene, Ray ray, Sampler& sampler, Arena& arena,
-                                Spectrum& direct, uint64_t& rays) {
-    Spectrum beta(1.0f);
-    bool specular = true;
-    for (int depth = 0; depth < kMaxCameraDepth; ++depth) {
-        ++rays;
-        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
-        if (!hit) {
-            direct += beta * scene.escaped_radiance(ray.direction);
-            return {};
-        }
-        SurfaceInteraction& si = *hit;
-        if (si.area_light && specular) direct += beta * si.area_light->le(si, si.wo);
-        if (!si.front_face) {
-            const Spectrum sigma = si.material->interior_absorption();
-            if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
-        }
-        const Bsdf* bsdf = shade(scene, ray, si, arena);
-        if (!bsdf) return {};
-        if (!bsdf->is_delta()) {
-            // Photons of zero bounces are skipped below: direct light is estimated here.
-            direct += beta * sample_one_light(scene, si, *bsdf, sampler, rays);
-            return {si, beta, true};
-        }
-        const Vec2 u = sampler.get_2d();
-        const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(si.wo), u, sampler.get_1d());
-        if (!bs || bs->pdf <= 0.0f) return {};
-        beta *= bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-        ray = spawn_specular_ray(si, ray, si.to_world(bs->wi), bs->is_transmission(), bs->eta);
-    }
-    return {};
+// Follows a camera ray through specular surfaces to its first non-specular surface, where
+// the visible point is; emission seen on the way and direct light there go to `direct`.
+VisiblePoint find_visible_point(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
+                                Spectrum& direct, RayCounter& counter) {
+    const SpecularChain chain = follow_specular_chain(scene, ray, Spectrum(1.0f), sampler, arena,
+                                                      counter, kMaxCameraDepth, nullptr);
+    direct += chain.emitted;
+    if (chain.escaped) direct += chain.beta * scene.escaped_radiance(chain.ray.direction);
+    if (!chain.hit) return {};
+    // Photons of zero bounces are skipped below: direct light is estimated here.
+    direct += chain.beta * estimate_direct_light(scene, *chain.hit, *chain.bsdf, sampler,
+                                                 LightWeighting::kNone, counter);
+    return {*chain.hit, chain.beta, true};
 }
 
 // Uniform grid over the visible points, hashed: each point is listed in every cell its
@@ -163,16 +144,17 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
         tbb::parallel_for(0, h, [&](int y) {
             auto sampler = prototype->clone();
             Arena arena;
-            uint64_t rays = 0;
+            RayCounter counter;
             for (int x = 0; x < w; ++x) {
                 sampler->start_pixel_sample(Vec2i(x, y), pass);
                 const Vec2 film_point = Vec2(x, y) + sampler->get_pixel_2d();
                 const Ray ray = scene.camera().sample_ray(film_point, *sampler);
                 const size_t i = static_cast<size_t>(y) * w + x;
                 arena.reset();
-                points[i] = find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, rays);
+                points[i] =
+                    find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, counter);
             }
-            camera_rays += rays;
+            camera_rays += counter.rays;
         });
         stats.rays += camera_rays.load();
 

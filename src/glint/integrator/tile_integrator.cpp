@@ -99,10 +99,8 @@ uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& pr
     tbb::parallel_for(
         tbb::blocked_range2d<int>(0, tiles_y, 1, 0, tiles_x, 1),
         [&](const tbb::blocked_range2d<int>& range) {
-            Worker worker;
-            worker.samplers[0] = prototype.clone();
-            for (int lane = 1; lane < kPacketWidth; ++lane)
-                worker.samplers[lane] = worker.samplers[0]->clone_for_lane();
+            const std::unique_ptr<Worker> worker_owner = make_worker(prototype);
+            Worker& worker = *worker_owner;
             for (int ty = range.rows().begin(); ty < range.rows().end(); ++ty) {
                 for (int tx = range.cols().begin(); tx < range.cols().end(); ++tx) {
                     const int x0 = tx * kTileSize, y0 = ty * kTileSize;
@@ -238,46 +236,45 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
     stats.channels = {std::move(counts)};
 }
 
+std::unique_ptr<TileIntegrator::Worker> TileIntegrator::make_worker(const Sampler& prototype) const {
+    auto worker = std::make_unique<Worker>();
+    worker->sampler = prototype.clone();
+    return worker;
+}
+
+TileIntegrator::CameraSample TileIntegrator::start_camera_sample(const Scene& scene, Vec2i pixel,
+                                                                 int index,
+                                                                 Sampler& sampler) const {
+    sampler.start_pixel_sample(pixel, index);
+    CameraSample sample;
+    sample.filter = m_filter->sample(sampler.get_pixel_2d());
+    const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + sample.filter.offset;
+    sample.ray = scene.camera().sample_ray(film_point, sampler);
+    return sample;
+}
+
+void TileIntegrator::record_sample(Film& film, Vec2i pixel, const Spectrum& L, float filter_weight,
+                                   const AovSample* aov, PixelMoments& moments) {
+    film.add_sample(pixel, L, filter_weight, aov);
+    const double y = L.is_finite() ? L.luminance() : 0.0;
+    moments.sum += y;
+    moments.sum_squares += y * y;
+}
+
 TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Film& film,
                                                           Vec2i pixel, Worker& worker, int first,
                                                           int count) const {
-    const bool want_aovs = film.has_aovs();
     PixelMoments moments;
-    CameraPacket packet;
-    PerLane<FilterSample> filter_samples;
-    PerLane<AovSample> aovs;
-    PerLane<Spectrum> radiance;
-    for (int packet_first = first; packet_first < first + count; packet_first += kPacketWidth) {
-        packet.count = std::min(kPacketWidth, first + count - packet_first);
-        for (int lane = 0; lane < packet.count; ++lane) {
-            Sampler& sampler = *worker.samplers[lane];
-            sampler.start_pixel_sample(pixel, packet_first + lane);
-            filter_samples[lane] = m_filter->sample(sampler.get_pixel_2d());
-            const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter_samples[lane].offset;
-            packet.rays[lane] = scene.camera().sample_ray(film_point, sampler);
-            packet.samplers[lane] = &sampler;
-            aovs[lane] = AovSample{};
-            packet.aovs[lane] = want_aovs ? &aovs[lane] : nullptr;
-        }
+    Sampler& sampler = *worker.sampler;
+    for (int index = first; index < first + count; ++index) {
+        const CameraSample sample = start_camera_sample(scene, pixel, index, sampler);
+        AovSample aov{};
+        AovSample* features = film.has_aovs() ? &aov : nullptr;
         worker.arena.reset();
-        li_packet(packet, scene, worker.arena, worker.counter, radiance);
-        for (int lane = 0; lane < packet.count; ++lane) {
-            const Spectrum& L = radiance[lane];
-            film.add_sample(pixel, L, filter_samples[lane].weight, packet.aovs[lane]);
-            const double y = L.is_finite() ? L.luminance() : 0.0;
-            moments.sum += y;
-            moments.sum_squares += y * y;
-        }
+        const Spectrum L = li(sample.ray, scene, sampler, worker.arena, worker.counter, features);
+        record_sample(film, pixel, L, sample.filter.weight, features, moments);
     }
     return moments;
-}
-
-void TileIntegrator::li_packet(const CameraPacket& packet, const Scene& scene, Arena& arena,
-                               RayCounter& counter, PerLane<Spectrum>& radiance) const {
-    for (int lane = 0; lane < packet.count; ++lane) {
-        radiance[lane] =
-            li(packet.rays[lane], scene, *packet.samplers[lane], arena, counter, packet.aovs[lane]);
-    }
 }
 
 }  // namespace glint

@@ -1,6 +1,7 @@
 #include <glint/core/sampler.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/shading.h>
+#include <glint/integrator/transport.h>
 #include <glint/integrator/whitted.h>
 #include <glint/material/material.h>
 
@@ -93,8 +94,7 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
     const Bsdf* bsdf = shade(scene, ray, si, arena);
     if (aov) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
 
-    Spectrum L(0.0f);
-    if (si.area_light) L += si.area_light->le(si, si.wo);
+    Spectrum L = emitted_radiance(si);
     // Like the path tracer's max_depth: scattering at vertex `depth` is computed only below
     // the limit, so both integrators mean the same by it (and agree where both are exact).
     if (bsdf && depth < m_max_depth) {
@@ -108,23 +108,18 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
             }
         } else {
             // Follow every delta lobe (reflection, refraction) with its exact weight.
-            uint32_t followed = 0;
-            for (const float u_lobe : {0.0f, 0x1.fffffep-1f}) {
-                const std::optional<BsdfSample> bs = bsdf->sample(wo_local, Vec2(0.5f), u_lobe);
-                if (!bs || (bs->flags & followed) || bs->f.is_black()) continue;
-                followed |= bs->flags & (kBsdfReflection | kBsdfTransmission);
-                const Vec3 wi = si.to_world(bs->wi);
-                const Spectrum weight = bs->f * abs_cos_theta(bs->wi);
-                const Ray next = spawn_specular_ray(si, ray, wi, bs->is_transmission(), bs->eta);
+            const DeltaLobes lobes = delta_lobes(*bsdf, wo_local);
+            for (int i = 0; i < lobes.count; ++i) {
+                const BsdfSample& lobe = lobes.lobes[i];
+                const Vec3 wi = si.to_world(lobe.wi);
+                const Spectrum weight = lobe.f * abs_cos_theta(lobe.wi);
+                const Ray next = spawn_specular_ray(si, ray, wi, lobe.is_transmission(), lobe.eta);
                 L += weight * trace(next, scene, sampler, arena, counter, nullptr, depth + 1);
             }
         }
     }
     // Light arriving from inside an absorbing medium was attenuated along this segment.
-    if (!si.front_face) {
-        const Spectrum sigma = si.material->interior_absorption();
-        if (!sigma.is_black()) L *= exp(sigma * (-si.t * glm::length(ray.direction)));
-    }
+    L *= segment_transmittance(ray, si);
     return L;
 }
 
@@ -139,13 +134,12 @@ Spectrum WhittedIntegrator::direct(const Scene& scene, const SurfaceInteraction&
             L += area_light_direct(scene, *light, si, bsdf, wo_local, rotation, counter);
             continue;
         }
-        const std::optional<LightSample> ls = light->sample_li(si.p, rotation, 0.0f);
-        if (!ls) continue;
-        const Vec3 wi_local = si.to_local(ls->wi);
-        const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
-        if (f.is_black()) continue;
+        const std::optional<LightArrival> arrival =
+            sample_light_arrival(*light, si, bsdf, wo_local, rotation, 0.0f);
+        if (!arrival) continue;
+        const LightSample& ls = arrival->light;
         ++counter.rays;
-        if (!scene.occluded(si, ls->p)) L += f * ls->L / ls->pdf;
+        if (!scene.occluded(si, ls.p)) L += arrival->f_cos * ls.L / ls.pdf;
     }
     return L;
 }
@@ -162,13 +156,11 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
         const Vec2 u(fract((k % n + 0.5f) / n + rotation.x),
                      fract((k / n + 0.5f) / n + rotation.y));
         const float u_select = fract((k + 0.5f) / count + rotation.x * rotation.y);
-        const std::optional<LightSample> ls = light.sample_li(si.p, u, u_select);
-        if (!ls) continue;
-        const Vec3 wi_local = si.to_local(ls->wi);
-        const Spectrum f = bsdf.eval(wo_local, wi_local) * abs_cos_theta(wi_local);
-        if (f.is_black()) continue;
-        samples[k].contribution = f * ls->L / ls->pdf;
-        samples[k].target = ls->p;
+        const std::optional<LightArrival> arrival =
+            sample_light_arrival(light, si, bsdf, wo_local, u, u_select);
+        if (!arrival) continue;
+        samples[k].contribution = arrival->f_cos * arrival->light.L / arrival->light.pdf;
+        samples[k].target = arrival->light.p;
     }
     auto visible = [&](int k) {
         if (samples[k].visible < 0) {
