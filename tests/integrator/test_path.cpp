@@ -410,8 +410,8 @@ TEST(PathIntegrator, PacketsGiveWhatEachPathGivesAlone) {
             }
             RayCounter packet_rays;
             arena.reset();
-            const std::vector<Spectrum> radiance = PathPacketTest::trace(
-                path, *scene, rays, lane_samplers, aovs, arena, packet_rays);
+            const std::vector<Spectrum> radiance =
+                PathPacketTest::trace(path, *scene, rays, lane_samplers, aovs, arena, packet_rays);
 
             RayCounter lone_rays;
             for (int lane = 0; lane < count; ++lane) {

@@ -81,8 +81,8 @@ protected:
     // Renders samples [first, first + count) of `pixel` into `film`: li() for one sample
     // after the other. An integrator may override it to trace a pixel's samples together
     // (the path tracer's packets); each sample must still get what li() gives it.
-    virtual PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel,
-                                      Worker& worker, int first, int count) const;
+    virtual PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Worker& worker,
+                                      int first, int count) const;
 
     // Runs `work(pixel, worker)` for every pixel for which `wanted` is true, in parallel
     // tiles, with one Worker per task made from `prototype`; returns the rays traced.

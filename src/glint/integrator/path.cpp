@@ -67,8 +67,9 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
 
 // At the path's new hit: emission found by BSDF sampling, absorption on the way, and the
 // BSDF there. False when the path ends at this hit.
-[[gnu::always_inline]] inline bool PathIntegrator::scatter_at_hit(const Scene& scene, PathState& path,
-                                                                  int depth, Arena& arena) const {
+[[gnu::always_inline]] inline bool PathIntegrator::scatter_at_hit(const Scene& scene,
+                                                                  PathState& path, int depth,
+                                                                  Arena& arena) const {
     SurfaceInteraction& si = path.si;
     path.beta *= segment_transmittance(path.ray, si);
     // Emission reached by BSDF sampling; light sampling already counted the rest of it.
@@ -93,8 +94,8 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
 
 // Next-event estimation at the path's hit: sets path.direct and returns the point whose
 // visibility decides it, or nullopt when there is nothing to trace.
-[[gnu::always_inline]] inline std::optional<Vec3> PathIntegrator::sample_light(const Scene& scene,
-                                                                               PathState& path) const {
+[[gnu::always_inline]] inline std::optional<Vec3> PathIntegrator::sample_light(
+    const Scene& scene, PathState& path) const {
     if (path.bsdf->is_delta() || scene.light_sampler().empty() ||
         m_strategy == DirectLighting::kBsdfOnly) {
         return std::nullopt;
@@ -147,7 +148,8 @@ struct PathIntegrator::PacketWorker : Worker {
     PerLane<std::unique_ptr<Sampler>> lane_samplers;
 };
 
-std::unique_ptr<TileIntegrator::Worker> PathIntegrator::make_worker(const Sampler& prototype) const {
+std::unique_ptr<TileIntegrator::Worker> PathIntegrator::make_worker(
+    const Sampler& prototype) const {
     auto worker = std::make_unique<PacketWorker>();
     worker->sampler = prototype.clone();
     for (int lane = 1; lane < kPacketWidth; ++lane)

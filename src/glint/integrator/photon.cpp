@@ -1,8 +1,8 @@
 #include <glint/core/progress.h>
 #include <glint/integrator/photon.h>
-#include <glint/integrator/shading.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/projection_map.h>
+#include <glint/integrator/shading.h>
 #include <glint/integrator/transport.h>
 
 #include <fmt/format.h>
@@ -26,7 +26,8 @@ struct PhotonSink {
 // Concatenates the chunks' photons in chunk order and scales them to the emitted count.
 PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted) {
     std::vector<Photon> photons;
-    for (PhotonSink& sink : sinks) photons.insert(photons.end(), sink.photons.begin(), sink.photons.end());
+    for (PhotonSink& sink : sinks)
+        photons.insert(photons.end(), sink.photons.begin(), sink.photons.end());
     const float scale = emitted > 0 ? 1.0f / static_cast<float>(emitted) : 0.0f;
     for (Photon& p : photons) p.power *= scale;
     return PhotonMap(std::move(photons));
@@ -40,7 +41,8 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, 
     std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
     if (settings.projection_maps) {
         for (size_t i = 0; i < scene.lights().size(); ++i) {
-            if (ProjectionMap::supports(*scene.lights()[i])) projections[i].emplace(scene, *scene.lights()[i]);
+            if (ProjectionMap::supports(*scene.lights()[i]))
+                projections[i].emplace(scene, *scene.lights()[i]);
         }
     }
     PhotonEmitter emitter = [&](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
@@ -49,7 +51,11 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, 
     };
     const PhotonTracer tracer(scene, max_bounces, emitter);
     const uint64_t count = static_cast<uint64_t>(settings.caustic_photons);
-    return gather_map(tracer.trace(0, count, settings.seed + 1, rays, [] { return PhotonSink{true, {}}; }), count);
+    return gather_map(tracer.trace(0, count, settings.seed + 1, rays,
+                                   [] {
+                                       return PhotonSink{true, {}};
+                                   }),
+                      count);
 }
 
 float photon_search_radius2(const Scene& scene) {
@@ -67,25 +73,30 @@ uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
 
     const PhotonTracer global_tracer(scene, max_bounces);
     const uint64_t global_count = static_cast<uint64_t>(m_settings.photons);
-    m_global = gather_map(global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
-                          global_count);
+    m_global = gather_map(
+        global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
+        global_count);
 
     const auto start = std::chrono::steady_clock::now();
     m_caustic = build_caustic_map(scene, m_settings, rays);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    m_caustic_rate = seconds > 0.0 ? static_cast<double>(m_settings.caustic_photons) / seconds : 0.0;
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    m_caustic_rate =
+        seconds > 0.0 ? static_cast<double>(m_settings.caustic_photons) / seconds : 0.0;
     return rays;
 }
 
 RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const uint64_t photon_rays = build_maps(scene);
-    const double photon_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double photon_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     RenderStats stats = TileIntegrator::render(scene, film, progress);
     stats.rays += photon_rays;
-    stats.notes.push_back(fmt::format("photon maps: {} global and {} caustic photons stored in {:.2f} s "
-                                      "({:.2f} M caustic photons emitted/s)",
-                                      m_global.size(), m_caustic.size(), photon_seconds, m_caustic_rate * 1e-6));
+    stats.notes.push_back(
+        fmt::format("photon maps: {} global and {} caustic photons stored in {:.2f} s "
+                    "({:.2f} M caustic photons emitted/s)",
+                    m_global.size(), m_caustic.size(), photon_seconds, m_caustic_rate * 1e-6));
 
     for (const std::string& view : m_settings.debug) {
         if (view != "photons") continue;
@@ -110,12 +121,14 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
     return stats;
 }
 
-Spectrum PhotonIntegrator::estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const {
+Spectrum PhotonIntegrator::estimate(const PhotonMap& map, const SurfaceInteraction& si,
+                                    const Bsdf& bsdf) const {
     return radiance_estimate(map, si, bsdf, m_settings.photon_neighbours, m_max_distance2);
 }
 
-Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
-                                        Sampler& sampler, Arena& arena, RayCounter& counter) const {
+Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInteraction& si,
+                                        const Bsdf& bsdf, Sampler& sampler, Arena& arena,
+                                        RayCounter& counter) const {
     const int n = m_settings.gather_rays;
     if (n == 0) return Spectrum(0.0f);
     const Vec3 wo = si.to_local(si.wo);
@@ -128,8 +141,8 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
         // Through specular surfaces to the first diffuse one; emission seen on the way is
         // direct or caustic light, which the other terms already hold.
         const SpecularChain chain =
-            follow_specular_chain(scene, spawn_ray(si, scattering->wi), scattering->weight,
-                                  sampler, arena, counter, kMaxSpecularChain, nullptr);
+            follow_specular_chain(scene, spawn_ray(si, scattering->wi), scattering->weight, sampler,
+                                  arena, counter, kMaxSpecularChain, nullptr);
         if (chain.hit) {
             sum += chain.beta * estimate(m_global, *chain.hit, *chain.bsdf);
         } else if (chain.escaped && !scene.environment()) {
@@ -141,8 +154,8 @@ Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInterac
     return sum / static_cast<float>(n);
 }
 
-Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& sampler, Arena& arena,
-                              RayCounter& counter, AovSample* aov) const {
+Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler& sampler,
+                              Arena& arena, RayCounter& counter, AovSample* aov) const {
     // Every vertex before the first diffuse one is specular: emission seen on the way is not
     // in any map.
     const SpecularChain chain = follow_specular_chain(scene, camera_ray, Spectrum(1.0f), sampler,
@@ -152,11 +165,13 @@ Spectrum PhotonIntegrator::li(const Ray& camera_ray, const Scene& scene, Sampler
     if (!chain.hit) return L;
     const SurfaceInteraction& si = *chain.hit;
     const Bsdf& bsdf = *chain.bsdf;
-    if (m_show_photons) return L + chain.beta * (estimate(m_caustic, si, bsdf) + estimate(m_global, si, bsdf));
+    if (m_show_photons)
+        return L + chain.beta * (estimate(m_caustic, si, bsdf) + estimate(m_global, si, bsdf));
     const Spectrum direct =
         estimate_direct_light(scene, si, bsdf, sampler, LightWeighting::kNone, counter);
     const Spectrum caustic = estimate(m_caustic, si, bsdf);
-    return L + chain.beta * (direct + caustic + final_gather(scene, si, bsdf, sampler, arena, counter));
+    return L +
+           chain.beta * (direct + caustic + final_gather(scene, si, bsdf, sampler, arena, counter));
 }
 
 }  // namespace glint

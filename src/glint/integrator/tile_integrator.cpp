@@ -236,7 +236,8 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
     stats.channels = {std::move(counts)};
 }
 
-std::unique_ptr<TileIntegrator::Worker> TileIntegrator::make_worker(const Sampler& prototype) const {
+std::unique_ptr<TileIntegrator::Worker> TileIntegrator::make_worker(
+    const Sampler& prototype) const {
     auto worker = std::make_unique<Worker>();
     worker->sampler = prototype.clone();
     return worker;

@@ -55,8 +55,8 @@ inline Spectrum emitted_radiance(const SurfaceInteraction& si) {
 /// One light sample as it arrives at a surface point, before a shadow ray decides whether
 /// it gets there.
 struct LightArrival {
-    LightSample light;  ///< direction, radiance, solid-angle pdf and the point to trace to
-    Spectrum f_cos;     ///< the BSDF towards the light times |cos theta_i|
+    LightSample light;      ///< direction, radiance, solid-angle pdf and the point to trace to
+    Spectrum f_cos;         ///< the BSDF towards the light times |cos theta_i|
     float bsdf_pdf = 0.0f;  ///< density with which BSDF sampling picks that direction (for MIS)
 };
 
