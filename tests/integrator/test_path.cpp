@@ -364,9 +364,7 @@ struct PathPacketTest {
                                        RayCounter& counter) {
         PerLane<PathIntegrator::PathState> paths;
         for (size_t lane = 0; lane < rays.size(); ++lane) {
-            paths[lane].ray = rays[lane];
-            paths[lane].sampler = samplers[lane];
-            paths[lane].aov = &aovs[lane];
+            paths[lane].start(rays[lane], *samplers[lane], &aovs[lane]);
         }
         path.trace_packet(scene, paths, static_cast<int>(rays.size()), arena, counter);
         std::vector<Spectrum> radiance;

@@ -1,6 +1,7 @@
 #pragma once
 // Integrators turn a Scene into an image on a Film.
 #include <glint/core/arena.h>
+#include <glint/core/sampler.h>
 #include <glint/film/film.h>
 #include <glint/film/filter.h>
 #include <glint/scene/render_settings.h>
@@ -11,7 +12,6 @@
 
 namespace glint {
 
-class Sampler;
 class Progress;
 
 // A per-pixel channel an integrator adds to the image (e.g. samples taken per pixel).
@@ -100,6 +100,27 @@ protected:
     RenderSettings m_settings;
     std::unique_ptr<Filter> m_filter;
 };
+
+// Inline: called for every sample.
+inline TileIntegrator::CameraSample TileIntegrator::start_camera_sample(const Scene& scene,
+                                                                        Vec2i pixel, int index,
+                                                                        Sampler& sampler) const {
+    sampler.start_pixel_sample(pixel, index);
+    CameraSample sample;
+    sample.filter = m_filter->sample(sampler.get_pixel_2d());
+    const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + sample.filter.offset;
+    sample.ray = scene.camera().sample_ray(film_point, sampler);
+    return sample;
+}
+
+inline void TileIntegrator::record_sample(Film& film, Vec2i pixel, const Spectrum& L,
+                                          float filter_weight, const AovSample* aov,
+                                          PixelMoments& moments) {
+    film.add_sample(pixel, L, filter_weight, aov);
+    const double y = L.is_finite() ? L.luminance() : 0.0;
+    moments.sum += y;
+    moments.sum_squares += y * y;
+}
 
 // The film's image with the integrator's extra channels (sample counts, edge mask) added.
 Image final_image(const Film& film, const RenderStats& stats);

@@ -30,9 +30,7 @@ void record_aov(AovSample* aov, const SurfaceInteraction& si, const Material* ma
 Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                             RayCounter& counter, AovSample* aov) const {
     PathState path;
-    path.ray = ray;
-    path.sampler = &sampler;
-    path.aov = aov;
+    path.start(ray, sampler, aov);
     for (int depth = 0;; ++depth) {
         ++counter.rays;
         if (!scene.intersect(path.ray, path.si)) {
@@ -175,11 +173,8 @@ TileIntegrator::PixelMoments PathIntegrator::render_pixel(const Scene& scene, Fi
             const CameraSample sample =
                 start_camera_sample(scene, pixel, packet_first + lane, sampler);
             filter_samples[lane] = sample.filter;
-            paths[lane] = PathState{};
-            paths[lane].ray = sample.ray;
-            paths[lane].sampler = &sampler;
             aovs[lane] = AovSample{};
-            paths[lane].aov = film.has_aovs() ? &aovs[lane] : nullptr;
+            paths[lane].start(sample.ray, sampler, film.has_aovs() ? &aovs[lane] : nullptr);
         }
         worker.arena.reset();
         trace_packet(scene, paths, lanes, worker.arena, worker.counter);

@@ -29,6 +29,20 @@ public:
 private:
     // A path between the steps of a bounce.
     struct PathState {
+        // Starts a path along a camera ray. Sets every field a path reads before writing
+        // it; `si` is left as it was (intersect() writes all of it).
+        void start(const Ray& camera_ray, Sampler& path_sampler, AovSample* features) {
+            L = Spectrum(0.0f);
+            beta = Spectrum(1.0f);
+            ray = camera_ray;
+            specular_bounce = true;
+            bsdf_pdf = 0.0f;
+            previous_point = Vec3(0.0f);
+            eta_scale = 1.0f;
+            sampler = &path_sampler;
+            aov = features;
+        }
+
         Spectrum L{0.0f};
         Spectrum beta{1.0f};
         Ray ray;

@@ -243,25 +243,6 @@ std::unique_ptr<TileIntegrator::Worker> TileIntegrator::make_worker(
     return worker;
 }
 
-TileIntegrator::CameraSample TileIntegrator::start_camera_sample(const Scene& scene, Vec2i pixel,
-                                                                 int index,
-                                                                 Sampler& sampler) const {
-    sampler.start_pixel_sample(pixel, index);
-    CameraSample sample;
-    sample.filter = m_filter->sample(sampler.get_pixel_2d());
-    const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + sample.filter.offset;
-    sample.ray = scene.camera().sample_ray(film_point, sampler);
-    return sample;
-}
-
-void TileIntegrator::record_sample(Film& film, Vec2i pixel, const Spectrum& L, float filter_weight,
-                                   const AovSample* aov, PixelMoments& moments) {
-    film.add_sample(pixel, L, filter_weight, aov);
-    const double y = L.is_finite() ? L.luminance() : 0.0;
-    moments.sum += y;
-    moments.sum_squares += y * y;
-}
-
 TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Film& film,
                                                           Vec2i pixel, Worker& worker, int first,
                                                           int count) const {

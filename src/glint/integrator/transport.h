@@ -15,11 +15,13 @@
 //   follow_specular_chain   a ray through mirrors and glass to the first surface that is not
 //                           purely specular
 //
+// The steps a path takes at every bounce are inline, since hot loops call them per bounce.
 // Integrators keep what is theirs: how paths end (roulette), how strategies are weighted
 // (MIS), what is stored (photons, visible points) and how rays are batched (packets).
 #include <glint/core/arena.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/shading.h>
 #include <glint/material/bsdf.h>
 #include <glint/scene/scene.h>
 
@@ -62,9 +64,17 @@ struct LightArrival {
 
 /// Samples `light` from `si` with (u, u_select) (see Light::sample_li) and evaluates the
 /// BSDF towards it; nullopt when the sample carries nothing.
-std::optional<LightArrival> sample_light_arrival(const Light& light, const SurfaceInteraction& si,
-                                                 const Bsdf& bsdf, const Vec3& wo_local,
-                                                 const Vec2& u, float u_select);
+[[gnu::always_inline]] inline std::optional<LightArrival> sample_light_arrival(
+    const Light& light, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
+    const Vec2& u, float u_select) {
+    const std::optional<LightSample> ls = light.sample_li(si.p, u, u_select);
+    if (!ls || ls->L.is_black()) return std::nullopt;
+    const Vec3 wi_local = si.to_local(ls->wi);
+    LightArrival arrival{*ls, Spectrum(0.0f), 0.0f};
+    arrival.f_cos = bsdf.eval_pdf(wo_local, wi_local, arrival.bsdf_pdf) * abs_cos_theta(wi_local);
+    if (arrival.f_cos.is_black()) return std::nullopt;
+    return arrival;
+}
 
 /// How a direct-light sample is weighted against BSDF sampling's chance of finding the same
 /// light.
@@ -86,9 +96,25 @@ struct DirectLight {
 /// sampler serves from one group. They are drawn even when the estimate turns out empty, so
 /// later draws do not depend on it. nullopt when the sample contributes nothing; the caller
 /// traces the shadow ray (the path tracer traces several paths' together).
-std::optional<DirectLight> sample_direct_light(const Scene& scene, const SurfaceInteraction& si,
-                                               const Bsdf& bsdf, const Vec3& wo_local,
-                                               Sampler& sampler, LightWeighting weighting);
+[[gnu::always_inline]] inline std::optional<DirectLight> sample_direct_light(
+    const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
+    Sampler& sampler, LightWeighting weighting) {
+    // 2D first: the Sobol sampler hands out a 2D value and two 1D values per index shuffle.
+    const Vec2 u = sampler.get_2d();
+    const float u_light = sampler.get_1d();
+    const float u_select = sampler.get_1d();
+    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
+    if (!choice.light) return std::nullopt;
+    const std::optional<LightArrival> arrival =
+        sample_light_arrival(*choice.light, si, bsdf, wo_local, u, u_select);
+    if (!arrival) return std::nullopt;
+    const LightSample& ls = arrival->light;
+    const float light_pdf = choice.pmf * ls.pdf;
+    if (ls.is_delta || weighting == LightWeighting::kNone)
+        return DirectLight{arrival->f_cos * ls.L / light_pdf, ls.p};
+    const float weight = power_heuristic(light_pdf, arrival->bsdf_pdf);
+    return DirectLight{arrival->f_cos * ls.L * (weight / light_pdf), ls.p};
+}
 
 /// sample_direct_light, with its shadow ray traced (and counted): the direct light arriving
 /// at `si` towards si.wo.
@@ -106,13 +132,27 @@ struct Scattering {
 /// sampled direction disagrees with the geometric surface (a shading normal can send a
 /// "reflected" direction through the surface or the reverse): such paths would leak light
 /// through surfaces, and are ended instead.
-std::optional<Scattering> sample_scattering(const SurfaceInteraction& si, const Bsdf& bsdf,
-                                            const Vec3& wo_local, const Vec2& u, float u_lobe);
+inline std::optional<Scattering> sample_scattering(const SurfaceInteraction& si, const Bsdf& bsdf,
+                                                   const Vec3& wo_local, const Vec2& u,
+                                                   float u_lobe) {
+    const std::optional<BsdfSample> bs = bsdf.sample(wo_local, u, u_lobe);
+    if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
+    const Vec3 wi = si.to_world(bs->wi);
+    const bool geometric_transmission = glm::dot(wi, si.ng) * glm::dot(si.wo, si.ng) < 0.0f;
+    if (geometric_transmission != bs->is_transmission()) return std::nullopt;
+    return Scattering{*bs, wi, bs->f * (abs_cos_theta(bs->wi) / bs->pdf)};
+}
 
 /// Turns `ray`, the ray that reached `si`, into the ray leaving it along a sampled
 /// direction, in place: after a delta lobe it carries the incoming differentials on
 /// (spawn_specular_ray), otherwise it has none.
-void continue_ray(Ray& ray, SurfaceInteraction& si, const Scattering& scattering);
+inline void continue_ray(Ray& ray, SurfaceInteraction& si, const Scattering& scattering) {
+    const BsdfSample& bs = scattering.sample;
+    if (bs.is_delta())
+        ray = spawn_specular_ray(si, ray, scattering.wi, bs.is_transmission(), bs.eta);
+    else
+        respawn_ray(ray, si, scattering.wi);
+}
 
 /// Every delta lobe of a BSDF at once, each with its whole weight f |cos theta_i| (pdf 1):
 /// reflection and refraction of smooth glass, the reflection of a mirror.
