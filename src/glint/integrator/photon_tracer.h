@@ -87,14 +87,14 @@ private:
             if (!bsdf->is_delta()) sink.store(PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0});
             if (bounces == m_max_bounces) return;
 
-            // Sampling the BSDF with the roles of the directions swapped gives the adjoint
-            // BSDF; refraction then carries power, not radiance, so the 1/eta^2 radiance
-            // scaling in f is undone.
+            // A photon carries power: the BSDF in importance mode is the adjoint (no 1/eta^2
+            // through refraction) with the shading-normal correction, wo towards the light.
             const Vec2 u(rng.next_float(), rng.next_float());
-            const std::optional<BsdfSample> bs = bsdf->sample(si.to_local(wi), u, rng.next_float());
+            const std::optional<BsdfSample> bs =
+                bsdf->sample(si.to_local(wi), u, rng.next_float(), TransportMode::kImportance,
+                             si.to_local(si.ng));
             if (!bs || bs->pdf <= 0.0f) return;
-            Spectrum next = beta * bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-            if (bs->is_transmission()) next *= bs->eta * bs->eta;
+            const Spectrum next = beta * bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
             // Russian roulette keeps a photon's power roughly constant (Jensen 2001).
             const float survive = std::min(1.0f, next.max_value() / beta.max_value());
             if (!(survive > 0.0f) || rng.next_float() >= survive) return;

@@ -28,21 +28,23 @@ public:
         m_specular_probability = d + s > 0.0f ? s / (d + s) : 0.0f;
     }
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (!same_hemisphere(wo, wi)) return Spectrum(0.0f);
         const Vec3 o = mirror_to_upper(wo), i = mirror_to_upper(wi);
         const float lobe = lobe_pdf(o, i) / std::max(o.z, i.z);
         return m_diffuse * kInvPi + m_specular * lobe;
     }
 
-    float pdf(const Vec3& wo, const Vec3& wi) const override {
+    float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (!same_hemisphere(wo, wi)) return 0.0f;
         const Vec3 o = mirror_to_upper(wo), i = mirror_to_upper(wi);
         return m_specular_probability * lobe_pdf(o, i) +
                (1.0f - m_specular_probability) * i.z * kInvPi;
     }
 
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
+                                              float u_lobe) const override {
         if (wo.z == 0.0f) return std::nullopt;
         const bool specular = u_lobe < m_specular_probability;
         Vec3 wi;
@@ -60,10 +62,10 @@ public:
             wi = warp::square_to_cosine_hemisphere(u);
         }
         if (wo.z < 0.0f) wi.z = -wi.z;
-        const float p = pdf(wo, wi);
+        const float p = pdf_unscaled(wo, wi);
         if (!(p > 0.0f)) return std::nullopt;
         const uint32_t lobe = specular ? kBsdfGlossy : kBsdfDiffuse;
-        return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
     }
 
 private:

@@ -10,13 +10,14 @@ public:
     explicit LambertianBsdf(const Spectrum& reflectance)
         : Bsdf(kBsdfReflection | kBsdfDiffuse), m_f(reflectance * kInvPi) {}
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
         return same_hemisphere(wo, wi) ? m_f : Spectrum(0.0f);
     }
-    float pdf(const Vec3& wo, const Vec3& wi) const override {
+    float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
         return same_hemisphere(wo, wi) ? abs_cos_theta(wi) * kInvPi : 0.0f;
     }
-    Spectrum eval_pdf(const Vec3& wo, const Vec3& wi, float& pdf_out) const override {
+    Spectrum eval_pdf_unscaled(const Vec3& wo, const Vec3& wi, float& pdf_out) const override {
         if (!same_hemisphere(wo, wi)) {
             pdf_out = 0.0f;
             return Spectrum(0.0f);
@@ -24,7 +25,7 @@ public:
         pdf_out = abs_cos_theta(wi) * kInvPi;
         return m_f;
     }
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u, float) const override {
         std::optional<BsdfSample> result;  // one named result, built in the caller's storage
         if (wo.z == 0.0f) return result;
         Vec3 wi = warp::square_to_cosine_hemisphere(u);

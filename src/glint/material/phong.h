@@ -21,14 +21,15 @@ public:
         m_specular_probability = d + s > 0.0f ? s / (d + s) : 0.0f;
     }
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (!same_hemisphere(wo, wi)) return Spectrum(0.0f);
         const float cos_alpha = std::max(0.0f, glm::dot(wi, mirror(wo)));
         const float lobe = (m_exponent + 2.0f) * kInv2Pi * std::pow(cos_alpha, m_exponent);
         return m_diffuse * kInvPi + m_specular * lobe;
     }
 
-    float pdf(const Vec3& wo, const Vec3& wi) const override {
+    float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (!same_hemisphere(wo, wi)) return 0.0f;
         const float cos_alpha = std::max(0.0f, glm::dot(wi, mirror(wo)));
         const float lobe_pdf = (m_exponent + 1.0f) * kInv2Pi * std::pow(cos_alpha, m_exponent);
@@ -36,7 +37,8 @@ public:
                (1.0f - m_specular_probability) * abs_cos_theta(wi) * kInvPi;
     }
 
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
+                                              float u_lobe) const override {
         if (wo.z == 0.0f) return std::nullopt;
         Vec3 wi;
         if (u_lobe < m_specular_probability) {
@@ -52,10 +54,10 @@ public:
             wi = warp::square_to_cosine_hemisphere(u);
             if (wo.z < 0.0f) wi.z = -wi.z;
         }
-        const float p = pdf(wo, wi);
+        const float p = pdf_unscaled(wo, wi);
         if (p <= 0.0f) return std::nullopt;
         const uint32_t lobe = u_lobe < m_specular_probability ? kBsdfGlossy : kBsdfDiffuse;
-        return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
     }
 
 private:

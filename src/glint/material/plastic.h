@@ -48,7 +48,8 @@ public:
         m_base_albedo = albedo_sum / 3.0f;
     }
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (!same_hemisphere(wo, wi)) return Spectrum(0.0f);
         const Vec3 o = mirror_to_upper(wo), i = mirror_to_upper(wi);
         const Spectrum base = m_diffuse_scale * ((1.0f - coat_albedo(o)) * (1.0f - coat_albedo(i)));
@@ -59,7 +60,7 @@ public:
         return base + Spectrum(coat);
     }
 
-    float pdf(const Vec3& wo, const Vec3& wi) const override {
+    float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (!same_hemisphere(wo, wi)) return 0.0f;
         const Vec3 o = mirror_to_upper(wo), i = mirror_to_upper(wi);
         const float p_coat = coat_probability(o);
@@ -69,17 +70,13 @@ public:
         return base + p_coat * m_coat.visible_normal_pdf(o, wm) / (4.0f * glm::dot(o, wm));
     }
 
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
+                                              float u_lobe) const override {
         if (wo.z == 0.0f) return std::nullopt;
         const Vec3 o = mirror_to_upper(wo);
         const float p_coat = coat_probability(o);
         const bool coat = u_lobe < p_coat;
-        if (coat && m_coat.effectively_smooth()) {
-            const Vec3 wi(-wo.x, -wo.y, wo.z);
-            const float fresnel = fresnel_dielectric(o.z, m_eta);
-            return BsdfSample{Spectrum(fresnel / o.z), wi, p_coat, kBsdfReflection | kBsdfDelta,
-                              1.0f};
-        }
+        if (coat && m_coat.effectively_smooth()) return smooth_coat(wo, p_coat);
         Vec3 wi;
         if (coat) {
             wi = reflect(o, m_coat.sample_visible_normal(o, u));
@@ -88,13 +85,31 @@ public:
             wi = warp::square_to_cosine_hemisphere(u);
         }
         if (wo.z < 0.0f) wi.z = -wi.z;
-        const float p = pdf(wo, wi);
+        const float p = pdf_unscaled(wo, wi);
         if (!(p > 0.0f)) return std::nullopt;
         const uint32_t lobe = coat ? kBsdfGlossy : kBsdfDiffuse;
-        return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+    }
+
+    // Only the smooth coat is a delta lobe; the diffuse base is not listed.
+    DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {
+        DeltaLobes lobes;
+        if (wo.z != 0.0f && m_coat.effectively_smooth()) {
+            const BsdfSample coat = smooth_coat(wo, 1.0f);
+            if (!coat.f.is_black()) lobes.add(coat);
+        }
+        return lobes;
     }
 
 private:
+    // The smooth coat's mirror lobe, of weight F(wo), chosen with probability `pdf`.
+    BsdfSample smooth_coat(const Vec3& wo, float pdf) const {
+        const Vec3 wi(-wo.x, -wo.y, wo.z);
+        const float cos_o = std::abs(wo.z);
+        const float fresnel = fresnel_dielectric(cos_o, m_eta);
+        return BsdfSample{Spectrum(fresnel / cos_o), wi, pdf, kBsdfReflection | kBsdfDelta, 1.0f};
+    }
+
     float coat_albedo(const Vec3& w) const { return m_coat_albedo->albedo(w.z, m_coat.alpha_x()); }
 
     // The coat is sampled in proportion to its share of the reflected energy: E(wo) against

@@ -38,7 +38,8 @@ public:
           m_distribution(distribution),
           m_fresnel(fresnel) {}
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (m_distribution.effectively_smooth() || !same_hemisphere(wo, wi)) return Spectrum(0.0f);
         const Vec3 o = mirror_to_upper(wo), i = mirror_to_upper(wi);
         const Vec3 wm = glm::normalize(o + i);
@@ -46,7 +47,7 @@ public:
         return m_fresnel.eval(glm::dot(o, wm)) * (m_distribution.d(wm) * g2 / (4.0f * o.z * i.z));
     }
 
-    float pdf(const Vec3& wo, const Vec3& wi) const override {
+    float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
         if (m_distribution.effectively_smooth() || !same_hemisphere(wo, wi)) return 0.0f;
         const Vec3 o = mirror_to_upper(wo), i = mirror_to_upper(wi);
         const Vec3 wm = glm::normalize(o + i);
@@ -54,24 +55,33 @@ public:
         return m_distribution.visible_normal_pdf(o, wm) / (4.0f * glm::dot(o, wm));
     }
 
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u, float) const override {
         if (wo.z == 0.0f) return std::nullopt;
-        if (m_distribution.effectively_smooth()) {
-            const Vec3 wi(-wo.x, -wo.y, wo.z);
-            const Spectrum f = m_fresnel.eval(abs_cos_theta(wo)) / abs_cos_theta(wi);
-            return BsdfSample{f, wi, 1.0f, kBsdfReflection | kBsdfDelta, 1.0f};
-        }
+        if (m_distribution.effectively_smooth()) return mirror(wo);
         const Vec3 o = mirror_to_upper(wo);
         const Vec3 wm = m_distribution.sample_visible_normal(o, u);
         Vec3 wi = reflect(o, wm);
         if (wi.z <= 0.0f) return std::nullopt;  // reflected into the surface: masked
         if (wo.z < 0.0f) wi.z = -wi.z;
-        const float p = pdf(wo, wi);
+        const float p = pdf_unscaled(wo, wi);
         if (!(p > 0.0f)) return std::nullopt;
-        return BsdfSample{eval(wo, wi), wi, p, kBsdfReflection | kBsdfGlossy, 1.0f};
+        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | kBsdfGlossy, 1.0f};
+    }
+
+    DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {
+        DeltaLobes lobes;
+        if (wo.z != 0.0f && m_distribution.effectively_smooth()) lobes.add(mirror(wo));
+        return lobes;
     }
 
 private:
+    // The delta lobe of the effectively smooth case: a mirror with the Fresnel reflectance.
+    BsdfSample mirror(const Vec3& wo) const {
+        const Vec3 wi(-wo.x, -wo.y, wo.z);
+        const Spectrum f = m_fresnel.eval(abs_cos_theta(wo)) / abs_cos_theta(wi);
+        return BsdfSample{f, wi, 1.0f, kBsdfReflection | kBsdfDelta, 1.0f};
+    }
+
     GgxDistribution m_distribution;
     ConductorFresnel m_fresnel;
 };

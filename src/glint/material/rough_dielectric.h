@@ -2,8 +2,9 @@
 // Rough glass: reflection and refraction by GGX microfacets (Walter et al. 2007,
 // "Microfacet Models for Refraction through Rough Surfaces"), the rough counterpart of
 // SmoothDielectricBsdf with the same conventions: `eta` is the index inside over the index
-// outside, radiance is scaled by 1/eta^2 on refraction, and BsdfSample::eta is the index on
-// wi's side over the index on wo's side.
+// outside, radiance is scaled by 1/eta^2 on refraction (by the Bsdf wrappers, bsdf.h: the
+// formulas below are without it), and BsdfSample::eta is the index on wi's side over the
+// index on wo's side.
 //
 // Light arriving from inside (wo.z < 0) is handled by mirroring both directions into the
 // upper hemisphere and inverting eta: the interface seen from inside is an interface seen
@@ -13,8 +14,8 @@
 //                f = F(wo.wm) D(wm) G2 / (4 cos_o cos_i)
 //                pdf = F D_wo(wm) / (4 wo.wm)
 //   refraction   wm = normalize(wo + eta_r wi), the generalised half vector, turned up
-//                f = (1 - F) D(wm) G2 |wi.wm| |wo.wm| / (cos_o |cos_i| (wi.wm + wo.wm/eta_r)^2) /
-//                eta_r^2 pdf = (1 - F) D_wo(wm) |wi.wm| / (wi.wm + wo.wm/eta_r)^2
+//                f = (1 - F) D(wm) G2 |wi.wm| |wo.wm| / (cos_o |cos_i| (wi.wm + wo.wm/eta_r)^2)
+//                pdf = (1 - F) D_wo(wm) |wi.wm| / (wi.wm + wo.wm/eta_r)^2
 // where the last factor of each pdf is the Jacobian d(wm)/d(wi) (Walter et al., eqs. 14, 17)
 // and F is the dielectric Fresnel reflectance at the facet, which also chooses between the
 // lobes when sampling. Only facets that face wo and, for refraction, face away from wi
@@ -30,11 +31,12 @@ public:
     // `eta` = index inside / index outside. The distribution must not be effectively smooth
     // (use SmoothDielectricBsdf then: the material chooses).
     RoughDielectricBsdf(float eta, const GgxDistribution& distribution)
-        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfGlossy),
+        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfGlossy, eta),
           m_eta(eta),
           m_distribution(distribution) {}
 
-    Spectrum eval(const Vec3& wo, const Vec3& wi) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
         const Config c = configure(wo, wi);
         if (!c.valid) return Spectrum(0.0f);
         const float g2 = m_distribution.g2(c.o, c.i);
@@ -44,10 +46,10 @@ public:
         const float cos_om = glm::dot(c.o, c.wm), cos_im = glm::dot(c.i, c.wm);
         const float denominator = sqr(cos_im + cos_om / c.eta) * c.o.z * std::abs(c.i.z);
         const float f = (1.0f - fresnel) * d * g2 * std::abs(cos_im * cos_om) / denominator;
-        return Spectrum(f / (c.eta * c.eta));
+        return Spectrum(f);  // the wrappers add 1/eta^2 for radiance (bsdf.h)
     }
 
-    float pdf(const Vec3& wo, const Vec3& wi) const override {
+    float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
         const Config c = configure(wo, wi);
         if (!c.valid) return 0.0f;
         const float cos_om = glm::dot(c.o, c.wm);
@@ -58,7 +60,8 @@ public:
         return (1.0f - fresnel) * visible * std::abs(cos_im) / sqr(cos_im + cos_om / c.eta);
     }
 
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
+                                              float u_lobe) const override {
         if (wo.z == 0.0f) return std::nullopt;
         const bool inside = wo.z < 0.0f;
         const float eta = inside ? 1.0f / m_eta : m_eta;
@@ -74,10 +77,11 @@ public:
             if (!refract(o, wm, eta, wi) || wi.z >= 0.0f) return std::nullopt;
         }
         if (inside) wi.z = -wi.z;
-        const float p = pdf(wo, wi);
+        const float p = pdf_unscaled(wo, wi);
         if (!(p > 0.0f)) return std::nullopt;
         const uint32_t lobe = reflection ? kBsdfReflection : kBsdfTransmission;
-        return BsdfSample{eval(wo, wi), wi, p, lobe | kBsdfGlossy, reflection ? 1.0f : eta};
+        return BsdfSample{eval_unscaled(wo, wi), wi, p, lobe | kBsdfGlossy,
+                          reflection ? 1.0f : eta};
     }
 
 private:

@@ -1,7 +1,8 @@
 #pragma once
 // A smooth interface between two dielectrics (glass, water): exact Fresnel reflectance,
-// Snell refraction, total internal reflection. Radiance is scaled by 1/eta^2 on
-// refraction because the solid angle is compressed (Veach 1997, ch. 5).
+// Snell refraction, total internal reflection. The 1/eta^2 that radiance picks up on
+// refraction, because the solid angle is compressed (Veach 1997, ch. 5), is applied by the
+// Bsdf wrappers in radiance mode (bsdf.h); this class gives f without it.
 #include <glint/material/bsdf.h>
 #include <glint/material/fresnel.h>
 
@@ -11,31 +12,54 @@ class SmoothDielectricBsdf final : public Bsdf {
 public:
     // `eta` = index inside / index outside (outside is the side the normal points to).
     explicit SmoothDielectricBsdf(float eta)
-        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfDelta), m_eta(eta) {}
+        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfDelta, eta), m_eta(eta) {}
 
-    Spectrum eval(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
-    float pdf(const Vec3&, const Vec3&) const override { return 0.0f; }
+protected:
+    Spectrum eval_unscaled(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
+    float pdf_unscaled(const Vec3&, const Vec3&) const override { return 0.0f; }
 
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2&, float u_lobe) const override {
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2&,
+                                              float u_lobe) const override {
         const float cos_o = cos_theta(wo);
         if (cos_o == 0.0f) return std::nullopt;
         const float reflectance = fresnel_dielectric(cos_o, m_eta);
-        if (u_lobe < reflectance) {
-            const Vec3 wi(-wo.x, -wo.y, wo.z);
-            return BsdfSample{Spectrum(reflectance / abs_cos_theta(wi)), wi, reflectance,
-                              kBsdfReflection | kBsdfDelta, 1.0f};
+        if (u_lobe < reflectance) return reflection(wo, reflectance, reflectance);
+        const float transmittance = 1.0f - reflectance;
+        return refraction(wo, transmittance, transmittance);  // nullopt unreachable: TIR has R = 1
+    }
+
+    DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {
+        DeltaLobes lobes;
+        const float cos_o = cos_theta(wo);
+        if (cos_o == 0.0f) return lobes;
+        const float reflectance = fresnel_dielectric(cos_o, m_eta);
+        if (reflectance > 0.0f) lobes.add(reflection(wo, reflectance, 1.0f));
+        if (reflectance < 1.0f) {
+            if (const auto t = refraction(wo, 1.0f - reflectance, 1.0f)) lobes.add(*t);
         }
+        return lobes;
+    }
+
+private:
+    // The mirror lobe of weight `weight`, chosen with probability `pdf`.
+    static BsdfSample reflection(const Vec3& wo, float weight, float pdf) {
+        const Vec3 wi(-wo.x, -wo.y, wo.z);
+        return BsdfSample{Spectrum(weight / abs_cos_theta(wi)), wi, pdf,
+                          kBsdfReflection | kBsdfDelta, 1.0f};
+    }
+
+    // The refracted lobe of weight `weight` (before any 1/eta^2), chosen with probability `pdf`.
+    std::optional<BsdfSample> refraction(const Vec3& wo, float weight, float pdf) const {
+        const float cos_o = cos_theta(wo);
         // Relative index across the interface in the direction the light path travels.
         const float eta = cos_o > 0.0f ? m_eta : 1.0f / m_eta;
         const Vec3 n(0.0f, 0.0f, cos_o > 0.0f ? 1.0f : -1.0f);
         Vec3 wi;
-        if (!refract(wo, n, eta, wi)) return std::nullopt;  // unreachable: TIR has R = 1
-        const float transmittance = 1.0f - reflectance;
-        const Spectrum f(transmittance / (eta * eta) / abs_cos_theta(wi));
-        return BsdfSample{f, wi, transmittance, kBsdfTransmission | kBsdfDelta, eta};
+        if (!refract(wo, n, eta, wi)) return std::nullopt;
+        return BsdfSample{Spectrum(weight / abs_cos_theta(wi)), wi, pdf,
+                          kBsdfTransmission | kBsdfDelta, eta};
     }
 
-private:
     float m_eta;
 };
 

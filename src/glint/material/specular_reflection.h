@@ -9,15 +9,25 @@ public:
     explicit SpecularReflectionBsdf(const Spectrum& tint)
         : Bsdf(kBsdfReflection | kBsdfDelta), m_tint(tint) {}
 
-    Spectrum eval(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
-    float pdf(const Vec3&, const Vec3&) const override { return 0.0f; }
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2&, float) const override {
+protected:
+    Spectrum eval_unscaled(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
+    float pdf_unscaled(const Vec3&, const Vec3&) const override { return 0.0f; }
+    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2&, float) const override {
         if (wo.z == 0.0f) return std::nullopt;
+        return mirror(wo);
+    }
+    DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {
+        DeltaLobes lobes;
+        if (wo.z != 0.0f && !m_tint.is_black()) lobes.add(mirror(wo));
+        return lobes;
+    }
+
+private:
+    BsdfSample mirror(const Vec3& wo) const {
         const Vec3 wi(-wo.x, -wo.y, wo.z);
         return BsdfSample{m_tint / abs_cos_theta(wi), wi, 1.0f, kBsdfReflection | kBsdfDelta, 1.0f};
     }
 
-private:
     Spectrum m_tint;
 };
 
