@@ -49,8 +49,10 @@ double image_area() {
 Vec3 point_through(const Vec2& film, float depth) {
     const Axes a;
     const float t = std::tan(0.5f * glm::radians(kFov));
-    const float sx = 2.0f * film.x / kResolution.x - 1.0f, sy = 1.0f - 2.0f * film.y / kResolution.y;
-    return kEye + depth * (a.forward + sx * t * (static_cast<float>(kResolution.x) / kResolution.y) * a.right +
+    const float sx = 2.0f * film.x / kResolution.x - 1.0f,
+                sy = 1.0f - 2.0f * film.y / kResolution.y;
+    return kEye + depth * (a.forward +
+                           sx * t * (static_cast<float>(kResolution.x) / kResolution.y) * a.right +
                            sy * t * a.up);
 }
 
@@ -91,7 +93,8 @@ TEST(CameraImportance, PinholeSampleWiRoundTripsThroughGenerateRay) {
     // Behind the camera and outside the frame: nothing.
     EXPECT_FALSE(camera.sample_wi(kEye - Axes().forward, Vec2(0.5f)));
     EXPECT_FALSE(camera.sample_wi(point_through(Vec2(-3.0f, 10.0f), 2.0f), Vec2(0.5f)));
-    EXPECT_FALSE(camera.sample_wi(point_through(Vec2(10.0f, kResolution.y + 2.0f), 2.0f), Vec2(0.5f)));
+    EXPECT_FALSE(
+        camera.sample_wi(point_through(Vec2(10.0f, kResolution.y + 2.0f), 2.0f), Vec2(0.5f)));
 }
 
 TEST(CameraImportance, ThinLensSampleWiRoundTripsOnAndOffTheFocusPlane) {
@@ -102,7 +105,8 @@ TEST(CameraImportance, ThinLensSampleWiRoundTripsOnAndOffTheFocusPlane) {
             // Inside the middle of the frame, so every lens point sees it.
             const Vec2 film((0.25f + 0.5f * rng.next_float()) * kResolution.x,
                             (0.25f + 0.5f * rng.next_float()) * kResolution.y);
-            expect_round_trip(camera, point_through(film, depth), Vec2(rng.next_float(), rng.next_float()));
+            expect_round_trip(camera, point_through(film, depth),
+                              Vec2(rng.next_float(), rng.next_float()));
         }
     }
 }
@@ -127,7 +131,9 @@ TEST(CameraImportance, ThinLensPointsAreUniformOnTheDiscWithTheirPdf) {
             if (std::abs(glm::dot(q, a.forward)) > 1e-5f) ++wrong_pdf;
             return Vec2(glm::dot(q, a.right), glm::dot(q, a.up));
         },
-        [&](const Vec2& p) { return glm::dot(p, p) <= kAperture * kAperture ? 1.0 / lens_area : 0.0; },
+        [&](const Vec2& p) {
+            return glm::dot(p, p) <= kAperture * kAperture ? 1.0 / lens_area : 0.0;
+        },
         Vec2(-1.1f * kAperture), Vec2(1.1f * kAperture), 100000, 9, 0.001);
     EXPECT_TRUE(result.passed) << result.details;
     EXPECT_NEAR(result.integrated_pdf, 1.0, 3e-3) << result.details;
@@ -155,7 +161,9 @@ TEST(CameraImportance, WeIsZeroOutsideTheFrameAndMatchesTheFormula) {
             EXPECT_NEAR(pdf.dir, 1.0 / (image_area() * c * c * c), 1e-4 * pdf.dir);
         }
         // Just outside each edge of the frame, and backwards.
-        const Vec2 outside[] = {{-0.01f, 20.0f}, {kResolution.x + 0.01f, 20.0f}, {30.0f, -0.01f},
+        const Vec2 outside[] = {{-0.01f, 20.0f},
+                                {kResolution.x + 0.01f, 20.0f},
+                                {30.0f, -0.01f},
                                 {30.0f, kResolution.y + 0.01f}};
         for (const Vec2& film : outside) {
             // A pinhole ray through the film point, beyond the frame, from the lens centre.
@@ -186,7 +194,8 @@ TEST(CameraImportance, WeAndPdfWeIntegrateToTheirNormalisation) {
             constexpr int kN = 400000;
             double we_sum = 0.0, we_sum2 = 0.0, pdf_sum = 0.0, pdf_sum2 = 0.0;
             for (int i = 0; i < kN; ++i) {
-                const Vec3 local = warp::square_to_uniform_hemisphere(Vec2(rng.next_float(), rng.next_float()));
+                const Vec3 local =
+                    warp::square_to_uniform_hemisphere(Vec2(rng.next_float(), rng.next_float()));
                 const Ray ray{origin, frame.to_world(local)};
                 const double inv_pdf = 2.0 * M_PI;
                 const double we = camera.we(ray)[0] * local.z * inv_pdf;

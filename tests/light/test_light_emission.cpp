@@ -31,8 +31,7 @@ constexpr int kSamples = 100000;
 std::optional<LightEmission> draw(const Light& light, const Vec2& u, float u_extra, Rng& rng,
                                   bool position_first) {
     const Vec2 other(rng.next_float(), rng.next_float());
-    return position_first ? light.sample_le(u, other, u_extra)
-                          : light.sample_le(other, u, u_extra);
+    return position_first ? light.sample_le(u, other, u_extra) : light.sample_le(other, u, u_extra);
 }
 
 // sample_le's densities against pdf_le of its own ray, and the mean of beta() against
@@ -68,7 +67,8 @@ void expect_consistent(const Light& light, const std::string& label, double powe
 
 // Chi-square of directions `to_test` (a sampled emission mapped to a unit vector) against
 // `density` (of that unit vector).
-void expect_directions(const Light& light, const std::function<std::optional<Vec3>(const LightEmission&)>& to_test,
+void expect_directions(const Light& light,
+                       const std::function<std::optional<Vec3>(const LightEmission&)>& to_test,
                        const std::function<double(const Vec3&)>& density, const std::string& label,
                        int cos_theta_bins = 20) {
     Rng rng(11);
@@ -84,7 +84,8 @@ void expect_directions(const Light& light, const std::function<std::optional<Vec
 }
 
 // Chi-square of origins mapped to a plane by `to_plane`, inside [lo, hi], against `density`.
-void expect_positions(const Light& light, const std::function<std::optional<Vec2>(const LightEmission&)>& to_plane,
+void expect_positions(const Light& light,
+                      const std::function<std::optional<Vec2>(const LightEmission&)>& to_plane,
                       const std::function<double(const Vec2&)>& density, const Vec2& lo,
                       const Vec2& hi, const std::string& label) {
     Rng rng(13);
@@ -101,8 +102,9 @@ void expect_positions(const Light& light, const std::function<std::optional<Vec2
 
 // Directions of a surface light in the frame of the surface's front normal at the origin;
 // their density is pdf_le's at any point, since the lobe is the same everywhere.
-void expect_surface_directions(const AreaLight& light, const std::function<Vec3(const Vec3&)>& front_normal,
-                               const Vec3& p0, const std::string& label) {
+void expect_surface_directions(const AreaLight& light,
+                               const std::function<Vec3(const Vec3&)>& front_normal, const Vec3& p0,
+                               const std::string& label) {
     const Vec3 n0 = front_normal(p0);
     const Frame f0 = Frame::from_normal(n0);
     expect_directions(
@@ -110,7 +112,10 @@ void expect_surface_directions(const AreaLight& light, const std::function<Vec3(
         [&](const LightEmission& e) -> std::optional<Vec3> {
             return Frame::from_normal(front_normal(e.ray.origin)).to_local(e.ray.direction);
         },
-        [&](const Vec3& v) { return light.pdf_le(Ray{p0, f0.to_world(v)}, n0).dir; }, label);
+        [&](const Vec3& v) {
+            return light.pdf_le(Ray{p0, f0.to_world(v)}, n0).dir;
+        },
+        label);
 }
 
 bool inside_convex(const std::vector<Vec2>& polygon, const Vec2& p) {
@@ -144,16 +149,18 @@ TEST(LightEmission, QuadAreaLightOneAndTwoSided) {
                                                    Vec3(corners[2], 0), Vec3(corners[3], 0)));
     const Vec3 front = mesh.make_sampler(Transform())->sample_area(Vec2(0.5f), 0.5f).n;
     for (const bool two_sided : {false, true}) {
-        const AreaLight light(mesh.make_sampler(Transform()), Spectrum(2.0f, 1.0f, 0.5f), two_sided);
+        const AreaLight light(mesh.make_sampler(Transform()), Spectrum(2.0f, 1.0f, 0.5f),
+                              two_sided);
         const std::string label = two_sided ? "two-sided quad" : "one-sided quad";
         expect_consistent(light, label, 1e-4);
-        expect_surface_directions(light, [&](const Vec3&) { return front; }, Vec3(0.0f), label);
+        expect_surface_directions(
+            light, [&](const Vec3&) { return front; }, Vec3(0.0f), label);
         expect_positions(
-            light,
-            [](const LightEmission& e) -> std::optional<Vec2> { return Vec2(e.ray.origin); },
+            light, [](const LightEmission& e) -> std::optional<Vec2> { return Vec2(e.ray.origin); },
             [&](const Vec2& p) {
-                return inside_convex(corners, p) ? light.pdf_le(Ray{Vec3(p, 0.0f), front}, front).pos
-                                                 : 0.0;
+                return inside_convex(corners, p)
+                           ? light.pdf_le(Ray{Vec3(p, 0.0f), front}, front).pos
+                           : 0.0;
             },
             Vec2(-0.8f, -0.7f), Vec2(1.0f, 0.9f), label);
     }
@@ -164,14 +171,15 @@ TEST(LightEmission, SphereAreaLightOneAndTwoSided) {
     const float radius = 0.7f;
     auto front = [&](const Vec3& p) { return glm::normalize(p - centre); };
     for (const bool two_sided : {false, true}) {
-        const AreaLight light(std::make_unique<SphereSampler>(centre, radius), Spectrum(1.0f, 3.0f, 2.0f),
-                              two_sided);
+        const AreaLight light(std::make_unique<SphereSampler>(centre, radius),
+                              Spectrum(1.0f, 3.0f, 2.0f), two_sided);
         const std::string label = two_sided ? "two-sided sphere" : "one-sided sphere";
         expect_consistent(light, label, 1e-4);
         expect_surface_directions(light, front, centre + Vec3(0.0f, radius, 0.0f), label);
         // Positions as directions from the centre: the area density times r^2.
         expect_directions(
-            light, [&](const LightEmission& e) -> std::optional<Vec3> { return front(e.ray.origin); },
+            light,
+            [&](const LightEmission& e) -> std::optional<Vec3> { return front(e.ray.origin); },
             [&](const Vec3& w) {
                 return light.pdf_le(Ray{centre + radius * w, w}, w).pos * radius * radius;
             },
@@ -185,7 +193,10 @@ TEST(LightEmission, PointLightIsUniformFromItsPosition) {
     expect_consistent(light, "point", 1e-4);
     expect_directions(
         light, [](const LightEmission& e) -> std::optional<Vec3> { return e.ray.direction; },
-        [&](const Vec3& w) { return light.pdf_le(Ray{position, w}, Vec3(0.0f)).dir; }, "point");
+        [&](const Vec3& w) {
+            return light.pdf_le(Ray{position, w}, Vec3(0.0f)).dir;
+        },
+        "point");
     const auto e = light.sample_le(Vec2(0.3f), Vec2(0.6f), 0.2f);
     ASSERT_TRUE(e);
     EXPECT_EQ(e->ray.origin, position);
@@ -200,8 +211,13 @@ TEST(LightEmission, SpotLightIsUniformInItsCone) {
     // The falloff makes photons' powers differ; the tolerance is several standard errors.
     expect_consistent(light, "spot", 0.01);
     expect_directions(
-        light, [&](const LightEmission& e) -> std::optional<Vec3> { return frame.to_local(e.ray.direction); },
-        [&](const Vec3& v) { return light.pdf_le(Ray{position, frame.to_world(v)}, Vec3(0.0f)).dir; },
+        light,
+        [&](const LightEmission& e) -> std::optional<Vec3> {
+            return frame.to_local(e.ray.direction);
+        },
+        [&](const Vec3& v) {
+            return light.pdf_le(Ray{position, frame.to_world(v)}, Vec3(0.0f)).dir;
+        },
         "spot", 40);
     EXPECT_EQ(light.pdf_le(Ray{position, -frame.n()}, Vec3(0.0f)).dir, 0.0f);
 }
@@ -215,9 +231,11 @@ TEST(LightEmission, DirectionalLightEntersThroughADiscCoveringTheScene) {
     expect_consistent(light, "directional", 1e-4);
     const Vec3 disc_centre = centre - radius * direction;
     expect_positions(
-        light, [&](const LightEmission& e) { return on_disc(e.ray.origin, disc_centre, direction); },
+        light,
+        [&](const LightEmission& e) { return on_disc(e.ray.origin, disc_centre, direction); },
         [&](const Vec2& p) {
-            return disc_density(p, radius, light.pdf_le(Ray{disc_centre, direction}, Vec3(0.0f)).pos);
+            return disc_density(p, radius,
+                                light.pdf_le(Ray{disc_centre, direction}, Vec3(0.0f)).pos);
         },
         Vec2(-1.1f * radius), Vec2(1.1f * radius), "directional");
     Rng rng(3);
@@ -251,7 +269,10 @@ TEST(LightEmission, EnvironmentLightDirectionsAndDisc) {
     expect_consistent(light, "environment", 0.01);
     expect_directions(
         light, [](const LightEmission& e) -> std::optional<Vec3> { return -e.ray.direction; },
-        [&](const Vec3& w) { return light.pdf_le(Ray{centre, -w}, Vec3(0.0f)).dir; }, "environment");
+        [&](const Vec3& w) {
+            return light.pdf_le(Ray{centre, -w}, Vec3(0.0f)).dir;
+        },
+        "environment");
     // The disc faces the sampled direction, tangent to the scene's sphere on the sky's side.
     expect_positions(
         light,
@@ -259,6 +280,9 @@ TEST(LightEmission, EnvironmentLightDirectionsAndDisc) {
             const Vec3 to_sky = -e.ray.direction;
             return on_disc(e.ray.origin, centre + radius * to_sky, to_sky);
         },
-        [&](const Vec2& p) { return disc_density(p, radius, light.pdf_le(Ray{centre, Vec3(0, 0, 1)}, Vec3(0.0f)).pos); },
+        [&](const Vec2& p) {
+            return disc_density(p, radius,
+                                light.pdf_le(Ray{centre, Vec3(0, 0, 1)}, Vec3(0.0f)).pos);
+        },
         Vec2(-1.1f * radius), Vec2(1.1f * radius), "environment");
 }

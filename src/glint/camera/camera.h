@@ -13,13 +13,13 @@ namespace glint {
 
 /// A point on the lens seen from a point in the scene (Camera::sample_wi).
 struct CameraWiSample {
-    Vec3 wi;          ///< unit, from the reference point towards p_lens
-    Spectrum We;      ///< importance the camera emits from p_lens towards the reference point
-    float pdf = 0.0f; ///< density of choosing p_lens, per unit solid angle as seen from the
-                      ///< reference point
-    Vec3 p_lens;      ///< the point on the lens (the eye for a pinhole)
-    Vec2 film;        ///< film position (pixels, origin top-left, y down, as generate_ray
-                      ///< takes it) the ray from p_lens through the reference point lands on
+    Vec3 wi;           ///< unit, from the reference point towards p_lens
+    Spectrum We;       ///< importance the camera emits from p_lens towards the reference point
+    float pdf = 0.0f;  ///< density of choosing p_lens, per unit solid angle as seen from the
+                       ///< reference point
+    Vec3 p_lens;       ///< the point on the lens (the eye for a pinhole)
+    Vec2 film;         ///< film position (pixels, origin top-left, y down, as generate_ray
+                       ///< takes it) the ray from p_lens through the reference point lands on
 };
 
 /// Densities with which generate_ray produces a ray (Camera::pdf_we).

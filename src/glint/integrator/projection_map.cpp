@@ -15,7 +15,9 @@ Vec3 ProjectionMap::direction(int cell, const Vec2& u) const {
 
 namespace {
 
-bool has_surface(const LightEmission& e) { return e.n.x != 0.0f || e.n.y != 0.0f || e.n.z != 0.0f; }
+bool has_surface(const LightEmission& e) {
+    return e.n.x != 0.0f || e.n.y != 0.0f || e.n.z != 0.0f;
+}
 
 // sample_le moves its origin off the surface to the side its own ray leaves by; a ray
 // towards `w` on the other side (a two-sided light) must start on that side instead: moving
@@ -45,7 +47,8 @@ template <typename Emits>
 void ProjectionMap::probe(const Scene& scene, const Vec3& origin, const Emits& emits,
                           std::vector<uint8_t>& specular) const {
     Arena arena;
-    const Vec2 probes[] = {{0.25f, 0.25f}, {0.75f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.5f, 0.5f}};
+    const Vec2 probes[] = {
+        {0.25f, 0.25f}, {0.75f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.5f, 0.5f}};
     for (int cell = 0; cell < kThetaCells * kPhiCells; ++cell) {
         if (specular[cell]) continue;
         for (const Vec2& u : probes) {
@@ -72,14 +75,16 @@ ProjectionMap::ProjectionMap(const Scene& scene, const Light& light) {
     if (!has_surface(*centre)) {
         m_origin = centre->ray.origin;
         const Vec3 no_normal(0.0f);
-        probe(scene, m_origin,
-              [&](const Vec3& w) { return !light.emitted(m_origin, no_normal, w).is_black(); },
-              specular);
+        probe(
+            scene, m_origin,
+            [&](const Vec3& w) { return !light.emitted(m_origin, no_normal, w).is_black(); },
+            specular);
     } else {
         m_surface = true;
         for (int i = 0; i < 9; ++i) {
             const Vec2 u((i % 3 + 0.5f) / 3.0f, (i / 3 + 0.5f) / 3.0f);
-            const std::optional<LightEmission> point = light.sample_le(u, Vec2(0.5f), (i + 0.5f) / 9.0f);
+            const std::optional<LightEmission> point =
+                light.sample_le(u, Vec2(0.5f), (i + 0.5f) / 9.0f);
             if (!point) return;
             auto emits = [&](const Vec3& w) {
                 return !light.emitted(point->ray.origin, point->n, w).is_black();
@@ -109,7 +114,8 @@ float ProjectionMap::coverage() const {
 std::optional<LightEmission> ProjectionMap::sample(const Light& light, const Vec2& u_position,
                                                    const Vec2& u_direction, float u_cell) const {
     if (m_marked.empty()) return std::nullopt;
-    const size_t index = std::min(m_marked.size() - 1, static_cast<size_t>(u_cell * m_marked.size()));
+    const size_t index =
+        std::min(m_marked.size() - 1, static_cast<size_t>(u_cell * m_marked.size()));
     const Vec3 w = direction(m_marked[index], u_direction);
     // Uniform over the marked solid angle.
     const float pdf_direction = 1.0f / (4.0f * kPi * coverage());
@@ -127,8 +133,9 @@ std::optional<LightEmission> ProjectionMap::sample(const Light& light, const Vec
     // (per area) and of the direction (per solid angle).
     // What u_cell has left after choosing the cell is uniform and independent of the cell:
     // it picks the triangle (and side), so position and direction stay independent.
-    const float u_select = std::clamp(
-        u_cell * static_cast<float>(m_marked.size()) - static_cast<float>(index), 0.0f, 0x1.fffffep-1f);
+    const float u_select =
+        std::clamp(u_cell * static_cast<float>(m_marked.size()) - static_cast<float>(index), 0.0f,
+                   0x1.fffffep-1f);
     const std::optional<LightEmission> point = light.sample_le(u_position, Vec2(0.5f), u_select);
     if (!point || !(point->pdf_pos > 0.0f)) return std::nullopt;
     e.Le = light.emitted(point->ray.origin, point->n, w);

@@ -8,8 +8,8 @@
 // normal, its density) and Light::emitted (what leaves towards a direction). Lights that
 // emit from one point (point, spot) are probed from it. Lights with a surface (area) are
 // probed from a 3 x 3 grid of points spread over it, and a photon then leaves a point that
-// sample_le picks (uniform on the surface) into a marked cell: a direction that reaches glass or a mirror
-// from a point between the probes is found as long as some probe sees the same object
+// sample_le picks (uniform on the surface) into a marked cell: a direction that reaches glass or a
+// mirror from a point between the probes is found as long as some probe sees the same object
 // through a cell at most one away (the map grows by one cell for that).
 #include <glint/light/light.h>
 #include <glint/scene/scene.h>
@@ -37,7 +37,8 @@ public:
     float coverage() const;
 
 private:
-    static constexpr int kThetaCells = 64;  // uniform in cos(theta): every cell has equal solid angle
+    static constexpr int kThetaCells =
+        64;  // uniform in cos(theta): every cell has equal solid angle
     static constexpr int kPhiCells = 128;
     Vec3 direction(int cell, const Vec2& u) const;
     // Marks cell entries of `specular` whose probe rays from `origin` hit a delta BSDF;
@@ -46,8 +47,8 @@ private:
     void probe(const Scene& scene, const Vec3& origin, const Emits& emits,
                std::vector<uint8_t>& specular) const;
 
-    bool m_surface = false;  // an area light: photons start anywhere on it
-    Vec3 m_origin{0.0f};     // a point light's position
+    bool m_surface = false;     // an area light: photons start anywhere on it
+    Vec3 m_origin{0.0f};        // a point light's position
     std::vector<int> m_marked;  // indices of marked cells
 };
 

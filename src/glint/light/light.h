@@ -20,11 +20,11 @@ struct LightSample {
 /// A ray leaving a light, for photons, light paths and bidirectional methods, with the
 /// densities of its origin and direction kept apart (a bidirectional method needs each).
 struct LightEmission {
-    Ray ray;          ///< origin on the light (offset off a surface), unit direction
-    Vec3 n{0.0f};     ///< unit surface normal at the origin for lights with a surface (area),
-                      ///< on the side the ray leaves; zero for lights without a surface
-    Spectrum Le;      ///< radiance leaving along the ray (area, environment; W sr^-1 m^-2),
-                      ///< intensity (point, spot; W sr^-1) or irradiance (directional; W m^-2)
+    Ray ray;               ///< origin on the light (offset off a surface), unit direction
+    Vec3 n{0.0f};          ///< unit surface normal at the origin for lights with a surface (area),
+                           ///< on the side the ray leaves; zero for lights without a surface
+    Spectrum Le;           ///< radiance leaving along the ray (area, environment; W sr^-1 m^-2),
+                           ///< intensity (point, spot; W sr^-1) or irradiance (directional; W m^-2)
     float pdf_pos = 0.0f;  ///< density of the origin: per unit area on an area light; 1 for
                            ///< point and spot lights (delta position); per unit area of the
                            ///< disc (radius = scene radius, perpendicular to the direction)

@@ -55,7 +55,8 @@ std::optional<LightEmission> SpotLight::sample_le(const Vec2&, const Vec2& u_dir
 
 EmissionPdf SpotLight::pdf_le(const Ray& ray, const Vec3&) const {
     const float cos_theta = glm::dot(glm::normalize(ray.direction), m_direction);
-    return {1.0f, cos_theta >= m_cos_cone ? warp::uniform_cone_pdf(Vec3(0, 0, 1), m_cos_cone) : 0.0f};
+    return {1.0f,
+            cos_theta >= m_cos_cone ? warp::uniform_cone_pdf(Vec3(0, 0, 1), m_cos_cone) : 0.0f};
 }
 
 std::optional<LightSample> DirectionalLight::sample_li(const Vec3& ref, const Vec2&, float) const {
@@ -135,7 +136,8 @@ std::unique_ptr<Light> make_directional_light(const Params& params) {
     const Vec3 direction = params.get_vec3("direction");
     const Spectrum irradiance = params.get_spectrum("irradiance");
     if (!(glm::length(direction) > 0.0f)) params.fail("'direction' must not be zero");
-    if (std::min({irradiance.r, irradiance.g, irradiance.b}) < 0.0f) params.fail("'irradiance' must not be negative");
+    if (std::min({irradiance.r, irradiance.g, irradiance.b}) < 0.0f)
+        params.fail("'irradiance' must not be negative");
     return std::make_unique<DirectionalLight>(direction, irradiance);
 }
 

@@ -62,7 +62,8 @@ public:
         m_center = scene_center;
         m_radius = scene_radius;
     }
-    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
+                                         float u_select) const override;
     /// Along the light's direction (pdf_dir 1), from a point uniform on the disc of the
     /// scene's radius that faces the light outside the scene (pdf_pos 1 / (pi r^2)).
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
