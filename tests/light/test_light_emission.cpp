@@ -5,6 +5,7 @@
 #include <glint/core/rng.h>
 #include <glint/geometry/mesh.h>
 #include <glint/geometry/sphere.h>
+#include <glint/integrator/projection_map.h>
 #include <glint/light/area_light.h>
 #include <glint/light/environment_light.h>
 #include <glint/light/point_light.h>
@@ -285,4 +286,27 @@ TEST(LightEmission, EnvironmentLightDirectionsAndDisc) {
                                 light.pdf_le(Ray{centre, Vec3(0, 0, 1)}, Vec3(0.0f)).pos);
         },
         Vec2(-1.1f * radius), Vec2(1.1f * radius), "environment");
+}
+
+// Projection maps serve the lights whose photons start at one point or on a surface,
+// found through sample_le alone.
+TEST(LightEmission, ProjectionMapsSupportPointAndSurfaceLightsOnly) {
+    const TriangleMesh mesh(
+        "quad", make_quad_mesh(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1, 1, 0), Vec3(0, 1, 0)));
+    EXPECT_TRUE(ProjectionMap::supports(PointLight(Vec3(1.0f), Spectrum(1.0f))));
+    EXPECT_TRUE(ProjectionMap::supports(
+        SpotLight(Vec3(0.0f), Vec3(0, -1, 0), Spectrum(1.0f), 30.0f, 20.0f)));
+    EXPECT_TRUE(
+        ProjectionMap::supports(AreaLight(mesh.make_sampler(Transform()), Spectrum(1.0f), false)));
+    EXPECT_TRUE(
+        ProjectionMap::supports(AreaLight(mesh.make_sampler(Transform()), Spectrum(1.0f), true)));
+    DirectionalLight sun(Vec3(0, -1, 0), Spectrum(1.0f));
+    sun.preprocess(Vec3(0.0f), 2.0f);
+    EXPECT_FALSE(ProjectionMap::supports(sun));
+    // A scene of one point: the disc the sun enters through is a point too.
+    sun.preprocess(Vec3(0.0f), 0.0f);
+    EXPECT_FALSE(ProjectionMap::supports(sun));
+    EnvironmentLight sky(std::vector<Spectrum>(8, Spectrum(1.0f)), 4, 2, Mat3(1.0f));
+    sky.preprocess(Vec3(0.0f), 1.0f);
+    EXPECT_FALSE(ProjectionMap::supports(sky));
 }
