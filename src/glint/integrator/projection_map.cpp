@@ -30,17 +30,19 @@ Vec3 origin_towards(const LightEmission& e, const Vec3& w) {
 }  // namespace
 
 // Photons are aimed from where the light's photons start, so the light must start them
-// inside the scene: from one point (a delta position: the origin does not move with
-// u_position) or from a surface (sample_le gives its normal). Directional and environment
-// light enter through a disc outside the scene that turns with the direction: nothing
-// there to probe from.
+// inside the scene: from one point into many directions (a delta position: the origin
+// moves with neither sample) or from a surface (sample_le gives its normal). Directional
+// and environment light enter through a disc outside the scene along directions of their
+// own (a directional light's never changes, even when a point-sized scene shrinks its
+// disc to a point): nothing there to probe from.
 bool ProjectionMap::supports(const Light& light) {
     if (light.is_infinite()) return false;
-    const std::optional<LightEmission> a = light.sample_le(Vec2(0.25f), Vec2(0.5f), 0.5f);
-    const std::optional<LightEmission> b = light.sample_le(Vec2(0.75f), Vec2(0.5f), 0.5f);
+    const std::optional<LightEmission> a = light.sample_le(Vec2(0.25f), Vec2(0.25f), 0.5f);
+    const std::optional<LightEmission> b = light.sample_le(Vec2(0.75f), Vec2(0.75f), 0.5f);
     if (!a || !b) return false;
     if (has_surface(*a)) return true;
-    return light.is_delta() && a->ray.origin == b->ray.origin;
+    return light.is_delta() && a->ray.origin == b->ray.origin &&
+           a->ray.direction != b->ray.direction;
 }
 
 template <typename Emits>
