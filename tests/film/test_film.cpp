@@ -129,4 +129,63 @@ TEST(Film, OrderOfPixelsDoesNotMatter) {
 }
 
 }  // namespace
+// Splats: each lands in the pixel that contains its film position (x right, y down, pixel
+// (i, j) covering [i, i + 1) x [j, j + 1)), scaled by the splat scale on top of the mean of
+// the samples.
+TEST(Film, SplatsLandInTheirPixelAndAreScaled) {
+    Film film(4, 3, false);
+    film.add_sample({2, 1}, Spectrum(1.0f, 2.0f, 3.0f), 1.0f, nullptr);
+    const Splat splats[] = {
+        {Vec2(2.5f, 1.5f), Spectrum(0.5f, 1.0f, 1.5f)},
+        {Vec2(2.0f, 1.99f), Spectrum(0.25f, 0.0f, 0.0f)},  // the same pixel, at its edges
+        {Vec2(0.1f, 2.9f), Spectrum(4.0f, 5.0f, 6.0f)},    // bottom-left
+        {Vec2(3.99f, 0.0f), Spectrum(7.0f, 8.0f, 9.0f)},   // top-right
+    };
+    film.add_splats(splats);
+    film.set_splat_scale(2.0);
+    const Image image = film.resolve();
+    EXPECT_FLOAT_EQ(image.at(2, 1, 0), 1.0f + 2.0f * 0.75f);
+    EXPECT_FLOAT_EQ(image.at(2, 1, 1), 2.0f + 2.0f * 1.0f);
+    EXPECT_FLOAT_EQ(image.at(2, 1, 2), 3.0f + 2.0f * 1.5f);
+    EXPECT_FLOAT_EQ(image.at(0, 2, 1), 10.0f);
+    EXPECT_FLOAT_EQ(image.at(3, 0, 2), 18.0f);
+    float total = 0.0f;
+    for (float v : image.pixels) total += v;
+    EXPECT_FLOAT_EQ(total, 6.0f + 2.0f * (3.0f + 0.25f + 15.0f + 24.0f));
+    EXPECT_EQ(film.non_finite_samples(), 0u);
+}
+
+TEST(Film, SplatsOutsideAreIgnoredAndNonFiniteOnesCounted) {
+    Film film(3, 2, false);
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const Splat splats[] = {
+        {Vec2(-0.01f, 1.0f), Spectrum(1.0f)}, {Vec2(3.0f, 1.0f), Spectrum(1.0f)},
+        {Vec2(1.0f, -0.5f), Spectrum(1.0f)},  {Vec2(1.0f, 2.0f), Spectrum(1.0f)},
+        {Vec2(1e30f, 1.0f), Spectrum(1.0f)},  {Vec2(1.0f, 1.0f), Spectrum(nan, 1.0f, 1.0f)},
+        {Vec2(1.0f, 1.0f), Spectrum(inf)},    {Vec2(nan, 1.0f), Spectrum(1.0f)},
+    };
+    film.add_splats(splats);
+    const Image image = film.resolve();
+    for (float v : image.pixels) EXPECT_EQ(v, 0.0f);
+    EXPECT_EQ(film.non_finite_samples(), 3u);
+    film.clear();
+    EXPECT_EQ(film.non_finite_samples(), 0u);
+}
+
+// Without splats, resolve() is the samples' weighted mean exactly as before, bit for bit.
+TEST(Film, ResolveWithoutSplatsIsTheWeightedMean) {
+    Film film(2, 2, false);
+    film.set_splat_scale(3.0);
+    film.add_sample({0, 0}, Spectrum(0.1f, 0.2f, 0.3f), 0.7f, nullptr);
+    film.add_sample({0, 0}, Spectrum(0.4f, 0.5f, 0.9f), 0.3f, nullptr);
+    film.add_splats({});
+    const Image image = film.resolve();
+    // As the film accumulates: in double, the float weights, then times the inverse sum.
+    const double w1 = 0.7f, w2 = 0.3f, inv = 1.0 / (w1 + w2);
+    EXPECT_EQ(image.at(0, 0, 0), static_cast<float>((w1 * 0.1f + w2 * 0.4f) * inv));
+    EXPECT_EQ(image.at(0, 0, 2), static_cast<float>((w1 * 0.3f + w2 * 0.9f) * inv));
+    EXPECT_EQ(image.at(1, 0, 1), 0.0f);
+}
+
 }  // namespace glint

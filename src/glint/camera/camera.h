@@ -2,12 +2,47 @@
 #include <glint/core/params.h>
 #include <glint/core/ray.h>
 #include <glint/core/sampler.h>
+#include <glint/core/spectrum.h>
 
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 namespace glint {
+
+/// A point on the lens seen from a point in the scene (Camera::sample_wi).
+struct CameraWiSample {
+    Vec3 wi;           ///< unit, from the reference point towards p_lens
+    Spectrum We;       ///< importance the camera emits from p_lens towards the reference point
+    float pdf = 0.0f;  ///< density of choosing p_lens, per unit solid angle as seen from the
+                       ///< reference point
+    Vec3 p_lens;       ///< the point on the lens (the eye for a pinhole)
+    Vec2 film;         ///< film position (pixels, origin top-left, y down, as generate_ray
+                       ///< takes it) the ray from p_lens through the reference point lands on
+};
+
+/// Densities with which generate_ray produces a ray (Camera::pdf_we).
+struct CameraPdf {
+    float pos = 0.0f;  ///< of the origin, per unit lens area
+    float dir = 0.0f;  ///< of the direction, per unit solid angle
+};
+
+/// Importance, the camera's side of light transport (for light tracing and bidirectional
+/// methods), normalised as in pbrt-v4's PerspectiveCamera:
+///   We(ray) = 1 / (A_lens A_image cos^4 theta) for a ray leaving the lens through the frame,
+///   0 otherwise, where theta is the angle to the viewing direction (forward()), A_image the
+///   area of the frame on the image plane at distance 1 from the lens, and A_lens = pi r^2
+///   the lens area (1 for a pinhole). Then the integral of We cos theta over the lens and
+///   the solid angle of the frame is 1, and a camera ray's pdf_we is {1 / A_lens,
+///   1 / (A_image cos^3 theta)}: generate_ray with a film point uniform over the image and
+///   a lens point uniform on the disc.
+/// A light path vertex that connects to the lens (sample_wi) adds
+///   beta f |cos| We / pdf
+/// to the pixel at CameraWiSample::film, where beta is the path's throughput and f |cos|
+/// its scattering towards wi; splatting every path's sum and scaling the film's splats by
+/// (pixel count / number of light paths) gives the image in the units of add_sample's
+/// radiance.
 
 class Camera {
 public:
@@ -24,6 +59,21 @@ public:
     Ray sample_ray(const Vec2& film, Sampler& sampler) const {
         return generate_ray(film, needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
     }
+
+    /// Samples a point on the lens (from `u_lens` as generate_ray maps its lens sample) and
+    /// the importance it sends towards `ref`; nullopt when `ref` is behind the camera,
+    /// outside the frame, or on the lens.
+    virtual std::optional<CameraWiSample> sample_wi(const Vec3& ref, const Vec2& u_lens) const = 0;
+    /// Importance of a ray leaving the lens (unit direction; zero outside the frame or
+    /// backwards); when `film` is non-null and the importance is not zero, sets the film
+    /// position the ray comes from.
+    virtual Spectrum we(const Ray& ray, Vec2* film = nullptr) const = 0;
+    /// Densities with which generate_ray (a film point uniform over the whole image, the
+    /// lens point uniform on its disc) produces `ray` (unit direction); zero outside the
+    /// frame.
+    virtual CameraPdf pdf_we(const Ray& ray) const = 0;
+    /// The lens normal (the viewing direction), unit, for cosines at the lens.
+    virtual Vec3 forward() const = 0;
 
     // How far a point p on a surface with normal n moves per pixel step, for hits that
     // carry no ray differentials (after a bounce): pbrt-v4's approximation, which sees the
@@ -51,8 +101,24 @@ public:
     Ray generate_ray(const Vec2& film, const Vec2& lens) const override;
     bool needs_lens_sample() const override { return m_aperture_radius > 0.0f; }
     void approximate_footprint(const Vec3& p, const Vec3& n, Vec3& dpdx, Vec3& dpdy) const override;
+    std::optional<CameraWiSample> sample_wi(const Vec3& ref, const Vec2& u_lens) const override;
+    Spectrum we(const Ray& ray, Vec2* film = nullptr) const override;
+    CameraPdf pdf_we(const Ray& ray) const override;
+    Vec3 forward() const override { return m_forward; }
 
 private:
+    // Where a ray leaving the lens comes from on the film, with cos theta to the forward
+    // axis; nullopt when it leaves backwards or outside the frame.
+    struct FilmHit {
+        Vec2 film;
+        float cos_theta;
+    };
+    std::optional<FilmHit> film_hit(const Ray& ray) const;
+    // The lens point for lens sample `u` (the eye for a pinhole), as generate_ray uses it.
+    Vec3 lens_point(const Vec2& u) const;
+    // A_lens: pi r^2, or 1 for a pinhole.
+    float lens_area() const;
+
     // Direction through film position `film` from the pinhole, with forward component 1.
     Vec3 pinhole_direction(const Vec2& film) const;
 
@@ -62,6 +128,7 @@ private:
     Vec2 m_resolution;
     float m_aperture_radius;
     float m_focus_distance;
+    float m_image_area;  // A_image: the frame's area on the plane at distance 1
 };
 
 // Reads eye, look_at, up, fov (vertical, degrees), aperture (lens radius) and

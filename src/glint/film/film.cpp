@@ -54,6 +54,25 @@ void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSam
     a.depth += static_cast<double>(w) * aov->depth;
 }
 
+void Film::add_splats(std::span<const Splat> splats) {
+    for (const Splat& splat : splats) {
+        if (!splat.L.is_finite() || !std::isfinite(splat.film.x) || !std::isfinite(splat.film.y)) {
+            ++m_non_finite_splats;
+            continue;
+        }
+        const float fx = std::floor(splat.film.x), fy = std::floor(splat.film.y);
+        // Compared as floats first: a position far outside would overflow an int.
+        if (fx < 0.0f || fy < 0.0f || fx >= static_cast<float>(m_width) ||
+            fy >= static_cast<float>(m_height)) {
+            continue;
+        }
+        if (m_splats.empty()) m_splats.assign(3 * m_pixels.size(), 0.0);
+        const std::size_t i = static_cast<std::size_t>(fy) * static_cast<std::size_t>(m_width) +
+                              static_cast<std::size_t>(fx);
+        for (int c = 0; c < 3; ++c) m_splats[3 * i + c] += static_cast<double>(splat.L[c]);
+    }
+}
+
 Image Film::resolve() const {
     std::vector<std::string> channels = {"R", "G", "B"};
     if (m_with_aovs) {
@@ -69,7 +88,11 @@ Image Film::resolve() const {
             // Mitchell's negative lobes can cancel the positive weights exactly; such a
             // pixel has no defined mean and resolves to black rather than infinity.
             const double inv = p.weight_sum != 0.0 ? 1.0 / p.weight_sum : 0.0;
-            for (int c = 0; c < 3; ++c) image.at(x, y, c) = static_cast<float>(p.rgb[c] * inv);
+            for (int c = 0; c < 3; ++c) {
+                double value = p.rgb[c] * inv;
+                if (!m_splats.empty()) value += m_splat_scale * m_splats[3 * i + c];
+                image.at(x, y, c) = static_cast<float>(value);
+            }
             if (!m_with_aovs) continue;
             const AovPixel& a = m_aovs[i];
             const double ainv = a.weight_sum > 0.0 ? 1.0 / a.weight_sum : 0.0;
@@ -86,12 +109,14 @@ Image Film::resolve() const {
 uint64_t Film::non_finite_samples() const {
     uint64_t total = 0;
     for (const Pixel& p : m_pixels) total += p.non_finite;
-    return total;
+    return total + m_non_finite_splats;
 }
 
 void Film::clear() {
     std::fill(m_pixels.begin(), m_pixels.end(), Pixel{});
     std::fill(m_aovs.begin(), m_aovs.end(), AovPixel{});
+    m_splats.clear();
+    m_non_finite_splats = 0;
 }
 
 }  // namespace glint

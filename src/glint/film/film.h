@@ -7,6 +7,7 @@
 #include <glint/math/vector.h>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace glint {
@@ -16,6 +17,12 @@ struct AovSample {
     Spectrum albedo;
     Vec3 normal;  ///< world-space shading normal
     float depth;  ///< distance along the camera ray, in scene units
+};
+
+/// A light path's contribution to the film (light tracing, bidirectional methods).
+struct Splat {
+    Vec2 film;   ///< film position in pixels (origin top-left, y down, as Camera::generate_ray)
+    Spectrum L;  ///< its contribution, before the film's splat scale
 };
 
 class Film {
@@ -38,14 +45,27 @@ public:
     /// Throws glint::Error for a pixel outside the film.
     void add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov);
 
-    /// Weighted mean per pixel: channels R, G, B and, with AOVs, albedo.R albedo.G
+    /// Adds splats to the pixel containing each film position; splats outside the film are
+    /// ignored. Not thread-safe: integrators gather splats per fixed chunk of work and add
+    /// the chunks in chunk order, so the image is the same bit for bit for any thread
+    /// count. Splats whose position or L is not finite are dropped and counted in
+    /// non_finite_samples().
+    void add_splats(std::span<const Splat> splats);
+    /// Factor on every pixel's sum of splats in resolve() (1 until set); a light tracer sets
+    /// it to pixel count / number of light paths.
+    void set_splat_scale(double scale) { m_splat_scale = scale; }
+
+    /// Weighted mean per pixel of add_sample's radiance plus the splat scale times the sum
+    /// of the pixel's splats (exactly the mean when nothing was splatted): channels R, G, B
+    /// and, with AOVs, albedo.R albedo.G
     /// albedo.B normal.X normal.Y normal.Z depth.Z. AOVs are averaged with |weight|.
     /// Pixels with zero total weight resolve to 0.
     Image resolve() const;
 
-    /// Samples dropped so far for non-finite radiance or weight, over all pixels.
+    /// Samples (and splats) dropped so far for non-finite radiance or weight, over all
+    /// pixels.
     uint64_t non_finite_samples() const;
-    /// Clears all accumulated samples.
+    /// Clears all accumulated samples and splats (not the splat scale).
     void clear();
 
 private:
@@ -65,6 +85,11 @@ private:
     bool m_with_aovs;
     std::vector<Pixel> m_pixels;
     std::vector<AovPixel> m_aovs;  // empty without AOVs
+    // Sums of splats, three per pixel; empty until the first splat, so films without any
+    // cost nothing and resolve exactly as before.
+    std::vector<double> m_splats;
+    double m_splat_scale = 1.0;
+    uint64_t m_non_finite_splats = 0;
 };
 
 }  // namespace glint

@@ -67,8 +67,10 @@ private:
         const float u3 = rng.next_float();
         const std::optional<LightEmission> emission =
             m_emitter ? m_emitter(*choice.light, u1, u2, u3) : choice.light->sample_le(u1, u2, u3);
-        if (!emission || emission->beta.is_black()) return;
-        Spectrum beta = emission->beta / choice.pmf;
+        if (!emission) return;
+        const Spectrum power = emission->beta();
+        if (power.is_black()) return;
+        Spectrum beta = power / choice.pmf;
         Ray ray = emission->ray;
         bool specular_only = true;
         for (int bounces = 0; bounces <= m_max_bounces; ++bounces) {

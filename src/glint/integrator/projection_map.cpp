@@ -13,16 +13,44 @@ Vec3 ProjectionMap::direction(int cell, const Vec2& u) const {
     return Vec3(r * std::cos(phi), r * std::sin(phi), z);
 }
 
+namespace {
+
+bool has_surface(const LightEmission& e) {
+    return e.n.x != 0.0f || e.n.y != 0.0f || e.n.z != 0.0f;
+}
+
+// sample_le moves its origin off the surface to the side its own ray leaves by; a ray
+// towards `w` on the other side (a two-sided light) must start on that side instead: moving
+// by the offset twice towards `w` crosses the surface and ends as far from it there.
+Vec3 origin_towards(const LightEmission& e, const Vec3& w) {
+    if (glm::dot(e.n, w) * glm::dot(e.n, e.ray.direction) >= 0.0f) return e.ray.origin;
+    return offset_ray_origin(offset_ray_origin(e.ray.origin, e.n, w), e.n, w);
+}
+
+}  // namespace
+
+// Photons are aimed from where the light's photons start, so the light must start them
+// inside the scene: from one point into many directions (a delta position: the origin
+// moves with neither sample) or from a surface (sample_le gives its normal). Directional
+// and environment light enter through a disc outside the scene along directions of their
+// own (a directional light's never changes, even when a point-sized scene shrinks its
+// disc to a point): nothing there to probe from.
 bool ProjectionMap::supports(const Light& light) {
-    return light.emission_point().has_value() ||
-           light.sample_surface_point(Vec2(0.5f), 0.5f).has_value();
+    if (light.is_infinite()) return false;
+    const std::optional<LightEmission> a = light.sample_le(Vec2(0.25f), Vec2(0.25f), 0.5f);
+    const std::optional<LightEmission> b = light.sample_le(Vec2(0.75f), Vec2(0.75f), 0.5f);
+    if (!a || !b) return false;
+    if (has_surface(*a)) return true;
+    return light.is_delta() && a->ray.origin == b->ray.origin &&
+           a->ray.direction != b->ray.direction;
 }
 
 template <typename Emits>
 void ProjectionMap::probe(const Scene& scene, const Vec3& origin, const Emits& emits,
                           std::vector<uint8_t>& specular) const {
     Arena arena;
-    const Vec2 probes[] = {{0.25f, 0.25f}, {0.75f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.5f, 0.5f}};
+    const Vec2 probes[] = {
+        {0.25f, 0.25f}, {0.75f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.5f, 0.5f}};
     for (int cell = 0; cell < kThetaCells * kPhiCells; ++cell) {
         if (specular[cell]) continue;
         for (const Vec2& u : probes) {
@@ -44,20 +72,28 @@ void ProjectionMap::probe(const Scene& scene, const Vec3& origin, const Emits& e
 ProjectionMap::ProjectionMap(const Scene& scene, const Light& light) {
     constexpr int kCells = kThetaCells * kPhiCells;
     std::vector<uint8_t> specular(kCells, 0);
-    if (const std::optional<Vec3> origin = light.emission_point()) {
-        m_origin = *origin;
-        probe(scene, m_origin, [&](const Vec3& w) { return !light.intensity(w).is_black(); }, specular);
+    const std::optional<LightEmission> centre = light.sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
+    if (!centre) return;
+    if (!has_surface(*centre)) {
+        m_origin = centre->ray.origin;
+        const Vec3 no_normal(0.0f);
+        probe(
+            scene, m_origin,
+            [&](const Vec3& w) { return !light.emitted(m_origin, no_normal, w).is_black(); },
+            specular);
     } else {
         m_surface = true;
         for (int i = 0; i < 9; ++i) {
             const Vec2 u((i % 3 + 0.5f) / 3.0f, (i / 3 + 0.5f) / 3.0f);
-            const std::optional<SurfacePoint> point = light.sample_surface_point(u, (i + 0.5f) / 9.0f);
+            const std::optional<LightEmission> point =
+                light.sample_le(u, Vec2(0.5f), (i + 0.5f) / 9.0f);
             if (!point) return;
-            auto emits = [&](const Vec3& w) { return !light.emitted_from(*point, w).is_black(); };
+            auto emits = [&](const Vec3& w) {
+                return !light.emitted(point->ray.origin, point->n, w).is_black();
+            };
             // Leave the surface on the side the probe goes to, as a photon would.
-            auto origin_for = [&](const Vec3& w) { return offset_ray_origin(point->p, point->n, w); };
-            probe(scene, origin_for(point->n), emits, specular);
-            probe(scene, origin_for(-point->n), emits, specular);
+            probe(scene, origin_towards(*point, point->n), emits, specular);
+            probe(scene, origin_towards(*point, -point->n), emits, specular);
         }
     }
     for (int cell = 0; cell < kCells; ++cell) {
@@ -80,28 +116,36 @@ float ProjectionMap::coverage() const {
 std::optional<LightEmission> ProjectionMap::sample(const Light& light, const Vec2& u_position,
                                                    const Vec2& u_direction, float u_cell) const {
     if (m_marked.empty()) return std::nullopt;
-    const size_t index = std::min(m_marked.size() - 1, static_cast<size_t>(u_cell * m_marked.size()));
+    const size_t index =
+        std::min(m_marked.size() - 1, static_cast<size_t>(u_cell * m_marked.size()));
     const Vec3 w = direction(m_marked[index], u_direction);
     // Uniform over the marked solid angle.
     const float pdf_direction = 1.0f / (4.0f * kPi * coverage());
+    LightEmission e;
+    e.pdf_dir = pdf_direction;
     if (!m_surface) {
-        const Spectrum intensity = light.intensity(w);
-        if (intensity.is_black()) return std::nullopt;
-        return LightEmission{Ray{m_origin, w}, intensity / pdf_direction};
+        e.Le = light.emitted(m_origin, Vec3(0.0f), w);
+        if (e.Le.is_black()) return std::nullopt;
+        e.ray = Ray{m_origin, w};
+        e.pdf_pos = 1.0f;
+        return e;
     }
-    // From a point uniform on the surface: radiance times the cosine at the surface, over
-    // the densities of the point (per area) and of the direction (per solid angle).
+    // From a point uniform on the surface, as sample_le picks it (its direction is not
+    // used): radiance times the cosine at the surface, over the densities of the point
+    // (per area) and of the direction (per solid angle).
     // What u_cell has left after choosing the cell is uniform and independent of the cell:
-    // it picks the triangle, so position and direction stay independent.
-    const float u_select = std::clamp(
-        u_cell * static_cast<float>(m_marked.size()) - static_cast<float>(index), 0.0f, 0x1.fffffep-1f);
-    const std::optional<SurfacePoint> point = light.sample_surface_point(u_position, u_select);
-    if (!point || !(point->pdf_area > 0.0f)) return std::nullopt;
-    const Spectrum radiance = light.emitted_from(*point, w);
-    const float cosine = std::abs(glm::dot(point->n, w));
-    if (radiance.is_black() || cosine == 0.0f) return std::nullopt;
-    return LightEmission{Ray{offset_ray_origin(point->p, point->n, w), w},
-                         radiance * (cosine / (point->pdf_area * pdf_direction))};
+    // it picks the triangle (and side), so position and direction stay independent.
+    const float u_select =
+        std::clamp(u_cell * static_cast<float>(m_marked.size()) - static_cast<float>(index), 0.0f,
+                   0x1.fffffep-1f);
+    const std::optional<LightEmission> point = light.sample_le(u_position, Vec2(0.5f), u_select);
+    if (!point || !(point->pdf_pos > 0.0f)) return std::nullopt;
+    e.Le = light.emitted(point->ray.origin, point->n, w);
+    if (e.Le.is_black() || glm::dot(point->n, w) == 0.0f) return std::nullopt;
+    e.ray = Ray{origin_towards(*point, w), w};
+    e.n = point->n;
+    e.pdf_pos = point->pdf_pos;
+    return e;
 }
 
 }  // namespace glint

@@ -4,10 +4,12 @@
 // scaled by the fraction of the sphere the cells cover, so the caustic map gets many more
 // photons for the same effort and stays unbiased for the caustics it covers.
 //
-// Point and spot lights are probed from their emission point. Area lights are probed from
-// a 3 x 3 grid of points spread over their surface, and a photon then leaves a point
-// uniform on the surface into a marked cell: a direction that reaches glass or a mirror
-// from a point between the probes is found as long as some probe sees the same object
+// Lights are seen only through Light::sample_le (where photons start: the origin, its
+// normal, its density) and Light::emitted (what leaves towards a direction). Lights that
+// emit from one point (point, spot) are probed from it. Lights with a surface (area) are
+// probed from a 3 x 3 grid of points spread over it, and a photon then leaves a point that
+// sample_le picks (uniform on the surface) into a marked cell: a direction that reaches glass or a
+// mirror from a point between the probes is found as long as some probe sees the same object
 // through a cell at most one away (the map grows by one cell for that).
 #include <glint/light/light.h>
 #include <glint/scene/scene.h>
@@ -23,7 +25,8 @@ public:
     // cell and probe point, then grown by one cell so narrow objects are not missed).
     ProjectionMap(const Scene& scene, const Light& light);
 
-    // Whether projection maps can aim this light's photons (point, spot and area lights).
+    // Whether projection maps can aim this light's photons: lights whose photons start at
+    // one point (a delta position) or on a surface (point, spot and area lights).
     static bool supports(const Light& light);
 
     // A photon into a marked cell, or nullopt when no cell is marked or it carries nothing.
@@ -34,7 +37,8 @@ public:
     float coverage() const;
 
 private:
-    static constexpr int kThetaCells = 64;  // uniform in cos(theta): every cell has equal solid angle
+    static constexpr int kThetaCells =
+        64;  // uniform in cos(theta): every cell has equal solid angle
     static constexpr int kPhiCells = 128;
     Vec3 direction(int cell, const Vec2& u) const;
     // Marks cell entries of `specular` whose probe rays from `origin` hit a delta BSDF;
@@ -43,8 +47,8 @@ private:
     void probe(const Scene& scene, const Vec3& origin, const Emits& emits,
                std::vector<uint8_t>& specular) const;
 
-    bool m_surface = false;  // an area light: photons start anywhere on it
-    Vec3 m_origin{0.0f};     // a point light's position
+    bool m_surface = false;     // an area light: photons start anywhere on it
+    Vec3 m_origin{0.0f};        // a point light's position
     std::vector<int> m_marked;  // indices of marked cells
 };
 

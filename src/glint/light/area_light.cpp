@@ -25,23 +25,45 @@ float AreaLight::pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) con
 }
 
 Spectrum AreaLight::le(const SurfaceInteraction& si, const Vec3& w) const {
-    return emitted(si.ng, w);
+    return radiance_towards(si.ng, w);
 }
 
 // Position uniform by area, direction cosine-weighted about the normal (on a random side
 // when two-sided), so every photon carries L * pi * area (times 2 if two-sided).
-std::optional<LightEmission> AreaLight::sample_le(const Vec2& u1, const Vec2& u2,
+std::optional<LightEmission> AreaLight::sample_le(const Vec2& u_position, const Vec2& u_direction,
                                                   float u_select) const {
-    float u_side = 0.0f;
+    bool back = false;
     if (m_two_sided) {
-        u_side = u_select < 0.5f ? 0.0f : 1.0f;
-        u_select = u_select < 0.5f ? 2.0f * u_select : 2.0f * u_select - 1.0f;
+        back = u_select >= 0.5f;
+        u_select = back ? 2.0f * u_select - 1.0f : 2.0f * u_select;
     }
-    const ShapeSample s = m_shape->sample_area(u1, u_select);
-    const Vec3 n = u_side > 0.0f ? -s.n : s.n;
-    const Vec3 w = Frame::from_normal(n).to_world(warp::square_to_cosine_hemisphere(u2));
-    const float sides = m_two_sided ? 2.0f : 1.0f;
-    return LightEmission{Ray{offset_ray_origin(s.p, n, w), w}, m_radiance * (kPi * sides / s.pdf)};
+    const ShapeSample s = m_shape->sample_area(u_position, u_select);
+    const Vec3 n = back ? -s.n : s.n;
+    const Vec3 local = warp::square_to_cosine_hemisphere(u_direction);
+    const Vec3 w = Frame::from_normal(n).to_world(local);
+    LightEmission e;
+    e.ray = Ray{offset_ray_origin(s.p, n, w), w};
+    e.n = n;
+    e.Le = m_radiance;
+    e.pdf_pos = s.pdf;
+    // Each side is chosen half the time.
+    e.pdf_dir = warp::cosine_hemisphere_pdf(local) * (m_two_sided ? 0.5f : 1.0f);
+    return e;
+}
+
+// The position density does not depend on the point (uniform by area); the direction's is
+// the cosine lobe about the emitting side of n, halved for two sides.
+EmissionPdf AreaLight::pdf_le(const Ray& ray, const Vec3& n) const {
+    const float cosine = glm::dot(n, ray.direction);
+    const float area = m_shape->area();
+    EmissionPdf pdf;
+    pdf.pos = area > 0.0f ? 1.0f / area : 0.0f;
+    if (m_two_sided) {
+        pdf.dir = std::abs(cosine) * (0.5f * kInvPi);
+    } else {
+        pdf.dir = cosine > 0.0f ? cosine * kInvPi : 0.0f;
+    }
+    return pdf;
 }
 
 Spectrum AreaLight::power() const {

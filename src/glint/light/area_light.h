@@ -20,22 +20,21 @@ public:
     float pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const override;
     Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
     Spectrum power() const override;
-    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2,
+    /// A point uniform by area, a direction cosine-weighted about the normal (on the side
+    /// u_select picks, when two-sided); n is the normal of the side the ray leaves.
+    std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                            float u_select) const override;
+    EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
+    Spectrum emitted(const Vec3&, const Vec3& n, const Vec3& w) const override {
+        return radiance_towards(n, w);
+    }
     bool is_delta() const override { return false; }
-    std::optional<SurfacePoint> sample_surface_point(const Vec2& u, float u_select) const override {
-        const ShapeSample s = m_shape->sample_area(u, u_select);
-        return SurfacePoint{s.p, s.n, s.pdf};
-    }
-    Spectrum emitted_from(const SurfacePoint& point, const Vec3& w) const override {
-        return emitted(point.n, w);
-    }
 
     // Radiance leaving a surface point with normal `n` towards `w`.
-    Spectrum emitted(const Vec3& n, const Vec3& w) const {
+    Spectrum radiance_towards(const Vec3& n, const Vec3& w) const {
         return emits_towards(n, w) ? m_radiance : Spectrum(0.0f);
     }
-    // Whether emitted(n, w) is non-zero, without building the spectrum.
+    // Whether radiance_towards(n, w) is non-zero, without building the spectrum.
     bool emits_towards(const Vec3& n, const Vec3& w) const {
         return !m_dark && (m_two_sided || glm::dot(n, w) > 0.0f);
     }

@@ -230,19 +230,27 @@ Spectrum EnvironmentLight::le_escaped(const Vec3& direction) const {
 // A direction towards the sky as sample_li draws it; the photon starts on the disk of
 // the scene's radius that faces it, tangent to the bounding sphere on the sky's side,
 // and travels back into the scene. Its weight is Le / (p(omega) p(disk point)).
-std::optional<LightEmission> EnvironmentLight::sample_le(const Vec2& u1, const Vec2& u2,
-                                                         float) const {
-    const DirectionSample d = sample_direction(u2);
-    const float pdf_direction = d.pdf;
-    if (!(pdf_direction > 0.0f)) return std::nullopt;
+std::optional<LightEmission> EnvironmentLight::sample_le(const Vec2& u_position,
+                                                         const Vec2& u_direction, float) const {
+    const DirectionSample d = sample_direction(u_direction);
+    if (!(d.pdf > 0.0f)) return std::nullopt;
     const Spectrum L = lookup(d.uv);
     if (L.is_black()) return std::nullopt;
     const Vec3 to_sky = d.direction;
     const Frame frame = Frame::from_normal(to_sky);
-    const Vec2 disk = warp::square_to_uniform_disk_concentric(u1);
-    const Vec3 origin = m_center + m_radius * (to_sky + disk.x * frame.s() + disk.y * frame.t());
-    const float disk_area = kPi * m_radius * m_radius;
-    return LightEmission{Ray{origin, -to_sky}, L * (disk_area / pdf_direction)};
+    const Vec2 disk = warp::square_to_uniform_disk_concentric(u_position);
+    LightEmission e;
+    e.ray = Ray{m_center + m_radius * (to_sky + disk.x * frame.s() + disk.y * frame.t()), -to_sky};
+    e.Le = L;
+    e.pdf_pos = 1.0f / (kPi * m_radius * m_radius);
+    e.pdf_dir = d.pdf;
+    return e;
+}
+
+// The direction's density is sample_li's for the way back to the sky; every origin on the
+// disc is equally likely.
+EmissionPdf EnvironmentLight::pdf_le(const Ray& ray, const Vec3&) const {
+    return {1.0f / (kPi * m_radius * m_radius), direction_pdf(uv_of(-ray.direction))};
 }
 
 Spectrum EnvironmentLight::power() const {

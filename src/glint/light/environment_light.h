@@ -35,10 +35,16 @@ public:
     /// the scene's bounding sphere in that direction.
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
-    /// Photons come from a disk of the scene's radius, outside the scene and facing it,
-    /// with directions drawn like sample_li's.
-    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2,
+    /// Photons come from a point uniform on a disc of the scene's radius (pdf_pos
+    /// 1 / (pi r^2)), outside the scene and facing it, travelling against a direction drawn
+    /// like sample_li's (pdf_dir: sample_li's density of the direction towards the sky).
+    std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                            float u_select) const override;
+    EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
+    /// The radiance arriving from -w, whatever the point.
+    Spectrum emitted(const Vec3&, const Vec3&, const Vec3& w) const override {
+        return le_escaped(-w);
+    }
     /// pi r^2 times the radiance integrated over the sphere (r: the scene's radius): the
     /// power that crosses the scene's bounding sphere.
     Spectrum power() const override;

@@ -4,6 +4,7 @@
 #include <glint/core/interaction.h>
 #include <glint/core/spectrum.h>
 
+#include <cmath>
 #include <optional>
 
 namespace glint {
@@ -16,17 +17,35 @@ struct LightSample {
     bool is_delta = false;
 };
 
-// A point on an emitting surface, drawn with density `pdf_area` per unit area.
-struct SurfacePoint {
-    Vec3 p;
-    Vec3 n;  // unit normal (the emitting side, for one-sided lights)
-    float pdf_area = 0.0f;
+/// A ray leaving a light, for photons, light paths and bidirectional methods, with the
+/// densities of its origin and direction kept apart (a bidirectional method needs each).
+struct LightEmission {
+    Ray ray;               ///< origin on the light (offset off a surface), unit direction
+    Vec3 n{0.0f};          ///< unit surface normal at the origin for lights with a surface (area),
+                           ///< on the side the ray leaves; zero for lights without a surface
+    Spectrum Le;           ///< radiance leaving along the ray (area, environment; W sr^-1 m^-2),
+                           ///< intensity (point, spot; W sr^-1) or irradiance (directional; W m^-2)
+    float pdf_pos = 0.0f;  ///< density of the origin: per unit area on an area light; 1 for
+                           ///< point and spot lights (delta position); per unit area of the
+                           ///< disc (radius = scene radius, perpendicular to the direction)
+                           ///< through which directional and environment light enters the scene
+    float pdf_dir = 0.0f;  ///< density of the direction per unit solid angle; 1 for a
+                           ///< directional light (delta direction)
+
+    /// Le |cos theta| / (pdf_pos pdf_dir): a photon's power per sample (|cos theta| with n
+    /// for surface lights, 1 for lights without a surface).
+    Spectrum beta() const {
+        const bool surface = n.x != 0.0f || n.y != 0.0f || n.z != 0.0f;
+        const float cosine = surface ? std::abs(glm::dot(n, ray.direction)) : 1.0f;
+        const float pdf = pdf_pos * pdf_dir;
+        return pdf > 0.0f ? Le * (cosine / pdf) : Spectrum(0.0f);
+    }
 };
 
-// A ray leaving a light, for photon tracing and light paths.
-struct LightEmission {
-    Ray ray;        // unit direction
-    Spectrum beta;  // Le |cos| / (pdf_position pdf_direction): the photon's power per sample
+/// Densities of an emitted ray's origin and direction, in LightEmission's measures.
+struct EmissionPdf {
+    float pos = 0.0f;
+    float dir = 0.0f;
 };
 
 class Light {
@@ -38,9 +57,24 @@ public:
         (void)scene_center;
         (void)scene_radius;
     }
-    // Samples an emitted ray; nullopt when nothing is emitted. u1 picks the position,
-    // u2 the direction, u_select a triangle or side.
-    virtual std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const = 0;
+    /// Samples a ray leaving the light; nullopt when nothing is emitted. u_position picks the
+    /// point, u_direction the direction, u_select a triangle or side.
+    virtual std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                                   float u_select) const = 0;
+    /// Densities with which sample_le would produce `ray` (origin on the light, unit
+    /// direction; `n` the light's unit normal there, zero for lights without a surface).
+    /// Delta components are reported as sample_le reports them (1); a direction a light
+    /// does not emit into has dir = 0.
+    virtual EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const = 0;
+    /// What the light emits from its point `p` (normal `n`, zero without a surface)
+    /// towards the unit direction `w`, in the units of LightEmission::Le: radiance for area
+    /// and environment lights, intensity for point and spot lights; zero for a delta
+    /// direction (directional light), which no other direction receives.
+    /// The one query beyond sample_le that aiming photons needs (projection maps): they
+    /// choose the direction themselves, from sample_le's origin, and must know what leaves
+    /// that way. A general question every light can answer, so no light-type-specific
+    /// virtuals are needed.
+    virtual Spectrum emitted(const Vec3& p, const Vec3& n, const Vec3& w) const = 0;
 
     // Samples incident illumination at `ref`; nullopt when the light cannot reach it.
     virtual std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
@@ -49,19 +83,6 @@ public:
     virtual float pdf_li(const Vec3&, const SurfaceInteraction&) const { return 0.0f; }
     // Radiance emitted from a hit on this light towards `w` (unit, away from the surface).
     virtual Spectrum le(const SurfaceInteraction&, const Vec3&) const { return Spectrum(0.0f); }
-    // Lights that emit from a single point (point, spot) give its position and their
-    // intensity per direction, so photons can be aimed (projection maps).
-    virtual std::optional<Vec3> emission_point() const { return std::nullopt; }
-    virtual Spectrum intensity(const Vec3&) const { return Spectrum(0.0f); }
-    // Lights with a surface (area lights) give points on it, uniform by area, and what a
-    // point emits towards a direction, so photons can be aimed (projection maps) from them
-    // too. nullopt for lights without a surface.
-    virtual std::optional<SurfacePoint> sample_surface_point(const Vec2& u, float u_select) const {
-        (void)u;
-        (void)u_select;
-        return std::nullopt;
-    }
-    virtual Spectrum emitted_from(const SurfacePoint&, const Vec3&) const { return Spectrum(0.0f); }
     // Total emitted power, for choosing lights in proportion to it.
     virtual Spectrum power() const = 0;
     virtual bool is_delta() const = 0;

@@ -23,17 +23,40 @@ std::optional<LightSample> sample_point(const Vec3& position, const Vec3& ref,
 
 }  // namespace
 
-std::optional<LightEmission> PointLight::sample_le(const Vec2&, const Vec2& u2, float) const {
-    const Vec3 w = warp::square_to_uniform_sphere(u2);
-    return LightEmission{Ray{m_position, w}, m_intensity / warp::uniform_sphere_pdf()};
+std::optional<LightEmission> PointLight::sample_le(const Vec2&, const Vec2& u_direction,
+                                                   float) const {
+    LightEmission e;
+    e.ray = Ray{m_position, warp::square_to_uniform_sphere(u_direction)};
+    e.Le = m_intensity;
+    e.pdf_pos = 1.0f;
+    e.pdf_dir = warp::uniform_sphere_pdf();
+    return e;
 }
 
-std::optional<LightEmission> SpotLight::sample_le(const Vec2&, const Vec2& u2, float) const {
-    const Vec3 local = warp::square_to_uniform_cone(u2, m_cos_cone);
+EmissionPdf PointLight::pdf_le(const Ray&, const Vec3&) const {
+    return {1.0f, warp::uniform_sphere_pdf()};
+}
+
+// Uniform in the outer cone; the falloff goes into Le, not into the density, so directions
+// in the falloff band carry less power each.
+std::optional<LightEmission> SpotLight::sample_le(const Vec2&, const Vec2& u_direction,
+                                                  float) const {
+    const Vec3 local = warp::square_to_uniform_cone(u_direction, m_cos_cone);
     const Vec3 w = Frame::from_normal(m_direction).to_world(local);
     const float falloff_value = falloff(w);
     if (falloff_value <= 0.0f) return std::nullopt;
-    return LightEmission{Ray{m_position, w}, m_intensity * (falloff_value / warp::uniform_cone_pdf(local, m_cos_cone))};
+    LightEmission e;
+    e.ray = Ray{m_position, w};
+    e.Le = m_intensity * falloff_value;
+    e.pdf_pos = 1.0f;
+    e.pdf_dir = warp::uniform_cone_pdf(local, m_cos_cone);
+    return e;
+}
+
+EmissionPdf SpotLight::pdf_le(const Ray& ray, const Vec3&) const {
+    const float cos_theta = glm::dot(glm::normalize(ray.direction), m_direction);
+    return {1.0f,
+            cos_theta >= m_cos_cone ? warp::uniform_cone_pdf(Vec3(0, 0, 1), m_cos_cone) : 0.0f};
 }
 
 std::optional<LightSample> DirectionalLight::sample_li(const Vec3& ref, const Vec2&, float) const {
@@ -47,11 +70,23 @@ std::optional<LightSample> DirectionalLight::sample_li(const Vec3& ref, const Ve
 }
 
 // Rays start on a disk that covers the scene, facing along the light.
-std::optional<LightEmission> DirectionalLight::sample_le(const Vec2& u1, const Vec2&, float) const {
-    const Vec2 d = warp::square_to_uniform_disk_concentric(u1);
+std::optional<LightEmission> DirectionalLight::sample_le(const Vec2& u_position, const Vec2&,
+                                                         float) const {
+    const Vec2 d = warp::square_to_uniform_disk_concentric(u_position);
     const Frame frame = Frame::from_normal(m_direction);
-    const Vec3 origin = m_center - m_direction * m_radius + m_radius * (d.x * frame.s() + d.y * frame.t());
-    return LightEmission{Ray{origin, m_direction}, m_irradiance * (kPi * m_radius * m_radius)};
+    LightEmission e;
+    e.ray = Ray{m_center - m_direction * m_radius + m_radius * (d.x * frame.s() + d.y * frame.t()),
+                m_direction};
+    e.Le = m_irradiance;
+    e.pdf_pos = 1.0f / (kPi * m_radius * m_radius);
+    e.pdf_dir = 1.0f;
+    return e;
+}
+
+// Any ray is taken to be along the light's direction (a delta, reported as 1 like
+// sample_le does); the origin's density is that of the disc, wherever on it.
+EmissionPdf DirectionalLight::pdf_le(const Ray&, const Vec3&) const {
+    return {1.0f / (kPi * m_radius * m_radius), 1.0f};
 }
 
 std::optional<LightSample> PointLight::sample_li(const Vec3& ref, const Vec2&, float) const {
@@ -101,7 +136,8 @@ std::unique_ptr<Light> make_directional_light(const Params& params) {
     const Vec3 direction = params.get_vec3("direction");
     const Spectrum irradiance = params.get_spectrum("irradiance");
     if (!(glm::length(direction) > 0.0f)) params.fail("'direction' must not be zero");
-    if (std::min({irradiance.r, irradiance.g, irradiance.b}) < 0.0f) params.fail("'irradiance' must not be negative");
+    if (std::min({irradiance.r, irradiance.g, irradiance.b}) < 0.0f)
+        params.fail("'irradiance' must not be negative");
     return std::make_unique<DirectionalLight>(direction, irradiance);
 }
 

@@ -14,9 +14,11 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override { return 4.0f * kPi * m_intensity; }
-    std::optional<Vec3> emission_point() const override { return m_position; }
-    Spectrum intensity(const Vec3&) const override { return m_intensity; }
-    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
+    /// From the position (pdf_pos 1), a direction uniform on the sphere.
+    std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                           float u_select) const override;
+    EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
+    Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override { return m_intensity; }
     bool is_delta() const override { return true; }
 
 private:
@@ -32,9 +34,13 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override;
-    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
-    std::optional<Vec3> emission_point() const override { return m_position; }
-    Spectrum intensity(const Vec3& w) const override { return m_intensity * falloff(w); }
+    /// From the position (pdf_pos 1), a direction uniform in the cone of `cone_degrees`.
+    std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                           float u_select) const override;
+    EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
+    Spectrum emitted(const Vec3&, const Vec3&, const Vec3& w) const override {
+        return m_intensity * falloff(w);
+    }
     bool is_delta() const override { return true; }
     // Fraction of the intensity emitted in direction `w` (unit, away from the light).
     float falloff(const Vec3& w) const;
@@ -56,8 +62,16 @@ public:
         m_center = scene_center;
         m_radius = scene_radius;
     }
-    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u, float u_select) const override;
-    std::optional<LightEmission> sample_le(const Vec2& u1, const Vec2& u2, float u_select) const override;
+    std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
+                                         float u_select) const override;
+    /// Along the light's direction (pdf_dir 1), from a point uniform on the disc of the
+    /// scene's radius that faces the light outside the scene (pdf_pos 1 / (pi r^2)).
+    std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
+                                           float u_select) const override;
+    EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
+    Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override {
+        return Spectrum(0.0f);
+    }
     Spectrum power() const override { return m_irradiance * (kPi * m_radius * m_radius); }
     bool is_delta() const override { return true; }
 
