@@ -21,8 +21,8 @@ class PhotonIntegrator final : public TileIntegrator {
 public:
     explicit PhotonIntegrator(const RenderSettings& settings);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
-    Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena, RayCounter& counter,
-                AovSample* aov) const override;
+    Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
+                RayCounter& counter, AovSample* aov) const override;
 
     // Builds both maps (also used by tests); returns the rays traced.
     uint64_t build_maps(const Scene& scene);
@@ -32,8 +32,8 @@ public:
 
 private:
     Spectrum estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const;
-    Spectrum final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, Sampler& sampler,
-                          Arena& arena, RayCounter& counter) const;
+    Spectrum final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                          Sampler& sampler, Arena& arena, RayCounter& counter) const;
 
     PhotonMap m_caustic;
     PhotonMap m_global;

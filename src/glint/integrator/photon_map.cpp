@@ -6,7 +6,8 @@
 
 namespace glint {
 
-PhotonMap::PhotonMap(std::vector<Photon> photons) : m_photons(std::move(photons)), m_axis(m_photons.size(), 0) {
+PhotonMap::PhotonMap(std::vector<Photon> photons)
+    : m_photons(std::move(photons)), m_axis(m_photons.size(), 0) {
     build(0, m_photons.size());
 }
 
@@ -18,7 +19,8 @@ void PhotonMap::build(size_t begin, size_t end) {
         hi = glm::max(hi, m_photons[i].p);
     }
     const Vec3 extent = hi - lo;
-    const uint8_t axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+    const uint8_t axis =
+        extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
     const size_t mid = begin + (end - begin) / 2;
     std::nth_element(m_photons.begin() + static_cast<std::ptrdiff_t>(begin),
                      m_photons.begin() + static_cast<std::ptrdiff_t>(mid),
@@ -56,15 +58,16 @@ void PhotonMap::search(size_t begin, size_t end, const Vec3& p, int k, float& ma
         }
         if (static_cast<int>(found.size()) == k) max_distance2 = found.front().first;
     }
-    if (delta * delta < max_distance2) search(left_first ? mid + 1 : begin, left_first ? end : mid, p, k, max_distance2, found);
+    if (delta * delta < max_distance2)
+        search(left_first ? mid + 1 : begin, left_first ? end : mid, p, k, max_distance2, found);
 }
 
 namespace {
 constexpr float kConeFilter = 1.1f;  // Jensen's k for the cone filter
 }
 
-Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf, int k,
-                           float max_distance2) {
+Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf,
+                           int k, float max_distance2) {
     thread_local std::vector<std::pair<float, uint32_t>> found;
     map.nearest(si.p, k, max_distance2, found);
     if (found.empty()) return Spectrum(0.0f);
@@ -76,7 +79,8 @@ Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, c
     Spectrum sum(0.0f);
     for (const auto& [d2, index] : found) {
         const Photon& photon = map[index];
-        if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) continue;  // arrived on the other side
+        if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f)
+            continue;  // arrived on the other side
         const float weight = 1.0f - std::sqrt(d2) / (kConeFilter * r);
         sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power * weight;
     }

@@ -24,7 +24,8 @@ public:
 
     // The (at most) k photons nearest to `p` within sqrt(max_distance2), as
     // (squared distance, index) pairs in `found` (a max-heap on distance).
-    void nearest(const Vec3& p, int k, float max_distance2, std::vector<std::pair<float, uint32_t>>& found) const;
+    void nearest(const Vec3& p, int k, float max_distance2,
+                 std::vector<std::pair<float, uint32_t>>& found) const;
 
     size_t size() const { return m_photons.size(); }
     const Photon& operator[](size_t i) const { return m_photons[i]; }
@@ -44,7 +45,7 @@ class Bsdf;
 // Reflected radiance at `si` from the k photons nearest to it (within
 // sqrt(max_distance2)), with Jensen's cone filter; photons that arrived on the other side
 // of the surface are ignored.
-Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf, int k,
-                           float max_distance2);
+Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf,
+                           int k, float max_distance2);
 
 }  // namespace glint

@@ -26,7 +26,8 @@ struct PhotonHit {
 };
 
 // How a chosen light emits a photon; the default is Light::sample_le.
-using PhotonEmitter = std::function<std::optional<LightEmission>(const Light&, const Vec2&, const Vec2&, float)>;
+using PhotonEmitter =
+    std::function<std::optional<LightEmission>(const Light&, const Vec2&, const Vec2&, float)>;
 
 class PhotonTracer {
 public:
@@ -36,7 +37,8 @@ public:
     // Traces photons [first, first + count); photon i is keyed by (seed, i). `make_sink()`
     // makes the sink of each chunk; the sinks come back in chunk order.
     template <typename MakeSink>
-    auto trace(uint64_t first, uint64_t count, uint64_t seed, uint64_t& rays, MakeSink&& make_sink) const {
+    auto trace(uint64_t first, uint64_t count, uint64_t seed, uint64_t& rays,
+               MakeSink&& make_sink) const {
         constexpr uint64_t kChunk = 2048;
         const uint64_t chunks = (count + kChunk - 1) / kChunk;
         std::vector<decltype(make_sink())> sinks;
@@ -86,7 +88,8 @@ private:
             const Bsdf* bsdf = shade(m_scene, ray, si, arena);
             if (!bsdf) return;
             const Vec3 wi = -glm::normalize(ray.direction);
-            if (!bsdf->is_delta()) sink.store(PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0});
+            if (!bsdf->is_delta())
+                sink.store(PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0});
             if (bounces == m_max_bounces) return;
 
             // A photon carries power: the BSDF in importance mode is the adjoint (no 1/eta^2

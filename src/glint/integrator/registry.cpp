@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/integrator/light_tracer.h>
 #include <glint/integrator/path.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/sppm.h>
@@ -18,6 +19,10 @@ std::unique_ptr<Integrator> make_path(const RenderSettings& settings) {
     return std::make_unique<PathIntegrator>(settings, Strategy);
 }
 
+std::unique_ptr<Integrator> make_light(const RenderSettings& settings) {
+    return std::make_unique<LightTracer>(settings);
+}
+
 std::unique_ptr<Integrator> make_photon(const RenderSettings& settings) {
     return std::make_unique<PhotonIntegrator>(settings);
 }
@@ -32,6 +37,7 @@ std::unique_ptr<Integrator> make_whitted(const RenderSettings& settings) {
 
 const std::map<std::string, IntegratorFactory>& factories() {
     static const std::map<std::string, IntegratorFactory> table = {
+        {"light", make_light},
         {"path", make_path<DirectLighting::kMis>},
         {"path_light", make_path<DirectLighting::kLightOnly>},
         {"path_bsdf", make_path<DirectLighting::kBsdfOnly>},
@@ -55,7 +61,8 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings) {
 
 Image final_image(const Film& film, const RenderStats& stats) {
     Image image = film.resolve();
-    for (const ExtraChannel& channel : stats.channels) image = with_channel(image, channel.name, channel.values);
+    for (const ExtraChannel& channel : stats.channels)
+        image = with_channel(image, channel.name, channel.values);
     return image;
 }
 

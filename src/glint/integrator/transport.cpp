@@ -13,24 +13,6 @@ Spectrum estimate_direct_light(const Scene& scene, const SurfaceInteraction& si,
     return scene.occluded(si, direct->target) ? Spectrum(0.0f) : direct->contribution;
 }
 
-DeltaLobes delta_lobes(const Bsdf& bsdf, const Vec3& wo_local) {
-    // Delta BSDFs choose among at most two lobes by u_lobe alone (reflection below the
-    // Fresnel reflectance, refraction above), so the two ends of its range find both. A
-    // sampled delta lobe's f |cos| is its whole weight; its pdf is the chance of picking it,
-    // which following every lobe replaces by 1.
-    DeltaLobes result;
-    uint32_t found = 0;
-    for (const float u_lobe : {0.0f, 0x1.fffffep-1f}) {
-        const std::optional<BsdfSample> bs = bsdf.sample(wo_local, Vec2(0.5f), u_lobe);
-        if (!bs || !bs->is_delta() || (bs->flags & found) || bs->f.is_black()) continue;
-        found |= bs->flags & (kBsdfReflection | kBsdfTransmission);
-        BsdfSample lobe = *bs;
-        lobe.pdf = 1.0f;
-        result.lobes[result.count++] = lobe;
-    }
-    return result;
-}
-
 SpecularChain follow_specular_chain(const Scene& scene, Ray ray, Spectrum beta, Sampler& sampler,
                                     Arena& arena, RayCounter& counter, int max_segments,
                                     AovSample* aov) {

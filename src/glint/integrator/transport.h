@@ -10,8 +10,6 @@
 //   sample_direct_light     power and sampled, in one documented order of sample draws
 //   sample_scattering       BSDF sampling of the next direction, with the check that the
 //                           direction agrees with the geometric surface
-//   delta_lobes             every delta lobe of a BSDF at once, for integrators that follow
-//                           all of them (Whitted)
 //   follow_specular_chain   a ray through mirrors and glass to the first surface that is not
 //                           purely specular
 //
@@ -128,14 +126,20 @@ struct Scattering {
     Spectrum weight;    ///< f |cos theta_i| / pdf: the factor the throughput takes
 };
 
-/// Samples the BSDF at `si` with (u, u_lobe). nullopt when the BSDF absorbs, and when the
+/// Samples the BSDF at `si` with (u, u_lobe), carrying `mode` (radiance for camera paths,
+/// importance for light paths; see bsdf.h). nullopt when the BSDF absorbs, and when the
 /// sampled direction disagrees with the geometric surface (a shading normal can send a
 /// "reflected" direction through the surface or the reverse): such paths would leak light
 /// through surfaces, and are ended instead.
 inline std::optional<Scattering> sample_scattering(const SurfaceInteraction& si, const Bsdf& bsdf,
                                                    const Vec3& wo_local, const Vec2& u,
-                                                   float u_lobe) {
-    const std::optional<BsdfSample> bs = bsdf.sample(wo_local, u, u_lobe);
+                                                   float u_lobe,
+                                                   TransportMode mode = TransportMode::kRadiance) {
+    // The geometric normal matters only to importance (the shading-normal correction).
+    const std::optional<BsdfSample> bs =
+        mode == TransportMode::kRadiance
+            ? bsdf.sample(wo_local, u, u_lobe)
+            : bsdf.sample(wo_local, u, u_lobe, mode, si.to_local(si.ng));
     if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
     const Vec3 wi = si.to_world(bs->wi);
     const bool geometric_transmission = glm::dot(wi, si.ng) * glm::dot(si.wo, si.ng) < 0.0f;
@@ -153,14 +157,6 @@ inline void continue_ray(Ray& ray, SurfaceInteraction& si, const Scattering& sca
     else
         respawn_ray(ray, si, scattering.wi);
 }
-
-/// Every delta lobe of a BSDF at once, each with its whole weight f |cos theta_i| (pdf 1):
-/// reflection and refraction of smooth glass, the reflection of a mirror.
-struct DeltaLobes {
-    int count = 0;
-    std::array<BsdfSample, 2> lobes;
-};
-DeltaLobes delta_lobes(const Bsdf& bsdf, const Vec3& wo_local);
 
 /// Where a ray that follows specular bounces (mirrors, smooth glass) ends.
 struct SpecularChain {

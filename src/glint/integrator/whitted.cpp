@@ -108,9 +108,7 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
             }
         } else {
             // Follow every delta lobe (reflection, refraction) with its exact weight.
-            const DeltaLobes lobes = delta_lobes(*bsdf, wo_local);
-            for (int i = 0; i < lobes.count; ++i) {
-                const BsdfSample& lobe = lobes.lobes[i];
+            for (const BsdfSample& lobe : bsdf->delta_lobes(wo_local)) {
                 const Vec3 wi = si.to_world(lobe.wi);
                 const Spectrum weight = lobe.f * abs_cos_theta(lobe.wi);
                 const Ray next = spawn_specular_ray(si, ray, wi, lobe.is_transmission(), lobe.eta);

@@ -1,8 +1,9 @@
 #pragma once
 // Classic recursive ray tracing (Whitted 1980): direct light from every light at each
 // non-specular hit (stratified shadow rays for area lights, hence soft shadows), an
-// ambient term, optional photon-mapped caustics, and exact recursion into mirror reflection and refraction, weighted by
-// Fresnel, with total internal reflection and Beer absorption. No indirect diffuse light.
+// ambient term, optional photon-mapped caustics, and exact recursion into mirror reflection and
+// refraction, weighted by Fresnel, with total internal reflection and Beer absorption. No indirect
+// diffuse light.
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/photon_map.h>
 

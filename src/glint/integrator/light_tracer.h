@@ -1,0 +1,39 @@
+#pragma once
+// Light tracing (particle tracing; Arvo and Kirk 1990, Dutré et al. 1993, Veach 1997 sec.
+// 10.2): paths start at the lights, scatter through the scene in importance mode, and at
+// every non-specular vertex connect to the camera's lens (Camera::sample_wi); what gets
+// through is splatted to the film position the connection lands on.
+//
+// It finds the light a camera path cannot: a caustic from a point light seen directly (light
+// -> glass -> diffuse surface -> camera), which path tracing can only reach by hitting a point
+// light with a BSDF-sampled ray, i.e. never. It cannot see what only a camera path finds:
+// mirrors and glass seen directly (a specular vertex cannot connect to the lens), and lights
+// at infinity seen directly. The image converges to the path tracer's wherever every light
+// path that reaches the pixel has a non-specular vertex last.
+//
+// spp counts light paths per pixel: width x height x spp paths in all. Paths are split into
+// fixed chunks, each traced with its own random numbers keyed by (seed, path index), and
+// the chunks' splats reach the film in chunk order, so the image is the same for any thread
+// count.
+#include <glint/integrator/integrator.h>
+
+namespace glint {
+
+class LightTracer final : public Integrator {
+public:
+    explicit LightTracer(const RenderSettings& settings);
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+
+private:
+    struct Chunk;
+    void trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const;
+    void connect_to_camera(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                           const Spectrum& beta, const Vec2& u_lens, Chunk& chunk) const;
+    void connect_light_to_camera(const Scene& scene, const LightEmission& emission,
+                                 const Light& light, float light_pmf, const Vec2& u_lens,
+                                 Chunk& chunk) const;
+
+    RenderSettings m_settings;
+};
+
+}  // namespace glint
