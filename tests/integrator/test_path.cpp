@@ -69,15 +69,16 @@ namespace {
 // A closed diffuse sphere of radius 1 and albedo `albedo` around the origin, seen from inside
 // (from `eye`, looking down -z), lit by the point lights in `lights` (Lua).
 std::string closed_sphere(const std::string& integrator, int spp, int seed, double albedo,
-                          const Vec3& eye, const std::string& lights) {
+                          const Vec3& eye, const std::string& lights, int photons = 100000) {
     return fmt::format(R"(
         glint.camera{{ eye = {{{}, {}, {}}}, look_at = {{{}, {}, -1}}, fov = 70 }}
         glint.render{{ width = 16, height = 16, spp = {}, seed = {}, integrator = '{}',
-                       photons = 100000, caustic_photons = 0 }}
+                       photons = {}, caustic_photons = 0 }}
         glint.sphere{{ center = {{0, 0, 0}}, radius = 1, material = glint.diffuse{{ reflectance = {} }} }}
         {}
     )",
-                       eye.x, eye.y, eye.z, eye.x, eye.y, spp, seed, integrator, albedo, lights);
+                       eye.x, eye.y, eye.z, eye.x, eye.y, spp, seed, integrator, photons, albedo,
+                       lights);
 }
 
 }  // namespace
@@ -91,9 +92,9 @@ std::string closed_sphere(const std::string& integrator, int spp, int seed, doub
 // path_bsdf never reaches a point light, so it has no part here.
 TEST(PathIntegrator, ClosedSphereAroundPointLightSumsEveryBounce) {
     for (const char* variant : {"path", "path_light"}) {
-        const Image image =
-            render_lua(closed_sphere(variant, 64, 5, 0.5, Vec3(0.0f),
-                                     "glint.point_light{ position = {0, 0, 0}, intensity = math.pi }"));
+        const Image image = render_lua(
+            closed_sphere(variant, 64, 5, 0.5, Vec3(0.0f),
+                          "glint.point_light{ position = {0, 0, 0}, intensity = math.pi }"));
         for (int c = 0; c < 3; ++c) {
             const double mean = mean_channel(image, c, 0, 0, image.width, image.height);
             const double bound = 4.0 * glint::test::standard_error_of_uniform_mean(image, c);
@@ -102,6 +103,29 @@ TEST(PathIntegrator, ClosedSphereAroundPointLightSumsEveryBounce) {
             EXPECT_NEAR(mean, 1.0, bound) << variant << " channel " << c;
         }
     }
+}
+
+// The closed furnace for the photon-mapping integrators, which store the light of every
+// bounce after the first. Their noise is shared between pixels through the photons, so the
+// pixels' spread does not bound it; the image mean's spread over seeds is below 0.2 % for
+// both (photon at 64 spp: 1.0007-1.0020 over seeds 5, 9, 13; sppm at 32 passes of 50000
+// photons: 1.031-1.033 over seeds 5 and 9), and the tolerance is 1 %. SPPM is consistent, not
+// unbiased, but in a uniform field its radius update is not biased: a simulation of the update with
+// Poisson photon counts (1 to 5 photons per visible point and pass at first, 16 to 64 passes) stays
+// within 0.5 % of the truth.
+//
+// KNOWN FAILURE (reported, src not changed): sppm reads 3 % high here (1.031-1.040 for 16 to
+// 256 passes; its indirect light is 5-9 % too high at albedo 0.2, 0.5 and 0.8), while
+// photon, path and path_light agree with the closed form within 0.2 %.
+TEST(PathIntegrator, ClosedSphereAroundPointLightForPhotonMapping) {
+    const std::string light = "glint.point_light{ position = {0, 0, 0}, intensity = math.pi }";
+    const Image photon = render_lua(closed_sphere("photon", 16, 5, 0.5, Vec3(0.0f), light));
+    EXPECT_NEAR(mean_channel(photon, 1, 0, 0, 16, 16), 1.0, 0.01) << "photon";
+    const Image sppm = render_lua(closed_sphere("sppm", 32, 5, 0.5, Vec3(0.0f), light, 50000));
+    EXPECT_NEAR(mean_channel(sppm, 1, 0, 0, 16, 16), 1.0, 0.01)
+        << "sppm: the closed furnace must be 1 everywhere (L = a I / (pi R^2 (1 - a))); a "
+           "mean above 1.01 is the known excess of sppm's indirect light (see the comment "
+           "above this test), not noise";
 }
 
 // The same sphere lit by three point lights of different intensities off the centre. The
@@ -115,8 +139,9 @@ TEST(PathIntegrator, ClosedSphereWithPointLightsOfDifferentPower) {
         Vec3 p;
         float intensity;
     };
-    const PointLight lights[] = {
-        {Vec3(0.3f, 0.2f, -0.4f), 1.0f}, {Vec3(-0.5f, -0.1f, 0.1f), 4.0f}, {Vec3(0.1f, -0.5f, -0.2f), 0.3f}};
+    const PointLight lights[] = {{Vec3(0.3f, 0.2f, -0.4f), 1.0f},
+                                 {Vec3(-0.5f, -0.1f, 0.1f), 4.0f},
+                                 {Vec3(0.1f, -0.5f, -0.2f), 0.3f}};
     std::string lua;
     double total_intensity = 0.0;
     for (const PointLight& light : lights) {
@@ -153,7 +178,8 @@ TEST(PathIntegrator, ClosedSphereWithPointLightsOfDifferentPower) {
                 double expected = 0.0;
                 for (int i = 0; i < kSub * kSub; ++i) {
                     expected += closed_form(Vec2(x + (i % kSub + 0.5f) / kSub,
-                                                 y + (i / kSub + 0.5f) / kSub)) / (kSub * kSub);
+                                                 y + (i / kSub + 0.5f) / kSub)) /
+                                (kSub * kSub);
                 }
                 residuals.push_back(image.at(x, y, 0) - expected);
                 expected_sum += expected;
@@ -433,9 +459,9 @@ TEST(PathIntegrator, LightAndBsdfSamplingConvergeToTheSameImage) {
             fmt::print("{} channel {}: mean {:.5f}, reference {:.5f}, bound {:.5f} ({:.2f} %)\n",
                        variant, c, mean_channel(fine, c, 0, 0, res, res), expected, bound,
                        100.0 * bound / expected);
-            EXPECT_TRUE(agrees(1.0)) << variant << " channel " << c << ": mean "
-                                     << mean_channel(fine, c, 0, 0, res, res) << ", reference "
-                                     << expected << ", bound " << bound;
+            EXPECT_TRUE(agrees(1.0))
+                << variant << " channel " << c << ": mean " << mean_channel(fine, c, 0, 0, res, res)
+                << ", reference " << expected << ", bound " << bound;
             EXPECT_LT(bound, 0.01 * expected) << variant << " channel " << c;
             EXPECT_FALSE(agrees(1.02)) << variant << " channel " << c << ": misses a 2 % bias";
             EXPECT_FALSE(agrees(0.98)) << variant << " channel " << c << ": misses a 2 % bias";

@@ -57,11 +57,13 @@ TEST(PhotonMapping, StoredFluxFollowsTheGeometricSeries) {
             glint.render{{ integrator = 'photon', photons = 200000, caustic_photons = 0, seed = 3 }}
             glint.point_light{{ position = {{0.2, 0.3, -0.1}}, intensity = 2 }}
             glint.box{{ min = {{-1, -1, -1}}, max = {{1, 1, 1}}, material = glint.diffuse{{ reflectance = {} }} }}
-        )", rho));
+        )",
+                                         rho));
         PhotonIntegrator integrator(b.settings);
         integrator.build_maps(*b.scene);
         const double emitted = 4.0 * M_PI * 2.0;
-        EXPECT_NEAR(total_power(integrator.global_map()), emitted / (1.0 - rho), 0.01 * emitted / (1.0 - rho))
+        EXPECT_NEAR(total_power(integrator.global_map()), emitted / (1.0 - rho),
+                    0.01 * emitted / (1.0 - rho))
             << "rho = " << rho;
         EXPECT_EQ(integrator.caustic_map().size(), 0u);
     }
@@ -111,7 +113,8 @@ TEST(PhotonMapping, SppmAgreesWithPathTracingOnTheCornellBox) {
         int x0, y0, x1, y1;
     };
     const int h = res / 2;
-    const Region regions[] = {{0, 0, res, res}, {0, 0, h, h}, {h, 0, res, h}, {0, h, h, res}, {h, h, res, res}};
+    const Region regions[] = {
+        {0, 0, res, res}, {0, 0, h, h}, {h, 0, res, h}, {0, h, h, res}, {h, h, res, res}};
     for (const Region& r : regions) {
         for (int c = 0; c < 3; ++c) {
             auto mean2 = [&](const Image& a, const Image& b) {
@@ -127,10 +130,11 @@ TEST(PhotonMapping, SppmAgreesWithPathTracingOnTheCornellBox) {
                 glint::test::standard_error_of_mean(sppm_a, sppm_b, c, r.x0, r.y0, r.x1, r.y1) /
                 std::sqrt(2.0);
             const double bound = 4.0 * std::hypot(path_error, sppm_error);
-            const std::string where =
-                fmt::format("region ({}, {})-({}, {}) channel {}: sppm {:.5f}, path {:.5f}, bound {:.5f}",
-                            r.x0, r.y0, r.x1, r.y1, c, sppm, path, bound);
-            fmt::print("{} ({:.2f} %; path {:.5f}, sppm {:.5f})\n", where, 100.0 * bound / path, path_error, sppm_error);
+            const std::string where = fmt::format(
+                "region ({}, {})-({}, {}) channel {}: sppm {:.5f}, path {:.5f}, bound {:.5f}", r.x0,
+                r.y0, r.x1, r.y1, c, sppm, path, bound);
+            fmt::print("{} ({:.2f} %; path {:.5f}, sppm {:.5f})\n", where, 100.0 * bound / path,
+                       path_error, sppm_error);
             EXPECT_NEAR(sppm, path, bound) << where;
             if (r.x1 - r.x0 == res) {
                 EXPECT_LT(bound, 0.015 * path) << where;
@@ -156,7 +160,8 @@ namespace {
 // Irradiance per radial bin on the plane y = plane_y below a glass circle of radius 1 at the
 // origin, lit by parallel light of irradiance 1 travelling along -y: the 2D meridional
 // trace of every Fresnel branch (exact Snell and Fresnel), weighted by the 3D ring area.
-std::vector<double> reference_caustic_profile(double eta, double plane_y, double bin_width, int bins) {
+std::vector<double> reference_caustic_profile(double eta, double plane_y, double bin_width,
+                                              int bins) {
     std::vector<double> energy(bins, 0.0);
     auto fresnel = [](double cos_i, double n1, double n2) {
         const double sin_t = n1 / n2 * std::sqrt(std::max(0.0, 1.0 - cos_i * cos_i));
@@ -256,7 +261,8 @@ TEST(PhotonMapping, GlassSphereCausticMatchesRayTracedProfile) {
 
     double difference = 0.0, total = 0.0;
     for (int i = 0; i < bins; ++i) {
-        fmt::print("r {:.3f}: photons {:.4f}, traced {:.4f}\n", (i + 0.5) * bin_width, measured[i], expected[i]);
+        fmt::print("r {:.3f}: photons {:.4f}, traced {:.4f}\n", (i + 0.5) * bin_width, measured[i],
+                   expected[i]);
         difference += std::abs(measured[i] - expected[i]) * (2 * i + 1);  // weighted by ring area
         total += expected[i] * (2 * i + 1);
     }
@@ -293,8 +299,8 @@ TEST(PhotonMapping, AreaLightProjectionMapKeepsTheCausticsPower) {
         return std::array<double, 3>{static_cast<double>(map.size()), total, centre};
     };
     const auto aimed = caustic_map(true), everywhere = caustic_map(false);
-    fmt::print("stored {} vs {}; floor power {:.4f} vs {:.4f}; centre {:.4f} vs {:.4f}\n",
-               aimed[0], everywhere[0], aimed[1], everywhere[1], aimed[2], everywhere[2]);
+    fmt::print("stored {} vs {}; floor power {:.4f} vs {:.4f}; centre {:.4f} vs {:.4f}\n", aimed[0],
+               everywhere[0], aimed[1], everywhere[1], aimed[2], everywhere[2]);
     EXPECT_GT(aimed[0], 3.0 * everywhere[0]);
     EXPECT_NEAR(aimed[1], everywhere[1], 0.03 * everywhere[1]);
     EXPECT_NEAR(aimed[2], everywhere[2], 0.05 * everywhere[2]);

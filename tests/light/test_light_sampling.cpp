@@ -563,8 +563,8 @@ TEST(LightEmission, DirectionsFollowTheEmissionDistribution) {
     const TriangleMesh mesh(
         "quad", make_quad_mesh(Vec3(-1, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(-1, 1, 1)));
     auto on_quad = [](const Vec3& o) {
-        return std::abs(o.z - 1.0f) < 1e-3f && o.x >= -1.001f && o.x <= 1.001f &&
-               o.y >= -0.001f && o.y <= 1.001f;
+        return std::abs(o.z - 1.0f) < 1e-3f && o.x >= -1.001f && o.x <= 1.001f && o.y >= -0.001f &&
+               o.y <= 1.001f;
     };
     const AreaLight one_sided(mesh.make_sampler(Transform()), Spectrum(1.0f), false);
     expect_emission_directions(

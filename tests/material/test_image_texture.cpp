@@ -279,8 +279,8 @@ TEST(ImageTexture, AnisotropicFilteringKeepsStripesAlongTheView) {
         const double error = compare_images(a, reference).rel_mse;
         const double variance = 0.5 * compare_images(a, b).rel_mse;
         const double bias = error - variance - reference_variance;
-        std::cout << fmt::format("{}: relative MSE {:.4g}, variance {:.4g}, bias {:.4g}\n",
-                                 filter, error, variance, bias);
+        std::cout << fmt::format("{}: relative MSE {:.4g}, variance {:.4g}, bias {:.4g}\n", filter,
+                                 error, variance, bias);
         return bias < 2.0 * variance;
     };
     EXPECT_TRUE(bias_bound_holds("anisotropic"));

@@ -650,11 +650,11 @@ TEST(PlasticBsdf, ConservesEnergyAndIsReciprocal) {
 // base (diffuse 1, ior 1.5) is integrated numerically: the coat's delta lobe reflects its
 // Fresnel reflectance, added exactly, and the smooth diffuse term is integrated by the
 // midpoint rule on 720 x 360 cells of the sphere (a grid four times finer agrees within
-// 1e-5; the bound allows 2e-4). Rough coats have a lobe too sharp near grazing angles for that grid (at
-// roughness 0.3 and 89 degrees it is 5 % off), so they are estimated with 4e5 samples of
-// the BSDF's own sampling, whose pdf is chi-square tested above. The bounds are
-// [0.998, 1.000] widened by the estimate's error (2e-4, or four standard errors) and, above
-// 1, by the coat albedo table's stated accuracy (1e-3).
+// 1e-5; the bound allows 2e-4). Rough coats have a lobe too sharp near grazing angles for that grid
+// (at roughness 0.3 and 89 degrees it is 5 % off), so they are estimated with 4e5 samples of the
+// BSDF's own sampling, whose pdf is chi-square tested above. The bounds are [0.998, 1.000] widened
+// by the estimate's error (2e-4, or four standard errors) and, above 1, by the coat albedo table's
+// stated accuracy (1e-3).
 TEST(PlasticBsdf, WhiteBaseReflectsAlmostAllLight) {
     const float angles[] = {0.0f, 30.0f, 60.0f, 75.0f, 85.0f, 89.0f};
     for (float roughness : {0.0f, 0.05f, 0.1f, 0.3f, 0.6f, 1.0f}) {
@@ -671,8 +671,9 @@ TEST(PlasticBsdf, WhiteBaseReflectsAlmostAllLight) {
                 albedo = e.mean;
                 error = 4.0 * e.error;
             }
-            const std::string where = fmt::format("roughness {}, {} degrees: albedo {:.5f} +- {:.5f}",
-                                                  roughness, degrees, albedo, error);
+            const std::string where =
+                fmt::format("roughness {}, {} degrees: albedo {:.5f} +- {:.5f}", roughness, degrees,
+                            albedo, error);
             EXPECT_GE(albedo, 0.998 - error) << where;
             EXPECT_LE(albedo, 1.0 + 1e-3 + error) << where;
         }

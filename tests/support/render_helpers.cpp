@@ -87,8 +87,8 @@ double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1) {
     return sum / (static_cast<double>(x1 - x0) * (y1 - y0));
 }
 
-double standard_error_of_mean(const Image& a, const Image& b, int c, int x0, int y0, int x1,
-                              int y1, double spp_a, double spp_b) {
+double standard_error_of_mean(const Image& a, const Image& b, int c, int x0, int y0, int x1, int y1,
+                              double spp_a, double spp_b) {
     // With per-sample variance s^2, E[(a - b)^2] = s^2 (1/spp_a + 1/spp_b).
     double sum = 0.0;
     for (int y = y0; y < y1; ++y) {

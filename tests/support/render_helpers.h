@@ -38,8 +38,8 @@ double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1);
 // independent renders `a` and `b` of the same scene and settings (different seeds): each
 // pixel's variance is E[(a - b)^2] / 2, and pixels are independent. Also right when `a`
 // and `b` have different sample counts, given them: the variance returned is for `a`.
-double standard_error_of_mean(const Image& a, const Image& b, int c, int x0, int y0, int x1,
-                              int y1, double spp_a = 1.0, double spp_b = 1.0);
+double standard_error_of_mean(const Image& a, const Image& b, int c, int x0, int y0, int x1, int y1,
+                              double spp_a = 1.0, double spp_b = 1.0);
 
 // Standard error of the mean of channel `c` over the whole image, for an image whose pixels
 // all have the same expected value: the pixels' spread divided by the square root of their
