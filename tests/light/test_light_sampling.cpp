@@ -12,8 +12,10 @@
 #include <gtest/gtest.h>
 #include <support/chi_square.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -470,4 +472,129 @@ TEST(LightSampler, ChoosesInProportionToPower) {
     const LightSampler uniform(dark);
     EXPECT_NEAR(uniform.pmf(*dark[0]), 0.5f, 1e-6f);
     EXPECT_EQ(uniform.sample(0.75f).light, dark[1].get());
+}
+
+// docs/scene-language.md (spot_light): full intensity inside `falloff_start`, fading
+// "smoothly (smoothstep in the cosine) to zero at `cone_angle`". The irradiance it gives a
+// plane below it, E = I s(x) cos(theta) / r^2 with s(x) = x^2 (3 - 2x) and
+// x = (cos(theta) - cos(cone)) / (cos(start) - cos(cone)), is computed here from that
+// sentence alone and compared with the light's samples along a line across the plane.
+TEST(SpotLight, IrradianceOnAPlaneFollowsTheDocumentedFalloff) {
+    const float cone = 40.0f, start = 15.0f, height = 2.0f, intensity = 7.0f;
+    const SpotLight light(Vec3(0.0f, 0.0f, height), Vec3(0.0f, 0.0f, -1.0f), Spectrum(intensity),
+                          cone, start);
+    const double cos_cone = std::cos(glm::radians(double(cone)));
+    const double cos_start = std::cos(glm::radians(double(start)));
+    int in_band = 0;
+    for (int i = 0; i <= 400; ++i) {
+        const Vec3 p(static_cast<float>(i) * 0.005f, 0.3f * static_cast<float>(i) * 0.005f, 0.0f);
+        const DVec3 to_light = DVec3(0.0, 0.0, height) - DVec3(p);
+        const double r2 = glm::dot(to_light, to_light);
+        const double cos_theta = height / std::sqrt(r2);  // at the light and at the plane
+        double s = 0.0;
+        if (cos_theta >= cos_start) {
+            s = 1.0;
+        } else if (cos_theta > cos_cone) {
+            const double x = (cos_theta - cos_cone) / (cos_start - cos_cone);
+            s = x * x * (3.0 - 2.0 * x);
+            ++in_band;
+        }
+        const double expected = intensity * s * cos_theta / r2;
+        const auto sample = light.sample_li(p, Vec2(0.5f), 0.5f);
+        const double measured = sample ? sample->L.r * sample->wi.z : 0.0;
+        EXPECT_NEAR(measured, expected, 1e-4 * intensity / (height * height) + 1e-5 * expected)
+            << "at " << glm::length(Vec2(p)) << " from the axis";
+    }
+    EXPECT_GT(in_band, 100);  // most of the points are in the falloff band
+}
+
+namespace {
+
+// Chi-square test of the directions photons leave a light with, against `pdf`, using only
+// the emitted ray (LightEmission's other fields are changing); also checks where the rays
+// start with `origin_ok`.
+void expect_emission_directions(const Light& light, const std::function<double(const Vec3&)>& pdf,
+                                const std::function<bool(const Vec3&)>& origin_ok,
+                                const std::string& label, int cos_theta_bins = 20) {
+    int bad_origins = 0, unit = 0, count = 0;
+    auto sample = [&](const Vec2& u, float u_extra) -> std::optional<Vec3> {
+        // The position sample from the extra number (a planar light's directions do not
+        // depend on it).
+        const Vec2 u_position(u_extra, std::fmod(u_extra * 7.31f + 0.17f, 1.0f));
+        const auto emission = light.sample_le(u_position, u, u_extra);
+        if (!emission) return std::nullopt;
+        ++count;
+        bad_origins += !origin_ok(emission->ray.origin);
+        unit += std::abs(glm::length(emission->ray.direction) - 1.0f) < 1e-5f;
+        return emission->ray.direction;
+    };
+    const auto result =
+        test::chi_square_directions(sample, pdf, kSamples, 41, cos_theta_bins, 40, 0.01 / 5);
+    EXPECT_TRUE(result.passed) << label << ": " << result.details;
+    EXPECT_NEAR(result.integrated_pdf, 1.0, 2e-3) << label << ": " << result.details;
+    EXPECT_EQ(bad_origins, 0) << label;
+    EXPECT_EQ(unit, count) << label << ": directions not of unit length";
+}
+
+}  // namespace
+
+// Photons leave a point light uniformly over the sphere, a spot light uniformly over its
+// cone (the falloff goes into their power), and an area light with the cosine distribution
+// about its emitting side's normal (half on each side when two-sided).
+TEST(LightEmission, DirectionsFollowTheEmissionDistribution) {
+    const Vec3 position(0.5f, -1.0f, 2.0f);
+    auto at_position = [&](const Vec3& o) { return glm::length(o - position) < 1e-6f; };
+
+    const PointLight point(position, Spectrum(2.0f));
+    expect_emission_directions(
+        point, [](const Vec3&) { return 1.0 / (4.0 * M_PI); }, at_position, "point light");
+
+    // A cone of 50 degrees about +z: cos(theta) in [0.64, 1], a sixth of the sphere's
+    // cos(theta) range, hence the finer bins.
+    const float cone = 50.0f;
+    const double cos_cone = std::cos(glm::radians(double(cone)));
+    const SpotLight spot(position, Vec3(0.0f, 0.0f, 1.0f), Spectrum(3.0f), cone, 20.0f);
+    expect_emission_directions(
+        spot,
+        [&](const Vec3& w) { return w.z > cos_cone ? 1.0 / (2.0 * M_PI * (1.0 - cos_cone)) : 0.0; },
+        at_position, "spot light", 120);
+
+    // A 2 x 1 quad in the plane z = 1, counter-clockwise seen from +z: its front faces +z.
+    const TriangleMesh mesh(
+        "quad", make_quad_mesh(Vec3(-1, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(-1, 1, 1)));
+    auto on_quad = [](const Vec3& o) {
+        return std::abs(o.z - 1.0f) < 1e-3f && o.x >= -1.001f && o.x <= 1.001f && o.y >= -0.001f &&
+               o.y <= 1.001f;
+    };
+    const AreaLight one_sided(mesh.make_sampler(Transform()), Spectrum(1.0f), false);
+    expect_emission_directions(
+        one_sided, [](const Vec3& w) { return w.z > 0.0f ? w.z / M_PI : 0.0; }, on_quad,
+        "one-sided area light");
+    const AreaLight two_sided(mesh.make_sampler(Transform()), Spectrum(1.0f), true);
+    expect_emission_directions(
+        two_sided, [](const Vec3& w) { return 0.5 * std::abs(w.z) / M_PI; }, on_quad,
+        "two-sided area light");
+}
+
+// An area light's photons start uniformly over its surface: counts in a 4 x 4 grid of
+// equal cells of the quad, chi-square against equal expectations.
+TEST(LightEmission, AreaLightOriginsAreUniformOverTheSurface) {
+    const TriangleMesh mesh(
+        "quad", make_quad_mesh(Vec3(-1, 0, 1), Vec3(1, 0, 1), Vec3(1, 1, 1), Vec3(-1, 1, 1)));
+    const AreaLight light(mesh.make_sampler(Transform()), Spectrum(1.0f), false);
+    Rng rng(43);
+    constexpr int kDraws = 160000;
+    std::array<double, 16> counts{};
+    for (int i = 0; i < kDraws; ++i) {
+        const Vec2 u1(rng.next_float(), rng.next_float()), u2(rng.next_float(), rng.next_float());
+        const auto emission = light.sample_le(u1, u2, rng.next_float());
+        ASSERT_TRUE(emission.has_value());
+        const Vec3 o = emission->ray.origin;
+        const int cx = std::clamp(static_cast<int>((o.x + 1.0f) * 2.0f), 0, 3);
+        const int cy = std::clamp(static_cast<int>(o.y * 4.0f), 0, 3);
+        counts[cy * 4 + cx] += 1.0;
+    }
+    double chi2 = 0.0;
+    for (double c : counts) chi2 += (c - kDraws / 16.0) * (c - kDraws / 16.0) / (kDraws / 16.0);
+    EXPECT_GT(test::chi_square_upper_tail(chi2, 15), 0.01) << "chi2 = " << chi2;
 }

@@ -19,6 +19,10 @@
 namespace glint::test {
 
 Image render_lua(const std::string& code, int threads) {
+    return render_lua_with_stats(code, threads).image;
+}
+
+RenderResult render_lua_with_stats(const std::string& code, int threads) {
     const SceneDesc desc = load_scene_string(code, "test.lua");
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
@@ -32,7 +36,7 @@ Image render_lua(const std::string& code, int threads) {
     } else {
         stats = integrator->render(*scene, film, progress);
     }
-    return final_image(film, stats);
+    return {final_image(film, stats), stats};
 }
 
 std::string read_text(const std::string& path) {
@@ -44,6 +48,19 @@ std::string read_text(const std::string& path) {
     while ((n = std::fread(buffer, 1, sizeof buffer, file)) > 0) text.append(buffer, n);
     std::fclose(file);
     return text;
+}
+
+std::string example_with_settings(const std::string& name, const std::string& settings) {
+    const std::string code = read_text(std::string(GLINT_SOURCE_DIR) + "/examples/" + name);
+    // The call spans its output list's braces: it ends at the first '}' after that list's.
+    const size_t start = code.find("glint.render{");
+    if (start == std::string::npos) throw Error(name + " has no glint.render{...}");
+    const size_t output = code.find("output", start);
+    const size_t output_end = code.find('}', output);
+    const size_t end = code.find('}', output_end + 1);
+    if (output == std::string::npos || output_end == std::string::npos || end == std::string::npos)
+        throw Error(name + ": glint.render{...} has no output list");
+    return code.substr(0, start) + "glint.render{ " + settings + " }" + code.substr(end + 1);
 }
 
 void expect_all_pixels(const Image& image, const Spectrum& expected, double tolerance) {
@@ -68,6 +85,34 @@ double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1) {
         for (int x = x0; x < x1; ++x) sum += image.at(x, y, c);
     }
     return sum / (static_cast<double>(x1 - x0) * (y1 - y0));
+}
+
+double standard_error_of_mean(const Image& a, const Image& b, int c, int x0, int y0, int x1, int y1,
+                              double spp_a, double spp_b) {
+    // With per-sample variance s^2, E[(a - b)^2] = s^2 (1/spp_a + 1/spp_b).
+    double sum = 0.0;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const double d = static_cast<double>(a.at(x, y, c)) - b.at(x, y, c);
+            sum += d * d;
+        }
+    }
+    const double n = static_cast<double>(x1 - x0) * (y1 - y0);
+    const double sample_variance = sum / n / (1.0 / spp_a + 1.0 / spp_b);
+    return std::sqrt(sample_variance / spp_a / n);
+}
+
+double standard_error_of_uniform_mean(const Image& image, int c) {
+    const double n = static_cast<double>(image.width) * image.height;
+    const double mean = mean_channel(image, c, 0, 0, image.width, image.height);
+    double sum = 0.0;
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            const double d = image.at(x, y, c) - mean;
+            sum += d * d;
+        }
+    }
+    return std::sqrt(sum / (n - 1.0) / n);
 }
 
 CommandResult run_glint(const std::string& arguments) {

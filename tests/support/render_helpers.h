@@ -2,6 +2,7 @@
 // Renders scene scripts in-process for tests, and runs the glint binary for CLI tests.
 #include <glint/core/spectrum.h>
 #include <glint/film/image.h>
+#include <glint/integrator/integrator.h>
 #include <glint/scene/render_settings.h>
 
 #include <string>
@@ -12,8 +13,19 @@ namespace glint::test {
 // (0 = all), and returns the resolved image.
 Image render_lua(const std::string& code, int threads = 0);
 
+// render_lua, with the integrator's statistics (rays traced, samples) as well.
+struct RenderResult {
+    Image image;
+    RenderStats stats;
+};
+RenderResult render_lua_with_stats(const std::string& code, int threads = 0);
+
 // The whole content of a text file (throws glint::Error when it cannot be read).
 std::string read_text(const std::string& path);
+
+// The example scene examples/`name` with its glint.render{...} call replaced by
+// glint.render{ `settings` } (a second glint.render would be an error).
+std::string example_with_settings(const std::string& name, const std::string& settings);
 
 // Every pixel's RGB must be within `tolerance` (relative) of `expected`; reports the
 // first few that are not as test failures.
@@ -21,6 +33,18 @@ void expect_all_pixels(const Image& image, const Spectrum& expected, double tole
 
 // Mean of channel `c` over a rectangle of the image.
 double mean_channel(const Image& image, int c, int x0, int y0, int x1, int y1);
+
+// Standard error of mean_channel() over a rectangle of one render, estimated from two
+// independent renders `a` and `b` of the same scene and settings (different seeds): each
+// pixel's variance is E[(a - b)^2] / 2, and pixels are independent. Also right when `a`
+// and `b` have different sample counts, given them: the variance returned is for `a`.
+double standard_error_of_mean(const Image& a, const Image& b, int c, int x0, int y0, int x1, int y1,
+                              double spp_a = 1.0, double spp_b = 1.0);
+
+// Standard error of the mean of channel `c` over the whole image, for an image whose pixels
+// all have the same expected value: the pixels' spread divided by the square root of their
+// number.
+double standard_error_of_uniform_mean(const Image& image, int c);
 
 struct CommandResult {
     int exit_code = -1;
