@@ -10,8 +10,8 @@
 #   BUILD_DIR    build directory (default build)
 #   THREADS      render threads (default 2)
 #   REF_PASSES   sppm passes of the reference (default 256)
-#   LIGHT_SPP    light paths per pixel to time (default "4 16 64 256")
-#   SPPM_PASSES  sppm passes to time (default "2 4 8 16 32")
+#   LIGHT_SPP    light paths per pixel to time (default "16 64 256 1024")
+#   SPPM_PASSES  sppm passes to time (default "4 16 32 64 128")
 #   PATH_SPP     path samples per pixel to time (default "16 64 256")
 #   TARGET       relative MSE target (default 0.02)
 set -euo pipefail
@@ -19,8 +19,8 @@ cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR=${BUILD_DIR:-build}
 THREADS=${THREADS:-2}
 REF_PASSES=${REF_PASSES:-256}
-LIGHT_SPP=${LIGHT_SPP:-4 16 64 256}
-SPPM_PASSES=${SPPM_PASSES:-2 4 8 16 32}
+LIGHT_SPP=${LIGHT_SPP:-16 64 256 1024}
+SPPM_PASSES=${SPPM_PASSES:-4 16 32 64 128}
 PATH_SPP=${PATH_SPP:-16 64 256}
 TARGET=${TARGET:-0.02}
 RES=240x180
