@@ -49,11 +49,13 @@ TEST(PhotonMapping, StoredFluxFollowsTheGeometricSeries) {
             glint.render{{ integrator = 'photon', photons = 200000, caustic_photons = 0, seed = 3 }}
             glint.point_light{{ position = {{0.2, 0.3, -0.1}}, intensity = 2 }}
             glint.box{{ min = {{-1, -1, -1}}, max = {{1, 1, 1}}, material = glint.diffuse{{ reflectance = {} }} }}
-        )", rho));
-        PhotonIntegrator integrator(b.settings);
+        )",
+                                         rho));
+        PhotonIntegrator integrator(b.settings, PhotonSettings::read(b.settings.params));
         integrator.build_maps(*b.scene);
         const double emitted = 4.0 * M_PI * 2.0;
-        EXPECT_NEAR(total_power(integrator.global_map()), emitted / (1.0 - rho), 0.01 * emitted / (1.0 - rho))
+        EXPECT_NEAR(total_power(integrator.global_map()), emitted / (1.0 - rho),
+                    0.01 * emitted / (1.0 - rho))
             << "rho = " << rho;
         EXPECT_EQ(integrator.caustic_map().size(), 0u);
     }
@@ -98,8 +100,10 @@ TEST(PhotonMapping, SppmAgreesWithPathTracing) {
     const double sppm_noise = compare_images(sppm_b, sppm_a).rel_mse;
     const double expected = 0.5 * (path_noise + sppm_noise);
     const double measured = compare_images(sppm_a, path_a).rel_mse;
-    fmt::print("relMSE: path vs path {:.4g}, sppm vs sppm {:.4g}, sppm vs path {:.4g} (unbiased: {:.4g})\n",
-               path_noise, sppm_noise, measured, expected);
+    fmt::print(
+        "relMSE: path vs path {:.4g}, sppm vs sppm {:.4g}, sppm vs path {:.4g} (unbiased: "
+        "{:.4g})\n",
+        path_noise, sppm_noise, measured, expected);
     EXPECT_LT(measured, 1.5 * expected);
 }
 
@@ -118,7 +122,8 @@ namespace {
 // Irradiance per radial bin on the plane y = plane_y below a glass circle of radius 1 at the
 // origin, lit by parallel light of irradiance 1 travelling along -y: the 2D meridional
 // trace of every Fresnel branch (exact Snell and Fresnel), weighted by the 3D ring area.
-std::vector<double> reference_caustic_profile(double eta, double plane_y, double bin_width, int bins) {
+std::vector<double> reference_caustic_profile(double eta, double plane_y, double bin_width,
+                                              int bins) {
     std::vector<double> energy(bins, 0.0);
     auto fresnel = [](double cos_i, double n1, double n2) {
         const double sin_t = n1 / n2 * std::sqrt(std::max(0.0, 1.0 - cos_i * cos_i));
@@ -197,7 +202,7 @@ TEST(PhotonMapping, GlassSphereCausticMatchesRayTracedProfile) {
         glint.quad{ vertices = { {-1.6, -1.5, 1.6}, {1.6, -1.5, 1.6}, {1.6, -1.5, -1.6}, {-1.6, -1.5, -1.6} },
                     material = glint.diffuse{ reflectance = 0.5 } }
     )");
-    PhotonIntegrator integrator(b.settings);
+    PhotonIntegrator integrator(b.settings, PhotonSettings::read(b.settings.params));
     integrator.build_maps(*b.scene);
     const PhotonMap& caustics = integrator.caustic_map();
     ASSERT_GT(caustics.size(), 10000u);
@@ -218,7 +223,8 @@ TEST(PhotonMapping, GlassSphereCausticMatchesRayTracedProfile) {
 
     double difference = 0.0, total = 0.0;
     for (int i = 0; i < bins; ++i) {
-        fmt::print("r {:.3f}: photons {:.4f}, traced {:.4f}\n", (i + 0.5) * bin_width, measured[i], expected[i]);
+        fmt::print("r {:.3f}: photons {:.4f}, traced {:.4f}\n", (i + 0.5) * bin_width, measured[i],
+                   expected[i]);
         difference += std::abs(measured[i] - expected[i]) * (2 * i + 1);  // weighted by ring area
         total += expected[i] * (2 * i + 1);
     }
@@ -243,7 +249,7 @@ TEST(PhotonMapping, AreaLightProjectionMapKeepsTheCausticsPower) {
                         material = glint.diffuse{{ reflectance = 0.5 }} }}
         )",
                                          projection_maps ? "true" : "false"));
-        PhotonIntegrator integrator(b.settings);
+        PhotonIntegrator integrator(b.settings, PhotonSettings::read(b.settings.params));
         integrator.build_maps(*b.scene);
         const PhotonMap& map = integrator.caustic_map();
         double total = 0.0, centre = 0.0;
@@ -255,8 +261,8 @@ TEST(PhotonMapping, AreaLightProjectionMapKeepsTheCausticsPower) {
         return std::array<double, 3>{static_cast<double>(map.size()), total, centre};
     };
     const auto aimed = caustic_map(true), everywhere = caustic_map(false);
-    fmt::print("stored {} vs {}; floor power {:.4f} vs {:.4f}; centre {:.4f} vs {:.4f}\n",
-               aimed[0], everywhere[0], aimed[1], everywhere[1], aimed[2], everywhere[2]);
+    fmt::print("stored {} vs {}; floor power {:.4f} vs {:.4f}; centre {:.4f} vs {:.4f}\n", aimed[0],
+               everywhere[0], aimed[1], everywhere[1], aimed[2], everywhere[2]);
     EXPECT_GT(aimed[0], 3.0 * everywhere[0]);
     EXPECT_NEAR(aimed[1], everywhere[1], 0.03 * everywhere[1]);
     EXPECT_NEAR(aimed[2], everywhere[2], 0.05 * everywhere[2]);
