@@ -58,31 +58,36 @@ void check_output_path(const std::string& path) {
     }
 }
 
+// The scene's settings with the flags' values written into its glint.render{...} table,
+// each with the flag's name as its location, so that an error about a value names the
+// flag that gave it and anything else names the scene's line.
 RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options) {
-    RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
-    if (options.spp) settings.spp = *options.spp;
+    Params table = desc.render ? *desc.render : Params("render", "render settings");
+    if (options.spp) table.set("spp", static_cast<double>(*options.spp), "--spp");
     if (!options.resolution.empty()) {
         const Vec2i res = parse_resolution(options.resolution);
-        settings.width = res.x;
-        settings.height = res.y;
+        table.set("width", static_cast<double>(res.x), "--res");
+        table.set("height", static_cast<double>(res.y), "--res");
     }
+    if (!options.integrator.empty()) table.set("integrator", options.integrator, "--integrator");
+    if (options.exposure)
+        table.set("exposure", static_cast<double>(*options.exposure), "--exposure");
+    if (options.aovs) table.set("aovs", true, "--aovs");
+    if (options.no_mipmap) table.set("mipmapping", false, "--no-mipmap");
+    if (options.intermediate)
+        table.set("intermediate", static_cast<double>(*options.intermediate), "--intermediate");
+    if (!options.adaptive.empty()) table.set("adaptive", options.adaptive, "--adaptive");
+    if (!options.debug.empty()) table.set("debug", options.debug, "--debug");
+    if (options.photons) {
+        table.set("photons", static_cast<double>(*options.photons), "--photons");
+        table.set("caustic_photons", static_cast<double>(*options.photons), "--photons");
+    }
+    if (!options.outputs.empty()) table.set("output", options.outputs, "--output");
+    RenderSettings settings = parse_render_settings(&table);
+    // Not table values: the seed may exceed what a table's integer holds, threads is no
+    // scene setting.
     if (options.threads) settings.threads = *options.threads;
     if (options.seed) settings.seed = *options.seed;
-    if (!options.integrator.empty()) {
-        settings.integrator = options.integrator;
-        settings.where = "--integrator";
-    }
-    if (options.exposure) settings.exposure = *options.exposure;
-    if (options.aovs) settings.aovs = true;
-    if (options.no_mipmap) settings.mipmapping = false;
-    if (options.intermediate) settings.intermediate = *options.intermediate;
-    if (!options.adaptive.empty()) {
-        settings.adaptive = options.adaptive;
-        settings.where = "--adaptive";
-    }
-    if (!options.debug.empty()) settings.debug = options.debug;
-    if (options.photons) settings.photons = settings.caustic_photons = *options.photons;
-    if (!options.outputs.empty()) settings.outputs = options.outputs;
     if (settings.outputs.empty()) {
         settings.outputs = {std::filesystem::path(options.scene).stem().string() + ".exr"};
     }
@@ -132,7 +137,9 @@ int run_render(const RenderOptions& options) {
     const RenderSettings settings = settings_for(desc, options);
     for (const std::string& path : settings.outputs) check_output_path(path);
     check_debug_views(settings);
-    auto integrator = make_integrator(settings);
+    std::vector<std::string> warnings;
+    auto integrator = make_integrator(settings, &warnings);
+    for (const std::string& warning : warnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto scene = build_scene(desc, settings);
 
     const int threads =

@@ -73,6 +73,102 @@ TEST_F(CliTest, BadInputGivesFileLineExitOneAndNoOutput) {
     }
 }
 
+namespace {
+
+// A scene whose glint.render{...} is on line 5, with `render` inside its braces.
+std::string settings_scene(const fs::path& dir, const std::string& render) {
+    const std::string path = (dir / "settings.lua").string();
+    std::ofstream(path) << "-- render settings are on line 5\n"
+                           "glint.camera{ eye = {0, 2, 8}, look_at = {0, 0.5, 0}, fov = 40 }\n"
+                           "local white = glint.diffuse{ reflectance = 0.7 }\n"
+                           "glint.quad{ vertices = {{-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, "
+                           "-4}}, material = white }\n"
+                        << "glint.render{ width = 8, height = 8, spp = 1, " << render << " }\n"
+                        << "glint.point_light{ position = {0, 5, 0}, intensity = 10 }\n";
+    return path;
+}
+
+size_t count_of(const std::string& text, const std::string& what) {
+    size_t count = 0;
+    for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++count;
+    return count;
+}
+
+}  // namespace
+
+// Each error names where the offending value came from: the flag that gave it, or the
+// scene's line of glint.render{...}, whichever other flags are given.
+TEST_F(CliTest, SettingErrorsNameTheirSource) {
+    auto result =
+        run_glint(fmt::format("render {} --integrator bogus --adaptive sobel -o {} --quiet",
+                              settings_scene(m_dir, "seed = 1"), out("a.exr")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("--integrator: unknown integrator 'bogus'"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(result.output.find("--adaptive"), std::string::npos) << result.output;
+
+    result = run_glint(fmt::format("render {} --integrator path -o {} --quiet",
+                                   settings_scene(m_dir, "sampler = 'x'"), out("a.exr")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("settings.lua:5:"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("'x'"), std::string::npos) << result.output;
+    EXPECT_EQ(result.output.find("--integrator"), std::string::npos) << result.output;
+
+    // An integrator's own setting, read by its own create(), from the scene or a flag.
+    for (const char* integrator : {"", "--integrator whitted"}) {
+        result = run_glint(
+            fmt::format("render {} {} -o {} --quiet",
+                        settings_scene(m_dir, "integrator = 'whitted', shadow_samples = 0"),
+                        integrator, out("a.exr")));
+        EXPECT_EQ(result.exit_code, 1) << result.output;
+        EXPECT_NE(result.output.find("settings.lua:5: render: 'shadow_samples' must be in [1, 64]"),
+                  std::string::npos)
+            << result.output;
+    }
+    result = run_glint(fmt::format("render {} --integrator sppm --adaptive bogus -o {} --quiet",
+                                   settings_scene(m_dir, "photon_radius = -1"), out("a.exr")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("settings.lua:5: render: 'photon_radius'"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(files_in_dir(), 1u);  // the scene only
+}
+
+// Keys of glint.render{...} that only another integrator reads get one warning line; a key
+// no integrator reads stays an error.
+TEST_F(CliTest, ForeignRenderSettingsWarnOnce) {
+    const std::string scene = settings_scene(m_dir, "caustics = false, penumbra_shortcut = true");
+    auto result =
+        run_glint(fmt::format("render {} --integrator path -o {} --quiet", scene, out("a.exr")));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(count_of(result.output, "warning:"), 1u) << result.output;
+    EXPECT_NE(result.output.find("settings.lua:5: render: 'caustics', 'penumbra_shortcut' are "
+                                 "not used by integrator 'path'"),
+              std::string::npos)
+        << result.output;
+
+    result =
+        run_glint(fmt::format("render {} --integrator whitted -o {} --quiet", scene, out("a.exr")));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(count_of(result.output, "warning"), 0u) << result.output;
+
+    result = run_glint(fmt::format("render {} --integrator path --photons 10 -o {} --quiet",
+                                   settings_scene(m_dir, "seed = 2"), out("a.exr")));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(count_of(result.output, "warning:"), 1u) << result.output;
+    EXPECT_NE(result.output.find("'caustic_photons' (--photons), 'photons' (--photons)"),
+              std::string::npos)
+        << result.output;
+
+    result =
+        run_glint(fmt::format("render {} --integrator path -o {} --quiet",
+                              settings_scene(m_dir, "penumbra_shortcuts = true"), out("a.exr")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("settings.lua:5: render: unknown parameter 'penumbra_shortcuts'"),
+              std::string::npos)
+        << result.output;
+}
+
 TEST_F(CliTest, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run_glint("").exit_code, 2);
     EXPECT_EQ(run_glint("render").exit_code, 2);

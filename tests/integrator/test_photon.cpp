@@ -59,7 +59,7 @@ TEST(PhotonMapping, StoredFluxFollowsTheGeometricSeries) {
             glint.box{{ min = {{-1, -1, -1}}, max = {{1, 1, 1}}, material = glint.diffuse{{ reflectance = {} }} }}
         )",
                                          rho));
-        PhotonIntegrator integrator(b.settings);
+        PhotonIntegrator integrator(b.settings, PhotonSettings::read(b.settings.params));
         integrator.build_maps(*b.scene);
         const double emitted = 4.0 * M_PI * 2.0;
         EXPECT_NEAR(total_power(integrator.global_map()), emitted / (1.0 - rho),
@@ -240,7 +240,7 @@ TEST(PhotonMapping, GlassSphereCausticMatchesRayTracedProfile) {
         glint.quad{ vertices = { {-1.6, -1.5, 1.6}, {1.6, -1.5, 1.6}, {1.6, -1.5, -1.6}, {-1.6, -1.5, -1.6} },
                     material = glint.diffuse{ reflectance = 0.5 } }
     )");
-    PhotonIntegrator integrator(b.settings);
+    PhotonIntegrator integrator(b.settings, PhotonSettings::read(b.settings.params));
     integrator.build_maps(*b.scene);
     const PhotonMap& caustics = integrator.caustic_map();
     ASSERT_GT(caustics.size(), 10000u);
@@ -287,7 +287,7 @@ TEST(PhotonMapping, AreaLightProjectionMapKeepsTheCausticsPower) {
                         material = glint.diffuse{{ reflectance = 0.5 }} }}
         )",
                                          projection_maps ? "true" : "false"));
-        PhotonIntegrator integrator(b.settings);
+        PhotonIntegrator integrator(b.settings, PhotonSettings::read(b.settings.params));
         integrator.build_maps(*b.scene);
         const PhotonMap& map = integrator.caustic_map();
         double total = 0.0, centre = 0.0;

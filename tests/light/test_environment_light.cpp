@@ -289,7 +289,7 @@ TEST(EnvironmentLight, PhotonsCarryThePowerASphereIntercepts) {
     const RenderSettings settings = parse_render_settings(&*desc.render);
     const auto scene = build_scene(desc, settings);
     ASSERT_NE(scene->environment(), nullptr);
-    PhotonIntegrator integrator(settings);
+    PhotonIntegrator integrator(settings, PhotonSettings::read(settings.params));
     integrator.build_maps(*scene);
     double stored[3] = {0.0, 0.0, 0.0};
     for (size_t i = 0; i < integrator.global_map().size(); ++i) {

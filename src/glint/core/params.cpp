@@ -61,16 +61,25 @@ void Params::fail(const std::string& message) const {
     throw Error(fmt::format("{}: {}: {}", m_where, m_type, message));
 }
 
+void Params::fail_at(const std::string& name, const std::string& message) const {
+    throw Error(fmt::format("{}: {}: {}", where_of(name), m_type, message));
+}
+
+const std::string& Params::where_of(const std::string& name) const {
+    auto it = m_key_where.find(name);
+    return it == m_key_where.end() ? m_where : it->second;
+}
+
 void Params::wrong_type(const std::string& name, const char* expected) const {
-    fail(fmt::format("parameter '{}' must be {}, got {}", name, expected,
-                     param_type_name(*lookup(name))));
+    fail_at(name, fmt::format("parameter '{}' must be {}, got {}", name, expected,
+                              param_type_name(*lookup(name))));
 }
 
 float Params::get_float(const std::string& name, float fallback) const {
     const ParamValue* v = lookup(name);
     if (!v) return fallback;
     if (auto d = std::get_if<double>(v)) {
-        if (!std::isfinite(*d)) fail(fmt::format("parameter '{}' must be finite", name));
+        if (!std::isfinite(*d)) fail_at(name, fmt::format("parameter '{}' must be finite", name));
         return static_cast<float>(*d);
     }
     wrong_type(name, "a number");
@@ -112,13 +121,13 @@ Spectrum Params::get_spectrum(const std::string& name, const Spectrum& fallback)
     const ParamValue* v = lookup(name);
     if (!v) return fallback;
     if (auto d = std::get_if<double>(v)) {
-        if (!std::isfinite(*d)) fail(fmt::format("parameter '{}' must be finite", name));
+        if (!std::isfinite(*d)) fail_at(name, fmt::format("parameter '{}' must be finite", name));
         return Spectrum(static_cast<float>(*d));
     }
     auto list = std::get_if<std::vector<double>>(v);
     if (!list || list->size() != 3) wrong_type(name, "a number or a list of 3 numbers");
     Spectrum s((*list)[0], (*list)[1], (*list)[2]);
-    if (!s.is_finite()) fail(fmt::format("parameter '{}' must be finite", name));
+    if (!s.is_finite()) fail_at(name, fmt::format("parameter '{}' must be finite", name));
     return s;
 }
 
@@ -133,7 +142,7 @@ Vec3 Params::get_vec3(const std::string& name, const Vec3& fallback) const {
     auto list = std::get_if<std::vector<double>>(v);
     if (!list || list->size() != 3) wrong_type(name, "a list of 3 numbers");
     const Vec3 result((*list)[0], (*list)[1], (*list)[2]);
-    if (!is_finite(result)) fail(fmt::format("parameter '{}' must be finite", name));
+    if (!is_finite(result)) fail_at(name, fmt::format("parameter '{}' must be finite", name));
     return result;
 }
 
@@ -211,6 +220,14 @@ ObjectRef Params::get_ref(const std::string& name, const std::string& kind) cons
     auto ref = std::get_if<ObjectRef>(v);
     if (!ref || ref->kind != kind) wrong_type(name, fmt::format("a {}", kind).c_str());
     return *ref;
+}
+
+std::vector<std::string> Params::unused() const {
+    std::vector<std::string> names;
+    for (const auto& [name, value] : m_values) {
+        if (!m_asked.count(name)) names.push_back(name);
+    }
+    return names;
 }
 
 void Params::check_all_used() const {

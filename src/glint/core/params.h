@@ -30,6 +30,12 @@ public:
         : m_type(std::move(type)), m_where(std::move(where)) {}
 
     void set(const std::string& name, ParamValue value) { m_values[name] = std::move(value); }
+    // Sets `name` from somewhere other than the table itself (e.g. a command-line flag):
+    // errors about this value name `where` instead of the table's location.
+    void set(const std::string& name, ParamValue value, std::string where) {
+        m_values[name] = std::move(value);
+        m_key_where[name] = std::move(where);
+    }
     bool has(const std::string& name) const;
     // Whether `name` was given as a handle of this kind (e.g. a "texture").
     bool is_ref(const std::string& name, const std::string& kind) const;
@@ -58,10 +64,18 @@ public:
 
     // Throws when a parameter was given that no get_* asked for.
     void check_all_used() const;
+    // The names given that no get_* (or has) asked for, in name order.
+    std::vector<std::string> unused() const;
+    // Every name asked for so far, given or not.
+    const std::set<std::string>& asked() const { return m_asked; }
     [[noreturn]] void fail(const std::string& message) const;
+    // Fails with the location the value of `name` came from (see set() with `where`).
+    [[noreturn]] void fail_at(const std::string& name, const std::string& message) const;
 
     const std::string& type() const { return m_type; }
     const std::string& where() const { return m_where; }
+    // Where the value of `name` came from: its own location if set with one, else the table's.
+    const std::string& where_of(const std::string& name) const;
 
 private:
     const ParamValue* lookup(const std::string& name) const;
@@ -70,6 +84,7 @@ private:
     std::string m_type;
     std::string m_where;
     std::map<std::string, ParamValue> m_values;
+    std::map<std::string, std::string> m_key_where;  // values set from elsewhere (flags)
     mutable std::set<std::string> m_asked;
 };
 

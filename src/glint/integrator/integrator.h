@@ -125,8 +125,19 @@ inline void TileIntegrator::record_sample(Film& film, Vec2i pixel, const Spectru
 // The film's image with the integrator's extra channels (sample counts, edge mask) added.
 Image final_image(const Film& film, const RenderStats& stats);
 
-// Builds the integrator named in settings.integrator; throws glint::Error listing the
-// known names otherwise.
-std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings);
+/// Makes an integrator from the common settings and the glint.render{...} table `params`
+/// (a copy of settings.params), from which it reads and validates its own keys, each read
+/// unconditionally: the registry learns which keys an integrator uses by creating it from
+/// an empty table. Errors name the key's location (params.where_of(key)).
+using IntegratorCreate = std::unique_ptr<Integrator> (*)(const RenderSettings& settings,
+                                                         const Params& params);
+
+/// Builds the integrator named in settings.integrator (registry.cpp maps names to create
+/// functions); throws glint::Error naming where the name came from and listing the known
+/// names otherwise, or naming a key of glint.render{...} that no integrator reads. Keys
+/// that only other integrators read are not an error (a scene may keep settings for
+/// several): when `warnings` is not null, one line naming them is appended to it.
+std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
+                                            std::vector<std::string>* warnings = nullptr);
 
 }  // namespace glint

@@ -39,6 +39,10 @@ struct LightTracer::Chunk {
 
 LightTracer::LightTracer(const RenderSettings& settings) : m_settings(settings) {}
 
+std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, const Params&) {
+    return std::make_unique<LightTracer>(settings);
+}
+
 RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();

@@ -22,6 +22,8 @@ namespace glint {
 class LightTracer final : public Integrator {
 public:
     explicit LightTracer(const RenderSettings& settings);
+    // Reads no settings of its own: spp, seed and max_depth are the common ones.
+    static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
 
 private:

@@ -35,11 +35,34 @@ PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted) {
 
 }  // namespace
 
-PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, uint64_t& rays) {
+CausticSettings CausticSettings::read(const Params& p) {
+    CausticSettings s;
+    s.caustic_photons = p.get_int("caustic_photons", s.caustic_photons);
+    s.photon_neighbours = p.get_int("photon_neighbours", s.photon_neighbours);
+    s.projection_maps = p.get_bool("projection_maps", s.projection_maps);
+    if (s.caustic_photons < 0)
+        p.fail_at("caustic_photons", "'caustic_photons' must not be negative");
+    if (s.photon_neighbours < 1)
+        p.fail_at("photon_neighbours", "'photon_neighbours' must be at least 1");
+    return s;
+}
+
+PhotonSettings PhotonSettings::read(const Params& p) {
+    PhotonSettings s;
+    s.photons = p.get_int("photons", s.photons);
+    s.gather_rays = p.get_int("gather_rays", s.gather_rays);
+    s.caustic = CausticSettings::read(p);
+    if (s.photons < 1) p.fail_at("photons", "'photons' must be at least 1");
+    if (s.gather_rays < 0) p.fail_at("gather_rays", "'gather_rays' must not be negative");
+    return s;
+}
+
+PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
+                            const CausticSettings& caustic, uint64_t& rays) {
     const int max_bounces = settings.max_depth >= 0 ? settings.max_depth : 32;
     // Caustic photons from point, spot and area lights go only where specular objects are.
     std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
-    if (settings.projection_maps) {
+    if (caustic.projection_maps) {
         for (size_t i = 0; i < scene.lights().size(); ++i) {
             if (ProjectionMap::supports(*scene.lights()[i]))
                 projections[i].emplace(scene, *scene.lights()[i]);
@@ -50,7 +73,7 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, 
         return projection ? projection->sample(light, u1, u2, u3) : light.sample_le(u1, u2, u3);
     };
     const PhotonTracer tracer(scene, max_bounces, emitter);
-    const uint64_t count = static_cast<uint64_t>(settings.caustic_photons);
+    const uint64_t count = static_cast<uint64_t>(caustic.caustic_photons);
     return gather_map(tracer.trace(0, count, settings.seed + 1, rays,
                                    [] {
                                        return PhotonSink{true, {}};
@@ -64,7 +87,13 @@ float photon_search_radius2(const Scene& scene) {
     return sqr(scene_size / 20.0f);
 }
 
-PhotonIntegrator::PhotonIntegrator(const RenderSettings& settings) : TileIntegrator(settings) {}
+std::unique_ptr<Integrator> PhotonIntegrator::create(const RenderSettings& settings,
+                                                     const Params& params) {
+    return std::make_unique<PhotonIntegrator>(settings, PhotonSettings::read(params));
+}
+
+PhotonIntegrator::PhotonIntegrator(const RenderSettings& settings, const PhotonSettings& photon)
+    : TileIntegrator(settings), m_photon(photon) {}
 
 uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
     m_max_distance2 = photon_search_radius2(scene);
@@ -72,17 +101,17 @@ uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
     uint64_t rays = 0;
 
     const PhotonTracer global_tracer(scene, max_bounces);
-    const uint64_t global_count = static_cast<uint64_t>(m_settings.photons);
+    const uint64_t global_count = static_cast<uint64_t>(m_photon.photons);
     m_global = gather_map(
         global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
         global_count);
 
     const auto start = std::chrono::steady_clock::now();
-    m_caustic = build_caustic_map(scene, m_settings, rays);
+    m_caustic = build_caustic_map(scene, m_settings, m_photon.caustic, rays);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     m_caustic_rate =
-        seconds > 0.0 ? static_cast<double>(m_settings.caustic_photons) / seconds : 0.0;
+        seconds > 0.0 ? static_cast<double>(m_photon.caustic.caustic_photons) / seconds : 0.0;
     return rays;
 }
 
@@ -123,13 +152,13 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
 
 Spectrum PhotonIntegrator::estimate(const PhotonMap& map, const SurfaceInteraction& si,
                                     const Bsdf& bsdf) const {
-    return radiance_estimate(map, si, bsdf, m_settings.photon_neighbours, m_max_distance2);
+    return radiance_estimate(map, si, bsdf, m_photon.caustic.photon_neighbours, m_max_distance2);
 }
 
 Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInteraction& si,
                                         const Bsdf& bsdf, Sampler& sampler, Arena& arena,
                                         RayCounter& counter) const {
-    const int n = m_settings.gather_rays;
+    const int n = m_photon.gather_rays;
     if (n == 0) return Spectrum(0.0f);
     const Vec3 wo = si.to_local(si.wo);
     Spectrum sum(0.0f);

@@ -11,15 +11,37 @@
 
 namespace glint {
 
+/// The caustic map's settings, shared by "photon" and "whitted" (with caustics = true).
+struct CausticSettings {
+    int caustic_photons = 100000;  ///< photons emitted for the caustic map (>= 0)
+    int photon_neighbours = 50;    ///< photons per radiance estimate (>= 1)
+    bool projection_maps = true;   ///< aim caustic photons at specular objects
+
+    /// Reads and validates the keys above; errors name the key's location.
+    static CausticSettings read(const Params& params);
+};
+
+/// The settings of "photon", from glint.render{...}.
+struct PhotonSettings {
+    int photons = 100000;  ///< photons emitted for the global map (>= 1)
+    int gather_rays = 16;  ///< final-gathering rays per visible point (>= 0)
+    CausticSettings caustic;
+
+    /// Reads and validates the keys above; errors name the key's location.
+    static PhotonSettings read(const Params& params);
+};
+
 // The caustic map alone (light - specular+ - diffuse photons), for any integrator that wants
 // photon-mapped caustics; `rays` counts the rays traced.
-PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings, uint64_t& rays);
+PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
+                            const CausticSettings& caustic, uint64_t& rays);
 // The largest search radius (squared) for radiance estimates in `scene`.
 float photon_search_radius2(const Scene& scene);
 
 class PhotonIntegrator final : public TileIntegrator {
 public:
-    explicit PhotonIntegrator(const RenderSettings& settings);
+    PhotonIntegrator(const RenderSettings& settings, const PhotonSettings& photon);
+    static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
@@ -35,6 +57,7 @@ private:
     Spectrum final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                           Sampler& sampler, Arena& arena, RayCounter& counter) const;
 
+    PhotonSettings m_photon;
     PhotonMap m_caustic;
     PhotonMap m_global;
     float m_max_distance2 = kInfinity;

@@ -6,57 +6,80 @@
 #include <glint/integrator/whitted.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <map>
+#include <set>
 
 namespace glint {
 namespace {
 
-using IntegratorFactory = std::unique_ptr<Integrator> (*)(const RenderSettings&);
-
 template <DirectLighting Strategy>
-std::unique_ptr<Integrator> make_path(const RenderSettings& settings) {
+std::unique_ptr<Integrator> create_path(const RenderSettings& settings, const Params&) {
     return std::make_unique<PathIntegrator>(settings, Strategy);
 }
 
-std::unique_ptr<Integrator> make_light(const RenderSettings& settings) {
-    return std::make_unique<LightTracer>(settings);
-}
-
-std::unique_ptr<Integrator> make_photon(const RenderSettings& settings) {
-    return std::make_unique<PhotonIntegrator>(settings);
-}
-
-std::unique_ptr<Integrator> make_sppm(const RenderSettings& settings) {
-    return std::make_unique<SppmIntegrator>(settings);
-}
-
-std::unique_ptr<Integrator> make_whitted(const RenderSettings& settings) {
-    return std::make_unique<WhittedIntegrator>(settings);
-}
-
-const std::map<std::string, IntegratorFactory>& factories() {
-    static const std::map<std::string, IntegratorFactory> table = {
-        {"light", make_light},
-        {"path", make_path<DirectLighting::kMis>},
-        {"path_light", make_path<DirectLighting::kLightOnly>},
-        {"path_bsdf", make_path<DirectLighting::kBsdfOnly>},
-        {"photon", make_photon},
-        {"sppm", make_sppm},
-        {"whitted", make_whitted},
+// Name -> create(). An integrator with settings of its own reads them in its create();
+// adding one is one row here.
+const std::map<std::string, IntegratorCreate>& factories() {
+    static const std::map<std::string, IntegratorCreate> table = {
+        {"light", LightTracer::create},
+        {"path", create_path<DirectLighting::kMis>},
+        {"path_light", create_path<DirectLighting::kLightOnly>},
+        {"path_bsdf", create_path<DirectLighting::kBsdfOnly>},
+        {"photon", PhotonIntegrator::create},
+        {"sppm", SppmIntegrator::create},
+        {"whitted", WhittedIntegrator::create},
     };
     return table;
 }
 
 }  // namespace
 
-std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings) {
+std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
+                                            std::vector<std::string>* warnings) {
     auto it = factories().find(settings.integrator);
-    if (it != factories().end()) return it->second(settings);
-    std::string known;
-    for (const auto& [name, factory] : factories()) known += (known.empty() ? "" : ", ") + name;
-    throw Error(fmt::format("{}: unknown integrator '{}' (known: {})", settings.where,
-                            settings.integrator, known));
+    if (it == factories().end()) {
+        std::string known;
+        for (const auto& [name, create] : factories()) known += (known.empty() ? "" : ", ") + name;
+        throw Error(fmt::format("{}: unknown integrator '{}' (known: {})",
+                                settings.where_of("integrator"), settings.integrator, known));
+    }
+    // A copy, so that it records only what this integrator reads.
+    Params params = settings.params;
+    std::unique_ptr<Integrator> integrator = it->second(settings, params);
+    const std::vector<std::string> unread = params.unused();
+    if (unread.empty()) return integrator;
+
+    // Which keys the other integrators read: each reads all of its keys unconditionally, so
+    // creating it from an empty table asks for every one of them.
+    std::set<std::string> foreign_keys;
+    for (const auto& [name, create] : factories()) {
+        if (name == settings.integrator) continue;
+        const Params empty(params.type(), params.where());
+        create(settings, empty);
+        foreign_keys.insert(empty.asked().begin(), empty.asked().end());
+    }
+    std::vector<std::string> foreign;
+    for (const std::string& key : unread) {
+        if (foreign_keys.count(key)) {
+            foreign.push_back(key);
+            params.has(key);  // known: not an error below
+        }
+    }
+    params.check_all_used();  // a key no integrator reads is a mistake
+    if (warnings) {
+        std::vector<std::string> named;  // a key set by a flag says which
+        for (const std::string& key : foreign) {
+            const std::string& where = params.where_of(key);
+            named.push_back(where == params.where() ? fmt::format("'{}'", key)
+                                                    : fmt::format("'{}' ({})", key, where));
+        }
+        warnings->push_back(fmt::format("{}: {}: {} {} not used by integrator '{}' (ignored)",
+                                        params.where(), params.type(), fmt::join(named, ", "),
+                                        named.size() == 1 ? "is" : "are", settings.integrator));
+    }
+    return integrator;
 }
 
 Image final_image(const Film& film, const RenderStats& stats) {

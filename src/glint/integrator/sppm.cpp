@@ -1,3 +1,4 @@
+#include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
 #include <glint/film/image_io.h>
@@ -118,17 +119,42 @@ void write_intermediate(const std::vector<PixelState>& pixels, int width, int he
 
 }  // namespace
 
+SppmSettings SppmSettings::read(const Params& p) {
+    SppmSettings s;
+    s.photons = p.get_int("photons", s.photons);
+    s.photon_radius = p.get_float("photon_radius", s.photon_radius);
+    s.intermediate = p.get_int("intermediate", s.intermediate);
+    if (s.photons < 1) p.fail_at("photons", "'photons' must be at least 1");
+    if (s.photon_radius < 0.0f) p.fail_at("photon_radius", "'photon_radius' must not be negative");
+    if (s.intermediate < 0)
+        p.fail_at("intermediate",
+                  "'intermediate' must not be negative (0 writes no intermediate images)");
+    return s;
+}
+
+std::unique_ptr<Integrator> SppmIntegrator::create(const RenderSettings& settings,
+                                                   const Params& params) {
+    // sppm has no tile loop to check the sampler's name: check it here, before any scene
+    // is built, and say where it came from.
+    try {
+        make_sampler(settings.sampler, settings.spp, settings.seed);
+    } catch (const Error& e) {
+        throw Error(fmt::format("{}: {}", settings.where_of("sampler"), e.what()));
+    }
+    return std::make_unique<SppmIntegrator>(settings, SppmSettings::read(params));
+}
+
 RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     const int w = film.width(), h = film.height();
     const size_t pixel_count = static_cast<size_t>(w) * h;
     const int passes = m_settings.spp;
-    const uint64_t photons_per_pass = static_cast<uint64_t>(m_settings.photons);
+    const uint64_t photons_per_pass = static_cast<uint64_t>(m_sppm.photons);
     const SceneStats& stats_in = scene.stats();
     const float scene_size =
         stats_in.bounds.is_empty() ? 1.0f : glm::length(stats_in.bounds.extent());
     const float initial_radius =
-        m_settings.photon_radius > 0.0f ? m_settings.photon_radius : scene_size / 256.0f;
+        m_sppm.photon_radius > 0.0f ? m_sppm.photon_radius : scene_size / 256.0f;
 
     std::vector<PixelState> pixels(pixel_count);
     for (PixelState& p : pixels) p.radius = initial_radius;
@@ -209,7 +235,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
         }
         progress.advance(pixel_count);
         const int done = pass + 1;
-        if (m_settings.intermediate > 0 && done % m_settings.intermediate == 0 && done < passes) {
+        if (m_sppm.intermediate > 0 && done % m_sppm.intermediate == 0 && done < passes) {
             write_intermediate(pixels, w, h, done, photons_per_pass, m_settings);
             ++stats_intermediate;
         }
@@ -217,7 +243,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
     if (stats_intermediate > 0) {
         stats.notes.push_back(
             fmt::format("sppm: wrote the image after every {} passes ({} intermediate images)",
-                        m_settings.intermediate, stats_intermediate));
+                        m_sppm.intermediate, stats_intermediate));
     }
 
     for (int y = 0; y < h; ++y) {

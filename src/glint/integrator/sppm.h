@@ -8,13 +8,26 @@
 
 namespace glint {
 
+/// The settings of "sppm", from glint.render{...}. `spp` is the number of passes.
+struct SppmSettings {
+    int photons = 100000;        ///< photons per pass (>= 1)
+    float photon_radius = 0.0f;  ///< initial search radius; 0 = 1/256 of the scene's size
+    int intermediate = 0;        ///< also write the image every N passes (0 = never)
+
+    /// Reads and validates the keys above; errors name the key's location.
+    static SppmSettings read(const Params& params);
+};
+
 class SppmIntegrator final : public Integrator {
 public:
-    explicit SppmIntegrator(const RenderSettings& settings) : m_settings(settings) {}
+    SppmIntegrator(const RenderSettings& settings, const SppmSettings& sppm)
+        : m_settings(settings), m_sppm(sppm) {}
+    static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
 
 private:
     RenderSettings m_settings;
+    SppmSettings m_sppm;
 };
 
 }  // namespace glint

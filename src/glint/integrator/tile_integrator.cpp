@@ -60,18 +60,23 @@ std::vector<uint8_t> sobel_edge_mask(const Image& image, float threshold, int ra
 }  // namespace
 
 TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(settings) {
-    // Check the names now, before any scene is built, and say where they came from.
-    try {
-        m_filter = make_filter(settings.filter, settings.filter_radius);
-        make_sampler(settings.sampler, settings.spp, settings.seed);
+    // Check the names now, before any scene is built, and say where each came from.
+    auto blame = [&](const char* key, auto&& check) {
+        try {
+            check();
+        } catch (const Error& e) {
+            throw Error(fmt::format("{}: {}", settings.where_of(key), e.what()));
+        }
+    };
+    blame("filter", [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
+    blame("sampler", [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
+    blame("adaptive", [&] {
         if (settings.adaptive != "none" && settings.adaptive != "sobel" &&
             settings.adaptive != "variance") {
             throw Error(fmt::format("unknown adaptive mode '{}' (expected: none, sobel, variance)",
                                     settings.adaptive));
         }
-    } catch (const Error& e) {
-        throw Error(fmt::format("{}: {}", settings.where, e.what()));
-    }
+    });
 }
 
 RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& progress) {

@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <vector>
 
@@ -58,19 +59,39 @@ std::array<int, 4> extreme_samples(const std::vector<ShadowSample>& samples, con
 
 }  // namespace
 
-WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings)
+WhittedSettings WhittedSettings::read(const Params& p) {
+    WhittedSettings s;
+    s.ambient = p.get_spectrum("ambient", s.ambient);
+    s.shadow_samples = p.get_int("shadow_samples", s.shadow_samples);
+    s.penumbra_shortcut = p.get_bool("penumbra_shortcut", s.penumbra_shortcut);
+    s.caustics = p.get_bool("caustics", s.caustics);
+    s.caustic = CausticSettings::read(p);
+    if (std::min({s.ambient.r, s.ambient.g, s.ambient.b}) < 0.0f)
+        p.fail_at("ambient", "'ambient' must not be negative");
+    if (s.shadow_samples < 1 || s.shadow_samples > 64)
+        p.fail_at("shadow_samples", "'shadow_samples' must be in [1, 64]");
+    return s;
+}
+
+std::unique_ptr<Integrator> WhittedIntegrator::create(const RenderSettings& settings,
+                                                      const Params& params) {
+    return std::make_unique<WhittedIntegrator>(settings, WhittedSettings::read(params));
+}
+
+WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings, const WhittedSettings& whitted)
     : TileIntegrator(settings),
+      m_whitted(whitted),
       m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
 
 RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     uint64_t photon_rays = 0;
-    if (m_settings.caustics) {
-        m_caustics = build_caustic_map(scene, m_settings, photon_rays);
+    if (m_whitted.caustics) {
+        m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, photon_rays);
         m_caustic_radius2 = photon_search_radius2(scene);
     }
     RenderStats stats = TileIntegrator::render(scene, film, progress);
     stats.rays += photon_rays;
-    if (m_settings.caustics)
+    if (m_whitted.caustics)
         stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));
     return stats;
 }
@@ -101,9 +122,9 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
         const Vec3 wo_local = si.to_local(si.wo);
         if (!bsdf->is_delta()) {
             L += direct(scene, si, *bsdf, sampler, counter);
-            L += m_settings.ambient * si.material->albedo(si);
+            L += m_whitted.ambient * si.material->albedo(si);
             if (m_caustics.size() > 0) {
-                L += radiance_estimate(m_caustics, si, *bsdf, m_settings.photon_neighbours,
+                L += radiance_estimate(m_caustics, si, *bsdf, m_whitted.caustic.photon_neighbours,
                                        m_caustic_radius2);
             }
         } else {
@@ -146,7 +167,7 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
                                               const SurfaceInteraction& si, const Bsdf& bsdf,
                                               const Vec3& wo_local, const Vec2& rotation,
                                               RayCounter& counter) const {
-    const int n = m_settings.shadow_samples;
+    const int n = m_whitted.shadow_samples;
     const int count = n * n;
     thread_local std::vector<ShadowSample> samples;
     samples.assign(count, ShadowSample{});
@@ -169,7 +190,7 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
     };
 
     bool assume_all_visible = false;
-    if (m_settings.penumbra_shortcut && n > 1 && !light.is_infinite()) {
+    if (m_whitted.penumbra_shortcut && n > 1 && !light.is_infinite()) {
         // Test the four samples at the extremes of the light as seen from the point: for a
         // convex light and occluder, all four blocked means the whole light is hidden and
         // all four clear means no edge crosses it. (An environment surrounds the point:

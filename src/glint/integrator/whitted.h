@@ -5,13 +5,27 @@
 // refraction, weighted by Fresnel, with total internal reflection and Beer absorption. No indirect
 // diffuse light.
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/photon.h>
 #include <glint/integrator/photon_map.h>
 
 namespace glint {
 
+/// The settings of "whitted", from glint.render{...}.
+struct WhittedSettings {
+    Spectrum ambient{0.0f};          ///< ambient light, times the surface albedo (>= 0)
+    int shadow_samples = 4;          ///< N in [1, 64]: area lights get N x N stratified shadow rays
+    bool penumbra_shortcut = false;  ///< test 4 rays first; full set only in the penumbra
+    bool caustics = false;           ///< add photon-mapped caustics (see CausticSettings)
+    CausticSettings caustic;         ///< caustic_photons, photon_neighbours, projection_maps
+
+    /// Reads and validates the keys above; errors name the key's location.
+    static WhittedSettings read(const Params& params);
+};
+
 class WhittedIntegrator final : public TileIntegrator {
 public:
-    explicit WhittedIntegrator(const RenderSettings& settings);
+    WhittedIntegrator(const RenderSettings& settings, const WhittedSettings& whitted);
+    static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     // With `caustics = true`, builds a caustic photon map first and adds its estimate at
     // every diffuse hit: the caustics a classic ray tracer cannot find on its own.
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
@@ -31,6 +45,7 @@ private:
     Spectrum direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                     Sampler& sampler, RayCounter& counter) const;
 
+    WhittedSettings m_whitted;
     int m_max_depth;
     PhotonMap m_caustics;
     float m_caustic_radius2 = 0.0f;
