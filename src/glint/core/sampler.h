@@ -43,6 +43,10 @@ std::unique_ptr<Sampler> make_sampler(const std::string& name, int samples_per_p
                                       uint64_t seed);
 
 namespace detail {
+// The key of sample `index` of `pixel` under `seed`, from which samplers derive their
+// values: the same (seed, pixel, index) always gives the same key.
+uint64_t pixel_sample_key(uint64_t seed, Vec2i pixel, int index);
+
 // For tests: the Sobol sampler computes a group's four values with SIMD code chosen by
 // what the CPU supports; each path's values for one (shuffled index, group key), which
 // must agree bit for bit. `fastest` is the path the sampler uses on this CPU.

@@ -19,7 +19,7 @@ template <typename T>
 using PerLane = std::array<T, kPacketWidth>;
 // Calls f(lane) for each lane set in `lanes`, in increasing order.
 template <typename Function>
-void for_each_lane(uint32_t lanes, Function&& f) {
+[[gnu::always_inline]] inline void for_each_lane(uint32_t lanes, Function&& f) {
     for (; lanes != 0; lanes &= lanes - 1) f(std::countr_zero(lanes));
 }
 

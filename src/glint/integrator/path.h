@@ -58,10 +58,14 @@ private:
         AovSample* aov = nullptr;
     };
 
-    // The steps of one bounce, shared by li() and the packet loop.
+    // The steps of one bounce, shared by li() and the packet loop. Those that draw samples
+    // take the type of the path's sampler: Sampler, or the final SobolSampler, whose draws
+    // the packet loop then makes as direct, inlined calls (path.sampler must be one).
     void escape(const Scene& scene, PathState& path, int depth) const;
     bool scatter_at_hit(const Scene& scene, PathState& path, int depth, Arena& arena) const;
+    template <typename SamplerType>
     std::optional<Vec3> sample_light(const Scene& scene, PathState& path) const;
+    template <typename SamplerType>
     bool continue_path(PathState& path, int depth) const;
 
     // The packet form (end of path.cpp): a pixel's samples advance together, one bounce at
@@ -73,6 +77,9 @@ private:
                               int first, int count) const override;
     void trace_packet(const Scene& scene, PerLane<PathState>& paths, int count, Arena& arena,
                       RayCounter& counter) const;
+    template <typename SamplerType>
+    void trace_packet_with(const Scene& scene, PerLane<PathState>& paths, int count, Arena& arena,
+                           RayCounter& counter) const;
 
     DirectLighting m_strategy;
 

@@ -93,10 +93,13 @@ struct DirectLight {
 /// light, a 1D value choosing a part of it (triangle or side) -- three values that a Sobol
 /// sampler serves from one group. They are drawn even when the estimate turns out empty, so
 /// later draws do not depend on it. nullopt when the sample contributes nothing; the caller
-/// traces the shadow ray (the path tracer traces several paths' together).
+/// traces the shadow ray (the path tracer traces several paths' together). `SamplerType` is
+/// Sampler, or a final sampler class where the caller knows which one it has (its draws are
+/// then direct calls, inlined).
+template <typename SamplerType = Sampler>
 [[gnu::always_inline]] inline std::optional<DirectLight> sample_direct_light(
     const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
-    Sampler& sampler, LightWeighting weighting) {
+    SamplerType& sampler, LightWeighting weighting) {
     // 2D first: the Sobol sampler hands out a 2D value and two 1D values per index shuffle.
     const Vec2 u = sampler.get_2d();
     const float u_light = sampler.get_1d();
@@ -126,6 +129,22 @@ struct Scattering {
     Spectrum weight;    ///< f |cos theta_i| / pdf: the factor the throughput takes
 };
 
+/// sample_scattering's work, into `out`: false when the path ends there.
+inline bool scatter_into(const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
+                         const Vec2& u, float u_lobe, TransportMode mode, Scattering& out) {
+    BsdfSample& bs = out.sample;
+    // The geometric normal matters only to importance (the shading-normal correction).
+    const bool sampled = mode == TransportMode::kRadiance
+                             ? bsdf.sample(wo_local, u, u_lobe, bs)
+                             : bsdf.sample(wo_local, u, u_lobe, bs, mode, si.to_local(si.ng));
+    if (!sampled || bs.pdf <= 0.0f || bs.f.is_black()) return false;
+    out.wi = si.to_world(bs.wi);
+    const bool geometric_transmission = glm::dot(out.wi, si.ng) * glm::dot(si.wo, si.ng) < 0.0f;
+    if (geometric_transmission != bs.is_transmission()) return false;
+    out.weight = bs.f * (abs_cos_theta(bs.wi) / bs.pdf);
+    return true;
+}
+
 /// Samples the BSDF at `si` with (u, u_lobe), carrying `mode` (radiance for camera paths,
 /// importance for light paths; see bsdf.h). nullopt when the BSDF absorbs, and when the
 /// sampled direction disagrees with the geometric surface (a shading normal can send a
@@ -135,16 +154,12 @@ inline std::optional<Scattering> sample_scattering(const SurfaceInteraction& si,
                                                    const Vec3& wo_local, const Vec2& u,
                                                    float u_lobe,
                                                    TransportMode mode = TransportMode::kRadiance) {
-    // The geometric normal matters only to importance (the shading-normal correction).
-    const std::optional<BsdfSample> bs =
-        mode == TransportMode::kRadiance
-            ? bsdf.sample(wo_local, u, u_lobe)
-            : bsdf.sample(wo_local, u, u_lobe, mode, si.to_local(si.ng));
-    if (!bs || bs->pdf <= 0.0f || bs->f.is_black()) return std::nullopt;
-    const Vec3 wi = si.to_world(bs->wi);
-    const bool geometric_transmission = glm::dot(wi, si.ng) * glm::dot(si.wo, si.ng) < 0.0f;
-    if (geometric_transmission != bs->is_transmission()) return std::nullopt;
-    return Scattering{*bs, wi, bs->f * (abs_cos_theta(bs->wi) / bs->pdf)};
+    // One named result, returned on every path, so that it is the caller's storage (NRVO)
+    // and the BSDF writes its sample straight there: copying a freshly written sample as a
+    // whole reads it back in wider pieces than it was stored, which stalls the CPU.
+    std::optional<Scattering> result;
+    if (!scatter_into(si, bsdf, wo_local, u, u_lobe, mode, result.emplace())) result.reset();
+    return result;
 }
 
 /// Turns `ray`, the ray that reached `si`, into the ray leaving it along a sampled

@@ -43,9 +43,9 @@ protected:
                (1.0f - m_specular_probability) * i.z * kInvPi;
     }
 
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
-                                              float u_lobe) const override {
-        if (wo.z == 0.0f) return std::nullopt;
+    bool sample_unscaled(const Vec3& wo, const Vec2& u, float u_lobe,
+                         BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
         const bool specular = u_lobe < m_specular_probability;
         Vec3 wi;
         if (specular) {
@@ -55,17 +55,18 @@ protected:
             const Vec3 wh(sin_h * std::cos(phi), sin_h * std::sin(phi), cos_h);
             const Vec3 o = mirror_to_upper(wo);
             // A half vector facing away from wo mirrors it below the surface.
-            if (glm::dot(o, wh) <= 0.0f) return std::nullopt;
+            if (glm::dot(o, wh) <= 0.0f) return false;
             wi = reflect(o, wh);
-            if (wi.z <= 0.0f) return std::nullopt;
+            if (wi.z <= 0.0f) return false;
         } else {
             wi = warp::square_to_cosine_hemisphere(u);
         }
         if (wo.z < 0.0f) wi.z = -wi.z;
         const float p = pdf_unscaled(wo, wi);
-        if (!(p > 0.0f)) return std::nullopt;
+        if (!(p > 0.0f)) return false;
         const uint32_t lobe = specular ? kBsdfGlossy : kBsdfDiffuse;
-        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        out = BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        return true;
     }
 
 private:

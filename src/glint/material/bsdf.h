@@ -123,14 +123,27 @@ public:
         return scale(eval_pdf_unscaled(wo, wi, pdf_out), wo, wi, mode, ng_local);
     }
 
-    /// Samples wi from wo with `u` in [0,1)^2 and `u_lobe` in [0,1) choosing the lobe; f is
-    /// in `mode` (see the contract above). nullopt when the path is absorbed.
+    /// Samples wi from wo with `u` in [0,1)^2 and `u_lobe` in [0,1) choosing the lobe, into
+    /// `out`; f is in `mode` (see the contract above). False when the path is absorbed (`out`
+    /// is then unspecified). The sample is written where the caller keeps it, field by field,
+    /// and never copied as a whole: a copy right after the BSDF's stores reads them back in
+    /// wider pieces than they were written, which stalls the CPU (bench/README.md).
+    bool sample(const Vec3& wo, const Vec2& u, float u_lobe, BsdfSample& out,
+                TransportMode mode = TransportMode::kRadiance,
+                const Vec3& ng_local = Vec3(0.0f, 0.0f, 1.0f)) const {
+        if (!sample_unscaled(wo, u, u_lobe, out)) return false;
+        if (mode == TransportMode::kImportance || out.is_transmission())
+            out.f = scale_sample(out.f, out, wo, mode, ng_local);
+        return true;
+    }
+
+    /// The same sample as an optional: nullopt when the path is absorbed.
     std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe,
                                      TransportMode mode = TransportMode::kRadiance,
                                      const Vec3& ng_local = Vec3(0.0f, 0.0f, 1.0f)) const {
-        std::optional<BsdfSample> s = sample_unscaled(wo, u, u_lobe);
-        if (s) s->f = scale_sample(s->f, *s, wo, mode, ng_local);
-        return s;
+        std::optional<BsdfSample> result;
+        if (!sample(wo, u, u_lobe, result.emplace(), mode, ng_local)) result.reset();
+        return result;
     }
 
     /// Every delta lobe at wo with its whole weight f |cos wi| (pdf 1), in `mode`; none for a
@@ -176,8 +189,9 @@ protected:
     // What each BSDF implements: the mode-independent parts, f without any 1/eta^2.
     virtual Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const = 0;
     virtual float pdf_unscaled(const Vec3& wo, const Vec3& wi) const = 0;
-    virtual std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
-                                                      float u_lobe) const = 0;
+    // Writes the sample into `out` and returns true, or returns false when absorbed.
+    virtual bool sample_unscaled(const Vec3& wo, const Vec2& u, float u_lobe,
+                                 BsdfSample& out) const = 0;
     virtual Spectrum eval_pdf_unscaled(const Vec3& wo, const Vec3& wi, float& pdf_out) const {
         pdf_out = pdf_unscaled(wo, wi);
         return eval_unscaled(wo, wi);

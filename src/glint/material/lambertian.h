@@ -25,19 +25,18 @@ protected:
         pdf_out = abs_cos_theta(wi) * kInvPi;
         return m_f;
     }
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u, float) const override {
-        std::optional<BsdfSample> result;  // one named result, built in the caller's storage
-        if (wo.z == 0.0f) return result;
+    bool sample_unscaled(const Vec3& wo, const Vec2& u, float, BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
         Vec3 wi = warp::square_to_cosine_hemisphere(u);
         if (wo.z < 0.0f) wi.z = -wi.z;
         const float p = abs_cos_theta(wi) * kInvPi;
-        if (p <= 0.0f) return result;
-        BsdfSample& s = result.emplace();
-        s.f = m_f;
-        s.wi = wi;
-        s.pdf = p;
-        s.flags = kBsdfReflection | kBsdfDiffuse;
-        return result;
+        if (p <= 0.0f) return false;
+        out.f = m_f;
+        out.wi = wi;
+        out.pdf = p;
+        out.flags = kBsdfReflection | kBsdfDiffuse;
+        out.eta = 1.0f;
+        return true;
     }
 
 private:

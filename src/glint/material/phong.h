@@ -37,9 +37,9 @@ protected:
                (1.0f - m_specular_probability) * abs_cos_theta(wi) * kInvPi;
     }
 
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
-                                              float u_lobe) const override {
-        if (wo.z == 0.0f) return std::nullopt;
+    bool sample_unscaled(const Vec3& wo, const Vec2& u, float u_lobe,
+                         BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
         Vec3 wi;
         if (u_lobe < m_specular_probability) {
             // cos(alpha) distributed as (n + 1) cos^n around the mirror direction.
@@ -49,15 +49,16 @@ protected:
             wi = Frame::from_normal(mirror(wo))
                      .to_world(
                          Vec3(sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), cos_alpha));
-            if (!same_hemisphere(wo, wi)) return std::nullopt;  // the lobe dipped below the surface
+            if (!same_hemisphere(wo, wi)) return false;  // the lobe dipped below the surface
         } else {
             wi = warp::square_to_cosine_hemisphere(u);
             if (wo.z < 0.0f) wi.z = -wi.z;
         }
         const float p = pdf_unscaled(wo, wi);
-        if (p <= 0.0f) return std::nullopt;
+        if (p <= 0.0f) return false;
         const uint32_t lobe = u_lobe < m_specular_probability ? kBsdfGlossy : kBsdfDiffuse;
-        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        out = BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        return true;
     }
 
 private:

@@ -70,25 +70,29 @@ protected:
         return base + p_coat * m_coat.visible_normal_pdf(o, wm) / (4.0f * glm::dot(o, wm));
     }
 
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
-                                              float u_lobe) const override {
-        if (wo.z == 0.0f) return std::nullopt;
+    bool sample_unscaled(const Vec3& wo, const Vec2& u, float u_lobe,
+                         BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
         const Vec3 o = mirror_to_upper(wo);
         const float p_coat = coat_probability(o);
         const bool coat = u_lobe < p_coat;
-        if (coat && m_coat.effectively_smooth()) return smooth_coat(wo, p_coat);
+        if (coat && m_coat.effectively_smooth()) {
+            out = smooth_coat(wo, p_coat);
+            return true;
+        }
         Vec3 wi;
         if (coat) {
             wi = reflect(o, m_coat.sample_visible_normal(o, u));
-            if (wi.z <= 0.0f) return std::nullopt;  // reflected into the surface
+            if (wi.z <= 0.0f) return false;  // reflected into the surface
         } else {
             wi = warp::square_to_cosine_hemisphere(u);
         }
         if (wo.z < 0.0f) wi.z = -wi.z;
         const float p = pdf_unscaled(wo, wi);
-        if (!(p > 0.0f)) return std::nullopt;
+        if (!(p > 0.0f)) return false;
         const uint32_t lobe = coat ? kBsdfGlossy : kBsdfDiffuse;
-        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        out = BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | lobe, 1.0f};
+        return true;
     }
 
     // Only the smooth coat is a delta lobe; the diffuse base is not listed.

@@ -55,17 +55,21 @@ protected:
         return m_distribution.visible_normal_pdf(o, wm) / (4.0f * glm::dot(o, wm));
     }
 
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u, float) const override {
-        if (wo.z == 0.0f) return std::nullopt;
-        if (m_distribution.effectively_smooth()) return mirror(wo);
+    bool sample_unscaled(const Vec3& wo, const Vec2& u, float, BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
+        if (m_distribution.effectively_smooth()) {
+            out = mirror(wo);
+            return true;
+        }
         const Vec3 o = mirror_to_upper(wo);
         const Vec3 wm = m_distribution.sample_visible_normal(o, u);
         Vec3 wi = reflect(o, wm);
-        if (wi.z <= 0.0f) return std::nullopt;  // reflected into the surface: masked
+        if (wi.z <= 0.0f) return false;  // reflected into the surface: masked
         if (wo.z < 0.0f) wi.z = -wi.z;
         const float p = pdf_unscaled(wo, wi);
-        if (!(p > 0.0f)) return std::nullopt;
-        return BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | kBsdfGlossy, 1.0f};
+        if (!(p > 0.0f)) return false;
+        out = BsdfSample{eval_unscaled(wo, wi), wi, p, kBsdfReflection | kBsdfGlossy, 1.0f};
+        return true;
     }
 
     DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {

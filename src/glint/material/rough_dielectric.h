@@ -60,9 +60,9 @@ protected:
         return (1.0f - fresnel) * visible * std::abs(cos_im) / sqr(cos_im + cos_om / c.eta);
     }
 
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2& u,
-                                              float u_lobe) const override {
-        if (wo.z == 0.0f) return std::nullopt;
+    bool sample_unscaled(const Vec3& wo, const Vec2& u, float u_lobe,
+                         BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
         const bool inside = wo.z < 0.0f;
         const float eta = inside ? 1.0f / m_eta : m_eta;
         const Vec3 o = mirror_to_upper(wo);
@@ -72,16 +72,16 @@ protected:
         Vec3 wi;
         if (reflection) {
             wi = reflect(o, wm);
-            if (wi.z <= 0.0f) return std::nullopt;  // reflected into the surface
+            if (wi.z <= 0.0f) return false;  // reflected into the surface
         } else {
-            if (!refract(o, wm, eta, wi) || wi.z >= 0.0f) return std::nullopt;
+            if (!refract(o, wm, eta, wi) || wi.z >= 0.0f) return false;
         }
         if (inside) wi.z = -wi.z;
         const float p = pdf_unscaled(wo, wi);
-        if (!(p > 0.0f)) return std::nullopt;
+        if (!(p > 0.0f)) return false;
         const uint32_t lobe = reflection ? kBsdfReflection : kBsdfTransmission;
-        return BsdfSample{eval_unscaled(wo, wi), wi, p, lobe | kBsdfGlossy,
-                          reflection ? 1.0f : eta};
+        out = BsdfSample{eval_unscaled(wo, wi), wi, p, lobe | kBsdfGlossy, reflection ? 1.0f : eta};
+        return true;
     }
 
 private:

@@ -18,14 +18,21 @@ protected:
     Spectrum eval_unscaled(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
     float pdf_unscaled(const Vec3&, const Vec3&) const override { return 0.0f; }
 
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2&,
-                                              float u_lobe) const override {
+    bool sample_unscaled(const Vec3& wo, const Vec2&, float u_lobe,
+                         BsdfSample& out) const override {
         const float cos_o = cos_theta(wo);
-        if (cos_o == 0.0f) return std::nullopt;
+        if (cos_o == 0.0f) return false;
         const float reflectance = fresnel_dielectric(cos_o, m_eta);
-        if (u_lobe < reflectance) return reflection(wo, reflectance, reflectance);
+        if (u_lobe < reflectance) {
+            out = reflection(wo, reflectance, reflectance);
+            return true;
+        }
         const float transmittance = 1.0f - reflectance;
-        return refraction(wo, transmittance, transmittance);  // nullopt unreachable: TIR has R = 1
+        // Never nullopt here: total internal reflection has reflectance 1.
+        const std::optional<BsdfSample> refracted = refraction(wo, transmittance, transmittance);
+        if (!refracted) return false;
+        out = *refracted;
+        return true;
     }
 
     DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {

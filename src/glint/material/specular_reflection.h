@@ -12,9 +12,10 @@ public:
 protected:
     Spectrum eval_unscaled(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
     float pdf_unscaled(const Vec3&, const Vec3&) const override { return 0.0f; }
-    std::optional<BsdfSample> sample_unscaled(const Vec3& wo, const Vec2&, float) const override {
-        if (wo.z == 0.0f) return std::nullopt;
-        return mirror(wo);
+    bool sample_unscaled(const Vec3& wo, const Vec2&, float, BsdfSample& out) const override {
+        if (wo.z == 0.0f) return false;
+        out = mirror(wo);
+        return true;
     }
     DeltaLobes delta_lobes_unscaled(const Vec3& wo) const override {
         DeltaLobes lobes;
