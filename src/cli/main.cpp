@@ -63,10 +63,12 @@ Vec2i parse_resolution(const std::string& text) {
     return Vec2i(w, h);
 }
 
-void check_output_path(const std::string& path) {
+// `where` names the flag or the scene line that gave the value.
+void check_output_path(const std::string& path, const std::string& where) {
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext != ".exr" && ext != ".png") {
-        throw Error(fmt::format("output '{}': unsupported format (use .exr or .png)", path));
+        throw Error(
+            fmt::format("{}: output '{}': unsupported format (use .exr or .png)", where, path));
     }
 }
 
@@ -120,13 +122,15 @@ uint64_t expected_samples(const RenderSettings& settings) {
 }
 
 void check_debug_views(const RenderSettings& settings) {
+    const std::string& where = settings.where_of("debug");
     for (const std::string& view : settings.debug) {
         if (view == "edges" && settings.adaptive != "sobel")
-            throw Error("--debug edges needs --adaptive sobel");
+            throw Error(fmt::format("{}: debug view 'edges' needs --adaptive sobel", where));
         if (view == "photons" && settings.integrator != "photon")
-            throw Error("--debug photons needs --integrator photon");
+            throw Error(fmt::format("{}: debug view 'photons' needs --integrator photon", where));
         if (view != "edges" && view != "photons") {
-            throw Error(fmt::format("unknown debug view '{}' (known: edges, photons)", view));
+            throw Error(
+                fmt::format("{}: unknown debug view '{}' (known: edges, photons)", where, view));
         }
     }
 }
@@ -147,7 +151,8 @@ void write_debug_images(const RenderSettings& settings, const RenderStats& stats
 int run_render(const RenderOptions& options) {
     const SceneDesc desc = load_scene_file(options.scene, loader_options(options.trusted_scene));
     const RenderSettings settings = settings_for(desc, options);
-    for (const std::string& path : settings.outputs) check_output_path(path);
+    for (const std::string& path : settings.outputs)
+        check_output_path(path, settings.where_of("output"));
     check_debug_views(settings);
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);

@@ -21,14 +21,14 @@ struct LoaderOptions {
     bool trusted = false;
     /// Bytes the script's Lua VM may hold at once; 0 = no limit.
     size_t memory_limit = size_t{1} << 30;
-    /// Lua VM instructions the script may run, counted in steps of 1000; 0 = no limit. Five
-    /// billion is about 10 to 30 seconds of a busy loop.
-    uint64_t instruction_limit = 5'000'000'000;
+    /// Lua VM instructions the script may run, counted in steps of 1000; 0 = no limit. Two
+    /// billion is some seconds of a busy loop, a hundred times what a large procedural
+    /// scene needs.
+    uint64_t instruction_limit = 2'000'000'000;
 };
 
-/// Hard limits on what a script can nest; deeper is an error naming the script line.
-inline constexpr int kMaxParamTableDepth = 64;  ///< tables inside parameter tables
-inline constexpr int kMaxCsgDepth = 1000;       ///< CSG nodes from a primitive to the root
+/// Tables inside parameter tables a script may nest; deeper is an error naming the line.
+inline constexpr int kMaxParamTableDepth = 64;
 
 // Throws glint::Error "file:line: message" on a syntax error, a runtime error, a parameter
 // of the wrong type, a call the sandbox refuses, or a script past its limits.
