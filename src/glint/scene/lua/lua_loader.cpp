@@ -102,7 +102,7 @@ double finite_number(lua_State* L, int index, const std::string& name, const std
     const double value = lua_tonumber(L, index);
     if (!std::isfinite(value) || std::abs(value) > FLT_MAX) {
         fail(L, fmt::format("{}: '{}' must be a finite number (at most {:g} in size), got {}", type,
-                            name, FLT_MAX, value));
+                            name, FLT_MAX, std::isnan(value) ? "NaN" : fmt::format("{:g}", value)));
     }
     return value;
 }
@@ -237,8 +237,8 @@ int new_shape(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
     int group = 0;
     int args = 1;
-    if (to_handle(L, 1)) {
-        group = group_index_of(L, 1);
+    if (Handle* h = to_handle(L, 1); h && h->kind == 1) {
+        group = h->index;
         args = 2;
     }
     SceneDesc& desc = desc_of(L);
@@ -272,8 +272,8 @@ int new_csg_node(lua_State* L) {
         lua_rawgeti(L, 1, i);
         Handle* h = to_handle(L, -1);
         if (!h || h->kind != kSolidHandle) {
-            fail(L, fmt::format("glint.{}: entry {} is {}, not a solid (made by glint.solid.* or "
-                                "another CSG node)",
+            fail(L, fmt::format("glint.{}: entry {} is not a solid (made by glint.solid.* or "
+                                "another CSG node), got {}",
                                 type, i, describe(L, -1)));
         }
         children.push_back(h->index);
