@@ -21,6 +21,21 @@ LuaVm::Limits& limits_of(lua_State* L) {
     return *static_cast<LuaVm::Limits*>(ud);
 }
 
+// Records the line the script is at, for a memory error (which Lua reports without a
+// place). Reading the stack allocates nothing, so the allocator may do it; the main thread
+// is what it can see (a coroutine's line is approximated by where it was resumed).
+void remember_line(LuaVm::Limits& limits) {
+    if (!limits.script) return;
+    lua_Debug ar;
+    for (int level = 0; lua_getstack(limits.script, level, &ar); ++level) {
+        if (lua_getinfo(limits.script, "Sl", &ar) && ar.currentline > 0) {
+            limits.last_line = ar.currentline;
+            std::memcpy(limits.last_source, ar.short_src, sizeof(limits.last_source));
+            return;
+        }
+    }
+}
+
 // Counts every allocation against the limit; growing past it fails, which Lua reports as a
 // memory error (and a script's pcall may catch, after which the memory is free again).
 // Shrinking and freeing never fail.
@@ -35,6 +50,7 @@ void* limited_alloc(void* ud, void* ptr, size_t old_size, size_t new_size) {
     }
     if (limits.memory_limit > 0 && new_size > old_bytes &&
         limits.memory_used - old_bytes + new_size > limits.memory_limit) {
+        remember_line(limits);
         return nullptr;
     }
     void* memory = std::realloc(ptr, new_size);
@@ -188,7 +204,13 @@ int sandbox_require(lua_State* L) {
         lua_concat(L, 2);
         return lua_error(L);
     }
-    if (luaL_loadfilex(L, lua_tostring(L, 3), "t") != LUA_OK) return lua_error(L);
+    if (luaL_loadfilex(L, lua_tostring(L, 3), "t") != LUA_OK) {
+        luaL_where(L, 1);
+        lua_pushfstring(L, "require('%s'): ", name);
+        lua_rotate(L, -3, 2);  // where, prefix, message
+        lua_concat(L, 3);
+        return lua_error(L);
+    }
     lua_pushlightuserdata(L, &g_loading_marker);
     lua_setfield(L, 2, name);
     lua_pushvalue(L, 1);
@@ -215,7 +237,9 @@ void set_forbidden_table(lua_State* L, const char* name) {
     lua_newtable(L);
     lua_pushstring(L, name);
     lua_pushcclosure(L, forbidden_field, 1);
-    lua_setfield(L, -2, "__index");
+    lua_pushvalue(L, -1);
+    lua_setfield(L, -3, "__index");
+    lua_setfield(L, -2, "__newindex");
     lua_pushboolean(L, 0);
     lua_setfield(L, -2, "__metatable");
     lua_setmetatable(L, -2);
@@ -254,8 +278,9 @@ void open_sandboxed_libraries(lua_State* L, const std::string& directory) {
     lua_pushcfunction(L, luaopen_os);
     lua_call(L, 0, 1);
     for (const char* safe : {"clock", "time", "difftime"}) {
-        lua_getfield(L, -1, safe);
-        lua_setfield(L, -3, safe);
+        lua_pushstring(L, safe);
+        lua_getfield(L, -2, safe);
+        lua_rawset(L, -4);  // past the __newindex that refuses the script
     }
     lua_pop(L, 2);
     for (const char* name : {LUA_IOLIBNAME, LUA_DBLIBNAME, LUA_LOADLIBNAME})
@@ -330,6 +355,7 @@ void LuaVm::check_load(int status, const std::string& chunk_name) {
 }
 
 void LuaVm::call_main(const std::string& chunk_name) {
+    m_limits->script = m_state;
     lua_pushcfunction(m_state, message_handler);
     lua_insert(m_state, -2);
     const int status = lua_pcall(m_state, 0, 0, -2);

@@ -43,6 +43,7 @@ public:
         uint64_t instructions = 0;  // counted in steps of kHookStep
         int last_line = -1;         // the script line the hook saw last
         char last_source[LUA_IDSIZE] = {};
+        lua_State* script = nullptr;  // the main thread, once a script runs on it
     };
 
 private:
