@@ -4,6 +4,7 @@
 #include <glint/scene/lua/lua_loader.h>
 
 #include <gtest/gtest.h>
+#include <support/render_helpers.h>
 #include <support/test_util.h>
 
 #include <chrono>
@@ -140,6 +141,30 @@ TEST(Sandbox, HandlesAndFinalisersAreSafe) {
         error("boom")
     )"),
               "scene.lua:4: boom");
+}
+
+// What a finaliser run by lua_close after a failed script gets from glint, seen through a
+// file (a trusted scene may write one).
+TEST(Sandbox, FinalisersAfterTheScriptFindGlintClosed) {
+    TempDir dir;
+    LoaderOptions trusted;
+    trusted.trusted = true;
+    const std::string code = R"(
+        local m = glint.diffuse{}
+        setmetatable({}, {__gc = function()
+            local ok, message = pcall(glint.sphere, { radius = 1, material = m })
+            local f = io.open(")" +
+                             dir.file("gc.txt") +
+                             R"(", "w")
+            f:write(tostring(ok), " ", tostring(message))
+            f:close()
+        end})
+        error("boom")
+    )";
+    EXPECT_NE(error_in(code, trusted).find("boom"), std::string::npos);
+    const std::string seen = test::read_text(dir.file("gc.txt"));
+    EXPECT_NE(seen.find("false"), std::string::npos) << seen;
+    EXPECT_NE(seen.find("once the scene script has ended"), std::string::npos) << seen;
 }
 
 TEST(Sandbox, NonStringErrorsNameTheLine) {
