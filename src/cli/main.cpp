@@ -38,7 +38,19 @@ struct RenderOptions {
     std::vector<std::string> debug;
     bool aovs = false;
     bool quiet = false;
+    bool trusted_scene = false;
 };
+
+// A scene runs sandboxed with bounded memory and instructions unless the user vouches for it.
+LoaderOptions loader_options(bool trusted_scene) {
+    LoaderOptions options;
+    if (trusted_scene) {
+        options.trusted = true;
+        options.memory_limit = 0;
+        options.instruction_limit = 0;
+    }
+    return options;
+}
 
 Vec2i parse_resolution(const std::string& text) {
     int w = 0, h = 0;
@@ -51,10 +63,12 @@ Vec2i parse_resolution(const std::string& text) {
     return Vec2i(w, h);
 }
 
-void check_output_path(const std::string& path) {
+// `where` names the flag or the scene line that gave the value.
+void check_output_path(const std::string& path, const std::string& where) {
     const std::string ext = std::filesystem::path(path).extension().string();
     if (ext != ".exr" && ext != ".png") {
-        throw Error(fmt::format("output '{}': unsupported format (use .exr or .png)", path));
+        throw Error(
+            fmt::format("{}: output '{}': unsupported format (use .exr or .png)", where, path));
     }
 }
 
@@ -108,13 +122,15 @@ uint64_t expected_samples(const RenderSettings& settings) {
 }
 
 void check_debug_views(const RenderSettings& settings) {
+    const std::string& where = settings.where_of("debug");
     for (const std::string& view : settings.debug) {
         if (view == "edges" && settings.adaptive != "sobel")
-            throw Error("--debug edges needs --adaptive sobel");
+            throw Error(fmt::format("{}: debug view 'edges' needs --adaptive sobel", where));
         if (view == "photons" && settings.integrator != "photon")
-            throw Error("--debug photons needs --integrator photon");
+            throw Error(fmt::format("{}: debug view 'photons' needs --integrator photon", where));
         if (view != "edges" && view != "photons") {
-            throw Error(fmt::format("unknown debug view '{}' (known: edges, photons)", view));
+            throw Error(
+                fmt::format("{}: unknown debug view '{}' (known: edges, photons)", where, view));
         }
     }
 }
@@ -133,9 +149,10 @@ void write_debug_images(const RenderSettings& settings, const RenderStats& stats
 }
 
 int run_render(const RenderOptions& options) {
-    const SceneDesc desc = load_scene_file(options.scene);
+    const SceneDesc desc = load_scene_file(options.scene, loader_options(options.trusted_scene));
     const RenderSettings settings = settings_for(desc, options);
-    for (const std::string& path : settings.outputs) check_output_path(path);
+    for (const std::string& path : settings.outputs)
+        check_output_path(path, settings.where_of("output"));
     check_debug_views(settings);
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
@@ -178,8 +195,8 @@ int run_render(const RenderOptions& options) {
     return 0;
 }
 
-int run_info(const std::string& scene_path) {
-    const SceneDesc desc = load_scene_file(scene_path);
+int run_info(const std::string& scene_path, bool trusted_scene) {
+    const SceneDesc desc = load_scene_file(scene_path, loader_options(trusted_scene));
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
     const SceneStats& s = scene->stats();
@@ -262,11 +279,17 @@ int main(int argc, char** argv) {
     render_cmd->add_flag("--no-mipmap", render.no_mipmap,
                          "Look image textures up in their full-resolution level only");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
+    const char* trusted_help =
+        "Run the scene script with Lua's full standard library (io, os, debug, package) and "
+        "without memory or instruction limits: only for scenes you trust";
+    render_cmd->add_flag("--trusted-scene", render.trusted_scene, trusted_help);
 
     std::string info_scene;
     CLI::App* info_cmd =
         app.add_subcommand("info", "Print counts of shapes, triangles, lights and bounds");
     info_cmd->add_option("scene", info_scene, "Scene script (.lua)")->required();
+    bool info_trusted = false;
+    info_cmd->add_flag("--trusted-scene", info_trusted, trusted_help);
 
     std::string test_image, reference_image;
     std::optional<double> threshold;
@@ -285,7 +308,7 @@ int main(int argc, char** argv) {
 
     try {
         if (render_cmd->parsed()) return run_render(render);
-        if (info_cmd->parsed()) return run_info(info_scene);
+        if (info_cmd->parsed()) return run_info(info_scene, info_trusted);
         if (compare_cmd->parsed()) return run_compare(test_image, reference_image, threshold);
     } catch (const CLI::ValidationError& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());

@@ -1,6 +1,10 @@
 #include <glint/camera/camera.h>
 #include <glint/math/warp.h>
 
+#include <fmt/format.h>
+
+#include <algorithm>
+
 namespace glint {
 
 PerspectiveCamera::PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const Vec3& up,
@@ -163,6 +167,17 @@ std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
     if (!(fov > 0.0f && fov < 180.0f)) params.fail("'fov' must be in (0, 180) degrees");
     if (aperture < 0.0f) params.fail("'aperture' must not be negative");
     if (!(focus > 0.0f)) params.fail("'focus_distance' must be positive");
+    // Rays are floats: coordinates and lengths beyond this overflow when squared (a ray's
+    // direction is normalised), and the rays Embree gets would not be finite.
+    constexpr float kLargest = 1e12f;
+    for (const char* name : {"eye", "look_at", "up"}) {
+        const Vec3 v = params.get_vec3(name, Vec3(0.0f));
+        if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kLargest)
+            params.fail(fmt::format("'{}' must lie within {:g} of the origin", name, kLargest));
+    }
+    if (aperture > kLargest) params.fail(fmt::format("'aperture' must be at most {:g}", kLargest));
+    if (focus > kLargest)
+        params.fail(fmt::format("'focus_distance' must be at most {:g}", kLargest));
     params.check_all_used();
     return std::make_unique<PerspectiveCamera>(eye, look_at, up, fov, resolution, aperture, focus);
 }

@@ -79,7 +79,9 @@ float Params::get_float(const std::string& name, float fallback) const {
     const ParamValue* v = lookup(name);
     if (!v) return fallback;
     if (auto d = std::get_if<double>(v)) {
-        if (!std::isfinite(*d)) fail_at(name, fmt::format("parameter '{}' must be finite", name));
+        // Finite as a double is not enough: 1e39 becomes an infinite float.
+        if (!std::isfinite(static_cast<float>(*d)))
+            fail_at(name, fmt::format("parameter '{}' must be finite", name));
         return static_cast<float>(*d);
     }
     wrong_type(name, "a number");

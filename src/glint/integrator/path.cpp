@@ -88,7 +88,7 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
     path.bsdf = shade(scene, path.ray, si, arena);
     if (path.aov && depth == 0) record_aov(path.aov, si, si.material);
     if (!path.bsdf) return false;
-    if (m_settings.max_depth >= 0 && depth >= m_settings.max_depth) return false;
+    if (depth >= m_settings.depth_limit()) return false;
     path.wo_local = si.to_local(si.wo);
     return true;
 }

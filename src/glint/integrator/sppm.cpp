@@ -125,7 +125,9 @@ SppmSettings SppmSettings::read(const Params& p) {
     s.photon_radius = p.get_float("photon_radius", s.photon_radius);
     s.intermediate = p.get_int("intermediate", s.intermediate);
     if (s.photons < 1) p.fail_at("photons", "'photons' must be at least 1");
-    if (s.photon_radius < 0.0f) p.fail_at("photon_radius", "'photon_radius' must not be negative");
+    if (!(s.photon_radius >= 0.0f && s.photon_radius <= 1e12f))
+        p.fail_at("photon_radius",
+                  "'photon_radius' must be in [0, 1e12] (0: from the scene's size)");
     if (s.intermediate < 0)
         p.fail_at("intermediate",
                   "'intermediate' must not be negative (0 writes no intermediate images)");

@@ -1,3 +1,4 @@
+#include <glint/core/error.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/shading.h>
@@ -15,6 +16,9 @@ namespace glint {
 namespace {
 
 constexpr int kDefaultMaxDepth = 10;
+// Whitted recurses once per mirror or glass bounce (and branches at glass): a hard maximum
+// keeps the recursion off the stack's end.
+constexpr int kMaxWhittedDepth = 64;
 
 float fract(float x) {
     return x - std::floor(x);
@@ -84,6 +88,13 @@ WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings, const Whitt
       m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
 
 RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    // Checked here, not in create(), which also runs to learn which keys whitted reads.
+    if (m_max_depth > kMaxWhittedDepth) {
+        throw Error(
+            fmt::format("{}: whitted follows mirrors and glass by recursion: 'max_depth' "
+                        "must be at most {}, got {}",
+                        m_settings.where_of("max_depth"), kMaxWhittedDepth, m_max_depth));
+    }
     uint64_t photon_rays = 0;
     if (m_whitted.caustics) {
         m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, photon_rays);

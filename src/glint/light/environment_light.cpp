@@ -265,7 +265,8 @@ Spectrum EnvironmentLight::power() const {
 //   intensity  spectrum   1         >= 0, multiplies the image
 std::unique_ptr<Light> make_environment_light(const Params& params, const std::string& directory) {
     std::filesystem::path path = params.get_string("file");
-    const float rotation = params.get_float("rotation", 0.0f);
+    // One turn at most: the sine of a float far from zero has no correct digits left.
+    const float rotation = std::fmod(params.get_float("rotation", 0.0f), 360.0f);
     const Mat3 placement = Mat3(params.get_transform("transform").matrix());
     const Spectrum intensity = params.get_spectrum("intensity", Spectrum(1.0f));
     if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)

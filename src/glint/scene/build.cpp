@@ -40,7 +40,8 @@ public:
         m_scene->m_accel.commit();
         const Bounds3& bounds = m_scene->m_stats.bounds;
         const Vec3 center = bounds.is_empty() ? Vec3(0.0f) : bounds.center();
-        const float radius = bounds.is_empty() ? 1.0f : std::max(1e-3f, 0.5f * glm::length(bounds.extent()));
+        const float radius =
+            bounds.is_empty() ? 1.0f : std::max(1e-3f, 0.5f * glm::length(bounds.extent()));
         for (auto& light : m_scene->m_lights) light->preprocess(center, radius);
         m_scene->m_light_sampler = LightSampler(m_scene->m_lights);
         m_scene->m_stats.lights = m_scene->m_lights.size();
@@ -117,10 +118,20 @@ private:
     // Embree supports one instance level, so nested placements are flattened here.
     void place(const InstanceDesc& instance, const Transform& parent, std::vector<int>& path) {
         const int g = instance.group;
-        for (int ancestor : path) {
-            if (ancestor == g)
-                throw Error(fmt::format("{}: a group cannot contain itself", instance.where));
+        // The walk recurses once per level: a bounded depth keeps it off the stack's end.
+        if (path.size() > kMaxGroupDepth) {
+            throw Error(fmt::format("{}: groups are placed inside each other more than {} deep",
+                                    instance.where, kMaxGroupDepth));
         }
+        if (++m_placements > kMaxPlacements) {
+            throw Error(
+                fmt::format("{}: the scene places groups more than {} times in all (a "
+                            "group placed twice in a group placed twice, ... doubles "
+                            "each level)",
+                            instance.where, kMaxPlacements));
+        }
+        if (std::find(path.begin(), path.end(), g) != path.end())
+            throw Error(fmt::format("{}: a group cannot contain itself", instance.where));
         const Transform to_world = parent * instance.transform;
         if (!m_group_shapes[g].empty()) {
             const unsigned id = m_scene->m_accel.add_instance(prototype_of(g), to_world);
@@ -192,6 +203,7 @@ private:
     std::unique_ptr<Scene> m_scene;
     std::vector<std::vector<ShapeUse>> m_group_shapes;
     std::vector<int> m_prototype;
+    size_t m_placements = 0;
 };
 
 std::unique_ptr<Scene> build_scene(const SceneDesc& desc, const RenderSettings& settings) {

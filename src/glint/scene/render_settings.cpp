@@ -1,6 +1,9 @@
 #include <glint/scene/render_settings.h>
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 
 namespace glint {
 
@@ -34,9 +37,16 @@ RenderSettings parse_render_settings(const Params* params) {
                   "'width' and 'height' must be between 1 and 65536");
     }
     if (s.spp < 1) p.fail_at("spp", "'spp' must be at least 1");
-    if (s.max_depth < -1)
-        p.fail_at("max_depth", "'max_depth' must be -1 (unlimited) or at least 0");
+    if (s.max_depth < -1 || s.max_depth > kMaxPathDepth) {
+        p.fail_at("max_depth",
+                  fmt::format("'max_depth' must be -1 (until Russian roulette ends the path, at "
+                              "most {0} bounces) or in [0, {0}], got {1}",
+                              kMaxPathDepth, s.max_depth));
+    }
     if (p.get_int("seed", 0) < 0) p.fail_at("seed", "'seed' must not be negative");
+    // 2^64 already makes any radiance white or black; beyond that the scale is not finite.
+    if (!(std::abs(s.exposure) <= 64.0f))
+        p.fail_at("exposure", "'exposure' must be in [-64, 64] stops");
     if (s.filter_radius < 0.0f) p.fail_at("filter_radius", "'filter_radius' must not be negative");
     if (s.edge_radius < 0 || s.edge_radius > 16)
         p.fail_at("edge_radius", "'edge_radius' must be in [0, 16]");

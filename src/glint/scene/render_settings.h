@@ -13,12 +13,17 @@
 
 namespace glint {
 
+/// The longest path any integrator follows, in bounces: `max_depth` may not exceed it, and
+/// `max_depth = -1` ("until Russian roulette ends the path") stops there too, so that a path
+/// trapped between lossless mirrors, where roulette never fires, still ends.
+inline constexpr int kMaxPathDepth = 1024;
+
 struct RenderSettings {
     int width = 512;
     int height = 512;
     int spp = 64;
     uint64_t seed = 0;
-    int max_depth = -1;  // bounces; -1 = unlimited (Russian roulette ends paths)
+    int max_depth = -1;  // bounces; -1 = until Russian roulette ends paths (at most 1024)
     std::string integrator = "path";
     std::string sampler = "sobol";
     std::string filter = "box";
@@ -42,6 +47,9 @@ struct RenderSettings {
     // The glint.render{...} table with the flags' values in it. Records which keys the
     // common settings read; integrators read their own keys from a copy.
     Params params{"render", "render settings"};
+
+    /// Bounces a path may take: max_depth, or kMaxPathDepth when it is -1.
+    int depth_limit() const { return max_depth >= 0 ? max_depth : kMaxPathDepth; }
 
     /// Where the value of setting `key` came from, for error messages: a flag such as
     /// "--integrator", or the scene's "file:line" of its glint.render{...}.

@@ -3,11 +3,18 @@
 // type name plus checked Params. Nothing here knows about Lua or Embree.
 #include <glint/core/params.h>
 
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace glint {
+
+/// Limits on what a scene can nest, so that no walk over it recurses without bound; the
+/// loader reports a deeper CSG tree where it is made, the build a deeper placement.
+inline constexpr int kMaxCsgDepth = 1000;       ///< CSG nodes from the root down to a primitive
+inline constexpr size_t kMaxGroupDepth = 1000;  ///< groups placed inside each other
+inline constexpr size_t kMaxPlacements = 1'000'000;  ///< group placements after flattening
 
 // One placement of a group inside another group.
 struct InstanceDesc {

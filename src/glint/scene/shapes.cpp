@@ -26,7 +26,8 @@ std::unique_ptr<Shape> mesh_shape(const Params& params, std::string name, MeshDa
 std::unique_ptr<Shape> make_sphere(const Params& params, const std::string&) {
     const Vec3 center = params.get_vec3("center", Vec3(0.0f));
     const float radius = params.get_float("radius", 1.0f);
-    if (!(radius > 0.0f)) params.fail("'radius' must be positive");
+    // The intersection squares the radius, in float: past 1e12 that is no longer finite.
+    if (!(radius > 0.0f && radius <= 1e12f)) params.fail("'radius' must be in (0, 1e12]");
     return std::make_unique<Sphere>(center, radius, params.get_transform("transform"));
 }
 

@@ -15,9 +15,17 @@ namespace {
 
 using QuadricFactory = glm::dmat4 (*)(const Params&);
 
+// Lengths of quadric solids (semi-axes, radius, height) lie in [1e-6, 1e6]: the quadric's
+// matrix holds their inverse squares, and beyond this range the solid is numerically
+// degenerate (a near-zero axis makes hits and normals that are not finite).
+constexpr double kSmallestLength = 1e-6, kLargestLength = 1e6;
+
 double positive(const Params& p, const char* name) {
     const float v = p.get_float(name, 1.0f);
-    if (!(v > 0.0f)) p.fail(fmt::format("'{}' must be positive", name));
+    if (!(v >= kSmallestLength && v <= kLargestLength)) {
+        p.fail_at(name, fmt::format("'{}' must be in [{:g}, {:g}], got {:g}", name, kSmallestLength,
+                                    kLargestLength, v));
+    }
     return v;
 }
 
@@ -105,9 +113,12 @@ public:
                  bool shortcuts)
         : m_desc(desc), m_materials(materials), m_shortcuts(shortcuts) {}
 
-    std::shared_ptr<const Solid> build(int index, const Material* inherited) {
+    std::shared_ptr<const Solid> build(int index, const Material* inherited, int depth = 1) {
         const SolidDesc& node = m_desc.solids.at(index);
         const Params& p = node.params;
+        // The loader refuses deeper trees; a description made in C++ is checked here.
+        if (depth > kMaxCsgDepth)
+            p.fail(fmt::format("the CSG tree is more than {} nodes deep", kMaxCsgDepth));
         const Material* material = inherited;
         if (p.has("material"))
             material = m_materials.at(p.get_ref("material", "material").index).get();
@@ -115,7 +126,7 @@ public:
         const std::vector<Vec3> bounds = p.get_vec3_list("bounds");
 
         std::shared_ptr<const Solid> solid =
-            node.children.empty() ? primitive(p, material) : combination(node, material);
+            node.children.empty() ? primitive(p, material) : combination(node, material, depth);
         if (p.has("bounds")) {
             if (bounds.size() != 2 || !(bounds[0].x < bounds[1].x && bounds[0].y < bounds[1].y &&
                                         bounds[0].z < bounds[1].z)) {
@@ -142,13 +153,14 @@ private:
         return static_cast<int>(m_parts.size()) - 1;
     }
 
-    std::shared_ptr<const Solid> combination(const SolidDesc& node, const Material* material) {
+    std::shared_ptr<const Solid> combination(const SolidDesc& node, const Material* material,
+                                             int depth) {
         const std::string& type = node.params.type();
         const CsgOperation operation = type == "union"          ? CsgOperation::kUnion
                                        : type == "intersection" ? CsgOperation::kIntersection
                                                                 : CsgOperation::kDifference;
         std::vector<std::shared_ptr<const Solid>> children;
-        for (int child : node.children) children.push_back(build(child, material));
+        for (int child : node.children) children.push_back(build(child, material, depth + 1));
         return std::make_shared<CsgNode>(operation, std::move(children), m_shortcuts);
     }
 
@@ -160,7 +172,7 @@ private:
         if (type == "sphere") {
             const Vec3 center = p.get_vec3("center", Vec3(0.0f));
             const float radius = p.get_float("radius", 1.0f);
-            if (!(radius > 0.0f)) p.fail("'radius' must be positive");
+            if (!(radius > 0.0f && radius <= 1e12f)) p.fail("'radius' must be in (0, 1e12]");
             return std::make_shared<SphereSolid>(center, radius, new_part(p, material));
         }
         if (type == "box") {

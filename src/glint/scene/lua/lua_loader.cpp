@@ -3,12 +3,16 @@
 #include <glint/material/registry.h>
 #include <glint/material/texture/registry.h>
 #include <glint/scene/lua/lua_loader.h>
+#include <glint/scene/lua/lua_vm.h>
 #include <glint/scene/shapes.h>
 #include <glint/scene/solids.h>
 
 #include <fmt/format.h>
 #include <lua.hpp>
 
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -18,7 +22,7 @@ namespace {
 
 constexpr const char* kTransformMeta = "glint.transform";
 constexpr const char* kHandleMeta = "glint.handle";
-constexpr const char* kDescKey = "glint.scene_desc";
+constexpr const char* kLoaderKey = "glint.loader";
 
 struct Handle {
     int kind;  // 0 = material, 1 = group, 2 = solid, 3 = texture
@@ -28,11 +32,24 @@ constexpr const char* kHandleKinds[] = {"material", "group", "solid", "texture"}
 constexpr int kSolidHandle = 2;
 constexpr int kTextureHandle = 3;
 
-SceneDesc& desc_of(lua_State* L) {
-    lua_getfield(L, LUA_REGISTRYINDEX, kDescKey);
-    auto* desc = static_cast<SceneDesc*>(lua_touserdata(L, -1));
+// What the bindings build, reachable from Lua through the registry (which a sandboxed
+// script cannot see) while the script runs, and unreachable afterwards.
+struct LoaderState {
+    SceneDesc desc;
+    std::vector<int> solid_depth;  // per solid: nodes from it down to its deepest primitive
+};
+
+LoaderState& loader_of(lua_State* L) {
+    lua_getfield(L, LUA_REGISTRYINDEX, kLoaderKey);
+    auto* loader = static_cast<LoaderState*>(lua_touserdata(L, -1));
     lua_pop(L, 1);
-    return *desc;
+    // A __gc finaliser can run once the script has failed and the scene is gone.
+    if (!loader) throw Error("glint functions cannot be called once the scene script has ended");
+    return *loader;
+}
+
+SceneDesc& desc_of(lua_State* L) {
+    return loader_of(L).desc;
 }
 
 // "file:line" of the script statement that called into glint.
@@ -46,15 +63,14 @@ std::string where(lua_State* L) {
 }
 
 // Runs a binding, turning glint errors into Lua errors (which carry their own location).
+// The message is on the Lua stack before lua_error, whose jump skips C++ destructors.
 template <int (*F)(lua_State*)>
 int guarded(lua_State* L) {
-    std::string message;
     try {
         return F(L);
-    } catch (const Error& e) {
-        message = e.what();
+    } catch (const std::exception& e) {
+        lua_pushstring(L, e.what());
     }
-    lua_pushstring(L, message.c_str());
     return lua_error(L);
 }
 
@@ -62,12 +78,33 @@ int guarded(lua_State* L) {
     throw Error(fmt::format("{}: {}", where(L), message));
 }
 
+// Userdata count as glint's only when they carry glint's metatable, which a script can
+// neither read (__metatable hides it) nor give to a value of its own.
 Transform* to_transform(lua_State* L, int index) {
     return static_cast<Transform*>(luaL_testudata(L, index, kTransformMeta));
 }
 
 Handle* to_handle(lua_State* L, int index) {
     return static_cast<Handle*>(luaL_testudata(L, index, kHandleMeta));
+}
+
+// What the value at `index` is, for messages: "a material", "a string", ...
+std::string describe(lua_State* L, int index) {
+    if (Handle* h = to_handle(L, index)) return fmt::format("a {}", kHandleKinds[h->kind]);
+    if (to_transform(L, index)) return "a transform";
+    if (lua_isnone(L, index)) return "nothing";
+    return fmt::format("a {}", luaL_typename(L, index));
+}
+
+// The one place a script's number enters glint: NaN, infinities and numbers past the
+// range of a float (which would become infinite) are refused, naming the key.
+double finite_number(lua_State* L, int index, const std::string& name, const std::string& type) {
+    const double value = lua_tonumber(L, index);
+    if (!std::isfinite(value) || std::abs(value) > FLT_MAX) {
+        fail(L, fmt::format("{}: '{}' must be a finite number (at most {:g} in size), got {}", type,
+                            name, FLT_MAX, std::isnan(value) ? "NaN" : fmt::format("{:g}", value)));
+    }
+    return value;
 }
 
 void push_transform(lua_State* L, const Transform& xf) {
@@ -82,14 +119,17 @@ void push_handle(lua_State* L, int kind, int index) {
     luaL_setmetatable(L, kHandleMeta);
 }
 
-// Converts the Lua value at `index` into a parameter value; `name` is for errors.
-ParamValue to_param(lua_State* L, int index, const std::string& name, const std::string& type) {
+// Converts the Lua value at `index` into a parameter value; `name` is for errors. Tables
+// are read raw (no metamethods run) and `depth` tables deep at most, so a table nested
+// without end, or one that contains itself, is an error rather than a stack overflow.
+ParamValue to_param(lua_State* L, int index, const std::string& name, const std::string& type,
+                    int depth = 0) {
     index = lua_absindex(L, index);
     switch (lua_type(L, index)) {
         case LUA_TBOOLEAN:
             return lua_toboolean(L, index) != 0;
         case LUA_TNUMBER:
-            return lua_tonumber(L, index);
+            return finite_number(L, index, name, type);
         case LUA_TSTRING:
             return std::string(lua_tostring(L, index));
         case LUA_TUSERDATA:
@@ -97,18 +137,25 @@ ParamValue to_param(lua_State* L, int index, const std::string& name, const std:
             if (Handle* h = to_handle(L, index)) return ObjectRef{kHandleKinds[h->kind], h->index};
             break;
         case LUA_TTABLE: {
-            const lua_Integer n = luaL_len(L, index);
+            if (depth >= kMaxParamTableDepth || !lua_checkstack(L, 4)) {
+                fail(L, fmt::format("{}: '{}' holds tables nested more than {} deep (does a table "
+                                    "contain itself?)",
+                                    type, name, kMaxParamTableDepth));
+            }
+            const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
             std::vector<double> numbers;
             std::vector<std::vector<double>> rows;
             std::vector<std::string> strings;
             for (lua_Integer i = 1; i <= n; ++i) {
-                lua_geti(L, index, i);
+                lua_rawgeti(L, index, i);
                 if (lua_type(L, -1) == LUA_TNUMBER && rows.empty() && strings.empty()) {
-                    numbers.push_back(lua_tonumber(L, -1));
+                    numbers.push_back(finite_number(L, -1, name, type));
                 } else if (lua_type(L, -1) == LUA_TSTRING && rows.empty() && numbers.empty()) {
                     strings.emplace_back(lua_tostring(L, -1));
                 } else if (lua_type(L, -1) == LUA_TTABLE && numbers.empty() && strings.empty()) {
-                    ParamValue row = to_param(L, -1, name, type);
+                    if (lua_rawequal(L, -1, index))
+                        fail(L, fmt::format("{}: '{}' contains itself", type, name));
+                    ParamValue row = to_param(L, -1, name, type, depth + 1);
                     auto* row_numbers = std::get_if<std::vector<double>>(&row);
                     if (!row_numbers)
                         fail(L, fmt::format("{}: entry {} of '{}' must be a list of numbers", type,
@@ -136,9 +183,10 @@ ParamValue to_param(lua_State* L, int index, const std::string& name, const std:
 Params to_params(lua_State* L, int index, const std::string& type) {
     Params params(type, where(L));
     if (lua_isnoneornil(L, index)) return params;
-    if (!lua_istable(L, index))
-        fail(L, fmt::format("{} expects a table of named parameters, e.g. glint.{}{{...}}", type,
-                            type));
+    if (!lua_istable(L, index)) {
+        fail(L, fmt::format("{} expects a table of named parameters, e.g. {{radius = 1}}, got {}",
+                            type, describe(L, index)));
+    }
     index = lua_absindex(L, index);
     lua_pushnil(L);
     while (lua_next(L, index) != 0) {
@@ -178,7 +226,9 @@ int new_light(lua_State* L) {
 
 int group_index_of(lua_State* L, int index) {
     Handle* h = to_handle(L, index);
-    if (!h || h->kind != 1) fail(L, "expected a group (made by glint.group())");
+    if (!h || h->kind != 1)
+        fail(L,
+             fmt::format("expected a group (made by glint.group()), got {}", describe(L, index)));
     return h->index;
 }
 
@@ -187,8 +237,8 @@ int new_shape(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
     int group = 0;
     int args = 1;
-    if (to_handle(L, 1)) {
-        group = group_index_of(L, 1);
+    if (Handle* h = to_handle(L, 1); h && h->kind == 1) {
+        group = h->index;
         args = 2;
     }
     SceneDesc& desc = desc_of(L);
@@ -199,8 +249,10 @@ int new_shape(lua_State* L) {
 // glint.solid.<type>{...} -> solid handle (not yet in the scene; see glint.add).
 int new_solid(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
-    SceneDesc& desc = desc_of(L);
-    desc.solids.push_back({to_params(L, 1, type), {}});
+    LoaderState& loader = loader_of(L);
+    loader.desc.solids.push_back({to_params(L, 1, type), {}});
+    loader.solid_depth.push_back(1);
+    SceneDesc& desc = loader.desc;
     push_handle(L, kSolidHandle, static_cast<int>(desc.solids.size()) - 1);
     return 1;
 }
@@ -213,19 +265,27 @@ int new_csg_node(lua_State* L) {
         fail(L,
              fmt::format("glint.{} expects a table: glint.{}{{a, b, material = m}}", type, type));
     std::vector<int> children;
-    const lua_Integer n = luaL_len(L, 1);
+    LoaderState& loader = loader_of(L);
+    int depth = 0;
+    const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, 1));
     for (lua_Integer i = 1; i <= n; ++i) {
-        lua_geti(L, 1, i);
+        lua_rawgeti(L, 1, i);
         Handle* h = to_handle(L, -1);
         if (!h || h->kind != kSolidHandle) {
-            fail(
-                L,
-                fmt::format(
-                    "glint.{}: entry {} is not a solid (made by glint.solid.* or another CSG node)",
-                    type, i));
+            fail(L, fmt::format("glint.{}: entry {} is not a solid (made by glint.solid.* or "
+                                "another CSG node), got {}",
+                                type, i, describe(L, -1)));
         }
         children.push_back(h->index);
+        depth = std::max(depth, loader.solid_depth.at(h->index));
         lua_pop(L, 1);
+    }
+    // Building and tracing a CSG tree recurse through it: its depth is bounded here, where
+    // the message can name the line.
+    if (depth + 1 > kMaxCsgDepth) {
+        fail(L, fmt::format("glint.{}: this CSG tree would be {} nodes deep; the limit is {} "
+                            "(combine many solids in one node: glint.{}{{a, b, c, ...}})",
+                            type, depth + 1, kMaxCsgDepth, type));
     }
     // The named entries are the node's parameters.
     lua_newtable(L);
@@ -239,12 +299,13 @@ int new_csg_node(lua_State* L) {
             lua_pop(L, 1);
         }
     }
-    SceneDesc& desc = desc_of(L);
-    desc.solids.push_back({to_params(L, -1, type), std::move(children)});
-    if (desc.solids.back().children.empty()) {
+    if (children.empty()) {
         fail(L,
              fmt::format("glint.{} needs at least one solid, e.g. glint.{}{{a, b}}", type, type));
     }
+    SceneDesc& desc = loader.desc;
+    desc.solids.push_back({to_params(L, -1, type), std::move(children)});
+    loader.solid_depth.push_back(depth + 1);
     push_handle(L, kSolidHandle, static_cast<int>(desc.solids.size()) - 1);
     return 1;
 }
@@ -258,8 +319,16 @@ int add_solid(lua_State* L) {
         args = 2;
     }
     Handle* solid = to_handle(L, args);
-    if (!solid || solid->kind != kSolidHandle)
-        fail(L, "glint.add expects a solid (made by glint.solid.* or a CSG node)");
+    if (!solid || solid->kind != kSolidHandle) {
+        fail(L,
+             fmt::format("glint.add expects a solid (made by glint.solid.* or a CSG node), got {}",
+                         describe(L, args)));
+    }
+    if (!lua_isnoneornil(L, args + 1) && !lua_istable(L, args + 1)) {
+        fail(L, fmt::format("glint.add(solid, settings): the settings must be a table such as "
+                            "{{material = m}}, got {}",
+                            describe(L, args + 1)));
+    }
     Params params = to_params(L, args + 1, "solid");
     params.set("solid", ObjectRef{"solid", solid->index});
     desc_of(L).groups[group].shapes.push_back(std::move(params));
@@ -296,6 +365,30 @@ int place_group(lua_State* L) {
     return 0;
 }
 
+// A transform a script makes must map finite points to finite points and back: its matrix
+// and its inverse finite, and the matrix far from singular relative to its own scale.
+void push_checked_transform(lua_State* L, const Transform& xf, const char* what) {
+    const Mat4& m = xf.matrix();
+    const Mat4& inverse = xf.inverse_matrix();
+    float largest = 0.0f;
+    bool finite = true;
+    for (int col = 0; col < 4; ++col) {
+        for (int row = 0; row < 4; ++row) {
+            finite &= std::isfinite(m[col][row]) && std::isfinite(inverse[col][row]);
+            if (row < 3 && col < 3) largest = std::max(largest, std::abs(m[col][row]));
+        }
+    }
+    if (!finite) fail(L, fmt::format("{}: the transform is not finite (numbers too large?)", what));
+    // |det| against the cube of the largest entry: scale-free, 1 for a rotation.
+    const double det = glm::determinant(glm::dmat3(Mat3(m)));
+    if (!(std::abs(det) > 1e-12 * static_cast<double>(largest) * largest * largest)) {
+        fail(L, fmt::format("{}: the transform is singular or nearly so (it flattens space), "
+                            "so it cannot be inverted",
+                            what));
+    }
+    push_transform(L, xf);
+}
+
 Vec3 vec3_arguments(lua_State* L, int first, const char* what) {
     if (lua_istable(L, first)) {
         ParamValue v = to_param(L, first, what, what);
@@ -306,37 +399,40 @@ Vec3 vec3_arguments(lua_State* L, int first, const char* what) {
     }
     Vec3 v;
     for (int i = 0; i < 3; ++i) {
-        if (!lua_isnumber(L, first + i))
+        if (lua_type(L, first + i) != LUA_TNUMBER)
             fail(L, fmt::format("{} expects three numbers or {{x, y, z}}", what));
-        v[i] = static_cast<float>(lua_tonumber(L, first + i));
+        v[i] = static_cast<float>(finite_number(L, first + i, std::string(1, "xyz"[i]), what));
     }
     return v;
 }
 
 int translate(lua_State* L) {
-    push_transform(L, Transform::translate(vec3_arguments(L, 1, "glint.translate")));
+    push_checked_transform(L, Transform::translate(vec3_arguments(L, 1, "glint.translate")),
+                           "glint.translate");
     return 1;
 }
 
 int rotate(lua_State* L) {
-    if (!lua_isnumber(L, 1))
+    if (lua_type(L, 1) != LUA_TNUMBER)
         fail(L, "glint.rotate expects an angle in degrees and an axis {x, y, z}");
-    const float degrees = static_cast<float>(lua_tonumber(L, 1));
+    // Reduced to one turn first: sin and cos of a float far from zero lose every digit.
+    const float degrees =
+        static_cast<float>(std::fmod(finite_number(L, 1, "angle", "glint.rotate"), 360.0));
     const Vec3 axis = vec3_arguments(L, 2, "glint.rotate axis");
     if (glm::length(axis) <= 0.0f) fail(L, "glint.rotate axis must not be zero");
-    push_transform(L, Transform::rotate(degrees, axis));
+    push_checked_transform(L, Transform::rotate(degrees, axis), "glint.rotate");
     return 1;
 }
 
 int scale(lua_State* L) {
     Vec3 factors;
-    if (lua_isnumber(L, 1) && lua_isnone(L, 2))
-        factors = Vec3(static_cast<float>(lua_tonumber(L, 1)));
+    if (lua_type(L, 1) == LUA_TNUMBER && lua_isnone(L, 2))
+        factors = Vec3(static_cast<float>(finite_number(L, 1, "factor", "glint.scale")));
     else
         factors = vec3_arguments(L, 1, "glint.scale");
     if (factors.x == 0.0f || factors.y == 0.0f || factors.z == 0.0f)
         fail(L, "glint.scale factors must not be zero");
-    push_transform(L, Transform::scale(factors));
+    push_checked_transform(L, Transform::scale(factors), "glint.scale");
     return 1;
 }
 
@@ -353,8 +449,7 @@ int matrix(lua_State* L) {
     if (m[0][3] != 0.0f || m[1][3] != 0.0f || m[2][3] != 0.0f || m[3][3] != 1.0f) {
         fail(L, "glint.matrix must be affine: its last row must be 0, 0, 0, 1");
     }
-    if (std::abs(glm::determinant(m)) < 1e-12f) fail(L, "glint.matrix is not invertible");
-    push_transform(L, Transform(m));
+    push_checked_transform(L, Transform(m), "glint.matrix");
     return 1;
 }
 
@@ -363,7 +458,7 @@ int transform_multiply(lua_State* L) {
     Transform* a = to_transform(L, 1);
     Transform* b = to_transform(L, 2);
     if (!a || !b) fail(L, "only two transforms can be multiplied");
-    push_transform(L, *a * *b);
+    push_checked_transform(L, *a * *b, "transform * transform");
     return 1;
 }
 
@@ -388,6 +483,8 @@ int open_glint(lua_State* L) {
     luaL_newmetatable(L, kTransformMeta);
     lua_pushcfunction(L, guarded<transform_multiply>);
     lua_setfield(L, -2, "__mul");
+    lua_pushliteral(L, "glint.transform");  // getmetatable() sees this, not the table
+    lua_setfield(L, -2, "__metatable");
     lua_pop(L, 1);
 
     // Handles double as group objects: group:sphere{...}, group:place(other, xf).
@@ -399,6 +496,8 @@ int open_glint(lua_State* L) {
     lua_pushcfunction(L, guarded<add_solid>);
     lua_setfield(L, -2, "add");
     lua_setfield(L, -2, "__index");
+    lua_pushliteral(L, "glint.handle");
+    lua_setfield(L, -2, "__metatable");
     lua_pop(L, 1);
 
     lua_newtable(L);
@@ -432,49 +531,62 @@ int open_glint(lua_State* L) {
     return 1;
 }
 
-struct LuaStateDeleter {
-    void operator()(lua_State* L) const { lua_close(L); }
+// Takes the loader out of the registry when the run ends, however it ends: finalisers that
+// lua_close runs afterwards find no scene to write into and fail cleanly.
+struct DetachLoader {
+    lua_State* L;
+    ~DetachLoader() {
+        lua_pushnil(L);
+        lua_setfield(L, LUA_REGISTRYINDEX, kLoaderKey);
+    }
 };
 
-SceneDesc run_chunk(const std::function<int(lua_State*)>& load, const std::string& directory) {
-    std::unique_ptr<lua_State, LuaStateDeleter> state(luaL_newstate());
-    if (!state) throw Error("could not start the Lua interpreter");
-    lua_State* L = state.get();
-    luaL_openlibs(L);
-
-    SceneDesc desc;
-    desc.directory = directory;
-    lua_pushlightuserdata(L, &desc);
-    lua_setfield(L, LUA_REGISTRYINDEX, kDescKey);
-
+int open_glint_protected(lua_State* L) {
     // `glint` is a global and also what require("glint") returns.
     luaL_requiref(L, "glint", open_glint, 1);
-    lua_pop(L, 1);
+    return 0;
+}
 
-    if (load(L) != LUA_OK || lua_pcall(L, 0, 0, 0) != LUA_OK) {
-        const char* message = lua_tostring(L, -1);
-        throw Error(message ? message : "unknown Lua error");
-    }
-    return desc;
+SceneDesc run_chunk(const std::function<int(lua_State*)>& load, const std::string& chunk_name,
+                    const std::string& directory, const LoaderOptions& options) {
+    LoaderState loader;
+    loader.desc.directory = directory;
+    LuaVm vm(options, directory);  // closed before `loader` goes
+    lua_State* L = vm.state();
+    lua_pushlightuserdata(L, &loader);
+    lua_setfield(L, LUA_REGISTRYINDEX, kLoaderKey);
+    const DetachLoader detach{L};
+
+    lua_pushcfunction(L, open_glint_protected);
+    vm.call_main(chunk_name);
+    vm.check_load(load(L), chunk_name);
+    vm.call_main(chunk_name);
+    return std::move(loader.desc);
 }
 
 }  // namespace
 
-SceneDesc load_scene_file(const std::string& path) {
+SceneDesc load_scene_file(const std::string& path, const LoaderOptions& options) {
     if (!std::filesystem::is_regular_file(path))
         throw Error(fmt::format("cannot open scene file '{}'", path));
     std::string directory = std::filesystem::path(path).parent_path().string();
     if (directory.empty()) directory = ".";
-    return run_chunk([&](lua_State* L) { return luaL_loadfile(L, path.c_str()); }, directory);
+    return run_chunk(
+        [&](lua_State* L) {
+            // Text only, also for a trusted scene: a precompiled chunk can crash the VM.
+            return luaL_loadfilex(L, path.c_str(), "t");
+        },
+        path, directory, options);
 }
 
 SceneDesc load_scene_string(const std::string& code, const std::string& chunk_name,
-                            const std::string& directory) {
+                            const std::string& directory, const LoaderOptions& options) {
+    const std::string lua_chunk_name = "=" + chunk_name;
     return run_chunk(
         [&](lua_State* L) {
-            return luaL_loadbuffer(L, code.data(), code.size(), ("=" + chunk_name).c_str());
+            return luaL_loadbufferx(L, code.data(), code.size(), lua_chunk_name.c_str(), "t");
         },
-        directory);
+        chunk_name, directory, options);
 }
 
 }  // namespace glint

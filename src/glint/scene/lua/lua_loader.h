@@ -1,17 +1,40 @@
 #pragma once
 // Runs a scene script in a Lua 5.4 VM with the `glint` module and returns the scene it
 // describes. This is the only place in glint that knows Lua exists.
+//
+// A scene runs sandboxed unless the user trusts it: the safe part of Lua's standard library
+// (base without dofile/loadfile and with text-only load, string, table, math, utf8,
+// coroutine, os.clock/os.time/os.difftime), `require` of Lua modules beside the scene, a
+// memory limit and an instruction budget. See docs/scene-language.md, "Sandbox".
 #include <glint/scene/scene_desc.h>
 
+#include <cstddef>
+#include <cstdint>
 #include <string>
 
 namespace glint {
 
-// Throws glint::Error "file:line: message" on a syntax error, a runtime error, or a
-// parameter of the wrong type.
-SceneDesc load_scene_file(const std::string& path);
+/// How a scene script runs. The defaults are the sandbox `glint render` uses.
+struct LoaderOptions {
+    /// The full Lua standard library (io, os, debug, package, dofile, binary load), for a
+    /// scene the user trusts: `glint render --trusted-scene`.
+    bool trusted = false;
+    /// Bytes the script's Lua VM may hold at once; 0 = no limit.
+    size_t memory_limit = size_t{1} << 30;
+    /// Lua VM instructions the script may run, counted in steps of 1000; 0 = no limit. Two
+    /// billion is some seconds of a busy loop, a hundred times what a large procedural
+    /// scene needs.
+    uint64_t instruction_limit = 2'000'000'000;
+};
+
+/// Tables inside parameter tables a script may nest; deeper is an error naming the line.
+inline constexpr int kMaxParamTableDepth = 64;
+
+// Throws glint::Error "file:line: message" on a syntax error, a runtime error, a parameter
+// of the wrong type, a call the sandbox refuses, or a script past its limits.
+SceneDesc load_scene_file(const std::string& path, const LoaderOptions& options = {});
 // `chunk_name` is used in error messages in place of a file name.
 SceneDesc load_scene_string(const std::string& code, const std::string& chunk_name,
-                            const std::string& directory = ".");
+                            const std::string& directory = ".", const LoaderOptions& options = {});
 
 }  // namespace glint

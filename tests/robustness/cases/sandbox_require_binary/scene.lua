@@ -1,0 +1,2 @@
+glint.sphere{ radius = 1, material = glint.diffuse{} }
+local shapes = require("shapes")

@@ -1,0 +1,7 @@
+-- expect-exit: 1
+-- expect-message: scene_camera_aperture_negative.lua:7:
+-- expect-message: 'aperture' must not be negative
+local m = glint.diffuse{}
+glint.sphere{ radius = 1, material = m }
+glint.point_light{ position = {0, 5, 5}, intensity = 10 }
+glint.camera{ aperture = -1 }

@@ -1,0 +1,7 @@
+-- expect-exit: 1
+-- expect-message: scene_exposure_nan.lua:7:
+-- expect-message: 'exposure' must be a finite number
+local m = glint.diffuse{}
+glint.sphere{ radius = 1, material = m }
+glint.point_light{ position = {0, 5, 5}, intensity = 10 }
+glint.render{ exposure = 0/0 }

@@ -1,0 +1,7 @@
+-- expect-exit: 1
+-- expect-message: scene_scale_singular.lua:7:
+-- expect-message: the transform is singular
+local m = glint.diffuse{}
+glint.sphere{ radius = 1, material = m }
+glint.point_light{ position = {0, 5, 5}, intensity = 10 }
+local s = glint.scale(1, 1, 1e-30)
