@@ -87,7 +87,7 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
     uint64_t photon_rays = 0;
     if (m_whitted.caustics) {
         m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, photon_rays);
-        m_caustic_radius2 = photon_search_radius2(scene);
+        m_caustic_radius2 = photon_search_radius2(scene, m_whitted.caustic);
     }
     RenderStats stats = TileIntegrator::render(scene, film, progress);
     stats.rays += photon_rays;
