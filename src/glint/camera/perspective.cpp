@@ -149,22 +149,4 @@ void PerspectiveCamera::approximate_footprint(const Vec3& p, const Vec3& n, Vec3
     dpdy = on_plane(-m_up);
 }
 
-std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
-    const Vec3 eye = params.get_vec3("eye", Vec3(0, 0, 0));
-    const Vec3 look_at = params.get_vec3("look_at", Vec3(0, 0, -1));
-    const Vec3 up = params.get_vec3("up", Vec3(0, 1, 0));
-    const float fov = params.get_float("fov", 45.0f);
-    const float aperture = params.get_float("aperture", 0.0f);
-    const float focus = params.get_float("focus_distance", glm::length(look_at - eye));
-    if (glm::length(look_at - eye) <= 0.0f) params.fail("'look_at' must differ from 'eye'");
-    if (glm::length(glm::cross(look_at - eye, up)) <= 0.0f) {
-        params.fail("'up' must not be parallel to the viewing direction");
-    }
-    if (!(fov > 0.0f && fov < 180.0f)) params.fail("'fov' must be in (0, 180) degrees");
-    if (aperture < 0.0f) params.fail("'aperture' must not be negative");
-    if (!(focus > 0.0f)) params.fail("'focus_distance' must be positive");
-    params.check_all_used();
-    return std::make_unique<PerspectiveCamera>(eye, look_at, up, fov, resolution, aperture, focus);
-}
-
 }  // namespace glint
