@@ -111,8 +111,10 @@ void check_debug_views(const RenderSettings& settings) {
     for (const std::string& view : settings.debug) {
         if (view == "edges" && settings.adaptive != "sobel")
             throw Error("--debug edges needs --adaptive sobel");
-        if (view == "photons" && settings.integrator != "photon")
-            throw Error("--debug photons needs --integrator photon");
+        if (view == "photons" && settings.integrator != "photon" &&
+            settings.integrator != "whitted")
+            throw Error(
+                "--debug photons needs --integrator photon (or whitted with caustics = true)");
         if (view != "edges" && view != "photons") {
             throw Error(fmt::format("unknown debug view '{}' (known: edges, photons)", view));
         }

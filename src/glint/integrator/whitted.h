@@ -50,6 +50,7 @@ private:
     int m_max_depth;
     PhotonMap m_caustics;
     float m_caustic_radius2 = 0.0f;
+    bool m_show_photons = false;  // debug view: only the caustic map's estimate at diffuse hits
 };
 
 }  // namespace glint
