@@ -255,7 +255,7 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--debug", render.debug,
                      "Also write a debug view: edges (with --adaptive sobel), photons (with "
-                     "--integrator photon)")
+                     "--integrator photon, or whitted with caustics = true)")
         ->allow_extra_args(false);
     render_cmd
         ->add_option("--intermediate", render.intermediate,
