@@ -126,8 +126,13 @@ void check_debug_views(const RenderSettings& settings) {
     for (const std::string& view : settings.debug) {
         if (view == "edges" && settings.adaptive != "sobel")
             throw Error(fmt::format("{}: debug view 'edges' needs --adaptive sobel", where));
-        if (view == "photons" && settings.integrator != "photon")
-            throw Error(fmt::format("{}: debug view 'photons' needs --integrator photon", where));
+        if (view == "photons" && settings.integrator != "photon" &&
+            settings.integrator != "whitted") {
+            throw Error(fmt::format(
+                "{}: debug view 'photons' needs --integrator photon (or whitted with caustics = "
+                "true)",
+                where));
+        }
         if (view != "edges" && view != "photons") {
             throw Error(
                 fmt::format("{}: unknown debug view '{}' (known: edges, photons)", where, view));
@@ -270,7 +275,7 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--debug", render.debug,
                      "Also write a debug view: edges (with --adaptive sobel), photons (with "
-                     "--integrator photon)")
+                     "--integrator photon, or whitted with caustics = true)")
         ->allow_extra_args(false);
     render_cmd
         ->add_option("--intermediate", render.intermediate,

@@ -296,3 +296,46 @@ TEST_F(CliTest, CompareReportsErrorAgainstReference) {
     EXPECT_EQ(differ.exit_code, 1) << differ.output;
     EXPECT_NE(differ.output.find("ref mean"), std::string::npos) << differ.output;
 }
+
+// --debug photons with whitted's caustics writes its caustic map's view: bright in the
+// caustic, black elsewhere; without caustics = true it is refused, naming the setting.
+TEST_F(CliTest, DebugPhotonsWithWhittedCaustics) {
+    const std::string scene = out("whitted-caustics.lua");
+    {
+        std::ofstream f(scene);
+        f << "glint.camera{ eye = {0, 5.5, 6.5}, look_at = {0, 0.3, 0}, fov = 38 }\n"
+             "glint.render{ integrator = 'whitted', caustics = true, caustic_photons = 100000 }\n"
+             "glint.quad{ vertices = {{-8, 0, 8}, {8, 0, 8}, {8, 0, -8}, {-8, 0, -8}},\n"
+             "            material = glint.diffuse{ reflectance = 0.7 } }\n"
+             "glint.sphere{ center = {-1.4, 0.8, 0.3}, radius = 0.8,\n"
+             "              material = glint.dielectric{ ior = 1.5 } }\n"
+             "glint.spot_light{ position = {-4.5, 5, 0}, look_at = {0.4, 0, 0}, intensity = 260,\n"
+             "                  cone_angle = 28 }\n";
+    }
+    auto result =
+        run_glint(fmt::format("render {} --debug photons --res 64x48 --spp 1 -o {} -o {} --quiet",
+                              scene, out("w.exr"), out("w.png")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    ASSERT_TRUE(fs::exists(out("w.photons.png")));
+    const Image view = read_image(out("w.photons.png"));
+    const Image beauty = read_image(out("w.png"));
+    float brightest = 0.0f;
+    double view_sum = 0.0, beauty_sum = 0.0;
+    int black = 0;
+    for (int y = 0; y < view.height; ++y) {
+        for (int x = 0; x < view.width; ++x) {
+            view_sum += view.at(x, y, 1);
+            beauty_sum += beauty.at(x, y, 1);
+            brightest = std::max(brightest, view.at(x, y, 1));
+            black += view.at(x, y, 1) == 0.0f;
+        }
+    }
+    EXPECT_GT(brightest, 0.1f);                       // the caustic
+    EXPECT_GT(black, view.width * view.height / 20);  // no direct light: dark away from it
+    EXPECT_LT(view_sum, 0.5 * beauty_sum) << "the view holds more than the caustic map";
+
+    result = run_glint(fmt::format("render {} --integrator whitted --debug photons -o {} --quiet",
+                                   kScenes + "small.lua", out("s.exr")));
+    EXPECT_NE(result.exit_code, 0);
+    EXPECT_NE(result.output.find("needs caustics = true"), std::string::npos) << result.output;
+}

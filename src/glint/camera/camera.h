@@ -131,8 +131,11 @@ private:
     float m_image_area;  // A_image: the frame's area on the plane at distance 1
 };
 
-// Reads eye, look_at, up, fov (vertical, degrees), aperture (lens radius) and
-// focus_distance (defaults to the look_at distance).
+/// Reads glint.camera{...}: type ("perspective", the default, or "orthographic"), eye,
+/// look_at, up; for a perspective camera fov (vertical, degrees), aperture (lens radius) and
+/// either focus_distance (defaults to the look_at distance) or focus_on (a point whose
+/// distance along the view direction becomes the focus distance); for an orthographic one
+/// scale (the image's height in scene units). Errors name the key and the script line.
 std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution);
 
 }  // namespace glint

@@ -153,33 +153,4 @@ void PerspectiveCamera::approximate_footprint(const Vec3& p, const Vec3& n, Vec3
     dpdy = on_plane(-m_up);
 }
 
-std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
-    const Vec3 eye = params.get_vec3("eye", Vec3(0, 0, 0));
-    const Vec3 look_at = params.get_vec3("look_at", Vec3(0, 0, -1));
-    const Vec3 up = params.get_vec3("up", Vec3(0, 1, 0));
-    const float fov = params.get_float("fov", 45.0f);
-    const float aperture = params.get_float("aperture", 0.0f);
-    const float focus = params.get_float("focus_distance", glm::length(look_at - eye));
-    if (glm::length(look_at - eye) <= 0.0f) params.fail("'look_at' must differ from 'eye'");
-    if (glm::length(glm::cross(look_at - eye, up)) <= 0.0f) {
-        params.fail("'up' must not be parallel to the viewing direction");
-    }
-    if (!(fov > 0.0f && fov < 180.0f)) params.fail("'fov' must be in (0, 180) degrees");
-    if (aperture < 0.0f) params.fail("'aperture' must not be negative");
-    if (!(focus > 0.0f)) params.fail("'focus_distance' must be positive");
-    // Rays are floats: coordinates and lengths beyond this overflow when squared (a ray's
-    // direction is normalised), and the rays Embree gets would not be finite.
-    constexpr float kLargest = 1e12f;
-    for (const char* name : {"eye", "look_at", "up"}) {
-        const Vec3 v = params.get_vec3(name, Vec3(0.0f));
-        if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kLargest)
-            params.fail(fmt::format("'{}' must lie within {:g} of the origin", name, kLargest));
-    }
-    if (aperture > kLargest) params.fail(fmt::format("'aperture' must be at most {:g}", kLargest));
-    if (focus > kLargest)
-        params.fail(fmt::format("'focus_distance' must be at most {:g}", kLargest));
-    params.check_all_used();
-    return std::make_unique<PerspectiveCamera>(eye, look_at, up, fov, resolution, aperture, focus);
-}
-
 }  // namespace glint

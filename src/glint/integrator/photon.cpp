@@ -40,10 +40,13 @@ CausticSettings CausticSettings::read(const Params& p) {
     s.caustic_photons = p.get_int("caustic_photons", s.caustic_photons);
     s.photon_neighbours = p.get_int("photon_neighbours", s.photon_neighbours);
     s.projection_maps = p.get_bool("projection_maps", s.projection_maps);
+    s.photon_radius = p.get_float("photon_radius", s.photon_radius);
     if (s.caustic_photons < 0)
         p.fail_at("caustic_photons", "'caustic_photons' must not be negative");
     if (s.photon_neighbours < 1)
         p.fail_at("photon_neighbours", "'photon_neighbours' must be at least 1");
+    if (!(s.photon_radius >= 0.0f) || !std::isfinite(s.photon_radius))
+        p.fail_at("photon_radius", "'photon_radius' must be a finite number >= 0");
     return s;
 }
 
@@ -81,7 +84,8 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
                       count);
 }
 
-float photon_search_radius2(const Scene& scene) {
+float photon_search_radius2(const Scene& scene, const CausticSettings& caustic) {
+    if (caustic.photon_radius > 0.0f) return sqr(caustic.photon_radius);
     const Bounds3& bounds = scene.stats().bounds;
     const float scene_size = bounds.is_empty() ? 1.0f : glm::length(bounds.extent());
     return sqr(scene_size / 20.0f);
@@ -96,7 +100,7 @@ PhotonIntegrator::PhotonIntegrator(const RenderSettings& settings, const PhotonS
     : TileIntegrator(settings), m_photon(photon) {}
 
 uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
-    m_max_distance2 = photon_search_radius2(scene);
+    m_max_distance2 = photon_search_radius2(scene, m_photon.caustic);
     const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
     uint64_t rays = 0;
 

@@ -5,7 +5,7 @@
 // to the first diffuse hit, where it adds direct light (next-event estimation), the
 // caustic map's radiance estimate, and indirect light by final gathering: BSDF-sampled
 // rays whose hits are evaluated in the global map. Estimates use the k nearest photons
-// with a cone filter.
+// with a cone filter, within at most `photon_radius`.
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/photon_map.h>
 
@@ -16,6 +16,10 @@ struct CausticSettings {
     int caustic_photons = 100000;  ///< photons emitted for the caustic map (>= 0)
     int photon_neighbours = 50;    ///< photons per radiance estimate (>= 1)
     bool projection_maps = true;   ///< aim caustic photons at specular objects
+    /// Largest radius of a radiance estimate, in scene units (>= 0); 0 means 1/20 of the
+    /// scene's bounding-box diagonal. Where fewer than photon_neighbours photons lie within
+    /// it, the estimate uses the photons there over this radius's disc.
+    float photon_radius = 0.0f;
 
     /// Reads and validates the keys above; errors name the key's location.
     static CausticSettings read(const Params& params);
@@ -35,8 +39,9 @@ struct PhotonSettings {
 // photon-mapped caustics; `rays` counts the rays traced.
 PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
                             const CausticSettings& caustic, uint64_t& rays);
-// The largest search radius (squared) for radiance estimates in `scene`.
-float photon_search_radius2(const Scene& scene);
+// The largest search radius (squared) for radiance estimates in `scene`: `photon_radius`,
+// or 1/20 of the scene's diagonal when that is 0.
+float photon_search_radius2(const Scene& scene, const CausticSettings& caustic);
 
 class PhotonIntegrator final : public TileIntegrator {
 public:

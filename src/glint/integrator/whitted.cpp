@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/progress.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/shading.h>
@@ -79,7 +80,16 @@ WhittedSettings WhittedSettings::read(const Params& p) {
 
 std::unique_ptr<Integrator> WhittedIntegrator::create(const RenderSettings& settings,
                                                       const Params& params) {
-    return std::make_unique<WhittedIntegrator>(settings, WhittedSettings::read(params));
+    const WhittedSettings whitted = WhittedSettings::read(params);
+    const bool photons_view =
+        std::find(settings.debug.begin(), settings.debug.end(), "photons") != settings.debug.end();
+    if (photons_view && !whitted.caustics) {
+        throw Error(
+            fmt::format("{}: the photons view with integrator 'whitted' needs caustics = true "
+                        "(the view shows its caustic map)",
+                        settings.where_of("debug")));
+    }
+    return std::make_unique<WhittedIntegrator>(settings, whitted);
 }
 
 WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings, const WhittedSettings& whitted)
@@ -98,12 +108,32 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
     uint64_t photon_rays = 0;
     if (m_whitted.caustics) {
         m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, photon_rays);
-        m_caustic_radius2 = photon_search_radius2(scene);
+        m_caustic_radius2 = photon_search_radius2(scene, m_whitted.caustic);
     }
     RenderStats stats = TileIntegrator::render(scene, film, progress);
     stats.rays += photon_rays;
     if (m_whitted.caustics)
         stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));
+    for (const std::string& view : m_settings.debug) {
+        if (view != "photons" || !m_whitted.caustics) continue;
+        // The debug view, as the photon integrator's: what the caustic map alone says at
+        // each diffuse hit seen directly or through mirrors and glass.
+        Film photons(film.width(), film.height(), false);
+        Progress quiet("photon view", 1, true);
+        m_show_photons = true;
+        const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);
+        m_show_photons = false;
+        const Image image = photons.resolve();
+        ExtraChannel channel{"photons.Y", {}};
+        for (int y = 0; y < image.height; ++y) {
+            for (int x = 0; x < image.width; ++x) {
+                channel.values.push_back(0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) +
+                                         0.0722f * image.at(x, y, 2));
+            }
+        }
+        stats.channels.push_back(std::move(channel));
+        stats.rays += view_stats.rays;
+    }
     return stats;
 }
 
@@ -126,12 +156,15 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
     const Bsdf* bsdf = shade(scene, ray, si, arena);
     if (aov) *aov = AovSample{si.material->albedo(si), si.shading.n(), si.t};
 
-    Spectrum L = emitted_radiance(si);
+    Spectrum L = m_show_photons ? Spectrum(0.0f) : emitted_radiance(si);
     // Like the path tracer's max_depth: scattering at vertex `depth` is computed only below
     // the limit, so both integrators mean the same by it (and agree where both are exact).
     if (bsdf && depth < m_max_depth) {
         const Vec3 wo_local = si.to_local(si.wo);
-        if (!bsdf->is_delta()) {
+        if (!bsdf->is_delta() && m_show_photons) {
+            L += radiance_estimate(m_caustics, si, *bsdf, m_whitted.caustic.photon_neighbours,
+                                   m_caustic_radius2);
+        } else if (!bsdf->is_delta()) {
             L += direct(scene, si, *bsdf, sampler, counter);
             L += m_whitted.ambient * si.material->albedo(si);
             if (m_caustics.size() > 0) {

@@ -16,7 +16,8 @@ struct WhittedSettings {
     int shadow_samples = 4;          ///< N in [1, 64]: area lights get N x N stratified shadow rays
     bool penumbra_shortcut = false;  ///< test 4 rays first; full set only in the penumbra
     bool caustics = false;           ///< add photon-mapped caustics (see CausticSettings)
-    CausticSettings caustic;         ///< caustic_photons, photon_neighbours, projection_maps
+    CausticSettings caustic;         ///< caustic_photons, photon_neighbours, projection_maps,
+                                     ///< photon_radius
 
     /// Reads and validates the keys above; errors name the key's location.
     static WhittedSettings read(const Params& params);
@@ -49,6 +50,7 @@ private:
     int m_max_depth;
     PhotonMap m_caustics;
     float m_caustic_radius2 = 0.0f;
+    bool m_show_photons = false;  // debug view: only the caustic map's estimate at diffuse hits
 };
 
 }  // namespace glint

@@ -1,0 +1,65 @@
+#include <glint/camera/camera.h>
+#include <glint/camera/orthographic.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace glint {
+
+std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
+    const std::string type = params.get_string("type", "perspective");
+    const Vec3 eye = params.get_vec3("eye", Vec3(0, 0, 0));
+    const Vec3 look_at = params.get_vec3("look_at", Vec3(0, 0, -1));
+    const Vec3 up = params.get_vec3("up", Vec3(0, 1, 0));
+    if (glm::length(look_at - eye) <= 0.0f) params.fail("'look_at' must differ from 'eye'");
+    if (glm::length(glm::cross(look_at - eye, up)) <= 0.0f) {
+        params.fail("'up' must not be parallel to the viewing direction");
+    }
+    // Rays are floats: coordinates and lengths beyond this overflow when squared (a ray's
+    // direction is normalised), and the rays Embree gets would not be finite.
+    constexpr float kLargest = 1e12f;
+    for (const char* name : {"eye", "look_at", "up"}) {
+        const Vec3 v = params.get_vec3(name, Vec3(0.0f));
+        if (std::max({std::abs(v.x), std::abs(v.y), std::abs(v.z)}) > kLargest)
+            params.fail(fmt::format("'{}' must lie within {:g} of the origin", name, kLargest));
+    }
+    if (type == "orthographic") {
+        const float scale = params.get_float("scale", 2.0f);
+        if (!(scale > 0.0f) || !std::isfinite(scale))
+            params.fail_at("scale", "'scale' (the image's height in scene units) must be positive");
+        if (scale > kLargest) params.fail(fmt::format("'scale' must be at most {:g}", kLargest));
+        params.check_all_used();
+        return std::make_unique<OrthographicCamera>(eye, look_at, up, scale, resolution);
+    }
+    if (type != "perspective") {
+        params.fail_at(
+            "type",
+            fmt::format("unknown camera type '{}' (expected: perspective, orthographic)", type));
+    }
+    const float fov = params.get_float("fov", 45.0f);
+    const float aperture = params.get_float("aperture", 0.0f);
+    const Vec3 forward = glm::normalize(look_at - eye);
+    float focus = glm::length(look_at - eye);
+    if (params.has("focus_on")) {
+        if (params.has("focus_distance"))
+            params.fail_at("focus_on", "give 'focus_on' or 'focus_distance', not both");
+        // The plane of focus passes through the point: its distance along the view direction.
+        focus = glm::dot(params.get_vec3("focus_on") - eye, forward);
+        if (!(focus > 0.0f))
+            params.fail_at("focus_on", "'focus_on' must be in front of the camera");
+    } else {
+        focus = params.get_float("focus_distance", focus);
+    }
+    if (!(fov > 0.0f && fov < 180.0f)) params.fail("'fov' must be in (0, 180) degrees");
+    if (aperture < 0.0f) params.fail("'aperture' must not be negative");
+    if (!(focus > 0.0f)) params.fail("'focus_distance' must be positive");
+    if (aperture > kLargest) params.fail(fmt::format("'aperture' must be at most {:g}", kLargest));
+    if (focus > kLargest)
+        params.fail(fmt::format("'focus_distance' must be at most {:g}", kLargest));
+    params.check_all_used();
+    return std::make_unique<PerspectiveCamera>(eye, look_at, up, fov, resolution, aperture, focus);
+}
+
+}  // namespace glint
