@@ -113,14 +113,24 @@ void check_debug_views(const RenderSettings& settings) {
             throw Error("--debug edges needs --adaptive sobel");
         if (view == "photons" && settings.integrator != "photon")
             throw Error("--debug photons needs --integrator photon");
-        if (view != "edges" && view != "photons") {
-            throw Error(fmt::format("unknown debug view '{}' (known: edges, photons)", view));
+        if (view == "strategies" && settings.integrator != "bdpt")
+            throw Error("--debug strategies needs --integrator bdpt");
+        if (view != "edges" && view != "photons" && view != "strategies") {
+            throw Error(
+                fmt::format("unknown debug view '{}' (known: edges, photons, strategies)", view));
         }
     }
 }
 
-// `--debug edges` writes the edge mask next to the first output, as NAME.edges.png.
+// `--debug edges` writes the edge mask next to the first output, as NAME.edges.png;
+// integrators' debug images (bdpt's strategies) go there as NAME.<name>.exr, in radiance.
 void write_debug_images(const RenderSettings& settings, const RenderStats& stats) {
+    for (const NamedImage& named : stats.images) {
+        std::filesystem::path path = settings.outputs.front();
+        path.replace_extension("." + named.name + ".exr");
+        write_image(path.string(), named.image);
+        fmt::print(stderr, "wrote {}\n", path.string());
+    }
     for (const std::string& view : settings.debug) {
         for (const ExtraChannel& channel : stats.channels) {
             if (channel.name != view + ".Y") continue;
@@ -253,7 +263,7 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--debug", render.debug,
                      "Also write a debug view: edges (with --adaptive sobel), photons (with "
-                     "--integrator photon)")
+                     "--integrator photon), strategies (with --integrator bdpt)")
         ->allow_extra_args(false);
     render_cmd
         ->add_option("--intermediate", render.intermediate,
