@@ -30,6 +30,10 @@ float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                           const PathVertex& sampled, MisHeuristic heuristic,
                           std::vector<MisVertex>& scratch) {
     const int k = s + t;
+    // A light seen directly by the lens is made by (0, 2) or (1, 1); but (1, 1) is only done
+    // for lights with a surface: a point, spot or infinite light seen directly is (0, 2)'s
+    // alone (the environment) or nobody's (the others, invisible in every glint integrator).
+    if (k == 2 && is_point_like(s == 0 ? camera[t - 1] : light[0])) return 1.0f;
     auto light_at = [&](int i) -> const PathVertex& {
         return s == 1 && t > 1 && i == 0 ? sampled : light[i];
     };
