@@ -151,7 +151,7 @@ TEST(Bdpt, ConvergesToPathOnTheCornellSpheres) {
 }
 
 TEST(Bdpt, ConvergesToPathOnAGlossySceneUnderTheSky) {
-    expect_bdpt_converges_to_path(glossy_scene, 16, 32);
+    expect_bdpt_converges_to_path(glossy_scene, 48, 64);
 }
 
 // The caustic of a point light behind a glass ball (test_light's scene): black for the path
