@@ -125,6 +125,7 @@ void check_debug_views(const RenderSettings& settings) {
     const std::string& where = settings.where_of("debug");
     for (const std::string& view : settings.debug) {
         if (view == "edges" && settings.adaptive != "sobel")
+<<<<<<< HEAD
             throw Error(fmt::format("{}: debug view 'edges' needs --adaptive sobel", where));
         if (view == "photons" && settings.integrator != "photon" &&
             settings.integrator != "whitted") {
@@ -136,12 +137,29 @@ void check_debug_views(const RenderSettings& settings) {
         if (view != "edges" && view != "photons") {
             throw Error(
                 fmt::format("{}: unknown debug view '{}' (known: edges, photons)", where, view));
+=======
+            throw Error("--debug edges needs --adaptive sobel");
+        if (view == "photons" && settings.integrator != "photon")
+            throw Error("--debug photons needs --integrator photon");
+        if (view == "strategies" && settings.integrator != "bdpt")
+            throw Error("--debug strategies needs --integrator bdpt");
+        if (view != "edges" && view != "photons" && view != "strategies") {
+            throw Error(
+                fmt::format("unknown debug view '{}' (known: edges, photons, strategies)", view));
+>>>>>>> bdpt
         }
     }
 }
 
-// `--debug edges` writes the edge mask next to the first output, as NAME.edges.png.
+// `--debug edges` writes the edge mask next to the first output, as NAME.edges.png;
+// integrators' debug images (bdpt's strategies) go there as NAME.<name>.exr, in radiance.
 void write_debug_images(const RenderSettings& settings, const RenderStats& stats) {
+    for (const NamedImage& named : stats.images) {
+        std::filesystem::path path = settings.outputs.front();
+        path.replace_extension("." + named.name + ".exr");
+        write_image(path.string(), named.image);
+        fmt::print(stderr, "wrote {}\n", path.string());
+    }
     for (const std::string& view : settings.debug) {
         for (const ExtraChannel& channel : stats.channels) {
             if (channel.name != view + ".Y") continue;
@@ -275,7 +293,11 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--debug", render.debug,
                      "Also write a debug view: edges (with --adaptive sobel), photons (with "
+<<<<<<< HEAD
                      "--integrator photon, or whitted with caustics = true)")
+=======
+                     "--integrator photon), strategies (with --integrator bdpt)")
+>>>>>>> bdpt
         ->allow_extra_args(false);
     render_cmd
         ->add_option("--intermediate", render.intermediate,

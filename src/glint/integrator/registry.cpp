@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/integrator/bdpt.h>
 #include <glint/integrator/light_tracer.h>
 #include <glint/integrator/path.h>
 #include <glint/integrator/photon.h>
@@ -23,6 +24,7 @@ std::unique_ptr<Integrator> create_path(const RenderSettings& settings, const Pa
 // adding one is one row here.
 const std::map<std::string, IntegratorCreate>& factories() {
     static const std::map<std::string, IntegratorCreate> table = {
+        {"bdpt", BdptIntegrator::create},
         {"light", LightTracer::create},
         {"path", create_path<DirectLighting::kMis>},
         {"path_light", create_path<DirectLighting::kLightOnly>},

@@ -17,6 +17,7 @@ std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
     ls.L = m_radiance;
     ls.pdf = s.pdf;
     ls.p = s.p;
+    ls.n = s.n;
     return result;
 }
 

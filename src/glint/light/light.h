@@ -14,6 +14,9 @@ struct LightSample {
     Spectrum L;        // radiance arriving from that direction (intensity/r^2 for delta lights)
     float pdf = 0.0f;  // solid-angle density, or 1 for delta lights
     Vec3 p;            // the point on the light, target of the shadow ray
+    Vec3 n{0.0f};      // unit normal of the light's surface at p (area lights); zero for lights
+                       // without a surface. Bidirectional methods need it for the densities
+                       // with which the light's own sampling (sample_le) would emit from p
     bool is_delta = false;
 };
 
@@ -86,6 +89,10 @@ public:
     // Total emitted power, for choosing lights in proportion to it.
     virtual Spectrum power() const = 0;
     virtual bool is_delta() const = 0;
+    /// Whether the emission is a delta in direction (a directional light): its rays come in
+    /// parallel from a disc outside the scene, so bidirectional methods treat its vertex as
+    /// a direction at infinity, like the environment's, rather than as a point.
+    virtual bool is_delta_direction() const { return false; }
 
     /// Lights at infinity (the environment) surround the scene instead of sitting in it:
     /// no surface hit finds them, a ray that escapes the scene does. A scene has at most

@@ -74,6 +74,7 @@ public:
     }
     Spectrum power() const override { return m_irradiance * (kPi * m_radius * m_radius); }
     bool is_delta() const override { return true; }
+    bool is_delta_direction() const override { return true; }
 
 private:
     Vec3 m_direction;  // the way the light travels

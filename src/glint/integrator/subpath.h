@@ -1,0 +1,98 @@
+#pragma once
+// Subpaths for the bidirectional methods (bdpt today; VCM and MLT later): a camera subpath
+// and a light subpath as random walks that record, at every vertex, the densities with which
+// each side's walk would have produced it. Multiple importance sampling over the ways of
+// joining two subpaths (bdpt_mis.h) needs nothing else.
+//
+// Every random number comes from the Sampler passed in, in a documented order, so that a
+// primary-sample-space sampler (MLT) can drive the same code.
+//
+// Densities (Veach 1997, ch. 10; the layout follows pbrt's BDPT): `pdf_fwd` is the density of
+// a vertex as the walk that made it produced it, `pdf_rev` the density with which a walk
+// from the other end would produce it; both per unit area at the vertex (with the cosine at
+// the vertex), except at a vertex at infinity (an environment or directional light), where
+// they are per unit solid angle of its direction. A vertex left through a delta lobe
+// (mirror, smooth glass) has both set to 0 and `delta` true: no strategy can connect there.
+#include <glint/core/arena.h>
+#include <glint/core/sampler.h>
+#include <glint/integrator/integrator.h>
+
+#include <vector>
+
+namespace glint {
+
+/// One vertex of a camera or light subpath.
+struct PathVertex {
+    enum class Kind : uint8_t {
+        kCamera,   ///< the lens point
+        kLight,    ///< a light subpath's start, or a light sampled to end a camera subpath
+        kSurface,  ///< a surface hit (it may emit: `light` is then its area light)
+        kEscape,   ///< a camera subpath that left the scene, towards `w_sky`
+    };
+    Kind kind = Kind::kSurface;
+    bool delta = false;     ///< the walk left this vertex through a delta lobe
+    bool infinite = false;  ///< a direction at infinity (environment, directional light,
+                            ///< escape), not a point: `p` is unused for densities
+    Spectrum beta{0.0f};    ///< throughput from the subpath's start to here (for a camera
+                            ///< subpath: importance; light subpath: power), this vertex's
+                            ///< scattering excluded
+    float pdf_fwd = 0.0f, pdf_rev = 0.0f;  ///< see the header comment
+    Vec3 p{0.0f};                          ///< position (ray origin for lights and the lens)
+    Vec3 ng{0.0f};     ///< geometric normal of a surface; the emitting side's normal of an
+                       ///< area light's start; zero for points without a surface
+    Vec3 w_sky{0.0f};  ///< infinite vertices: unit direction from the scene towards the light
+    const Light* light = nullptr;  ///< the light of a light vertex or emitting surface (the
+                                   ///< environment for an escape; null: constant background)
+    const Bsdf* bsdf = nullptr;    ///< surfaces; null where the surface only emits
+    SurfaceInteraction si;         ///< surfaces
+
+    bool is_surface() const { return kind == Kind::kSurface; }
+    /// Whether a strategy can join a subpath here (a surface with a BSDF not purely delta).
+    bool connectible() const { return bsdf && !bsdf->is_delta(); }
+    /// Whether a camera subpath that reached this vertex sees a light here (s = 0).
+    bool is_emitter() const { return kind == Kind::kEscape || (is_surface() && light); }
+};
+
+/// What bounds a subpath's walk.
+struct WalkLimits {
+    int max_vertices = 2;  ///< vertices in all, the start included
+    bool roulette = true;  ///< Russian roulette as the path tracer's (from the third hit)
+};
+
+/// The camera subpath of `ray` (a camera ray, as Camera::sample_ray makes it) into `path`
+/// (cleared first): the lens vertex, then one vertex per hit, and an escape vertex when the
+/// walk leaves the scene. Draws per hit that scatters: the BSDF sample (2D, 1D), then
+/// roulette (1D) where it applies.
+void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
+                             RayCounter& counter, const WalkLimits& limits,
+                             std::vector<PathVertex>& path);
+
+/// A light subpath into `path` (cleared first): a light chosen by the light sampler, a ray
+/// from it (Light::sample_le), then one vertex per hit, scattering in importance mode.
+/// Draws: the light (1D), the ray's origin (2D) and direction (2D), the light's part (1D);
+/// then per hit the BSDF sample (2D, 1D) and roulette (1D). Empty when the scene has no
+/// light or the light emits nothing.
+void generate_light_subpath(const Scene& scene, Sampler& sampler, Arena& arena, RayCounter& counter,
+                            const WalkLimits& limits, std::vector<PathVertex>& path);
+
+/// Density (per unit area at `next`, or solid angle when `next` is at infinity) with which a
+/// walk at `v`, having arrived from `prev`, continues to `next`. `v` is the lens (prev
+/// unused, may be null) or a surface with a BSDF.
+float continuation_pdf(const Scene& scene, const PathVertex* prev, const PathVertex& v,
+                       const PathVertex& next);
+
+/// Density with which the light at `v` (a light vertex, an emitting surface or an escape)
+/// emits towards `next`: per unit area at `next` (for a light at infinity, that of the disc
+/// its rays leave, projected on `next`'s surface).
+float emission_pdf(const PathVertex& v, const PathVertex& next);
+
+/// Density with which a light subpath starts at `v` (see emission_pdf) heading to `next`:
+/// the light sampler's probability of v's light times the density of the point (per unit
+/// area), or of the direction for a light at infinity (per unit solid angle).
+float emission_origin_pdf(const Scene& scene, const PathVertex& v, const PathVertex& next);
+
+/// A density `pdf_solid` (per unit solid angle at `from`) converted to one per unit area
+/// at `to` (unchanged when `to` is at infinity).
+float solid_angle_to_area(float pdf_solid, const PathVertex& from, const PathVertex& to);
+
+}  // namespace glint
