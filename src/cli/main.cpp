@@ -125,7 +125,6 @@ void check_debug_views(const RenderSettings& settings) {
     const std::string& where = settings.where_of("debug");
     for (const std::string& view : settings.debug) {
         if (view == "edges" && settings.adaptive != "sobel")
-<<<<<<< HEAD
             throw Error(fmt::format("{}: debug view 'edges' needs --adaptive sobel", where));
         if (view == "photons" && settings.integrator != "photon" &&
             settings.integrator != "whitted") {
@@ -134,19 +133,11 @@ void check_debug_views(const RenderSettings& settings) {
                 "true)",
                 where));
         }
-        if (view != "edges" && view != "photons") {
-            throw Error(
-                fmt::format("{}: unknown debug view '{}' (known: edges, photons)", where, view));
-=======
-            throw Error("--debug edges needs --adaptive sobel");
-        if (view == "photons" && settings.integrator != "photon")
-            throw Error("--debug photons needs --integrator photon");
         if (view == "strategies" && settings.integrator != "bdpt")
-            throw Error("--debug strategies needs --integrator bdpt");
+            throw Error(fmt::format("{}: debug view 'strategies' needs --integrator bdpt", where));
         if (view != "edges" && view != "photons" && view != "strategies") {
-            throw Error(
-                fmt::format("unknown debug view '{}' (known: edges, photons, strategies)", view));
->>>>>>> bdpt
+            throw Error(fmt::format(
+                "{}: unknown debug view '{}' (known: edges, photons, strategies)", where, view));
         }
     }
 }
@@ -293,11 +284,8 @@ int main(int argc, char** argv) {
     render_cmd
         ->add_option("--debug", render.debug,
                      "Also write a debug view: edges (with --adaptive sobel), photons (with "
-<<<<<<< HEAD
-                     "--integrator photon, or whitted with caustics = true)")
-=======
-                     "--integrator photon), strategies (with --integrator bdpt)")
->>>>>>> bdpt
+                     "--integrator photon, or whitted with caustics = true), strategies (with "
+                     "--integrator bdpt)")
         ->allow_extra_args(false);
     render_cmd
         ->add_option("--intermediate", render.intermediate,
