@@ -1,0 +1,120 @@
+#!/usr/bin/env bash
+# Bidirectional methods benchmark (issue 19): time for each integrator to reach a relative
+# MSE of 0.02 and of 0.005 against a long reference, on three scenes:
+#   cornell    examples/cornell-box.lua, whole image (reference: path)
+#   spheres    examples/cornell-spheres.lua, the glass sphere's caustic on the floor
+#              (reference: bdpt, which finds the caustic; path barely does)
+#   ajar       examples/ajar-door.lua, whole image: light reaches the room only by bouncing
+#              through a door left ajar (reference: bdpt)
+# Each integrator renders at a ladder of sample counts; the time to a target is interpolated
+# in log-log between the two renders around it (a render's time is the CLI's own summary,
+# scene loading excluded). See bench/README.md, "Bidirectional methods".
+# At the defaults about 25 minutes on 2 cores; SCENES and INTEGRATORS pick a part.
+#
+# Environment (all optional):
+#   BUILD_DIR    build directory (default build)
+#   THREADS      render threads (default 2)
+#   RES          resolution (default 128x128; the spheres' region is given for it)
+#   SCENES       scenes to run (default "cornell spheres ajar")
+#   INTEGRATORS  integrators to time (default "path bdpt vcm mlt sppm"; those this build
+#                does not have are skipped)
+#   REF_SPP      samples per pixel of the references (default 4096 for path, 1024 for bdpt)
+#   TARGETS      relative MSE targets (default "0.02 0.005")
+set -euo pipefail
+cd "$(dirname "${BASH_SOURCE[0]}")/.."
+BUILD_DIR=${BUILD_DIR:-build}
+THREADS=${THREADS:-2}
+RES=${RES:-128x128}
+SCENES=${SCENES:-cornell spheres ajar}
+INTEGRATORS=${INTEGRATORS:-path bdpt vcm mlt sppm}
+TARGETS=${TARGETS:-0.02 0.005}
+ninja -C "$BUILD_DIR" glint_cli glint_bench_region_error >/dev/null
+glint=$BUILD_DIR/glint
+error=$BUILD_DIR/bench/glint_bench_region_error
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+width=${RES%x*}
+height=${RES#*x}
+
+# scene name -> "file|region x0 y0 x1 y1|reference integrator|reference spp"
+scene_spec() {
+    case $1 in
+    cornell) echo "examples/cornell-box.lua|0 0 $width $height|path|${REF_SPP:-4096}" ;;
+    spheres) echo "examples/cornell-spheres.lua|74 110 98 122|bdpt|${REF_SPP:-1024}" ;;
+    ajar) echo "examples/ajar-door.lua|0 0 $width $height|bdpt|${REF_SPP:-1024}" ;;
+    *) echo "unknown scene '$1' (expected: cornell, spheres, ajar)" >&2 && exit 2 ;;
+    esac
+}
+
+# The sample counts each integrator is timed at: about the same time span for each.
+ladder() {
+    case $1 in
+    path) echo "4 16 64 256 1024" ;;
+    bdpt | vcm) echo "1 4 16 64 256" ;;
+    mlt) echo "1 4 16 64 256" ;;
+    sppm) echo "4 16 64 256" ;;
+    *) echo "4 16 64 256" ;;
+    esac
+}
+
+has_integrator() {
+    "$glint" render "$1" --integrator "$2" --res 4x4 --spp 1 -o "$tmp/probe.exr" --quiet \
+        >/dev/null 2>&1
+}
+
+render() {  # scene, output, args... -> seconds of the render (from the CLI's summary line)
+    local scene=$1 out=$2
+    shift 2
+    "$glint" render "$scene" --threads "$THREADS" --res "$RES" -o "$out" "$@" 2>"$tmp/log"
+    sed -nE 's/^.*threads: ([0-9.]+) s,.*$/\1/p' "$tmp/log" | tail -1
+}
+
+echo "Bidirectional methods, $RES, $THREADS threads, $(date +%F), commit $(git rev-parse --short HEAD)"
+for name in $SCENES; do
+    IFS='|' read -r scene region ref_integrator ref_spp <<<"$(scene_spec "$name")"
+    if [[ ! -f "$scene" ]]; then
+        echo "$name: $scene not found, skipped"
+        continue
+    fi
+    ref_seconds=$(render "$scene" "$tmp/ref.exr" --integrator "$ref_integrator" --spp "$ref_spp" \
+        --seed 7)
+    echo
+    echo "$name: $scene, region [$region], reference $ref_integrator $ref_spp spp ($ref_seconds s)"
+    printf '  %-6s %6s %9s %10s\n' integr. spp seconds "rel. MSE"
+    rows=""
+    for integrator in $INTEGRATORS; do
+        if ! has_integrator "$scene" "$integrator"; then
+            echo "  $integrator: not in this build, skipped"
+            continue
+        fi
+        for n in $(ladder "$integrator"); do
+            t=$(render "$scene" "$tmp/t.exr" --integrator "$integrator" --spp "$n" --seed 0)
+            # shellcheck disable=SC2086
+            e=$("$error" "$tmp/t.exr" "$tmp/ref.exr" $region)
+            printf '  %-6s %6d %9.2f %10.5f\n' "$integrator" "$n" "$t" "$e"
+            rows+="$integrator $n $t $e"$'\n'
+        done
+    done
+    for target in $TARGETS; do
+        # The first time each integrator reaches the target, interpolated in log-log.
+        awk -v target="$target" -v scene="$name" '
+            NF == 4 { if (!(($1) in count)) order[++names] = $1
+                      k = ++count[$1]; t[$1, k] = $3; e[$1, k] = $4 }
+            END {
+                for (j = 1; j <= names; ++j) {
+                    name = order[j]
+                    result = "> " t[name, count[name]] " s (not reached)"
+                    for (i = 1; i <= count[name]; ++i) {
+                        if (e[name, i] > target) continue
+                        if (i == 1) { result = "<= " t[name, 1] " s"; break }
+                        dt = log(t[name, i]) - log(t[name, i - 1])
+                        de = log(e[name, i]) - log(e[name, i - 1])
+                        at = log(t[name, i - 1]) + (log(target) - log(e[name, i - 1])) * dt / de
+                        result = sprintf("= %.3g s", exp(at))
+                        break
+                    }
+                    printf "  %s: time to rel. MSE %s: %-5s %s\n", scene, target, name, result
+                }
+            }' <<<"$rows"
+    done
+done
