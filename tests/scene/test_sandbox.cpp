@@ -8,6 +8,7 @@
 #include <support/test_util.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 
 using namespace glint;
@@ -44,6 +45,19 @@ TEST(Sandbox, ForbiddenCallsAreErrorsNamingTheLine) {
                               message.find("text chunks only") != std::string::npos;
         EXPECT_TRUE(explains) << call << ": " << message;
     }
+}
+
+// Scene options come from GLINT_ variables (examples/depth-of-field.lua reads GLINT_FOCUS);
+// the rest of the environment stays closed (HOME above).
+TEST(Sandbox, GlintVariablesAreReadable) {
+    ::setenv("GLINT_SANDBOX_TEST", "far", 1);
+    ::unsetenv("GLINT_SANDBOX_UNSET");
+    EXPECT_EQ(error_in(R"(
+        assert(os.getenv("GLINT_SANDBOX_TEST") == "far")
+        assert(os.getenv("GLINT_SANDBOX_UNSET") == nil)
+    )"),
+              "");
+    EXPECT_NE(error_in("\nos.getenv('GLINTX')\n").find("scene.lua:2:"), std::string::npos);
 }
 
 TEST(Sandbox, SafeLibraryIsThere) {

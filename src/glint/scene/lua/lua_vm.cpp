@@ -252,6 +252,25 @@ void set_forbidden_function(lua_State* L, const char* name) {
     lua_setglobal(L, name);
 }
 
+// os.getenv for the variables a scene may read: those whose names start with GLINT_ (scene
+// options such as GLINT_FOCUS in examples/depth-of-field.lua). Any other name is an error:
+// the rest of the environment (tokens, paths, user names) is not the scene's business.
+int glint_getenv(lua_State* L) {
+    const char* name = luaL_checkstring(L, 1);
+    if (std::strncmp(name, "GLINT_", 6) != 0) {
+        return luaL_error(L,
+                          "os.getenv('%s'): a scene may read only variables whose names start "
+                          "with GLINT_ (glint render --trusted-scene lifts this)",
+                          name);
+    }
+    const char* value = std::getenv(name);
+    if (value)
+        lua_pushstring(L, value);
+    else
+        lua_pushnil(L);
+    return 1;
+}
+
 // The safe part of the standard library: no file, process, debug or C-module access.
 void open_sandboxed_libraries(lua_State* L, const std::string& directory) {
     lua_pushcfunction(L, luaopen_base);
@@ -272,7 +291,7 @@ void open_sandboxed_libraries(lua_State* L, const std::string& directory) {
     lua_pushcclosure(L, sandbox_require, 1);
     lua_setglobal(L, "require");
 
-    // os: the clock only; the rest errors.
+    // os: the clock and GLINT_ variables only; the rest errors.
     set_forbidden_table(L, LUA_OSLIBNAME);
     lua_getglobal(L, LUA_OSLIBNAME);
     lua_pushcfunction(L, luaopen_os);
@@ -282,6 +301,9 @@ void open_sandboxed_libraries(lua_State* L, const std::string& directory) {
         lua_getfield(L, -2, safe);
         lua_rawset(L, -4);  // past the __newindex that refuses the script
     }
+    lua_pushstring(L, "getenv");
+    lua_pushcfunction(L, glint_getenv);
+    lua_rawset(L, -4);
     lua_pop(L, 2);
     for (const char* name : {LUA_IOLIBNAME, LUA_DBLIBNAME, LUA_LOADLIBNAME})
         set_forbidden_table(L, name);
