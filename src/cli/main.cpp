@@ -1,7 +1,10 @@
 // The `glint` command: render, info and compare. The only place that catches glint::Error.
 #include <glint/core/error.h>
+#include <glint/core/memory.h>
 #include <glint/core/progress.h>
+#include <glint/core/strict_number.h>
 #include <glint/film/image_io.h>
+#include <glint/film/output_batch.h>
 #include <glint/geometry/accel.h>
 #include <glint/integrator/integrator.h>
 #include <glint/scene/build.h>
@@ -12,7 +15,11 @@
 #include <tbb/task_arena.h>
 #include <CLI/CLI.hpp>
 
+#include <atomic>
+#include <climits>
+#include <csignal>
 #include <filesystem>
+#include <new>
 #include <optional>
 
 namespace {
@@ -21,20 +28,67 @@ using namespace glint;
 
 constexpr int kExitInputError = 1;
 constexpr int kExitUsageError = 2;
+constexpr int kMaxResolution = 65536;  // as glint.render{width, height}
+constexpr int kMaxThreads = 4096;
 
+// The number of the first SIGINT or SIGTERM received, 0 before. The one global of the
+// program: a signal handler can reach nothing else. The handler only stores to it (a
+// lock-free atomic store is async-signal-safe); the render polls it once per tile through
+// Progress, and the output code before each file and before the renames.
+std::atomic<int> g_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free);
+
+extern "C" void on_signal(int signal) {
+    int expected = 0;
+    g_signal.compare_exchange_strong(expected, signal);
+}
+
+void install_signal_handlers() {
+    struct sigaction action {};
+    action.sa_handler = on_signal;
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
+}
+
+void throw_if_interrupted() {
+    if (const int signal = g_signal.load(); signal != 0) throw Interrupted(signal);
+}
+
+// SIGINT and SIGTERM held back while the outputs are renamed into place, so that a run
+// ends either with every output renamed or with none.
+class SignalBlock {
+public:
+    SignalBlock() {
+        sigset_t set;
+        sigemptyset(&set);
+        sigaddset(&set, SIGINT);
+        sigaddset(&set, SIGTERM);
+        pthread_sigmask(SIG_BLOCK, &set, &m_old);
+    }
+    ~SignalBlock() { pthread_sigmask(SIG_SETMASK, &m_old, nullptr); }
+    SignalBlock(const SignalBlock&) = delete;
+    SignalBlock& operator=(const SignalBlock&) = delete;
+
+private:
+    sigset_t m_old;
+};
+
+// Numeric flags are taken as text and parsed strictly (core/strict_number.h): CLI11's
+// conversions wrap 4294967312 to 16 and -1 to 2^64 - 1.
 struct RenderOptions {
     std::string scene;
     std::vector<std::string> outputs;
-    std::optional<int> spp;
+    std::string spp;
     std::string resolution;
-    std::optional<int> threads;
-    std::optional<uint64_t> seed;
+    std::string threads;
+    std::string seed;
     std::string integrator;
-    std::optional<float> exposure;
+    std::string exposure;
     std::string adaptive;
-    std::optional<int> photons;
+    std::string photons;
     bool no_mipmap = false;
-    std::optional<int> intermediate;
+    std::string intermediate;
     std::vector<std::string> debug;
     bool aovs = false;
     bool quiet = false;
@@ -52,24 +106,26 @@ LoaderOptions loader_options(bool trusted_scene) {
     return options;
 }
 
-Vec2i parse_resolution(const std::string& text) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-        w < 1 || h < 1) {
-        throw CLI::ValidationError("--res",
-                                   fmt::format("'{}' is not WIDTHxHEIGHT, e.g. 512x512", text));
-    }
-    return Vec2i(w, h);
+[[noreturn]] void bad_flag(const std::string& flag, const std::string& text,
+                           const std::string& expected) {
+    throw CLI::ValidationError(flag, fmt::format("'{}' is not {}", text, expected));
 }
 
-// `where` names the flag or the scene line that gave the value.
-void check_output_path(const std::string& path, const std::string& where) {
-    const std::string ext = std::filesystem::path(path).extension().string();
-    if (ext != ".exr" && ext != ".png") {
-        throw Error(
-            fmt::format("{}: output '{}': unsupported format (use .exr or .png)", where, path));
+std::optional<int> int_flag(const std::string& flag, const std::string& text, int min, int max) {
+    if (text.empty()) return std::nullopt;
+    const auto value = parse_integer(text, min, max);
+    if (!value) bad_flag(flag, text, fmt::format("an integer from {} to {}", min, max));
+    return static_cast<int>(*value);
+}
+
+Vec2i parse_resolution_flag(const std::string& text) {
+    const auto res = glint::parse_resolution(text, kMaxResolution);
+    if (!res) {
+        bad_flag(
+            "--res", text,
+            fmt::format("WIDTHxHEIGHT with each side from 1 to {}, e.g. 512x512", kMaxResolution));
     }
+    return Vec2i(res->first, res->second);
 }
 
 // The scene's settings with the flags' values written into its glint.render{...} table,
@@ -77,31 +133,41 @@ void check_output_path(const std::string& path, const std::string& where) {
 // flag that gave it and anything else names the scene's line.
 RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options) {
     Params table = desc.render ? *desc.render : Params("render", "render settings");
-    if (options.spp) table.set("spp", static_cast<double>(*options.spp), "--spp");
+    if (const auto spp = int_flag("--spp", options.spp, 1, INT_MAX))
+        table.set("spp", static_cast<double>(*spp), "--spp");
     if (!options.resolution.empty()) {
-        const Vec2i res = parse_resolution(options.resolution);
+        const Vec2i res = parse_resolution_flag(options.resolution);
         table.set("width", static_cast<double>(res.x), "--res");
         table.set("height", static_cast<double>(res.y), "--res");
     }
     if (!options.integrator.empty()) table.set("integrator", options.integrator, "--integrator");
-    if (options.exposure)
-        table.set("exposure", static_cast<double>(*options.exposure), "--exposure");
+    if (!options.exposure.empty()) {
+        const auto stops = parse_finite(options.exposure);
+        if (!stops || std::abs(*stops) > 100.0)
+            bad_flag("--exposure", options.exposure, "a number of stops from -100 to 100");
+        table.set("exposure", *stops, "--exposure");
+    }
     if (options.aovs) table.set("aovs", true, "--aovs");
     if (options.no_mipmap) table.set("mipmapping", false, "--no-mipmap");
-    if (options.intermediate)
-        table.set("intermediate", static_cast<double>(*options.intermediate), "--intermediate");
+    if (const auto every = int_flag("--intermediate", options.intermediate, 0, INT_MAX))
+        table.set("intermediate", static_cast<double>(*every), "--intermediate");
     if (!options.adaptive.empty()) table.set("adaptive", options.adaptive, "--adaptive");
     if (!options.debug.empty()) table.set("debug", options.debug, "--debug");
-    if (options.photons) {
-        table.set("photons", static_cast<double>(*options.photons), "--photons");
-        table.set("caustic_photons", static_cast<double>(*options.photons), "--photons");
+    if (const auto photons = int_flag("--photons", options.photons, 1, INT_MAX)) {
+        table.set("photons", static_cast<double>(*photons), "--photons");
+        table.set("caustic_photons", static_cast<double>(*photons), "--photons");
     }
     if (!options.outputs.empty()) table.set("output", options.outputs, "--output");
     RenderSettings settings = parse_render_settings(&table);
     // Not table values: the seed may exceed what a table's integer holds, threads is no
     // scene setting.
-    if (options.threads) settings.threads = *options.threads;
-    if (options.seed) settings.seed = *options.seed;
+    if (const auto threads = int_flag("--threads", options.threads, 1, kMaxThreads))
+        settings.threads = *threads;
+    if (!options.seed.empty()) {
+        const auto seed = parse_unsigned(options.seed, UINT64_MAX);
+        if (!seed) bad_flag("--seed", options.seed, "an integer from 0 to 2^64 - 1");
+        settings.seed = *seed;
+    }
     if (settings.outputs.empty()) {
         settings.outputs = {std::filesystem::path(options.scene).stem().string() + ".exr"};
     }
@@ -142,22 +208,27 @@ void check_debug_views(const RenderSettings& settings) {
     }
 }
 
-// `--debug edges` writes the edge mask next to the first output, as NAME.edges.png;
-// integrators' debug images (bdpt's strategies) go there as NAME.<name>.exr, in radiance.
-void write_debug_images(const RenderSettings& settings, const RenderStats& stats) {
+// Debug views (`--debug edges`, photons) go next to the first output as NAME.<view>.png;
+// integrators' debug images (bdpt's strategies) as NAME.<name>.exr, in radiance.
+std::filesystem::path debug_image_path(const RenderSettings& settings, const std::string& name,
+                                       const std::string& extension = ".png") {
+    std::filesystem::path path = settings.outputs.front();
+    path.replace_extension("." + name + extension);
+    return path;
+}
+
+void add_debug_images(const RenderSettings& settings, const RenderStats& stats, OutputBatch& batch,
+                      std::vector<std::string>& written) {
     for (const NamedImage& named : stats.images) {
-        std::filesystem::path path = settings.outputs.front();
-        path.replace_extension("." + named.name + ".exr");
-        write_image(path.string(), named.image);
-        fmt::print(stderr, "wrote {}\n", path.string());
+        const std::string path = debug_image_path(settings, named.name, ".exr").string();
+        batch.add(path, named.image);
+        written.push_back(path);
     }
     for (const std::string& view : settings.debug) {
         for (const ExtraChannel& channel : stats.channels) {
             if (channel.name != view + ".Y") continue;
-            std::filesystem::path path = settings.outputs.front();
-            path.replace_extension("." + view + ".png");
-            write_image(path.string(), grey_image(settings.width, settings.height, channel.values));
-            fmt::print(stderr, "wrote {}\n", path.string());
+            batch.add(debug_image_path(settings, view).string(),
+                      grey_image(settings.width, settings.height, channel.values));
         }
     }
 }
@@ -165,26 +236,52 @@ void write_debug_images(const RenderSettings& settings, const RenderStats& stats
 int run_render(const RenderOptions& options) {
     const SceneDesc desc = load_scene_file(options.scene, loader_options(options.trusted_scene));
     const RenderSettings settings = settings_for(desc, options);
-    for (const std::string& path : settings.outputs)
-        check_output_path(path, settings.where_of("output"));
     check_debug_views(settings);
+    // Every output's directory is checked before the work: a bad path fails now, not
+    // after an hour of rendering, and writes nothing.
+    std::vector<std::string> targets = settings.outputs;
+    for (const std::string& view : settings.debug)
+        targets.push_back(debug_image_path(settings, view).string());
+    try {
+        OutputBatch::check_targets(targets);
+    } catch (const Error& e) {
+        // Name where the paths came from: a flag, or the scene's line.
+        throw Error(fmt::format("{}: {}", settings.where_of("output"), e.what()));
+    }
+    check_memory(Film::memory_bytes(settings.width, settings.height, settings.aovs),
+                 fmt::format("the film ({}x{}{})", settings.width, settings.height,
+                             settings.aovs ? " with AOVs" : ""));
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
     for (const std::string& warning : warnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto scene = build_scene(desc, settings);
+    throw_if_interrupted();
 
     const int threads =
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Film film(settings.width, settings.height, settings.aovs);
     Progress progress("rendering", expected_samples(settings), options.quiet);
+    progress.set_cancel_flag(&g_signal);
     const RenderStats stats = integrator->render(*scene, film, progress);
+    throw_if_interrupted();
     progress.finish();
 
+    // All or nothing: each output is written to a temporary and verified; only when all
+    // are good are they renamed into place. The batch removes its temporaries on any
+    // exception, an interruption included.
     const Image image = final_image(film, stats);
-    for (const std::string& path : settings.outputs)
-        write_image(path, image, WriteOptions{settings.exposure});
-    write_debug_images(settings, stats);
+    OutputBatch batch;
+    for (const std::string& path : settings.outputs) {
+        batch.add(path, image, WriteOptions{settings.exposure});
+        throw_if_interrupted();
+    }
+    add_debug_images(settings, stats, batch, targets);
+    {
+        const SignalBlock block;
+        throw_if_interrupted();
+        batch.commit();
+    }
     if (!options.quiet) {
         for (const std::string& note : stats.notes) fmt::print(stderr, "{}\n", note);
     }
@@ -200,7 +297,9 @@ int run_render(const RenderOptions& options) {
                    settings.width, settings.height, settings.spp, threads, stats.seconds,
                    stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
         fmt::print(stderr, "{} samples and {} rays in all\n", stats.samples, stats.rays);
-        for (const std::string& path : settings.outputs) fmt::print(stderr, "wrote {}\n", path);
+        for (const std::string& path : targets) {
+            if (std::filesystem::exists(path)) fmt::print(stderr, "wrote {}\n", path);
+        }
     }
     if (film.non_finite_samples() > 0) {
         fmt::print(stderr, "warning: {} samples were not finite and were skipped\n",
@@ -235,7 +334,13 @@ int run_info(const std::string& scene_path, bool trusted_scene) {
 }
 
 int run_compare(const std::string& test_path, const std::string& reference_path,
-                std::optional<double> threshold) {
+                const std::string& threshold_text) {
+    std::optional<double> threshold;
+    if (!threshold_text.empty()) {
+        threshold = parse_finite(threshold_text);
+        if (!threshold || *threshold < 0.0)
+            bad_flag("--threshold", threshold_text, "a finite number >= 0");
+    }
     const CompareResult r = compare_images(read_image(test_path), read_image(reference_path));
     fmt::print("relative MSE: {:.6g}\n", r.rel_mse);
     fmt::print("RMSE:         {:.6g}\n", r.rmse);
@@ -243,7 +348,11 @@ int run_compare(const std::string& test_path, const std::string& reference_path,
                r.test_mean[2]);
     fmt::print("ref mean:     ({:.6g}, {:.6g}, {:.6g})\n", r.ref_mean[0], r.ref_mean[1],
                r.ref_mean[2]);
-    if (threshold && r.rel_mse > *threshold) {
+    if (r.non_finite > 0) {
+        fmt::print(stderr, "{} values are NaN or infinite; no threshold can pass\n", r.non_finite);
+    }
+    // Written so that NaN fails: NaN <= threshold is false.
+    if (threshold && !(r.rel_mse <= *threshold)) {
         fmt::print(stderr, "relative MSE {:.6g} exceeds the threshold {:.6g}\n", r.rel_mse,
                    *threshold);
         return kExitInputError;
@@ -264,11 +373,12 @@ int main(int argc, char** argv) {
     render_cmd->add_option("scene", render.scene, "Scene script (.lua)")->required();
     render_cmd->add_option("-o,--output", render.outputs, "Output image, .exr or .png (repeatable)")
         ->allow_extra_args(false);  // `-o a.png scene.lua`: the scene is not a second output
-    render_cmd->add_option("--spp", render.spp, "Samples per pixel")->check(CLI::PositiveNumber);
-    render_cmd->add_option("--res", render.resolution, "Resolution WIDTHxHEIGHT");
-    render_cmd->add_option("--threads", render.threads, "Worker threads (default: all cores)")
-        ->check(CLI::PositiveNumber);
-    render_cmd->add_option("--seed", render.seed, "Random seed");
+    render_cmd->add_option("--spp", render.spp, "Samples per pixel (1 to 2^31 - 1)");
+    render_cmd->add_option("--res", render.resolution,
+                           "Resolution WIDTHxHEIGHT, each side 1 to 65536");
+    render_cmd->add_option("--threads", render.threads,
+                           "Worker threads, 1 to 4096 (default: all cores)");
+    render_cmd->add_option("--seed", render.seed, "Random seed, 0 to 2^64 - 1");
     render_cmd->add_option("--integrator", render.integrator,
                            "Light transport algorithm, e.g. path");
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
@@ -277,20 +387,16 @@ int main(int argc, char** argv) {
     render_cmd->add_option(
         "--adaptive", render.adaptive,
         "Adaptive sampling: none, sobel (supersample edges), variance (stop converged pixels)");
-    render_cmd
-        ->add_option("--photons", render.photons,
-                     "Photons per pass (sppm) or per photon map (photon)")
-        ->check(CLI::PositiveNumber);
+    render_cmd->add_option("--photons", render.photons,
+                           "Photons per pass (sppm) or per photon map (photon), 1 to 2^31 - 1");
     render_cmd
         ->add_option("--debug", render.debug,
                      "Also write a debug view: edges (with --adaptive sobel), photons (with "
                      "--integrator photon, or whitted with caustics = true), strategies (with "
                      "--integrator bdpt)")
         ->allow_extra_args(false);
-    render_cmd
-        ->add_option("--intermediate", render.intermediate,
-                     "sppm: also write the image every N passes (NAME.passNNNN.EXT)")
-        ->check(CLI::NonNegativeNumber);
+    render_cmd->add_option("--intermediate", render.intermediate,
+                           "sppm: also write the image every N passes (NAME.passNNNN.EXT)");
     render_cmd->add_flag("--no-mipmap", render.no_mipmap,
                          "Look image textures up in their full-resolution level only");
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
@@ -307,12 +413,12 @@ int main(int argc, char** argv) {
     info_cmd->add_flag("--trusted-scene", info_trusted, trusted_help);
 
     std::string test_image, reference_image;
-    std::optional<double> threshold;
+    std::string threshold;
     CLI::App* compare_cmd = app.add_subcommand("compare", "Compare an image with a reference");
     compare_cmd->add_option("test", test_image, "Image to check (.exr)")->required();
     compare_cmd->add_option("reference", reference_image, "Converged reference (.exr)")->required();
     compare_cmd->add_option("--threshold", threshold,
-                            "Exit with 1 when the relative MSE exceeds this");
+                            "Exit with 1 when the relative MSE exceeds this (finite, >= 0)");
 
     try {
         app.parse(argc, argv);
@@ -321,6 +427,7 @@ int main(int argc, char** argv) {
         return code == 0 ? 0 : kExitUsageError;
     }
 
+    install_signal_handlers();
     try {
         if (render_cmd->parsed()) return run_render(render);
         if (info_cmd->parsed()) return run_info(info_scene, info_trusted);
@@ -328,8 +435,20 @@ int main(int argc, char** argv) {
     } catch (const CLI::ValidationError& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());
         return kExitUsageError;
+    } catch (const glint::Interrupted& e) {
+        fmt::print(stderr, "glint: interrupted by {}; no output written\n",
+                   e.signal() == SIGINT    ? "SIGINT"
+                   : e.signal() == SIGTERM ? "SIGTERM"
+                                           : "a signal");
+        return 128 + e.signal();
     } catch (const glint::Error& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());
+        return kExitInputError;
+    } catch (const std::bad_alloc&) {
+        // The budget checks (core/memory.h) catch the big buffers; this is the last resort.
+        fmt::print(stderr,
+                   "glint: error: out of memory; reduce the resolution, the number of photons "
+                   "or the textures' sizes\n");
         return kExitInputError;
     } catch (const std::exception& e) {
         fmt::print(stderr, "glint: internal error: {}\n", e.what());

@@ -11,4 +11,15 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// The job was stopped from outside (the CLI's SIGINT/SIGTERM handler raised the flag
+/// given to Progress::set_cancel_flag); `signal` is the flag's value, the signal number.
+class Interrupted : public Error {
+public:
+    explicit Interrupted(int signal) : Error("interrupted"), m_signal(signal) {}
+    int signal() const { return m_signal; }
+
+private:
+    int m_signal;
+};
+
 }  // namespace glint

@@ -1,3 +1,4 @@
+#include <glint/core/error.h>
 #include <glint/core/progress.h>
 
 #include <fmt/format.h>
@@ -64,6 +65,10 @@ double Progress::elapsed_seconds() const {
 }
 
 void Progress::advance(uint64_t work) {
+    if (m_cancel) {
+        if (const int signal = m_cancel->load(std::memory_order_relaxed); signal != 0)
+            throw Interrupted(signal);
+    }
     const uint64_t done = m_done.fetch_add(work, std::memory_order_relaxed) + work;
     if (m_quiet) return;
     const int64_t now = now_ns();

@@ -22,8 +22,13 @@ public:
     Progress(const Progress&) = delete;
     Progress& operator=(const Progress&) = delete;
 
-    /// Thread-safe; `work` more units are done.
+    /// Thread-safe; `work` more units are done. Throws glint::Interrupted when the cancel
+    /// flag is set: every integrator advances once per tile (or chunk, or pass), so a
+    /// render stops within one tile of a signal, and TBB carries the exception out.
     void advance(uint64_t work);
+    /// While `*flag` is non-zero, advance() throws Interrupted(*flag). The flag is written
+    /// by a signal handler, hence a lock-free atomic; null (the default) never cancels.
+    void set_cancel_flag(const std::atomic<int>* flag) { m_cancel = flag; }
     /// Prints the final line with elapsed time and mean throughput. Idempotent.
     void finish();
 
@@ -43,6 +48,7 @@ private:
     bool m_terminal;
     Clock::time_point m_start;
     std::atomic<uint64_t> m_done{0};
+    const std::atomic<int>* m_cancel = nullptr;
     // Earliest time, in ns since m_start, at which a worker should try to print; lets
     // advance() skip the mutex entirely between updates.
     std::atomic<int64_t> m_next_print_ns{0};

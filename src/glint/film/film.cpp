@@ -1,6 +1,7 @@
 #include <glint/film/film.h>
 
 #include <glint/core/error.h>
+#include <glint/core/memory.h>
 
 #include <fmt/format.h>
 
@@ -18,6 +19,15 @@ Film::Film(int width, int height, bool with_aovs)
     const std::size_t count = static_cast<std::size_t>(width) * static_cast<std::size_t>(height);
     m_pixels.resize(count);
     if (with_aovs) m_aovs.resize(count);
+}
+
+uint64_t Film::memory_bytes(int width, int height, bool with_aovs) {
+    const uint64_t pixels = saturating_product(static_cast<uint64_t>(std::max(width, 0)),
+                                               static_cast<uint64_t>(std::max(height, 0)));
+    const uint64_t channels = with_aovs ? 10 : 3;
+    const uint64_t per_pixel = sizeof(Pixel) + (with_aovs ? sizeof(AovPixel) : 0) +
+                               3 * sizeof(double) + 2 * channels * sizeof(float);
+    return saturating_product(pixels, per_pixel);
 }
 
 void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov) {

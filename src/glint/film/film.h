@@ -30,6 +30,12 @@ public:
     /// Throws glint::Error unless width and height are positive.
     Film(int width, int height, bool with_aovs);
 
+    /// Bytes a film of this size holds at most: its accumulators, splat sums, and the
+    /// resolved Image (floats, 3 or 10 channels) with one more image's worth for encoding
+    /// and verifying the output. For checking a render against the memory budget before
+    /// anything is allocated; saturates rather than wraps.
+    static uint64_t memory_bytes(int width, int height, bool with_aovs);
+
     int width() const { return m_width; }
     int height() const { return m_height; }
     bool has_aovs() const { return m_with_aovs; }

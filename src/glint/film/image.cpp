@@ -31,14 +31,16 @@ Image make_image(int width, int height, std::vector<std::string> channels) {
 Image with_channel(const Image& image, const std::string& name, const std::vector<float>& values) {
     const std::size_t pixel_count = static_cast<std::size_t>(image.width) * image.height;
     if (values.size() != pixel_count) {
-        throw Error(fmt::format("channel '{}' has {} values for {} pixels", name, values.size(), pixel_count));
+        throw Error(fmt::format("channel '{}' has {} values for {} pixels", name, values.size(),
+                                pixel_count));
     }
     std::vector<std::string> channels = image.channels;
     channels.push_back(name);
     Image result = make_image(image.width, image.height, std::move(channels));
     const int old_count = image.num_channels();
     for (std::size_t p = 0; p < pixel_count; ++p) {
-        for (int c = 0; c < old_count; ++c) result.pixels[p * (old_count + 1) + c] = image.pixels[p * old_count + c];
+        for (int c = 0; c < old_count; ++c)
+            result.pixels[p * (old_count + 1) + c] = image.pixels[p * old_count + c];
         result.pixels[p * (old_count + 1) + old_count] = values[p];
     }
     return result;

@@ -1,17 +1,21 @@
 #include <glint/film/image_io.h>
 
 #include <glint/core/error.h>
+#include <glint/core/memory.h>
+#include <glint/film/output_batch.h>
 
 #include <OpenImageIO/imageio.h>
 #include <OpenImageIO/strutil.h>
+#include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <system_error>
 #include <vector>
@@ -29,17 +33,6 @@ std::string lower_extension(const std::string& path) {
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
     return ext;
-}
-
-// "dir/out.exr" -> "dir/out.tmp<pid>-<n>.exr": beside the target so rename() stays on
-// one file system, unique per process and call, and with the real extension last
-// because OpenImageIO chooses the format from it.
-fs::path temporary_path(const fs::path& target) {
-    static std::atomic<uint64_t> counter{0};
-    const std::string name =
-        fmt::format("{}.tmp{}-{}{}", target.stem().string(), static_cast<long>(::getpid()),
-                    counter.fetch_add(1), target.extension().string());
-    return target.parent_path() / name;
 }
 
 double srgb_encode(double linear) {
@@ -85,6 +78,32 @@ std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure, int& 
     return out;
 }
 
+// Encoders built on stdio can lose a failed write (ENOSPC, EFBIG) in a buffer they never
+// check; fsync reports what the kernel could not store, and verify_written what was lost.
+void sync_file(const std::string& file) {
+    const int fd = ::open(file.c_str(), O_RDONLY);
+    if (fd < 0) throw Error(std::strerror(errno));
+    const int synced = ::fsync(fd);
+    const int error = errno;
+    ::close(fd);
+    if (synced != 0) throw Error(std::strerror(error));
+}
+
+void verify_written(const std::string& file, int width, int height) {
+    auto in = OIIO::ImageInput::open(file);
+    if (!in) throw Error(fmt::format("the written file does not read back ({})", OIIO::geterror()));
+    const OIIO::ImageSpec& spec = in->spec();
+    std::vector<unsigned char> pixels(spec.image_bytes(/*native=*/true));
+    const bool ok = spec.width == width && spec.height == height &&
+                    in->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data());
+    const std::string reason = in->geterror();
+    in->close();
+    if (!ok) {
+        throw Error(fmt::format("the written file is incomplete (disk full or file too large?){}",
+                                reason.empty() ? "" : ": " + reason));
+    }
+}
+
 void write_with_oiio(const fs::path& file, const OIIO::ImageSpec& spec, const void* data) {
     auto out = OIIO::ImageOutput::create(file.string());
     if (!out) throw Error(OIIO::geterror());
@@ -100,51 +119,50 @@ void write_with_oiio(const fs::path& file, const OIIO::ImageSpec& spec, const vo
 }  // namespace
 
 void write_image(const std::string& path, const Image& image, const WriteOptions& options) {
-    const std::string ext = lower_extension(path);
-    if (ext != ".exr" && ext != ".png") {
-        throw Error(fmt::format("cannot write '{}': unsupported extension '{}'; supported: {}",
-                                path, ext, kSupported));
-    }
+    OutputBatch batch;
+    batch.add(path, image, options);
+    batch.commit();
+}
+
+void write_image_file(const std::string& file, const Image& image, const WriteOptions& options) {
+    const std::string ext = lower_extension(file);
+    if (ext != ".exr" && ext != ".png")
+        throw Error(fmt::format("unsupported extension '{}'; supported: {}", ext, kSupported));
     if (image.width <= 0 || image.height <= 0 || image.channels.empty() ||
         image.pixels.size() != image.index(0, image.height, 0)) {
-        throw Error(
-            fmt::format("cannot write '{}': image is empty or its pixel buffer does "
-                        "not match {}x{}x{}",
-                        path, image.width, image.height, image.channels.size()));
+        throw Error(fmt::format("image is empty or its pixel buffer does not match {}x{}x{}",
+                                image.width, image.height, image.channels.size()));
     }
-
-    const fs::path target(path);
-    const fs::path temp = temporary_path(target);
-    try {
-        if (ext == ".exr") {
-            OIIO::ImageSpec spec(image.width, image.height, image.num_channels(),
-                                 OIIO::TypeDesc::FLOAT);
-            spec.channelnames = image.channels;
-            spec.alpha_channel = image.channel_index("A");
-            spec.attribute("compression", "zip");
-            // OpenEXR stamps files with the current time (capDate) unless told otherwise; a
-            // fixed stamp keeps a render's file identical bit for bit, run after run.
-            spec.attribute("DateTime", "1970:01:01 00:00:00");
-            write_with_oiio(temp, spec, image.pixels.data());
-        } else {
-            int channels = 0;
-            const std::vector<uint8_t> bytes = encode_png_pixels(image, options.exposure, channels);
-            OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
-            spec.attribute("oiio:ColorSpace", "sRGB");
-            write_with_oiio(temp, spec, bytes.data());
-        }
-        fs::rename(temp, target);
-    } catch (const std::exception& e) {
-        std::error_code ignored;
-        fs::remove(temp, ignored);
-        throw Error(fmt::format("cannot write '{}': {}", path, e.what()));
+    if (ext == ".exr") {
+        OIIO::ImageSpec spec(image.width, image.height, image.num_channels(),
+                             OIIO::TypeDesc::FLOAT);
+        spec.channelnames = image.channels;
+        spec.alpha_channel = image.channel_index("A");
+        spec.attribute("compression", "zip");
+        // OpenEXR stamps files with the current time (capDate) unless told otherwise; a
+        // fixed stamp keeps a render's file identical bit for bit, run after run.
+        spec.attribute("DateTime", "1970:01:01 00:00:00");
+        write_with_oiio(file, spec, image.pixels.data());
+    } else {
+        int channels = 0;
+        const std::vector<uint8_t> bytes = encode_png_pixels(image, options.exposure, channels);
+        OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
+        spec.attribute("oiio:ColorSpace", "sRGB");
+        write_with_oiio(file, spec, bytes.data());
     }
+    sync_file(file);
+    verify_written(file, image.width, image.height);
 }
 
 Image read_image(const std::string& path) {
+    std::error_code ec;
+    const uintmax_t file_bytes = fs::file_size(path, ec);
+    if (ec) throw Error(fmt::format("cannot read '{}': {}", path, ec.message()));
     auto in = OIIO::ImageInput::open(path);
     if (!in) throw Error(fmt::format("cannot read '{}': {}", path, OIIO::geterror()));
     const OIIO::ImageSpec& spec = in->spec();
+    check_image_header(path, spec.width, spec.height, spec.nchannels, spec.format.size(),
+                       file_bytes);
     Image image;
     image.width = spec.width;
     image.height = spec.height;
@@ -189,13 +207,14 @@ CompareResult compare_images(const Image& test, const Image& reference) {
                                     names[c], tc[c] < 0 ? "test image" : "reference"));
         }
     }
-    CompareResult result{0.0, 0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}};
+    CompareResult result{0.0, 0.0, {0.0, 0.0, 0.0}, {0.0, 0.0, 0.0}, 0};
     double sq_sum = 0.0;
     for (int y = 0; y < test.height; ++y) {
         for (int x = 0; x < test.width; ++x) {
             for (int c = 0; c < 3; ++c) {
                 const double t = test.at(x, y, tc[c]);
                 const double r = reference.at(x, y, rc[c]);
+                if (!std::isfinite(t) || !std::isfinite(r)) ++result.non_finite;
                 const double d2 = (t - r) * (t - r);
                 // The 1e-2 keeps near-black reference pixels from dominating the mean.
                 result.rel_mse += d2 / (r * r + 1e-2);
@@ -214,6 +233,8 @@ CompareResult compare_images(const Image& test, const Image& reference) {
             result.ref_mean[c] /= pixels;
         }
     }
+    // NaN already propagates through the sums; an infinity against an infinity would not.
+    if (result.non_finite > 0) result.rel_mse = result.rmse = std::nan("");
     return result;
 }
 

@@ -4,6 +4,7 @@
 #include <glint/film/image.h>
 
 #include <array>
+#include <cstdint>
 #include <string>
 
 namespace glint {
@@ -17,14 +18,24 @@ struct WriteOptions {
 /// scaled by 2^exposure, clamped to [0, 1] and correctly rounded. Anything else throws.
 /// The image goes to a temporary file beside `path` that is renamed over it, so `path`
 /// is never left half-written; on failure the temporary is removed and glint::Error
-/// names the path and the reason.
+/// names the path and the reason. (An OutputBatch of one image; see output_batch.h.)
 void write_image(const std::string& path, const Image& image, const WriteOptions& options = {});
+
+/// Writes `image` to exactly `file` (format by its extension, as write_image), checking
+/// every result of the writer, then flushes the file to the disk (fsync) and decodes it
+/// again, so that a full disk or a file-size limit the encoder does not report is still
+/// caught. Throws glint::Error with the reason; may leave a partial `file` behind, which
+/// is why only OutputBatch calls it, on a temporary.
+void write_image_file(const std::string& file, const Image& image, const WriteOptions& options);
 
 /// Reads any format OpenImageIO knows, all channels as float with the file's channel
 /// names. Integer files tagged sRGB (PNG, JPEG) are decoded to linear, alpha excepted,
 /// so read_image(write_image(x)) gives x back up to 8-bit quantisation. EXR channel
 /// order is the file's (OpenEXR sorts layers by name): look channels up by name.
-/// Throws glint::Error naming the path if the file cannot be read.
+/// The header is checked before any pixel is allocated (core/memory.h,
+/// check_image_header: sizes within limits and plausible for the file's size, the decoded
+/// image within the memory budget). Throws glint::Error naming the path if the file
+/// cannot be read, its header lies, or its data ends early.
 Image read_image(const std::string& path);
 
 struct CompareResult {
@@ -32,11 +43,13 @@ struct CompareResult {
     double rmse;                      ///< sqrt of the mean of (t - r)^2
     std::array<double, 3> test_mean;  ///< per-channel means of R, G, B
     std::array<double, 3> ref_mean;
+    uint64_t non_finite = 0;  ///< R, G, B values (of either image) that are NaN or infinite
 };
 
 /// Compares the R, G, B channels (found by name) of two images of the same size, over
-/// all pixels and the three channels. Throws glint::Error on a size mismatch or a
-/// missing channel.
+/// all pixels and the three channels. A non-finite value in either image makes rel_mse and
+/// rmse NaN (and is counted in non_finite), so that no threshold test can pass. Throws glint::Error
+/// on a size mismatch or a missing channel.
 CompareResult compare_images(const Image& test, const Image& reference);
 
 }  // namespace glint

@@ -68,13 +68,19 @@ bool Accel::occluded(const Ray& ray) const {
 
 namespace {
 
-// Embree's 8-wide calls take an int per lane: -1 traces it, 0 leaves it out. Lanes are
-// handled here by selects and bit masks rather than branches: whether a lane is active or
-// hit something has no pattern a branch predictor could learn.
-PerLane<int> embree_valid(uint32_t active) {
-    PerLane<int> valid;
+// Embree's 8-wide calls take an int per lane: -1 traces it, 0 leaves it out. Embree loads
+// the mask with an aligned 256-bit load, so it must be 32-byte aligned: a plain
+// std::array<int, 8> is only 4-byte aligned and worked by luck of the stack layout.
+struct alignas(32) EmbreeValid {
+    int lanes[kPacketWidth];
+};
+
+// Lanes are handled here by selects and bit masks rather than branches: whether a lane is
+// active or hit something has no pattern a branch predictor could learn.
+EmbreeValid embree_valid(uint32_t active) {
+    EmbreeValid valid;
     for (int lane = 0; lane < kPacketWidth; ++lane)
-        valid[lane] = -static_cast<int>((active >> lane) & 1u);
+        valid.lanes[lane] = -static_cast<int>((active >> lane) & 1u);
     return valid;
 }
 
@@ -127,10 +133,10 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
         packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
-    const PerLane<int> valid = embree_valid(active);
+    const EmbreeValid valid = embree_valid(active);
     RTCIntersectContext context;
     init_context(context, coherent);
-    rtcIntersect8(valid.data(), m_world, &context, &packet);
+    rtcIntersect8(valid.lanes, m_world, &context, &packet);
 
     uint32_t hit_lanes = 0;
     for (int lane = 0; lane < kPacketWidth; ++lane)
@@ -163,10 +169,10 @@ uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3
         const int source = (active >> lane) & 1u ? lane : first;
         set_packet_ray(packet, lane, origins[source], directions[source], 0.0f, t_max);
     }
-    const PerLane<int> valid = embree_valid(active);
+    const EmbreeValid valid = embree_valid(active);
     RTCIntersectContext context;
     init_context(context, coherent);
-    rtcOccluded8(valid.data(), m_world, &context, &packet);
+    rtcOccluded8(valid.lanes, m_world, &context, &packet);
 
     // Embree sets tfar to -inf where something blocks the segment.
     uint32_t blocked = 0;

@@ -1,3 +1,5 @@
+#include <glint/core/error.h>
+#include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/photon_tracer.h>
@@ -57,6 +59,17 @@ PhotonSettings PhotonSettings::read(const Params& p) {
     s.caustic = CausticSettings::read(p);
     if (s.photons < 1) p.fail_at("photons", "'photons' must be at least 1");
     if (s.gather_rays < 0) p.fail_at("gather_rays", "'gather_rays' must not be negative");
+    // Every emitted photon is stored at least once (more with bounces), and held twice while
+    // the maps are built (the chunks' lists, then the map): a lower bound on what the maps
+    // take, checked before a single photon is traced.
+    const uint64_t emitted =
+        static_cast<uint64_t>(s.photons) + static_cast<uint64_t>(s.caustic.caustic_photons);
+    try {
+        check_memory(saturating_product(emitted, 2 * (sizeof(Photon) + 1)),
+                     fmt::format("the photon maps ({} photons)", emitted));
+    } catch (const Error& e) {
+        p.fail_at("photons", e.what());
+    }
     return s;
 }
 

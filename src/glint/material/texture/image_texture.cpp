@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/memory.h>
 #include <glint/material/texture/image_texture.h>
 #include <glint/material/texture/texture_table.h>
 
@@ -7,6 +8,8 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <system_error>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -83,14 +86,28 @@ std::unique_ptr<Texture> load_image_texture(const std::string& path,
                                             const TextureMapping2D& mapping, TextureTable& table) {
     if (!std::filesystem::is_regular_file(path))
         throw Error(fmt::format("texture file '{}' does not exist", path));
+    std::error_code ec;
+    const uintmax_t file_bytes = std::filesystem::file_size(path, ec);
+    if (ec) throw Error(fmt::format("cannot read texture file '{}': {}", path, ec.message()));
     auto input = OIIO::ImageInput::open(path);
     if (!input) {
         throw Error(fmt::format("cannot read texture file '{}': {}", path, OIIO::geterror()));
     }
     const OIIO::ImageSpec spec = input->spec();
+    // The header is checked before anything is allocated for it, and the image decoded in
+    // full once, here: the texture system decodes lazily, tile by tile, and would turn a
+    // lying header or a truncated file into failed lookups (black, and libpng's complaints
+    // on stderr) in the middle of the render instead of an error now.
+    check_image_header(path, spec.width, spec.height, spec.nchannels, spec.format.size(),
+                       file_bytes);
+    {
+        std::vector<unsigned char> pixels(spec.image_bytes(/*native=*/true));
+        if (!input->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data())) {
+            throw Error(fmt::format("texture file '{}' is damaged or truncated: {}", path,
+                                    input->geterror()));
+        }
+    }
     input->close();
-    if (spec.width <= 0 || spec.height <= 0 || spec.nchannels <= 0)
-        throw Error(fmt::format("texture file '{}' holds no image", path));
 
     OIIO::TextureOpt opt;
     opt.swrap = opt.twrap = parse_wrap(options.wrap);

@@ -2,64 +2,221 @@
 #include <glint/scene/import/obj.h>
 
 #include <fmt/format.h>
-#include <tiny_obj_loader.h>
 
+#include <charconv>
+#include <cmath>
+#include <cstdint>
 #include <filesystem>
-#include <map>
-#include <tuple>
+#include <fstream>
+#include <limits>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
 
 namespace glint {
+namespace {
+
+// One corner of a face as written: 0 where the element is absent, else the file's
+// (1-based or negative) index.
+struct Corner {
+    int64_t v = 0, vt = 0, vn = 0;
+};
+
+class ObjParser {
+public:
+    explicit ObjParser(std::string name) : m_name(std::move(name)) {}
+
+    void parse_line(std::string_view line, uint64_t number) {
+        m_line = number;
+        std::string_view rest = line;
+        const std::string_view keyword = next_token(rest);
+        if (keyword.empty() || keyword.front() == '#') return;
+        if (keyword == "v") {
+            const std::vector<float> x = numbers(rest, 3, 7, "'v' (x y z [w])");
+            m_positions.emplace_back(x[0], x[1], x[2]);
+        } else if (keyword == "vn") {
+            const std::vector<float> x = numbers(rest, 3, 3, "'vn' (x y z)");
+            m_normals.emplace_back(x[0], x[1], x[2]);
+        } else if (keyword == "vt") {
+            const std::vector<float> x = numbers(rest, 1, 3, "'vt' (u [v [w]])");
+            m_uvs.emplace_back(x[0], x.size() > 1 ? x[1] : 0.0f);
+        } else if (keyword == "f") {
+            parse_face(rest);
+        }
+        // Everything else (o, g, s, usemtl, mtllib, l, p, curves) carries nothing a
+        // triangle mesh can use.
+    }
+
+    MeshData finish() {
+        if (m_mesh.indices.empty())
+            throw Error(fmt::format("OBJ file '{}' contains no faces", m_name));
+        if (!m_all_normals) m_mesh.normals.clear();
+        if (!m_all_uvs) m_mesh.uvs.clear();
+        return std::move(m_mesh);
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error(fmt::format("{}:{}: {}", m_name, m_line, what));
+    }
+
+    static std::string_view next_token(std::string_view& rest) {
+        size_t begin = 0;
+        while (begin < rest.size() &&
+               (rest[begin] == ' ' || rest[begin] == '\t' || rest[begin] == '\r'))
+            ++begin;
+        size_t end = begin;
+        while (end < rest.size() && rest[end] != ' ' && rest[end] != '\t' && rest[end] != '\r')
+            ++end;
+        const std::string_view token = rest.substr(begin, end - begin);
+        rest.remove_prefix(end);
+        return token;
+    }
+
+    std::vector<float> numbers(std::string_view rest, size_t min, size_t max,
+                               const char* statement) const {
+        std::vector<float> values;
+        for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
+            if (token.front() == '#') break;
+            float value = 0.0f;
+            const char* end = token.data() + token.size();
+            // from_chars takes no leading '+'; OBJ writers sometimes emit one.
+            const char* begin = token.front() == '+' ? token.data() + 1 : token.data();
+            const auto [ptr, ec] = std::from_chars(begin, end, value);
+            if (ec == std::errc::result_out_of_range)
+                fail(fmt::format("'{}' is out of the range of a float", token));
+            if (ec != std::errc() || ptr != end)
+                fail(fmt::format("'{}' is not a number in {}", token, statement));
+            if (!std::isfinite(value))
+                fail(fmt::format("'{}' is not a finite number in {}", token, statement));
+            values.push_back(value);
+        }
+        if (values.size() < min || values.size() > max) {
+            fail(fmt::format("{} needs {}{} numbers, found {}", statement, min,
+                             max > min ? fmt::format(" to {}", max) : "", values.size()));
+        }
+        return values;
+    }
+
+    // An index as written: a non-zero integer that fits in 64 bits (no wrap-around).
+    int64_t parse_index(std::string_view text, const char* what) const {
+        int64_t value = 0;
+        const char* end = text.data() + text.size();
+        const auto [ptr, ec] = std::from_chars(text.data(), end, value);
+        if (ec == std::errc::result_out_of_range)
+            fail(fmt::format("{} index '{}' is too large", what, text));
+        if (ec != std::errc() || ptr != end)
+            fail(fmt::format("'{}' is not an integer {} index", text, what));
+        if (value == 0) fail(fmt::format("{} index 0: OBJ indices start at 1", what));
+        return value;
+    }
+
+    // The 0-based element `index` refers to among `count` defined so far.
+    uint64_t resolve(int64_t index, size_t count, const char* what, const char* plural) const {
+        const auto n = static_cast<int64_t>(count);
+        const int64_t resolved = index > 0 ? index - 1 : n + index;
+        if (resolved < 0 || resolved >= n) {
+            fail(fmt::format(
+                "face refers to {} {}, but {} {} defined before it", what, index, count,
+                count == 1 ? fmt::format("{} is", what) : fmt::format("{} are", plural)));
+        }
+        return static_cast<uint64_t>(resolved);
+    }
+
+    Corner parse_corner(std::string_view token) const {
+        Corner corner;
+        const size_t slash1 = token.find('/');
+        corner.v = parse_index(token.substr(0, slash1), "vertex");
+        if (slash1 == std::string_view::npos) return corner;
+        const std::string_view after = token.substr(slash1 + 1);
+        const size_t slash2 = after.find('/');
+        const std::string_view vt = after.substr(0, slash2);
+        if (!vt.empty()) corner.vt = parse_index(vt, "uv");
+        if (slash2 != std::string_view::npos)
+            corner.vn = parse_index(after.substr(slash2 + 1), "normal");
+        return corner;
+    }
+
+    // The glint vertex of a corner: OBJ indexes positions, uvs and normals separately, so
+    // there is one glint vertex per distinct triple.
+    uint32_t vertex_of(const Corner& c) {
+        const uint64_t v = resolve(c.v, m_positions.size(), "vertex", "vertices");
+        const uint64_t vt = c.vt != 0 ? resolve(c.vt, m_uvs.size(), "uv", "uvs") + 1 : 0;
+        const uint64_t vn =
+            c.vn != 0 ? resolve(c.vn, m_normals.size(), "normal", "normals") + 1 : 0;
+        if (vt == 0) m_all_uvs = false;
+        if (vn == 0) m_all_normals = false;
+        const Key key{v, vt, vn};
+        const auto [it, inserted] =
+            m_vertex_of.try_emplace(key, static_cast<uint32_t>(m_mesh.positions.size()));
+        if (inserted) {
+            if (m_mesh.positions.size() >= std::numeric_limits<uint32_t>::max())
+                fail("more than 2^32 - 1 distinct vertices");
+            m_mesh.positions.push_back(m_positions[v]);
+            m_mesh.normals.push_back(vn != 0 ? m_normals[vn - 1] : Vec3(0.0f));
+            m_mesh.uvs.push_back(vt != 0 ? m_uvs[vt - 1] : Vec2(0.0f));
+        }
+        return it->second;
+    }
+
+    void parse_face(std::string_view rest) {
+        m_face.clear();
+        for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
+            if (token.front() == '#') break;
+            m_face.push_back(vertex_of(parse_corner(token)));
+        }
+        if (m_face.size() < 3)
+            fail(fmt::format("a face needs at least 3 corners, found {}", m_face.size()));
+        // A fan around the first corner: right for the convex polygons OBJ describes, and
+        // linear in the corner count (ear clipping is quadratic: a 200 000-corner face
+        // would take minutes).
+        for (size_t i = 1; i + 1 < m_face.size(); ++i) {
+            m_mesh.indices.push_back(m_face[0]);
+            m_mesh.indices.push_back(m_face[i]);
+            m_mesh.indices.push_back(m_face[i + 1]);
+        }
+    }
+
+    struct Key {
+        uint64_t v, vt, vn;
+        bool operator==(const Key&) const = default;
+    };
+    struct KeyHash {
+        size_t operator()(const Key& k) const {
+            uint64_t h = k.v * 0x9E3779B97F4A7C15ull;
+            h ^= k.vt + 0x7F4A7C159E3779B9ull + (h << 6) + (h >> 2);
+            h ^= k.vn + 0x94D049BB133111EBull + (h << 6) + (h >> 2);
+            return static_cast<size_t>(h);
+        }
+    };
+
+    std::string m_name;
+    uint64_t m_line = 0;
+    std::vector<Vec3> m_positions, m_normals;
+    std::vector<Vec2> m_uvs;
+    std::unordered_map<Key, uint32_t, KeyHash> m_vertex_of;
+    std::vector<uint32_t> m_face;  // reused from face to face
+    bool m_all_normals = true, m_all_uvs = true;
+    MeshData m_mesh;
+};
+
+}  // namespace
+
+MeshData parse_obj(std::istream& in, const std::string& name) {
+    ObjParser parser(name);
+    std::string line;
+    uint64_t number = 0;
+    while (std::getline(in, line)) parser.parse_line(line, ++number);
+    if (in.bad()) throw Error(fmt::format("cannot read OBJ file '{}': read error", name));
+    return parser.finish();
+}
 
 MeshData load_obj(const std::string& path) {
     if (!std::filesystem::is_regular_file(path))
         throw Error(fmt::format("cannot open OBJ file '{}'", path));
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = std::filesystem::path(path).parent_path().string();
-    tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path, config)) {
-        throw Error(fmt::format("cannot read OBJ file '{}': {}", path, reader.Error()));
-    }
-    const tinyobj::attrib_t& attrib = reader.GetAttrib();
-    MeshData mesh;
-    bool has_normals = !attrib.normals.empty();
-    bool has_uvs = !attrib.texcoords.empty();
-    // OBJ indexes positions, normals and uvs separately; one glint vertex per distinct triple.
-    std::map<std::tuple<int, int, int>, uint32_t> vertex_of;
-    for (const tinyobj::shape_t& shape : reader.GetShapes()) {
-        for (const tinyobj::index_t& index : shape.mesh.indices) {
-            if (index.normal_index < 0) has_normals = false;
-            if (index.texcoord_index < 0) has_uvs = false;
-            const auto key =
-                std::make_tuple(index.vertex_index, index.normal_index, index.texcoord_index);
-            auto [it, inserted] =
-                vertex_of.try_emplace(key, static_cast<uint32_t>(mesh.positions.size()));
-            if (inserted) {
-                const float* p = &attrib.vertices[3 * static_cast<size_t>(index.vertex_index)];
-                mesh.positions.emplace_back(p[0], p[1], p[2]);
-                if (index.normal_index >= 0) {
-                    const float* n = &attrib.normals[3 * static_cast<size_t>(index.normal_index)];
-                    mesh.normals.emplace_back(n[0], n[1], n[2]);
-                } else {
-                    mesh.normals.emplace_back(0.0f);
-                }
-                if (index.texcoord_index >= 0) {
-                    const float* t =
-                        &attrib.texcoords[2 * static_cast<size_t>(index.texcoord_index)];
-                    mesh.uvs.emplace_back(t[0], t[1]);
-                } else {
-                    mesh.uvs.emplace_back(0.0f);
-                }
-            }
-            mesh.indices.push_back(it->second);
-        }
-    }
-    // Attributes only some corners have would give garbage; keep them only when complete.
-    if (!has_normals) mesh.normals.clear();
-    if (!has_uvs) mesh.uvs.clear();
-    if (mesh.indices.empty()) throw Error(fmt::format("OBJ file '{}' contains no faces", path));
-    return mesh;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(fmt::format("cannot open OBJ file '{}'", path));
+    return parse_obj(in, path);
 }
 
 }  // namespace glint
