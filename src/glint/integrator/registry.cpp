@@ -1,6 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/integrator/bdpt.h>
 #include <glint/integrator/light_tracer.h>
+#include <glint/integrator/mlt.h>
 #include <glint/integrator/path.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/sppm.h>
@@ -26,6 +27,7 @@ const std::map<std::string, IntegratorCreate>& factories() {
     static const std::map<std::string, IntegratorCreate> table = {
         {"bdpt", BdptIntegrator::create},
         {"light", LightTracer::create},
+        {"mlt", MltIntegrator::create},
         {"path", create_path<DirectLighting::kMis>},
         {"path_light", create_path<DirectLighting::kLightOnly>},
         {"path_bsdf", create_path<DirectLighting::kBsdfOnly>},
