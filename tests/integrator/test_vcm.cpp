@@ -39,13 +39,16 @@ Estimate image_mean(const std::function<std::string(int)>& scene, int k, int c) 
 // test_bdpt's closed furnace: a diffuse sphere (albedo a) inside a sphere emitting Le inwards
 // reflects exactly a Le. Merging has no bias here: the photons lie on a sphere, where the
 // part within distance r of a point has area exactly pi r^2 (Archimedes), and the irradiance
-// is uniform. The radius is large, so that merges carry much of the image.
+// is uniform. What is left is the bias of the merges' weights, computed as if the photon lay
+// at the camera vertex: it grows as r^2 and was measured as 1.4 % at a fixed r = 0.2 and
+// 0.2 % at r = 0.05 (albedo 1, 256 iterations); r_0 = 0.05 shrinking, hence 0.3 % on top
+// of the noise. The radius is large (eta = 2), so that merges carry much of the image.
 TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
     auto scene = [](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
             glint.render{{ width = 16, height = 16, spp = 32, seed = {}, integrator = 'vcm',
-                          vcm_radius = 0.1 }}
+                          vcm_radius = 0.05 }}
             glint.sphere{{ center = {{0, 0, 0}}, radius = 3,
                           material = glint.emissive{{ radiance = 2, two_sided = true }} }}
             glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
@@ -58,7 +61,7 @@ TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
         const Estimate e = image_mean(scene, 6, c);
         fmt::print("channel {}: {:.5f} +- {:.5f} (exact {})\n", c, e.mean, e.se, expected[c]);
         EXPECT_LT(4.0 * e.se, 0.01 * expected[c]);
-        EXPECT_NEAR(e.mean, expected[c], 4.0 * e.se) << "channel " << c;
+        EXPECT_NEAR(e.mean, expected[c], 4.0 * e.se + 0.003 * expected[c]) << "channel " << c;
     }
 }
 
