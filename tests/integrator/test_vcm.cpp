@@ -42,7 +42,8 @@ Estimate image_mean(const std::function<std::string(int)>& scene, int k, int c) 
 // is uniform. What is left is the bias of the merges' weights, computed as if the photon lay
 // at the camera vertex: it grows as r^2 and was measured as 1.4 % at a fixed r = 0.2 and
 // 0.2 % at r = 0.05 (albedo 1, 256 iterations); r_0 = 0.05 shrinking, hence 0.3 % on top
-// of the noise. The radius is large (eta = 2), so that merges carry much of the image.
+// of the noise. Merges carry a few per cent of this image (eta = n pi r^2 = 2 for n = 16 x 16 light
+// paths): the point light's furnace below is where merging is weighed.
 TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
     auto scene = [](int seed) {
         return fmt::format(R"(
@@ -67,13 +68,14 @@ TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
 
 // A point light of intensity pi at the centre of a closed diffuse sphere (radius 1, albedo
 // 0.5): L = 1 everywhere, every bounce included. The irradiance is uniform on a sphere, so
-// merging is unbiased here too; s = 0 cannot hit the point light, merging and connections
-// share the rest.
+// the kernel is unbiased here too; s = 0 cannot hit the point light, merging (eta = 8 for
+// 32 x 32 light paths: about 40 % of the image) and connections share the rest. The merges'
+// weights leave a bias of -0.2 % (measured), within the 0.3 % allowed as above.
 TEST(Vcm, ClosedSphereAroundPointLightSumsEveryBounce) {
     auto scene = [](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 0}}, look_at = {{0, 0, -1}}, fov = 70 }}
-            glint.render{{ width = 16, height = 16, spp = 16, seed = {}, integrator = 'vcm',
+            glint.render{{ width = 32, height = 32, spp = 16, seed = {}, integrator = 'vcm',
                           vcm_radius = 0.05 }}
             glint.sphere{{ center = {{0, 0, 0}}, radius = 1, material = glint.diffuse{{ reflectance = 0.5 }} }}
             glint.point_light{{ position = {{0, 0, 0}}, intensity = math.pi }}
@@ -84,7 +86,7 @@ TEST(Vcm, ClosedSphereAroundPointLightSumsEveryBounce) {
         const Estimate e = image_mean(scene, 6, c);
         fmt::print("channel {}: {:.5f} +- {:.5f} (exact 1)\n", c, e.mean, e.se);
         EXPECT_LT(4.0 * e.se, 0.01);
-        EXPECT_NEAR(e.mean, 1.0, 4.0 * e.se) << "channel " << c;
+        EXPECT_NEAR(e.mean, 1.0, 4.0 * e.se + 0.003) << "channel " << c;
     }
 }
 
