@@ -354,7 +354,12 @@ TEST(VcmMis, StrategiesOfARealMergedPathSumToOne) {
                                 camera);
         generate_light_subpath(*scene, *sampler, arena, counter, WalkLimits{3, false}, light);
         if (camera.size() < 3 || light.size() < 2 || !camera[2].connectible()) continue;
-        const float eta = 0.3f;
+        // eta such that the merge at x_2 weighs as much as the connection there (the box's
+        // densities per area are small in its units).
+        merge_mis_weight(*scene, std::span(light).first(2), camera, 2, 3, 1.0f,
+                         MisHeuristic::kBalance, scratch);
+        if (!(scratch[2].pdf_light > 0.0f)) continue;
+        const float eta = 1.0f / scratch[2].pdf_light;
         const float w = merge_mis_weight(*scene, std::span(light).first(2), camera, 2, 3, eta,
                                          MisHeuristic::kBalance, scratch);
         EXPECT_GT(w, 0.0f);
