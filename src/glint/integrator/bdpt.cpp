@@ -25,17 +25,17 @@ bool is_point_like(const PathVertex& v) {
 
 }  // namespace
 
-float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
-                          std::span<const PathVertex> camera, int s, int t,
-                          const PathVertex& sampled, MisHeuristic heuristic,
-                          std::vector<MisVertex>& scratch) {
+namespace {
+
+// The path of light[0, s) and camera[0, t) as the weights see it, in `scratch`, for the
+// connection (s, t) (merge false) or the merge of a light subpath's vertex s with camera
+// vertex t - 1, which stands for both (merge true). Returns whether x_0 is a delta light.
+bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
+                   std::span<const PathVertex> camera, int s, int t, const PathVertex& sampled,
+                   bool merge, std::vector<MisVertex>& scratch) {
     const int k = s + t;
-    // A light seen directly by the lens is made by (0, 2) or (1, 1); but (1, 1) is only done
-    // for lights with a surface: a point, spot or infinite light seen directly is (0, 2)'s
-    // alone (the environment) or nobody's (the others, invisible in every glint integrator).
-    if (k == 2 && is_point_like(s == 0 ? camera[t - 1] : light[0])) return 1.0f;
     auto light_at = [&](int i) -> const PathVertex& {
-        return s == 1 && t > 1 && i == 0 ? sampled : light[i];
+        return s == 1 && t > 1 && i == 0 && !merge ? sampled : light[i];
     };
     auto camera_at = [&](int j) -> const PathVertex& {
         return t == 1 && j == 0 ? sampled : camera[j];
@@ -52,14 +52,19 @@ float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
     // The densities the subpaths stored were for their own continuations; at the join the
     // path goes on to the other subpath, which changes four of them: each join vertex as the
     // other side's walk would reach it, and the vertex before it as the walk would go on.
+    // A merge joins at x_s = pt, reached by the light walk as its own vertex s was: x_{s-1}
+    // keeps the lobe that walk took there (a delta lobe leaves both densities at 0).
     const PathVertex* qs = s > 0 ? &light_at(s - 1) : nullptr;
     const PathVertex* qs_minus = s > 1 ? &light_at(s - 2) : nullptr;
     const PathVertex& pt = camera_at(t - 1);
     const PathVertex* pt_minus = t > 1 ? &camera_at(t - 2) : nullptr;
+    const bool delta_qs = merge && qs && qs->delta;
     scratch[s].delta = false;
-    if (qs) scratch[s - 1].delta = false;
+    if (qs && !merge) scratch[s - 1].delta = false;
     if (s == 0)
         scratch[0].pdf_light = emission_origin_pdf(scene, pt, *pt_minus);
+    else if (delta_qs)
+        scratch[s].pdf_light = 0.0f;
     else if (s == 1)
         scratch[s].pdf_light = emission_pdf(*qs, pt);
     else
@@ -69,15 +74,37 @@ float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
             s > 0 ? continuation_pdf(scene, qs, pt, *pt_minus) : emission_pdf(pt, *pt_minus);
     }
     if (qs) scratch[s - 1].pdf_camera = continuation_pdf(scene, pt_minus, pt, *qs);
-    if (qs_minus) scratch[s - 2].pdf_camera = continuation_pdf(scene, &pt, *qs, *qs_minus);
-    const bool delta_light = s > 0 && light_at(0).light && light_at(0).light->is_delta();
-    return strategy_weight(scratch, s, delta_light, heuristic);
+    if (qs_minus)
+        scratch[s - 2].pdf_camera = delta_qs ? 0.0f : continuation_pdf(scene, &pt, *qs, *qs_minus);
+    return s > 0 && light_at(0).light && light_at(0).light->is_delta();
+}
+
+}  // namespace
+
+float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
+                          std::span<const PathVertex> camera, int s, int t,
+                          const PathVertex& sampled, MisHeuristic heuristic,
+                          std::vector<MisVertex>& scratch, float merge_eta) {
+    // A light seen directly by the lens is made by (0, 2) or (1, 1); but (1, 1) is only done
+    // for lights with a surface: a point, spot or infinite light seen directly is (0, 2)'s
+    // alone (the environment) or nobody's (the others, invisible in every glint integrator).
+    if (s + t == 2 && is_point_like(s == 0 ? camera[t - 1] : light[0])) return 1.0f;
+    const bool delta_light = fill_mis_path(scene, light, camera, s, t, sampled, false, scratch);
+    return vcm_strategy_weight(scratch, s, false, delta_light, merge_eta, heuristic);
+}
+
+float merge_mis_weight(const Scene& scene, std::span<const PathVertex> light,
+                       std::span<const PathVertex> camera, int s, int t, float merge_eta,
+                       MisHeuristic heuristic, std::vector<MisVertex>& scratch) {
+    const bool delta_light =
+        fill_mis_path(scene, light, camera, s, t, camera[t - 1], true, scratch);
+    return vcm_strategy_weight(scratch, s, true, delta_light, merge_eta, heuristic);
 }
 
 StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVertex> light,
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
-                                      std::vector<MisVertex>& scratch) {
+                                      std::vector<MisVertex>& scratch, float merge_eta) {
     StrategyContribution result;
     // The draws come first, so that later draws never depend on what a strategy found.
     Vec2 u_lens(0.0f), u_light(0.0f);
@@ -190,7 +217,8 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         L = qs.beta * f_light * f_camera * pt.beta * g;
     }
     if (L.is_black()) return result;
-    result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch);
+    result.weight =
+        strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch, merge_eta);
     result.L = L * result.weight;
     return result;
 }

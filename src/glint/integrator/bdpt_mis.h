@@ -15,6 +15,14 @@
 // delta light (a point, a spot or a direction: no camera path hits it). A delta vertex
 // stores its densities as 0, counted as 1 in the ratios (the delta lobe's probability is
 // taken to be the same from both sides), as in pbrt.
+//
+// Vertex connection and merging (Georgiev et al. 2012) adds one more strategy per inner
+// vertex x_i (1 <= i <= k-2, no delta lobe there): the camera walk makes x_{k-1} .. x_i, the
+// light walk x_0 .. x_{i-1} and then a point near x_i, accepted within a disc of radius r.
+// With n light paths merged per camera path its density counts as
+//   p_VM(i) = p_i p_L(i) eta,   eta = n pi r^2,
+// against 1 light path per camera path for the connections (Georgiev's eta_VCM). The same
+// ratios give its weight, and the weights of connections and merges of a path sum to 1.
 #include <span>
 
 namespace glint {
@@ -36,5 +44,13 @@ enum class MisHeuristic {
 /// strategy 0 cannot hit.
 float strategy_weight(std::span<const MisVertex> path, int s, bool delta_light,
                       MisHeuristic heuristic);
+
+/// The weight of a strategy of vertex connection and merging for `path` (as above): the
+/// connection with `s` light vertices (merge false), or the merge at vertex x_s (merge true,
+/// 1 <= s <= path.size() - 2), among every connection and every merge that can make the
+/// path. `merge_eta` is eta = n pi r^2 (n light paths merged, r the merging radius, in the
+/// units of the per-area densities); 0 leaves merging out, which is strategy_weight.
+float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bool delta_light,
+                          float merge_eta, MisHeuristic heuristic);
 
 }  // namespace glint

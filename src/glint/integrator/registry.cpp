@@ -5,6 +5,7 @@
 #include <glint/integrator/path.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/sppm.h>
+#include <glint/integrator/vcm.h>
 #include <glint/integrator/whitted.h>
 
 #include <fmt/format.h>
@@ -33,6 +34,7 @@ const std::map<std::string, IntegratorCreate>& factories() {
         {"path_bsdf", create_path<DirectLighting::kBsdfOnly>},
         {"photon", PhotonIntegrator::create},
         {"sppm", SppmIntegrator::create},
+        {"vcm", VcmIntegrator::create},
         {"whitted", WhittedIntegrator::create},
     };
     return table;

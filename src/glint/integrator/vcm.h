@@ -1,0 +1,61 @@
+#pragma once
+// Vertex connection and merging (Georgiev, Křivánek, Davidovič and Slusallek 2012, "Light
+// transport simulation with vertex connection and merging"): bidirectional path tracing
+// (bdpt.h) and progressive photon mapping in one estimator, weighted by one multiple
+// importance sampling (bdpt_mis.h, vcm_strategy_weight).
+//
+// Each iteration (spp of them):
+//   1. one light subpath per pixel (subpath.h); each joins the lens (t = 1, splatted), and
+//      its vertices on surfaces that are not purely delta are kept as photons in a hash grid;
+//   2. one camera subpath per pixel, which does what bdpt's camera side does with the light
+//      subpath of its own pixel (s = 0, s = 1, s, t >= 2: vertex connection), and at every
+//      vertex that is not purely delta gathers the photons of all light subpaths within the
+//      radius r_i (vertex merging: a density estimate with the constant kernel 1 / (pi r^2)).
+// Merging finds what no connection can: paths with a delta vertex on each side of a diffuse
+// one, such as the caustic of a point light through glass seen in a mirror. It is biased (the
+// kernel blurs over the disc); the radius shrinks as r_i = r_0 i^((alpha - 1) / 2) so the
+// bias vanishes as iterations grow, and the weights leave merging little where connections
+// do well.
+//
+// The light subpaths of an iteration are traced in chunks of pixels, their splats added in
+// chunk order; camera subpaths in tiles. The image is the same for any thread count.
+#include <glint/integrator/integrator.h>
+
+namespace glint {
+
+/// The settings of "vcm", from glint.render{...}. `spp` is the number of iterations, each
+/// with one light subpath and one camera subpath per pixel.
+struct VcmSettings {
+    float radius = 0.0f;  ///< initial merging radius r_0 (scene units); 0: 1/256 of the
+                          ///< diagonal of the scene's bounding box (sppm's default)
+    float alpha = 0.75f;  ///< radius reduction: r_i = r_0 i^((alpha - 1) / 2), in (0, 1]
+
+    /// Reads and validates "vcm_radius" and "vcm_alpha"; errors name the key's location.
+    static VcmSettings read(const Params& params);
+};
+
+class VcmIntegrator final : public Integrator {
+public:
+    /// Subpaths' vertex cap when max_depth is unlimited (-1) and roulette alone ends paths.
+    static constexpr int kMaxVertices = 64;
+
+    /// Throws glint::Error (naming the setting) for a bad filter or sampler name or for
+    /// adaptive sampling, which it does not do.
+    VcmIntegrator(const RenderSettings& settings, const VcmSettings& vcm);
+    static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+
+    /// The merging radius of iteration `iteration` (0-based) from r_0 and alpha.
+    static float radius_at(float r0, float alpha, int iteration);
+
+private:
+    struct Iteration;
+    void trace_light_chunk(const Scene& scene, const Film& film, Iteration& it, int chunk) const;
+    void render_tile(const Scene& scene, Film& film, const Iteration& it, int tile) const;
+
+    RenderSettings m_settings;
+    VcmSettings m_vcm;
+    std::unique_ptr<Filter> m_filter;
+};
+
+}  // namespace glint
