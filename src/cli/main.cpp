@@ -206,6 +206,10 @@ int run_render(const RenderOptions& options) {
         fmt::print(stderr, "warning: {} samples were not finite and were skipped\n",
                    film.non_finite_samples());
     }
+    if (scene->accel().dropped_rays() > 0) {
+        fmt::print(stderr, "warning: {} rays were not finite and were dropped\n",
+                   scene->accel().dropped_rays());
+    }
     return 0;
 }
 
