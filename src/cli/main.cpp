@@ -27,6 +27,7 @@ struct RenderOptions {
     std::vector<std::string> outputs;
     std::optional<int> spp;
     std::string resolution;
+    std::string crop;
     std::optional<int> threads;
     std::optional<uint64_t> seed;
     std::string integrator;
@@ -63,6 +64,18 @@ Vec2i parse_resolution(const std::string& text) {
     return Vec2i(w, h);
 }
 
+// x0,y0,x1,y1 as numbers; render settings check them against the resolution.
+std::vector<double> parse_crop(const std::string& text) {
+    int c[4];
+    char extra = 0;
+    if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &c[0], &c[1], &c[2], &c[3], &extra) != 4) {
+        throw CLI::ValidationError("--crop",
+                                   fmt::format("'{}' is not x0,y0,x1,y1, e.g. 64,32,128,96", text));
+    }
+    return {static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2]),
+            static_cast<double>(c[3])};
+}
+
 // `where` names the flag or the scene line that gave the value.
 void check_output_path(const std::string& path, const std::string& where) {
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -83,6 +96,7 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
         table.set("width", static_cast<double>(res.x), "--res");
         table.set("height", static_cast<double>(res.y), "--res");
     }
+    if (!options.crop.empty()) table.set("crop", parse_crop(options.crop), "--crop");
     if (!options.integrator.empty()) table.set("integrator", options.integrator, "--integrator");
     if (options.exposure)
         table.set("exposure", static_cast<double>(*options.exposure), "--exposure");
@@ -110,7 +124,8 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
 
 // Samples the render will take: exact for uniform sampling, an upper bound when adaptive.
 uint64_t expected_samples(const RenderSettings& settings) {
-    const uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
+    const uint64_t pixels =
+        static_cast<uint64_t>(settings.output_width()) * settings.output_height();
     if (settings.adaptive == "sobel")
         return pixels * (2 + static_cast<uint64_t>(settings.supersample * settings.supersample));
     if (settings.adaptive == "variance") {
@@ -156,7 +171,8 @@ void write_debug_images(const RenderSettings& settings, const RenderStats& stats
             if (channel.name != view + ".Y") continue;
             std::filesystem::path path = settings.outputs.front();
             path.replace_extension("." + view + ".png");
-            write_image(path.string(), grey_image(settings.width, settings.height, channel.values));
+            write_image(path.string(), grey_image(settings.output_width(), settings.output_height(),
+                                                  channel.values));
             fmt::print(stderr, "wrote {}\n", path.string());
         }
     }
@@ -176,7 +192,8 @@ int run_render(const RenderOptions& options) {
     const int threads =
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    Film film(settings.width, settings.height, settings.aovs);
+    Film film(settings.output_width(), settings.output_height(), settings.aovs,
+              settings.output_origin());
     Progress progress("rendering", expected_samples(settings), options.quiet);
     const RenderStats stats = integrator->render(*scene, film, progress);
     progress.finish();
@@ -192,7 +209,7 @@ int run_render(const RenderOptions& options) {
         fmt::print(stderr, "adaptive ({}): {:.2f} samples per pixel on average\n",
                    settings.adaptive,
                    static_cast<double>(stats.samples) /
-                       (static_cast<double>(settings.width) * settings.height));
+                       (static_cast<double>(settings.output_width()) * settings.output_height()));
     }
     if (!options.quiet) {
         fmt::print(stderr,
@@ -270,6 +287,9 @@ int main(int argc, char** argv) {
         ->allow_extra_args(false);  // `-o a.png scene.lua`: the scene is not a second output
     render_cmd->add_option("--spp", render.spp, "Samples per pixel")->check(CLI::PositiveNumber);
     render_cmd->add_option("--res", render.resolution, "Resolution WIDTHxHEIGHT");
+    render_cmd->add_option("--crop", render.crop,
+                           "Render only pixels [x0, x1) x [y0, y1) of the image, given as "
+                           "x0,y0,x1,y1; the output is that window");
     render_cmd->add_option("--threads", render.threads, "Worker threads (default: all cores)")
         ->check(CLI::PositiveNumber);
     render_cmd->add_option("--seed", render.seed, "Random seed");

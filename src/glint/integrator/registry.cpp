@@ -47,6 +47,16 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
         throw Error(fmt::format("{}: unknown integrator '{}' (known: {})",
                                 settings.where_of("integrator"), settings.integrator, known));
     }
+    // Light paths splat anywhere on the film, and bdpt's strategies with them: a crop
+    // window would need the whole film rendered anyway. sppm's photon passes are shared by
+    // all pixels; its cropped pixels do not yet match the full render bit for bit.
+    if (settings.has_crop() && (settings.integrator == "light" || settings.integrator == "bdpt" ||
+                                settings.integrator == "sppm")) {
+        throw Error(fmt::format(
+            "{}: integrator '{}' does not support 'crop' (its light paths reach any pixel); "
+            "crop works with path, path_light, path_bsdf, whitted and photon",
+            settings.where_of("crop"), settings.integrator));
+    }
     // A copy, so that it records only what this integrator reads.
     Params params = settings.params;
     std::unique_ptr<Integrator> integrator = it->second(settings, params);

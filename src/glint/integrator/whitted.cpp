@@ -118,7 +118,7 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
         if (view != "photons" || !m_whitted.caustics) continue;
         // The debug view, as the photon integrator's: what the caustic map alone says at
         // each diffuse hit seen directly or through mirrors and glass.
-        Film photons(film.width(), film.height(), false);
+        Film photons(film.width(), film.height(), false, film.origin());
         Progress quiet("photon view", 1, true);
         m_show_photons = true;
         const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);
