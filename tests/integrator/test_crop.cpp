@@ -69,8 +69,8 @@ INSTANTIATE_TEST_SUITE_P(
     Integrators, CropWindow,
     ::testing::Values("integrator = 'path', aovs = true", "integrator = 'whitted'",
                       "integrator = 'photon', photons = 2000, caustic_photons = 2000",
-                      "integrator = 'path', adaptive = 'sobel', edge_threshold = 0.01",
-                      "integrator = 'path', adaptive = 'variance', target_error = 0.05, spp = 2, "
+                      "integrator = 'path', adaptive = 'sobel', edge_threshold = 0.1",
+                      "integrator = 'path', adaptive = 'variance', target_error = 0.3, spp = 2, "
                       "max_spp = 32"));
 
 TEST(Crop, RefusedByLightAndBdptAndCheckedAgainstTheResolution) {
