@@ -83,6 +83,7 @@ struct RenderOptions {
     std::string resolution;
     std::string threads;
     std::string seed;
+    std::string crop;
     std::string integrator;
     std::string exposure;
     std::string adaptive;
@@ -109,6 +110,22 @@ LoaderOptions loader_options(bool trusted_scene) {
 [[noreturn]] void bad_flag(const std::string& flag, const std::string& text,
                            const std::string& expected) {
     throw CLI::ValidationError(flag, fmt::format("'{}' is not {}", text, expected));
+}
+
+// x0,y0,x1,y1 as numbers; render settings check them against the resolution.
+std::vector<double> parse_crop(const std::string& text) {
+    std::vector<double> corners;
+    std::string_view rest = text;
+    for (int i = 0; i < 4; ++i) {
+        const size_t comma = i < 3 ? rest.find(',') : rest.size();
+        const auto value = comma == std::string_view::npos
+                               ? std::nullopt
+                               : parse_integer(rest.substr(0, comma), 0, kMaxResolution);
+        if (!value) bad_flag("--crop", text, "x0,y0,x1,y1 in pixels, e.g. 64,32,128,96");
+        corners.push_back(static_cast<double>(*value));
+        rest = comma < rest.size() ? rest.substr(comma + 1) : std::string_view();
+    }
+    return corners;
 }
 
 std::optional<int> int_flag(const std::string& flag, const std::string& text, int min, int max) {
@@ -140,6 +157,7 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
         table.set("width", static_cast<double>(res.x), "--res");
         table.set("height", static_cast<double>(res.y), "--res");
     }
+    if (!options.crop.empty()) table.set("crop", parse_crop(options.crop), "--crop");
     if (!options.integrator.empty()) table.set("integrator", options.integrator, "--integrator");
     if (!options.exposure.empty()) {
         const auto stops = parse_finite(options.exposure);
@@ -176,7 +194,8 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
 
 // Samples the render will take: exact for uniform sampling, an upper bound when adaptive.
 uint64_t expected_samples(const RenderSettings& settings) {
-    const uint64_t pixels = static_cast<uint64_t>(settings.width) * settings.height;
+    const uint64_t pixels =
+        static_cast<uint64_t>(settings.output_width()) * settings.output_height();
     if (settings.adaptive == "sobel")
         return pixels * (2 + static_cast<uint64_t>(settings.supersample * settings.supersample));
     if (settings.adaptive == "variance") {
@@ -227,8 +246,9 @@ void add_debug_images(const RenderSettings& settings, const RenderStats& stats, 
     for (const std::string& view : settings.debug) {
         for (const ExtraChannel& channel : stats.channels) {
             if (channel.name != view + ".Y") continue;
-            batch.add(debug_image_path(settings, view).string(),
-                      grey_image(settings.width, settings.height, channel.values));
+            batch.add(
+                debug_image_path(settings, view).string(),
+                grey_image(settings.output_width(), settings.output_height(), channel.values));
         }
     }
 }
@@ -260,7 +280,8 @@ int run_render(const RenderOptions& options) {
     const int threads =
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    Film film(settings.width, settings.height, settings.aovs);
+    Film film(settings.output_width(), settings.output_height(), settings.aovs,
+              settings.output_origin());
     Progress progress("rendering", expected_samples(settings), options.quiet);
     progress.set_cancel_flag(&g_signal);
     const RenderStats stats = integrator->render(*scene, film, progress);
@@ -289,7 +310,7 @@ int run_render(const RenderOptions& options) {
         fmt::print(stderr, "adaptive ({}): {:.2f} samples per pixel on average\n",
                    settings.adaptive,
                    static_cast<double>(stats.samples) /
-                       (static_cast<double>(settings.width) * settings.height));
+                       (static_cast<double>(settings.output_width()) * settings.output_height()));
     }
     if (!options.quiet) {
         fmt::print(stderr,
@@ -304,6 +325,10 @@ int run_render(const RenderOptions& options) {
     if (film.non_finite_samples() > 0) {
         fmt::print(stderr, "warning: {} samples were not finite and were skipped\n",
                    film.non_finite_samples());
+    }
+    if (scene->accel().dropped_rays() > 0) {
+        fmt::print(stderr, "warning: {} rays were not finite and were dropped\n",
+                   scene->accel().dropped_rays());
     }
     return 0;
 }
@@ -379,6 +404,9 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--threads", render.threads,
                            "Worker threads, 1 to 4096 (default: all cores)");
     render_cmd->add_option("--seed", render.seed, "Random seed, 0 to 2^64 - 1");
+    render_cmd->add_option("--crop", render.crop,
+                           "Render only pixels [x0, x1) x [y0, y1) of the image, given as "
+                           "x0,y0,x1,y1; the output is that window");
     render_cmd->add_option("--integrator", render.integrator,
                            "Light transport algorithm, e.g. path");
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");

@@ -339,3 +339,30 @@ TEST_F(CliTest, DebugPhotonsWithWhittedCaustics) {
     EXPECT_NE(result.exit_code, 0);
     EXPECT_NE(result.output.find("needs caustics = true"), std::string::npos) << result.output;
 }
+
+// --crop writes the window at its own size, with the full render's pixels; a window outside
+// the image names the flag, a malformed one is a usage error.
+TEST_F(CliTest, CropWritesTheWindowOfTheFullRender) {
+    auto result = run_glint(fmt::format("render {}small.lua -o {} --res 20x10 --spp 2 --quiet",
+                                        kScenes, out("full.exr")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    result = run_glint(fmt::format(
+        "render {}small.lua -o {} --res 20x10 --spp 2 --crop 3,2,15,9 --threads 1 --quiet", kScenes,
+        out("crop.exr")));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    const Image full = read_image(out("full.exr"));
+    const Image crop = read_image(out("crop.exr"));
+    ASSERT_EQ(crop.width, 12);
+    ASSERT_EQ(crop.height, 7);
+    for (int y = 0; y < crop.height; ++y) {
+        for (int x = 0; x < crop.width; ++x) {
+            for (int c = 0; c < 3; ++c) ASSERT_EQ(crop.at(x, y, c), full.at(x + 3, y + 2, c));
+        }
+    }
+    result = run_glint(fmt::format("render {}small.lua -o {} --res 20x10 --crop 0,0,21,4 --quiet",
+                                   kScenes, out("bad.exr")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("--crop: render: 'crop' must be"), std::string::npos)
+        << result.output;
+    EXPECT_EQ(run_glint(fmt::format("render {}small.lua --crop 1,2,3", kScenes)).exit_code, 2);
+}

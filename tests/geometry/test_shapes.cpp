@@ -361,6 +361,59 @@ TEST(Accel, PacketsMatchSingleRaysLaneByLane) {
     EXPECT_GT(blocked, 100);
 }
 
+// A ray Embree would refuse (NaN, infinite or huge origin or direction, NaN t) is answered
+// as a miss, or as an unblocked segment, and counted, single or in a packet, instead of
+// reaching Embree, whose assertions would abort the program.
+TEST(Accel, RaysEmbreeRefusesAreDroppedAndCounted) {
+    Accel accel;
+    const Sphere sphere(Vec3(0.0f), 0.5f);
+    accel.add_shape(-1, sphere);
+    accel.commit();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const Ray good{Vec3(-5, 0, 0), Vec3(1, 0, 0)};
+    const Ray bad_rays[] = {
+        {Vec3(-5, nan, 0), Vec3(1, 0, 0)},
+        {Vec3(-5, 0, 0), Vec3(1, 0, nan)},
+        {Vec3(-5, 0, 0), Vec3(kInfinity, 0, 0)},
+        {Vec3(-1e19f, 0, 0), Vec3(1, 0, 0)},
+        {Vec3(-5, 0, 0), Vec3(1, 0, 0), nan, kInfinity},
+        {Vec3(-5, 0, 0), Vec3(1, 0, 0), 0.0f, nan},
+    };
+    EXPECT_TRUE(Accel::embree_accepts(good.origin, good.direction, good.t_min, good.t_max));
+    uint64_t expected = 0;
+    for (const Ray& bad : bad_rays) {
+        EXPECT_FALSE(Accel::embree_accepts(bad.origin, bad.direction, bad.t_min, bad.t_max));
+        HitRecord hit;
+        EXPECT_FALSE(accel.intersect(bad, hit));
+        EXPECT_FALSE(accel.occluded(bad));
+        expected += 2;
+        EXPECT_EQ(accel.dropped_rays(), expected);
+    }
+    EXPECT_TRUE(accel.intersect(good).has_value());
+    EXPECT_TRUE(accel.occluded(good));
+    EXPECT_EQ(accel.dropped_rays(), expected);
+
+    // Packets: lanes 1 and 4 hold NaN rays; the others still hit.
+    PerLane<Ray> rays;
+    PerLane<const Ray*> pointers{};
+    PerLane<Vec3> origins, directions;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        rays[lane] = lane == 1 || lane == 4 ? bad_rays[lane % 2] : good;
+        pointers[lane] = &rays[lane];
+        origins[lane] = rays[lane].origin;
+        directions[lane] = 10.0f * rays[lane].direction;
+    }
+    PerLane<HitRecord> hits;
+    EXPECT_EQ(accel.intersect_packet(pointers, 0xffu, hits, true), 0xedu);
+    EXPECT_EQ(accel.dropped_rays(), expected + 2);
+    EXPECT_EQ(accel.occluded_packet(origins, directions, 1.0f, 0xffu, false), 0xedu);
+    EXPECT_EQ(accel.dropped_rays(), expected + 4);
+    // A packet of bad lanes only, and a lone bad lane (which goes the single-ray way).
+    EXPECT_EQ(accel.intersect_packet(pointers, 0x12u, hits, false), 0u);
+    EXPECT_EQ(accel.occluded_packet(origins, directions, 1.0f, 0x02u, false), 0u);
+    EXPECT_EQ(accel.dropped_rays(), expected + 7);
+}
+
 // Rays leaving a surface from the offset origin never hit it again, at scales 1e-3, 1 and
 // 1e4 (each shape placed away from the origin in proportion): reflected rays must see
 // nothing, rays entering a sphere must reach its far side.

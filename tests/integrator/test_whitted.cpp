@@ -2,6 +2,7 @@
 // shadow penumbra shortcut, and refraction through glass.
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
+#include <glint/integrator/whitted.h>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -223,4 +224,45 @@ TEST(Whitted, PhotonMappedCausticsBrightenTheShadowOfGlass) {
     // Far from the sphere only the faint light the sphere reflects onto the floor is added.
     const double corner = mean_channel(plain, 1, 0, 0, 4, 4);
     EXPECT_NEAR(mean_channel(with_caustics, 1, 0, 0, 4, 4), corner, 0.02 * corner);
+}
+
+namespace {
+
+// A glass ball inside a closed mirror sphere, with the camera, a point light and a small
+// diffuse ball: every hit on the glass reflects and refracts, and every ray that leaves it
+// comes back, so without the ray budget a camera sample traces about 2^(max_depth / 1.5)
+// rays (70000 per sample at max_depth 24).
+std::string closed_glass_scene(int max_depth) {
+    return fmt::format(R"(
+        glint.camera{{ eye = {{0, 0.5, 3}}, look_at = {{0, 0, 0}}, fov = 60 }}
+        glint.render{{ width = 4, height = 4, spp = 1, integrator = 'whitted', max_depth = {} }}
+        glint.point_light{{ position = {{0, 3, 0}}, intensity = 10 }}
+        glint.sphere{{ center = {{0, 0, 0}}, radius = 5, material = glint.mirror{{}} }}
+        glint.sphere{{ center = {{0, 0, 0}}, radius = 1, material = glint.dielectric{{ ior = 1.5 }} }}
+        glint.sphere{{ center = {{2.5, 0, 0}}, radius = 0.3, material = glint.diffuse{{ reflectance = 0.5 }} }}
+    )",
+                       max_depth);
+}
+
+}  // namespace
+
+// The budget bounds the rays per camera sample: kWhittedRayBudget, plus at most one chain
+// of max_depth rays for each branch still open when the budget ran out; each ray may add one
+// shadow ray where it reaches the diffuse ball.
+TEST(Whitted, ClosedGlassRaysPerSampleAreBounded) {
+    for (int max_depth : {24, 64}) {
+        const glint::test::RenderResult r =
+            glint::test::render_lua_with_stats(closed_glass_scene(max_depth));
+        ASSERT_EQ(r.stats.samples, 16u);
+        const double rays_per_sample = static_cast<double>(r.stats.rays) / r.stats.samples;
+        ASSERT_LE(rays_per_sample, 2 * (kWhittedRayBudget + max_depth * max_depth))
+            << "max_depth " << max_depth;
+        // Something is seen: the diffuse ball, directly or through glass and mirror.
+        EXPECT_GT(mean_channel(r.image, 1, 0, 0, 4, 4), 0.0) << "max_depth " << max_depth;
+        for (int y = 0; y < r.image.height; ++y) {
+            for (int x = 0; x < r.image.width; ++x) {
+                for (int c = 0; c < 3; ++c) EXPECT_TRUE(std::isfinite(r.image.at(x, y, c)));
+            }
+        }
+    }
 }

@@ -27,7 +27,8 @@ RenderResult render_lua_with_stats(const std::string& code, int threads) {
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
     auto integrator = make_integrator(settings);
-    Film film(settings.width, settings.height, settings.aovs);
+    Film film(settings.output_width(), settings.output_height(), settings.aovs,
+              settings.output_origin());
     Progress progress("test", 1, true);
     RenderStats stats;
     if (threads > 0) {

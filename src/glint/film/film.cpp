@@ -30,7 +30,39 @@ uint64_t Film::memory_bytes(int width, int height, bool with_aovs) {
     return saturating_product(pixels, per_pixel);
 }
 
+Film::Film(int width, int height, bool with_aovs, Vec2i origin) : Film(width, height, with_aovs) {
+    m_origin = origin;
+}
+
+Film Film::window(Vec2i origin, int width, int height) const {
+    const Vec2i offset = origin - m_origin;
+    if (offset.x < 0 || offset.y < 0 || width < 1 || height < 1 || offset.x + width > m_width ||
+        offset.y + height > m_height) {
+        throw Error(fmt::format("film: window {}x{} at ({}, {}) outside the {}x{} film at ({}, {})",
+                                width, height, origin.x, origin.y, m_width, m_height, m_origin.x,
+                                m_origin.y));
+    }
+    Film result(width, height, m_with_aovs, origin);
+    result.m_splat_scale = m_splat_scale;
+    if (!m_splats.empty()) result.m_splats.assign(3 * result.m_pixels.size(), 0.0);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const std::size_t from = static_cast<std::size_t>(y + offset.y) * m_width +
+                                     static_cast<std::size_t>(x + offset.x);
+            const std::size_t to =
+                static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
+            result.m_pixels[to] = m_pixels[from];
+            if (m_with_aovs) result.m_aovs[to] = m_aovs[from];
+            if (!m_splats.empty()) {
+                for (int c = 0; c < 3; ++c) result.m_splats[3 * to + c] = m_splats[3 * from + c];
+            }
+        }
+    }
+    return result;
+}
+
 void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov) {
+    pixel -= m_origin;
     // A stray index would silently corrupt a neighbour's accumulator; the test is one
     // well-predicted branch per sample.
     if (pixel.x < 0 || pixel.y < 0 || pixel.x >= m_width || pixel.y >= m_height) {
@@ -70,7 +102,8 @@ void Film::add_splats(std::span<const Splat> splats) {
             ++m_non_finite_splats;
             continue;
         }
-        const float fx = std::floor(splat.film.x), fy = std::floor(splat.film.y);
+        const float fx = std::floor(splat.film.x) - static_cast<float>(m_origin.x),
+                    fy = std::floor(splat.film.y) - static_cast<float>(m_origin.y);
         // Compared as floats first: a position far outside would overflow an int.
         if (fx < 0.0f || fy < 0.0f || fx >= static_cast<float>(m_width) ||
             fy >= static_cast<float>(m_height)) {

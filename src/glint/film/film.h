@@ -29,6 +29,10 @@ class Film {
 public:
     /// Throws glint::Error unless width and height are positive.
     Film(int width, int height, bool with_aovs);
+    /// A film for the window [origin, origin + (width, height)) of a larger image (a crop
+    /// window): add_sample() and add_splats() take positions in the larger image's pixels,
+    /// resolve() gives the window's pixels only.
+    Film(int width, int height, bool with_aovs, Vec2i origin);
 
     /// Bytes a film of this size holds at most: its accumulators, splat sums, and the
     /// resolved Image (floats, 3 or 10 channels) with one more image's worth for encoding
@@ -38,6 +42,12 @@ public:
 
     int width() const { return m_width; }
     int height() const { return m_height; }
+    /// The image pixel of the film's top-left pixel: (0, 0) unless it is a crop window.
+    Vec2i origin() const { return m_origin; }
+    /// A film for the sub-window [origin, origin + (width, height)) of this one (in image
+    /// pixels, inside this film's window), holding exactly the samples this film holds
+    /// there. Throws glint::Error for a window outside this film.
+    Film window(Vec2i origin, int width, int height) const;
     bool has_aovs() const { return m_with_aovs; }
 
     /// Adds one sample to `pixel` ((0, 0) is the top-left pixel) with its filter weight
@@ -89,6 +99,7 @@ private:
 
     int m_width, m_height;
     bool m_with_aovs;
+    Vec2i m_origin{0, 0};
     std::vector<Pixel> m_pixels;
     std::vector<AovPixel> m_aovs;  // empty without AOVs
     // Sums of splats, three per pixel; empty until the first splat, so films without any

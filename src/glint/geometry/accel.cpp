@@ -62,6 +62,11 @@ void Accel::commit() {
     check_device("building the acceleration structure");
 }
 
+bool Accel::drop_ray(uint64_t count) const {
+    m_dropped_rays.fetch_add(count, std::memory_order_relaxed);
+    return false;
+}
+
 bool Accel::occluded(const Ray& ray) const {
     return occluded(ray.origin, ray.direction, ray.t_min, ray.t_max);
 }
@@ -119,6 +124,19 @@ void init_context(RTCIntersectContext& context, bool coherent) {
 uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
                                  PerLane<HitRecord>& hits, bool coherent) const {
     static_assert(kPacketWidth == 8, "the packet calls below are Embree's 8-wide ones");
+    // Lanes Embree would reject are left out (misses) and counted.
+    uint32_t accepted = 0;
+    for_each_lane(active, [&](int lane) {
+        const Ray& ray = *rays[lane];
+        accepted |=
+            static_cast<uint32_t>(embree_accepts(ray.origin, ray.direction, ray.t_min, ray.t_max))
+            << lane;
+    });
+    if (accepted != active) [[unlikely]] {
+        drop_ray(static_cast<uint64_t>(std::popcount(active & ~accepted)));
+        active = accepted;
+        if (active == 0) return 0;
+    }
     // A lone ray costs less on its own than as a packet of one.
     if (is_single_lane(active)) {
         const int lane = std::countr_zero(active);
@@ -159,6 +177,18 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
 
 uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
                                 float t_max, uint32_t active, bool coherent) const {
+    // Lanes Embree would reject are left out (not blocked) and counted.
+    uint32_t accepted = 0;
+    for_each_lane(active, [&](int lane) {
+        accepted |=
+            static_cast<uint32_t>(embree_accepts(origins[lane], directions[lane], 0.0f, t_max))
+            << lane;
+    });
+    if (accepted != active) [[unlikely]] {
+        drop_ray(static_cast<uint64_t>(std::popcount(active & ~accepted)));
+        active = accepted;
+        if (active == 0) return 0;
+    }
     if (is_single_lane(active)) {
         const int lane = std::countr_zero(active);
         return occluded(origins[lane], directions[lane], 0.0f, t_max) ? active : 0;

@@ -92,11 +92,18 @@ protected:
     virtual PixelMoments render_pixel(const Scene& scene, Film& film, Vec2i pixel, Worker& worker,
                                       int first, int count) const;
 
-    // Runs `work(pixel, worker)` for every pixel for which `wanted` is true, in parallel
-    // tiles, with one Worker per task made from `prototype`; returns the rays traced.
+    // Runs `work(pixel, worker)` for every pixel of `film`'s window (pixel in image
+    // coordinates) for which `wanted` (indexed by the window's row-major pixel index) is
+    // true, in parallel tiles, with one Worker per task made from `prototype`; returns the
+    // rays traced.
     template <typename Work>
-    uint64_t for_each_pixel(int width, int height, const Sampler& prototype, Progress& progress,
+    uint64_t for_each_pixel(const Film& film, const Sampler& prototype, Progress& progress,
                             const std::vector<uint8_t>* wanted, Work&& work) const;
+    // How many pixels away the adaptive mode's decisions reach: a crop window is rendered
+    // this much wider (within the image), so that its pixels are the full render's.
+    int adaptive_reach() const;
+    void render_window(const Scene& scene, Film& film, Progress& progress,
+                       RenderStats& stats) const;
 
     void render_uniform(const Scene& scene, Film& film, Progress& progress,
                         RenderStats& stats) const;

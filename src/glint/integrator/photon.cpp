@@ -147,7 +147,7 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
     for (const std::string& view : m_settings.debug) {
         if (view != "photons") continue;
         // The debug view: what the photon maps alone say at each first diffuse hit.
-        Film photons(film.width(), film.height(), false);
+        Film photons(film.width(), film.height(), false, film.origin());
         Progress quiet("photon view", 1, true);
         m_show_photons = true;
         const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);

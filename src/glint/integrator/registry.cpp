@@ -51,6 +51,18 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
         throw Error(fmt::format("{}: unknown integrator '{}' (known: {})",
                                 settings.where_of("integrator"), settings.integrator, known));
     }
+    // Only the tile integrators render a window alone. Light paths (light, bdpt, vcm, mlt)
+    // splat anywhere on the film, so a crop window would need the whole film rendered
+    // anyway; sppm's photon passes are shared by all pixels, and its cropped pixels do not
+    // yet match the full render bit for bit. A new integrator is refused until it says so.
+    static const std::set<std::string> kCropIntegrators = {"path", "path_light", "path_bsdf",
+                                                           "whitted", "photon"};
+    if (settings.has_crop() && !kCropIntegrators.contains(settings.integrator)) {
+        throw Error(fmt::format(
+            "{}: integrator '{}' does not support 'crop'; crop works with path, path_light, "
+            "path_bsdf, whitted and photon",
+            settings.where_of("crop"), settings.integrator));
+    }
     // A copy, so that it records only what this integrator reads.
     Params params = settings.params;
     std::unique_ptr<Integrator> integrator = it->second(settings, params);

@@ -174,8 +174,10 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
             Arena arena;
             RayCounter counter;
             for (int x = 0; x < w; ++x) {
-                sampler->start_pixel_sample(Vec2i(x, y), pass);
-                const Vec2 film_point = Vec2(x, y) + sampler->get_pixel_2d();
+                // The film may be a crop window: pixels are named in the full image.
+                const Vec2i pixel = film.origin() + Vec2i(x, y);
+                sampler->start_pixel_sample(pixel, pass);
+                const Vec2 film_point = Vec2(pixel) + sampler->get_pixel_2d();
                 const Ray ray = scene.camera().sample_ray(film_point, *sampler);
                 const size_t i = static_cast<size_t>(y) * w + x;
                 arena.reset();
@@ -251,7 +253,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             film.add_sample(
-                Vec2i(x, y),
+                film.origin() + Vec2i(x, y),
                 pixel_estimate(pixels[static_cast<size_t>(y) * w + x], passes, photons_per_pass),
                 1.0f, nullptr);
         }

@@ -82,20 +82,65 @@ TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(sett
 RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
+    // A crop window: samples never leave their pixel (filter importance sampling), but
+    // adaptive sampling decides from neighbours; so render the window widened by how far
+    // those decisions reach (clipped to the image, where the full render clips too), and
+    // keep the window. Its pixels then get exactly the samples the full render gives them.
+    const int reach = adaptive_reach();
+    const Vec2i window_end = film.origin() + Vec2i(film.width(), film.height());
+    const Vec2i lo = glm::max(film.origin() - reach, Vec2i(0));
+    const Vec2i hi = glm::min(window_end + reach, Vec2i(m_settings.width, m_settings.height));
+    if (lo == film.origin() && hi == window_end) {
+        render_window(scene, film, progress, stats);
+    } else {
+        Film wider(hi.x - lo.x, hi.y - lo.y, film.has_aovs(), lo);
+        render_window(scene, wider, progress, stats);
+        film = wider.window(film.origin(), film.width(), film.height());
+        for (ExtraChannel& channel : stats.channels) {
+            std::vector<float> values;
+            for (int y = film.origin().y; y < window_end.y; ++y) {
+                for (int x = film.origin().x; x < window_end.x; ++x) {
+                    values.push_back(
+                        channel.values[static_cast<size_t>(y - lo.y) * wider.width() + (x - lo.x)]);
+                }
+            }
+            channel.values = std::move(values);
+        }
+    }
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+void TileIntegrator::render_window(const Scene& scene, Film& film, Progress& progress,
+                                   RenderStats& stats) const {
     if (m_settings.adaptive == "sobel")
         render_edge_adaptive(scene, film, progress, stats);
     else if (m_settings.adaptive == "variance")
         render_variance_adaptive(scene, film, progress, stats);
     else
         render_uniform(scene, film, progress, stats);
-    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return stats;
+}
+
+int TileIntegrator::adaptive_reach() const {
+    // sobel: the edge mask at a pixel depends on the preview's 3 x 3 Sobel neighbourhood,
+    // dilated by edge_radius.
+    if (m_settings.adaptive == "sobel") return 1 + m_settings.edge_radius;
+    if (m_settings.adaptive != "variance") return 0;
+    // variance: each round's decision looks at the 8 neighbours, whose counts came from
+    // the rounds before: one pixel further per round. Rounds: spp, then doubling to the cap.
+    const int cap =
+        m_settings.max_spp > 0 ? std::max(m_settings.max_spp, m_settings.spp) : 8 * m_settings.spp;
+    int rounds = 1;
+    for (int64_t taken = m_settings.spp; taken < cap; taken *= 2) ++rounds;
+    return rounds + 1;
 }
 
 template <typename Work>
-uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& prototype,
+uint64_t TileIntegrator::for_each_pixel(const Film& film, const Sampler& prototype,
                                         Progress& progress, const std::vector<uint8_t>* wanted,
                                         Work&& work) const {
+    const int width = film.width(), height = film.height();
+    const Vec2i origin = film.origin();
     const int tiles_x = (width + kTileSize - 1) / kTileSize;
     const int tiles_y = (height + kTileSize - 1) / kTileSize;
     std::atomic<uint64_t> total_rays{0};
@@ -115,7 +160,7 @@ uint64_t TileIntegrator::for_each_pixel(int width, int height, const Sampler& pr
                     for (int y = y0; y < y1; ++y) {
                         for (int x = x0; x < x1; ++x) {
                             if (wanted && !(*wanted)[static_cast<size_t>(y) * width + x]) continue;
-                            samples += work(Vec2i(x, y), worker);
+                            samples += work(origin + Vec2i(x, y), worker);
                         }
                     }
                     progress.advance(samples);
@@ -130,11 +175,11 @@ void TileIntegrator::render_uniform(const Scene& scene, Film& film, Progress& pr
                                     RenderStats& stats) const {
     const auto sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
     const int spp = m_settings.spp;
-    stats.rays = for_each_pixel(film.width(), film.height(), *sampler, progress, nullptr,
-                                [&](Vec2i pixel, Worker& worker) {
-                                    render_pixel(scene, film, pixel, worker, 0, spp);
-                                    return static_cast<uint64_t>(spp);
-                                });
+    stats.rays =
+        for_each_pixel(film, *sampler, progress, nullptr, [&](Vec2i pixel, Worker& worker) {
+            render_pixel(scene, film, pixel, worker, 0, spp);
+            return static_cast<uint64_t>(spp);
+        });
     stats.samples = static_cast<uint64_t>(film.width()) * film.height() * spp;
 }
 
@@ -143,24 +188,25 @@ void TileIntegrator::render_uniform(const Scene& scene, Film& film, Progress& pr
 void TileIntegrator::render_edge_adaptive(const Scene& scene, Film& film, Progress& progress,
                                           RenderStats& stats) const {
     const int w = film.width(), h = film.height();
-    Film preview(w, h, film.has_aovs());
+    Film preview(w, h, film.has_aovs(), film.origin());
     const auto single = make_sampler("stratified", 1, m_settings.seed);
-    stats.rays = for_each_pixel(w, h, *single, progress, nullptr, [&](Vec2i pixel, Worker& worker) {
-        render_pixel(scene, preview, pixel, worker, 0, 1);
-        return uint64_t{1};
-    });
+    stats.rays =
+        for_each_pixel(preview, *single, progress, nullptr, [&](Vec2i pixel, Worker& worker) {
+            render_pixel(scene, preview, pixel, worker, 0, 1);
+            return uint64_t{1};
+        });
     const std::vector<uint8_t> mask =
         sobel_edge_mask(preview.resolve(), m_settings.edge_threshold, m_settings.edge_radius);
 
     const int n = m_settings.supersample;
     const auto grid = make_sampler("stratified", n * n, m_settings.seed);
-    stats.rays += for_each_pixel(w, h, *grid, progress, &mask, [&](Vec2i pixel, Worker& worker) {
+    stats.rays += for_each_pixel(film, *grid, progress, &mask, [&](Vec2i pixel, Worker& worker) {
         render_pixel(scene, film, pixel, worker, 0, n * n);
         return static_cast<uint64_t>(n * n);
     });
     std::vector<uint8_t> flat(mask.size());
     for (size_t i = 0; i < mask.size(); ++i) flat[i] = !mask[i];
-    stats.rays += for_each_pixel(w, h, *single, progress, &flat, [&](Vec2i pixel, Worker& worker) {
+    stats.rays += for_each_pixel(film, *single, progress, &flat, [&](Vec2i pixel, Worker& worker) {
         render_pixel(scene, film, pixel, worker, 0, 1);
         return uint64_t{1};
     });
@@ -200,8 +246,9 @@ void TileIntegrator::render_variance_adaptive(const Scene& scene, Film& film, Pr
 
     for (bool any = true; any;) {
         stats.rays +=
-            for_each_pixel(w, h, *sampler, progress, &active, [&](Vec2i pixel, Worker& worker) {
-                const size_t i = static_cast<size_t>(pixel.y) * w + pixel.x;
+            for_each_pixel(film, *sampler, progress, &active, [&](Vec2i pixel, Worker& worker) {
+                const Vec2i local = pixel - film.origin();
+                const size_t i = static_cast<size_t>(local.y) * w + local.x;
                 // Doubling keeps sample counts at powers of two times spp, where the Sobol
                 // sampler's prefixes are best stratified.
                 const int count =

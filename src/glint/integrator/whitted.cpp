@@ -118,7 +118,7 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
         if (view != "photons" || !m_whitted.caustics) continue;
         // The debug view, as the photon integrator's: what the caustic map alone says at
         // each diffuse hit seen directly or through mirrors and glass.
-        Film photons(film.width(), film.height(), false);
+        Film photons(film.width(), film.height(), false, film.origin());
         Progress quiet("photon view", 1, true);
         m_show_photons = true;
         const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);
@@ -139,13 +139,15 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
 
 Spectrum WhittedIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                                RayCounter& counter, AovSample* aov) const {
-    return trace(ray, scene, sampler, arena, counter, aov, 0);
+    int budget = kWhittedRayBudget;
+    return trace(ray, scene, sampler, arena, counter, aov, 0, budget);
 }
 
 Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& sampler,
-                                  Arena& arena, RayCounter& counter, AovSample* aov,
-                                  int depth) const {
+                                  Arena& arena, RayCounter& counter, AovSample* aov, int depth,
+                                  int& budget) const {
     ++counter.rays;
+    --budget;
     std::optional<SurfaceInteraction> hit = scene.intersect(ray);
     if (!hit) {
         const Spectrum escaped = scene.escaped_radiance(ray.direction);
@@ -172,12 +174,36 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
                                        m_caustic_radius2);
             }
         } else {
-            // Follow every delta lobe (reflection, refraction) with its exact weight.
-            for (const BsdfSample& lobe : bsdf->delta_lobes(wo_local)) {
+            // Follow every delta lobe (reflection, refraction) with its exact weight, in the
+            // order the BSDF gives them. Inside closed glass every hit branches in two, and
+            // the tree would grow as 2^max_depth: once the camera sample's ray budget is
+            // spent, only the strongest lobe is followed, so what is left costs at most
+            // max_depth rays per pending branch. The lobes given up carry the smallest
+            // weights of the deepest part of the tree; the image loses that light (a small
+            // bias) instead of hanging. Ordinary scenes never reach the budget: their
+            // images are unchanged by it.
+            const auto lobes = bsdf->delta_lobes(wo_local);
+            const bool branch = budget > 0;
+            int strongest = 0;
+            if (!branch) {
+                float best = -1.0f;
+                for (int k = 0; k < lobes.count; ++k) {
+                    const float w =
+                        (lobes.lobes[k].f * abs_cos_theta(lobes.lobes[k].wi)).max_value();
+                    if (w > best) {
+                        best = w;
+                        strongest = k;
+                    }
+                }
+            }
+            for (int k = 0; k < lobes.count; ++k) {
+                if (!branch && k != strongest) continue;
+                const BsdfSample& lobe = lobes.lobes[k];
                 const Vec3 wi = si.to_world(lobe.wi);
                 const Spectrum weight = lobe.f * abs_cos_theta(lobe.wi);
                 const Ray next = spawn_specular_ray(si, ray, wi, lobe.is_transmission(), lobe.eta);
-                L += weight * trace(next, scene, sampler, arena, counter, nullptr, depth + 1);
+                L += weight *
+                     trace(next, scene, sampler, arena, counter, nullptr, depth + 1, budget);
             }
         }
     }

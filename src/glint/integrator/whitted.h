@@ -4,11 +4,18 @@
 // ambient term, optional photon-mapped caustics, and exact recursion into mirror reflection and
 // refraction, weighted by Fresnel, with total internal reflection and Beer absorption. No indirect
 // diffuse light.
+// Glass branches in two at every hit, so a closed glass object would cost 2^max_depth rays per
+// camera sample: each camera sample may trace kWhittedRayBudget rays through mirrors and glass,
+// after which every hit follows its strongest lobe only (see whitted.cpp).
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/photon.h>
 #include <glint/integrator/photon_map.h>
 
 namespace glint {
+
+/// Rays one whitted camera sample may trace through mirrors and glass before it stops
+/// branching: past it, a delta hit follows only its strongest lobe (largest weight).
+inline constexpr int kWhittedRayBudget = 1024;
 
 /// The settings of "whitted", from glint.render{...}.
 struct WhittedSettings {
@@ -41,8 +48,11 @@ public:
                                RayCounter& counter) const;
 
 private:
+    // Radiance along `ray`, recursing into delta lobes. `budget` is what is left of the
+    // camera sample's kRayBudget: each call takes one, and once none is left a delta hit
+    // follows only its strongest lobe (see whitted.cpp).
     Spectrum trace(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
-                   RayCounter& counter, AovSample* aov, int depth) const;
+                   RayCounter& counter, AovSample* aov, int depth, int& budget) const;
     Spectrum direct(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                     Sampler& sampler, RayCounter& counter) const;
 

@@ -56,6 +56,23 @@ RenderSettings parse_render_settings(const Params* params) {
     if (s.max_spp < 0) p.fail_at("max_spp", "'max_spp' must not be negative");
     if (!(s.edge_threshold > 0.0f))
         p.fail_at("edge_threshold", "'edge_threshold' must be positive");
+    if (p.has("crop")) {
+        const std::vector<double> c = p.get_numbers("crop");
+        const std::string expected = fmt::format(
+            "'crop' must be four whole numbers {{x0, y0, x1, y1}} with 0 <= x0 < x1 <= {} "
+            "(width) and 0 <= y0 < y1 <= {} (height)",
+            s.width, s.height);
+        if (c.size() != 4) p.fail_at("crop", fmt::format("{}; got {} numbers", expected, c.size()));
+        for (double v : c) {
+            if (v != std::floor(v) || v < 0.0 || v > 65536.0) p.fail_at("crop", expected);
+        }
+        for (int k = 0; k < 4; ++k) s.crop[k] = static_cast<int>(c[k]);
+        if (s.crop[0] >= s.crop[2] || s.crop[1] >= s.crop[3] || s.crop[2] > s.width ||
+            s.crop[3] > s.height) {
+            p.fail_at("crop", fmt::format("{}; got {{{}, {}, {}, {}}}", expected, s.crop[0],
+                                          s.crop[1], s.crop[2], s.crop[3]));
+        }
+    }
     return s;
 }
 

@@ -7,6 +7,7 @@
 #include <glint/core/params.h>
 #include <glint/core/spectrum.h>
 
+#include <array>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,6 +44,17 @@ struct RenderSettings {
     float target_error = 0.02f;      // variance: stop when the relative error falls below
     int max_spp = 0;                 // variance: cap per pixel (0 = 8 x spp)
     std::vector<std::string> debug;  // "edges": also write the edge mask
+
+    // Crop window {x0, y0, x1, y1}: render only pixels [x0, x1) x [y0, y1) of the
+    // width x height image, and output just those (an image of the window's size). Each
+    // of its pixels is bit for bit the full render's. Empty (all 0) = the whole image.
+    std::array<int, 4> crop{0, 0, 0, 0};
+    bool has_crop() const { return crop[2] > 0; }
+    /// The output image's size and its top-left pixel in the full image: the crop window,
+    /// or the whole image.
+    int output_width() const { return has_crop() ? crop[2] - crop[0] : width; }
+    int output_height() const { return has_crop() ? crop[3] - crop[1] : height; }
+    Vec2i output_origin() const { return has_crop() ? Vec2i(crop[0], crop[1]) : Vec2i(0, 0); }
 
     // The glint.render{...} table with the flags' values in it. Records which keys the
     // common settings read; integrators read their own keys from a copy.
