@@ -13,13 +13,17 @@
 namespace glint {
 
 // What Embree reported for a hit, enough for the shape to rebuild the full interaction.
+// Accel writes every field of a record when its ray hits, and nothing reads a record of a
+// miss, so the fields have no initialisers: the path tracer declares eight per packet and
+// bounce, and initialising them (288 bytes from a constant, a `rep movs`) cost more than
+// the rest of the packet's setup. Write HitRecord{} for a zeroed one.
 struct HitRecord {
-    float t = kInfinity;
-    unsigned top_geometry = RTC_INVALID_GEOMETRY_ID;    // geometry id in the world scene
-    unsigned local_geometry = RTC_INVALID_GEOMETRY_ID;  // geometry id inside an instance
-    unsigned primitive = 0;
-    Vec2 barycentric{0.0f};
-    Vec3 normal{0.0f};  // as the geometry reported it (user geometry uses it to pass data)
+    float t;
+    unsigned top_geometry;    // geometry id in the world scene
+    unsigned local_geometry;  // geometry id inside an instance; RTC_INVALID_GEOMETRY_ID if none
+    unsigned primitive;
+    Vec2 barycentric;
+    Vec3 normal;  // as the geometry reported it (user geometry uses it to pass data)
     bool instanced() const { return local_geometry != RTC_INVALID_GEOMETRY_ID; }
 };
 

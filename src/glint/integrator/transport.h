@@ -60,17 +60,28 @@ struct LightArrival {
     float bsdf_pdf = 0.0f;  ///< density with which BSDF sampling picks that direction (for MIS)
 };
 
+/// The BSDF at `si` towards a light sample: f |cos theta_i| into `f_cos`, and the density
+/// with which BSDF sampling picks that direction into `bsdf_pdf`. False when f_cos is black.
+[[gnu::always_inline]] inline bool bsdf_towards_light(const LightSample& ls,
+                                                      const SurfaceInteraction& si,
+                                                      const Bsdf& bsdf, const Vec3& wo_local,
+                                                      Spectrum& f_cos, float& bsdf_pdf) {
+    const Vec3 wi_local = si.to_local(ls.wi);
+    f_cos = bsdf.eval_pdf(wo_local, wi_local, bsdf_pdf) * abs_cos_theta(wi_local);
+    return !f_cos.is_black();
+}
+
 /// Samples `light` from `si` with (u, u_select) (see Light::sample_li) and evaluates the
 /// BSDF towards it; nullopt when the sample carries nothing.
-[[gnu::always_inline]] inline std::optional<LightArrival> sample_light_arrival(
-    const Light& light, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
-    const Vec2& u, float u_select) {
+inline std::optional<LightArrival> sample_light_arrival(const Light& light,
+                                                        const SurfaceInteraction& si,
+                                                        const Bsdf& bsdf, const Vec3& wo_local,
+                                                        const Vec2& u, float u_select) {
     const std::optional<LightSample> ls = light.sample_li(si.p, u, u_select);
     if (!ls || ls->L.is_black()) return std::nullopt;
-    const Vec3 wi_local = si.to_local(ls->wi);
     LightArrival arrival{*ls, Spectrum(0.0f), 0.0f};
-    arrival.f_cos = bsdf.eval_pdf(wo_local, wi_local, arrival.bsdf_pdf) * abs_cos_theta(wi_local);
-    if (arrival.f_cos.is_black()) return std::nullopt;
+    if (!bsdf_towards_light(*ls, si, bsdf, wo_local, arrival.f_cos, arrival.bsdf_pdf))
+        return std::nullopt;
     return arrival;
 }
 
@@ -106,15 +117,18 @@ template <typename SamplerType = Sampler>
     const float u_select = sampler.get_1d();
     const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
     if (!choice.light) return std::nullopt;
-    const std::optional<LightArrival> arrival =
-        sample_light_arrival(*choice.light, si, bsdf, wo_local, u, u_select);
-    if (!arrival) return std::nullopt;
-    const LightSample& ls = arrival->light;
-    const float light_pdf = choice.pmf * ls.pdf;
-    if (ls.is_delta || weighting == LightWeighting::kNone)
-        return DirectLight{arrival->f_cos * ls.L / light_pdf, ls.p};
-    const float weight = power_heuristic(light_pdf, arrival->bsdf_pdf);
-    return DirectLight{arrival->f_cos * ls.L * (weight / light_pdf), ls.p};
+    // The light's sample is read where the light wrote it, never copied as a whole: a copy
+    // right after the light's stores stalls the CPU (see sample_scattering).
+    const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);
+    if (!ls || ls->L.is_black()) return std::nullopt;
+    Spectrum f_cos;
+    float bsdf_pdf;
+    if (!bsdf_towards_light(*ls, si, bsdf, wo_local, f_cos, bsdf_pdf)) return std::nullopt;
+    const float light_pdf = choice.pmf * ls->pdf;
+    if (ls->is_delta || weighting == LightWeighting::kNone)
+        return DirectLight{f_cos * ls->L / light_pdf, ls->p};
+    const float weight = power_heuristic(light_pdf, bsdf_pdf);
+    return DirectLight{f_cos * ls->L * (weight / light_pdf), ls->p};
 }
 
 /// sample_direct_light, with its shadow ray traced (and counted): the direct light arriving
