@@ -12,7 +12,6 @@ packages=(
   libglm-dev           # vector math
   libcli11-dev         # command line
   libfmt-dev           # formatting
-  libtinyobjloader-dev # OBJ meshes
   libgtest-dev libgmock-dev # tests
 )
 
