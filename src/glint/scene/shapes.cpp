@@ -63,7 +63,11 @@ std::unique_ptr<Shape> make_mesh(const Params& params, const std::string& direct
     data.uvs = params.get_vec2_list("uvs");
     for (double i : params.get_numbers("indices")) {
         // 1-based, as everything in Lua.
-        if (i < 1 || i != std::floor(i)) params.fail("'indices' must be integers starting at 1");
+        // Checked before the conversion: a double past 2^32 does not fit a uint32_t.
+        if (!(i >= 1 && i <= static_cast<double>(data.positions.size())) || i != std::floor(i)) {
+            params.fail(fmt::format("'indices' must be integers from 1 to the {} vertices",
+                                    data.positions.size()));
+        }
         data.indices.push_back(static_cast<uint32_t>(i) - 1);
     }
     if (data.positions.empty() || data.indices.empty()) {

@@ -229,7 +229,12 @@ private:
         } else {
             data.positions = p.get_vec3_list("vertices");
             for (double i : p.get_numbers("indices")) {
-                if (i < 1 || i != std::floor(i)) p.fail("'indices' must be integers starting at 1");
+                // Checked before the conversion: a double past 2^32 does not fit a uint32_t.
+                if (!(i >= 1 && i <= static_cast<double>(data.positions.size())) ||
+                    i != std::floor(i)) {
+                    p.fail(fmt::format("'indices' must be integers from 1 to the {} vertices",
+                                       data.positions.size()));
+                }
                 data.indices.push_back(static_cast<uint32_t>(i) - 1);
             }
         }
