@@ -275,6 +275,8 @@ int run_render(const RenderOptions& options) {
     auto integrator = make_integrator(settings, &warnings);
     for (const std::string& warning : warnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto scene = build_scene(desc, settings);
+    for (const std::string& warning : scene->stats().warnings)
+        fmt::print(stderr, "warning: {}\n", warning);
     throw_if_interrupted();
 
     const int threads =
@@ -337,6 +339,8 @@ int run_info(const std::string& scene_path, bool trusted_scene) {
     const SceneDesc desc = load_scene_file(scene_path, loader_options(trusted_scene));
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
+    for (const std::string& warning : scene->stats().warnings)
+        fmt::print(stderr, "warning: {}\n", warning);
     const SceneStats& s = scene->stats();
     fmt::print("scene:      {}\n", scene_path);
     fmt::print("shapes:     {}\n", s.shapes);

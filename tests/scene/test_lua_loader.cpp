@@ -149,3 +149,31 @@ TEST(LuaLoader, UnknownParameterListsTheKnownOnes) {
 TEST(LuaLoader, MissingSceneFileIsAnError) {
     EXPECT_THROW(load_scene_file("/nonexistent/scene.lua"), Error);
 }
+
+// A one-sided quad light wound away from everything renders black: building says so, with
+// the line that made it; wound towards the floor, or two-sided, it says nothing.
+TEST(LuaLoader, OneSidedLightFacingAwayIsWarnedOf) {
+    auto warnings_for = [](const std::string& corners, const std::string& extra) {
+        const auto scene = build(R"(
+            glint.quad{ vertices = {{-5, 0, -5}, {-5, 0, 5}, {5, 0, 5}, {5, 0, -5}},
+                        material = glint.diffuse{} }
+            glint.quad{ vertices = )" +
+                                 corners + R"(,
+                        material = glint.emissive{ radiance = 5)" +
+                                 extra + R"( } }
+        )");
+        return scene->stats().warnings;
+    };
+    const std::string towards_floor = "{{-1, 4, -1}, {1, 4, -1}, {1, 4, 1}, {-1, 4, 1}}";
+    const std::string towards_sky = "{{-1, 4, -1}, {-1, 4, 1}, {1, 4, 1}, {1, 4, -1}}";
+    const auto sky = warnings_for(towards_sky, "");
+    const auto floor = warnings_for(towards_floor, "");
+    // Which winding faces the floor is the renderer's convention: exactly one of the two
+    // must be warned of, and it must name the emitter's line.
+    ASSERT_EQ(sky.size() + floor.size(), 1u);
+    const std::string warning = sky.empty() ? floor.front() : sky.front();
+    EXPECT_NE(warning.find("scene.lua:4"), std::string::npos) << warning;
+    EXPECT_NE(warning.find("faces away"), std::string::npos) << warning;
+    EXPECT_TRUE(
+        warnings_for(sky.empty() ? towards_floor : towards_sky, ", two_sided = true").empty());
+}

@@ -38,6 +38,7 @@ public:
         build_groups();
         place_root();
         m_scene->m_accel.commit();
+        warn_of_lights_facing_away();
         const Bounds3& bounds = m_scene->m_stats.bounds;
         const Vec3 center = bounds.is_empty() ? Vec3(0.0f) : bounds.center();
         const float radius =
@@ -186,10 +187,50 @@ private:
         } catch (const Error& e) {
             use.params->fail(e.what());
         }
+        if (!emitter->emits_two_sided())
+            m_one_sided_lights.push_back({sampler.get(), use.params->where()});
         m_scene->m_lights.push_back(std::make_unique<AreaLight>(
             std::move(sampler), emitter->emission(), emitter->emits_two_sided()));
         return m_scene->m_lights.back().get();
     }
+
+    // A one-sided emitter lights only what lies in front of it; one wound the wrong way
+    // (a quad whose corners go round clockwise seen from the room) lights nothing and
+    // renders black without an error. Warned of when the whole scene's box lies behind
+    // the emitter's tangent plane at every one of a few points on it (so a closed
+    // emitter, a sphere, which has the scene on both sides of some tangent plane, never
+    // is).
+    void warn_of_lights_facing_away() {
+        const Bounds3& bounds = m_scene->m_stats.bounds;
+        if (bounds.is_empty()) return;
+        for (const OneSidedLight& light : m_one_sided_lights) {
+            bool faces_something = false;
+            for (int i = 0; i < 4 && !faces_something; ++i) {
+                const Vec2 u(0.25f + 0.5f * static_cast<float>(i & 1),
+                             0.25f + 0.5f * static_cast<float>(i >> 1));
+                const ShapeSample point = light.sampler->sample_area(u, 0.5f);
+                for (int corner = 0; corner < 8; ++corner) {
+                    const Vec3 c((corner & 1) ? bounds.max.x : bounds.min.x,
+                                 (corner & 2) ? bounds.max.y : bounds.min.y,
+                                 (corner & 4) ? bounds.max.z : bounds.min.z);
+                    const float scale = 1e-4f * glm::length(bounds.extent());
+                    if (glm::dot(c - point.p, point.n) > scale) faces_something = true;
+                }
+            }
+            if (!faces_something) {
+                m_scene->m_stats.warnings.push_back(fmt::format(
+                    "{}: this one-sided emitter faces away from the whole scene and lights "
+                    "nothing (reverse its winding, or make it two-sided)",
+                    light.where));
+            }
+        }
+    }
+
+    struct OneSidedLight {
+        const ShapeSampler* sampler;  // owned by the light
+        std::string where;            // the script line that made it
+    };
+    std::vector<OneSidedLight> m_one_sided_lights;
 
     void count_shape(const ShapeUse& use, const Transform& to_world) {
         SceneStats& stats = m_scene->m_stats;

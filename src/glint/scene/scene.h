@@ -20,6 +20,9 @@ struct SceneStats {
     size_t groups = 0;
     size_t instances = 0;
     Bounds3 bounds;
+    // What building found suspicious but renderable (e.g. a one-sided light that faces
+    // away from everything), each naming the script line; the CLI prints them.
+    std::vector<std::string> warnings;
 };
 
 class Scene {
