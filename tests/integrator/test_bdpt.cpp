@@ -22,19 +22,6 @@
 using namespace glint;
 using namespace glint::test;
 
-namespace {
-
-// The mean over all pixels and channel `c` of K renders of `scene(seed)`, with its standard
-// error from the renders' spread.
-Estimate image_mean(const std::function<std::string(int)>& scene, int k, int c) {
-    std::vector<double> means;
-    for (const Image& image : render_seeds(scene, k))
-        means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
-    return estimate(means, 1.0);
-}
-
-}  // namespace
-
 // A diffuse sphere (albedo a) inside a closed sphere that emits Le inwards and reflects
 // nothing: the inner sphere, convex, sees only the emitter, so it reflects exactly a Le. The
 // camera sees nothing but the inner sphere. Strategies (0, 3), (1, 2) and (2, 1) share it.

@@ -222,19 +222,6 @@ TEST(PssSampler, StreamsKeepTheirDimensions) {
     }
 }
 
-namespace {
-
-// The mean over all pixels and channel `c` of K renders of `scene(seed)`, with its standard
-// error from the renders' spread.
-Estimate image_mean(const std::function<std::string(int)>& scene, int k, int c) {
-    std::vector<double> means;
-    for (const Image& image : render_seeds(scene, k))
-        means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
-    return estimate(means, 1.0);
-}
-
-}  // namespace
-
 // A diffuse sphere (albedo a) inside a closed sphere that emits Le inwards: every pixel is
 // exactly a Le, carried by paths of one bounce only (the emitter reflects nothing), so the
 // bootstrap's samples at depths 0 and 2 find nothing. The image's mean is then b times the

@@ -25,17 +25,6 @@
 using namespace glint;
 using namespace glint::test;
 
-namespace {
-
-Estimate image_mean(const std::function<std::string(int)>& scene, int k, int c) {
-    std::vector<double> means;
-    for (const Image& image : render_seeds(scene, k))
-        means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
-    return estimate(means, 1.0);
-}
-
-}  // namespace
-
 // test_bdpt's closed furnace: a diffuse sphere (albedo a) inside a sphere emitting Le inwards
 // reflects exactly a Le. Merging has no bias here: the photons lie on a sphere, where the
 // part within distance r of a point has area exactly pi r^2 (Archimedes), and the irradiance
@@ -185,17 +174,7 @@ std::vector<bool> mirrored_shadow_mask(const std::string& code, const Vec3& ligh
                 scene->intersect(Ray{p, light - p, 0.0f, 1.0f}).has_value();
         }
     }
-    std::vector<bool> mask(shadowed.size(), false);
-    for (int y = 1; y + 1 < h; ++y) {
-        for (int x = 1; x + 1 < w; ++x) {
-            bool all = true;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    all = all && shadowed[static_cast<size_t>(y + dy) * w + x + dx];
-            mask[static_cast<size_t>(y) * w + x] = all;
-        }
-    }
-    return mask;
+    return interior_of(shadowed, w, h);
 }
 
 std::array<Estimate, 3> mirror_region(const std::vector<bool>& mask, const std::string& settings,

@@ -94,6 +94,15 @@ inline Estimate estimate(const std::vector<double>& values, double scale) {
     return {mean, std::sqrt(variance / k)};
 }
 
+// The mean over all pixels and channel `c` of K renders of `scene(seed)`, with its standard
+// error from the renders' spread.
+inline Estimate image_mean(const std::function<std::string(int)>& scene, int k, int c) {
+    std::vector<double> means;
+    for (const Image& image : render_seeds(scene, k))
+        means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
+    return estimate(means, 1.0);
+}
+
 // Means over the masked pixels of a square block of `block` x `block` pixels (NaN for
 // a block with fewer than a quarter of its pixels masked), per channel, and over the
 // kScattering pixels of the mask (the last three entries). The region means leave out the
@@ -209,6 +218,22 @@ inline std::string point_light_behind_glass(const std::string& settings) {
                        settings);
 }
 
+// The pixels of a w x h `mask` whose 3 x 3 neighbourhood lies wholly inside it: away from
+// the region's edge, where a pixel's samples would straddle it.
+inline std::vector<bool> interior_of(const std::vector<bool>& mask, int w, int h) {
+    std::vector<bool> interior(mask.size(), false);
+    for (int y = 1; y + 1 < h; ++y) {
+        for (int x = 1; x + 1 < w; ++x) {
+            bool all = true;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    all = all && mask[static_cast<size_t>(y + dy) * w + x + dx];
+            interior[static_cast<size_t>(y) * w + x] = all;
+        }
+    }
+    return interior;
+}
+
 // Pixels whose camera rays (through the centre and the neighbours' centres, as for
 // non_delta_mask) all hit the floor at points the ball hides from the point light: there
 // the path tracer finds no direct light (its shadow rays stop at the glass, and a
@@ -230,17 +255,7 @@ inline std::vector<bool> shadow_mask(const std::string& code, const Vec3& light)
                 scene->intersect(Ray{p, light - p, 0.0f, 1.0f}).has_value();
         }
     }
-    std::vector<bool> mask(shadowed.size(), false);
-    for (int y = 1; y + 1 < h; ++y) {
-        for (int x = 1; x + 1 < w; ++x) {
-            bool all = true;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx)
-                    all = all && shadowed[static_cast<size_t>(y + dy) * w + x + dx];
-            mask[static_cast<size_t>(y) * w + x] = all;
-        }
-    }
-    return mask;
+    return interior_of(shadowed, w, h);
 }
 
 // Per-channel means over `mask` of each image, as estimates with standard errors.
