@@ -3,7 +3,9 @@
 # MSE of 0.02 and of 0.005 against a long reference, on three scenes:
 #   cornell    examples/cornell-box.lua, whole image (reference: path)
 #   spheres    examples/cornell-spheres.lua, the glass sphere's caustic on the floor
-#              (reference: bdpt, which finds the caustic; path barely does)
+#              (reference: path at 65536 spp over the region alone, with --crop)
+#   spheres-small  the same with a light of a quarter the side and 16 times the radiance
+#              (bench/cornell-spheres-small-light.lua): the same power, a sharper caustic
 #   ajar       examples/ajar-door.lua, whole image: light reaches the room only by bouncing
 #              through a door left ajar (reference: bdpt)
 # Each integrator renders at a ladder of sample counts; the time to a target is interpolated
@@ -20,6 +22,8 @@
 #                does not have are skipped)
 #   REF_SPP      samples per pixel of the references (default 4096 for path, 1024 for bdpt)
 #   TARGETS      relative MSE targets (default "0.02 0.005")
+#   CLOCK        wall (default: the render's wall-clock seconds) or cpu (its processor
+#                seconds, all threads: steadier on a machine busy with other work)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR=${BUILD_DIR:-build}
@@ -28,6 +32,7 @@ RES=${RES:-128x128}
 SCENES=${SCENES:-cornell spheres ajar}
 INTEGRATORS=${INTEGRATORS:-path bdpt vcm mlt sppm}
 TARGETS=${TARGETS:-0.02 0.005}
+CLOCK=${CLOCK:-wall}
 ninja -C "$BUILD_DIR" glint_cli glint_bench_region_error >/dev/null
 glint=$BUILD_DIR/glint
 error=$BUILD_DIR/bench/glint_bench_region_error
@@ -36,13 +41,16 @@ trap 'rm -rf "$tmp"' EXIT
 width=${RES%x*}
 height=${RES#*x}
 
-# scene name -> "file|region x0 y0 x1 y1|reference integrator|reference spp"
+# scene name -> "file|region x0 y0 x1 y1|reference integrator|reference spp|crop"
+# (crop: the reference renders the region alone, so it can afford many more samples)
 scene_spec() {
     case $1 in
-    cornell) echo "examples/cornell-box.lua|0 0 $width $height|path|${REF_SPP:-4096}" ;;
-    spheres) echo "examples/cornell-spheres.lua|74 110 98 122|bdpt|${REF_SPP:-1024}" ;;
-    ajar) echo "examples/ajar-door.lua|0 0 $width $height|bdpt|${REF_SPP:-1024}" ;;
-    *) echo "unknown scene '$1' (expected: cornell, spheres, ajar)" >&2 && exit 2 ;;
+    cornell) echo "examples/cornell-box.lua|0 0 $width $height|path|${REF_SPP:-4096}|no" ;;
+    spheres) echo "examples/cornell-spheres.lua|74 110 98 122|path|${REF_SPP:-65536}|yes" ;;
+    spheres-small)
+        echo "bench/cornell-spheres-small-light.lua|74 110 98 122|path|${REF_SPP:-65536}|yes" ;;
+    ajar) echo "examples/ajar-door.lua|0 0 $width $height|bdpt|${REF_SPP:-1024}|no" ;;
+    *) echo "unknown scene '$1' (expected: cornell, spheres, spheres-small, ajar)" >&2 && exit 2 ;;
     esac
 }
 
@@ -66,20 +74,31 @@ render() {  # scene, output, args... -> seconds of the render (from the CLI's su
     local scene=$1 out=$2
     shift 2
     "$glint" render "$scene" --threads "$THREADS" --res "$RES" -o "$out" "$@" 2>"$tmp/log"
-    sed -nE 's/^.*threads: ([0-9.]+) s,.*$/\1/p' "$tmp/log" | tail -1
+    if [[ $CLOCK == cpu ]]; then
+        sed -nE 's/^.* ([0-9.]+) s of processor time$/\1/p' "$tmp/log" | tail -1
+    else
+        sed -nE 's/^.*threads: ([0-9.]+) s,.*$/\1/p' "$tmp/log" | tail -1
+    fi
 }
 
-echo "Bidirectional methods, $RES, $THREADS threads, $(date +%F), commit $(git rev-parse --short HEAD)"
+echo "Bidirectional methods, $RES, $THREADS threads, $CLOCK seconds, $(date +%F)," \
+    "commit $(git rev-parse --short HEAD)"
 for name in $SCENES; do
-    IFS='|' read -r scene region ref_integrator ref_spp <<<"$(scene_spec "$name")"
+    IFS='|' read -r scene region ref_integrator ref_spp ref_crop <<<"$(scene_spec "$name")"
     if [[ ! -f "$scene" ]]; then
         echo "$name: $scene not found, skipped"
         continue
     fi
+    crop_args=()
+    if [[ $ref_crop == yes ]]; then
+        read -r x0 y0 x1 y1 <<<"$region"
+        crop_args=(--crop "$x0,$y0,$x1,$y1")
+    fi
     ref_seconds=$(render "$scene" "$tmp/ref.exr" --integrator "$ref_integrator" --spp "$ref_spp" \
-        --seed 7)
+        --seed 7 "${crop_args[@]}")
     echo
-    echo "$name: $scene, region [$region], reference $ref_integrator $ref_spp spp ($ref_seconds s)"
+    echo "$name: $scene, region [$region], reference $ref_integrator $ref_spp spp" \
+        "$([[ $ref_crop == yes ]] && echo "over the region ")($ref_seconds s)"
     printf '  %-6s %6s %9s %10s\n' integr. spp seconds "rel. MSE"
     rows=""
     for integrator in $INTEGRATORS; do

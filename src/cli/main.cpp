@@ -18,6 +18,7 @@
 #include <atomic>
 #include <climits>
 #include <csignal>
+#include <ctime>
 #include <filesystem>
 #include <new>
 #include <optional>
@@ -286,7 +287,11 @@ int run_render(const RenderOptions& options) {
               settings.output_origin());
     Progress progress("rendering", expected_samples(settings), options.quiet);
     progress.set_cancel_flag(&g_signal);
+    // Processor time of the render (all threads), besides its wall-clock time: a benchmark on
+    // a busy machine compares methods by it (bench/bidirectional.sh, CLOCK=cpu).
+    const std::clock_t cpu_start = std::clock();
     const RenderStats stats = integrator->render(*scene, film, progress);
+    const double cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     throw_if_interrupted();
     progress.finish();
 
@@ -319,7 +324,8 @@ int run_render(const RenderOptions& options) {
                    "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
                    settings.width, settings.height, settings.spp, threads, stats.seconds,
                    stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
-        fmt::print(stderr, "{} samples and {} rays in all\n", stats.samples, stats.rays);
+        fmt::print(stderr, "{} samples and {} rays in all, {:.2f} s of processor time\n",
+                   stats.samples, stats.rays, cpu_seconds);
         for (const std::string& path : targets) {
             if (std::filesystem::exists(path)) fmt::print(stderr, "wrote {}\n", path);
         }

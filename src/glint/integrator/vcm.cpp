@@ -24,8 +24,11 @@ constexpr int kChunkPaths = 256;
 // from the camera's, so that the two subpaths of a pixel are independent.
 constexpr uint64_t kLightSeedSalt = 0x56434d4c49474854ULL;
 
-// A photon: vertex `vertex` (>= 1) of light subpath `path`.
+// A photon: vertex `vertex` (>= 1) of light subpath `path`, with a copy of its position so
+// that a gather rejects the photons outside its disc without reaching for the vertex (a cache
+// miss each: the vertices are large and scattered over the subpaths).
 struct PhotonRef {
+    Vec3 p;
     uint32_t path;
     uint32_t vertex;
 };
@@ -36,14 +39,13 @@ struct PhotonRef {
 // 2 x 2 x 2 cells nearest to it.
 class PhotonGrid {
 public:
-    void build(std::vector<PhotonRef> photons, std::span<const std::vector<PathVertex>> paths,
-               float radius) {
+    void build(std::vector<PhotonRef> photons, float radius) {
         m_inverse_cell = 1.0f / (2.0f * radius);
         const size_t n = photons.size();
         m_begin.assign(std::max<size_t>(n, 1) + 1, 0);
         std::vector<uint32_t> bucket_of(n);
         for (size_t i = 0; i < n; ++i) {
-            bucket_of[i] = bucket(cell_of(position(photons[i], paths)));
+            bucket_of[i] = bucket(cell_of(photons[i].p));
             ++m_begin[bucket_of[i] + 1];
         }
         for (size_t b = 1; b < m_begin.size(); ++b) m_begin[b] += m_begin[b - 1];
@@ -72,10 +74,6 @@ public:
     }
 
 private:
-    static const Vec3& position(const PhotonRef& ref,
-                                std::span<const std::vector<PathVertex>> paths) {
-        return paths[ref.path][ref.vertex].p;
-    }
     glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p * m_inverse_cell)); }
     uint32_t bucket(const glm::ivec3& c) const {
         const uint64_t h =
@@ -192,10 +190,11 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
             const std::vector<PathVertex>& path = it.light_paths[i];
             for (size_t v = 1; v < path.size(); ++v) {
                 if (path[v].is_surface() && path[v].connectible())
-                    photons.push_back({static_cast<uint32_t>(i), static_cast<uint32_t>(v)});
+                    photons.push_back(
+                        {path[v].p, static_cast<uint32_t>(i), static_cast<uint32_t>(v)});
             }
         }
-        it.grid.build(photons, it.light_paths, it.radius);
+        it.grid.build(photons, it.radius);
 
         tbb::parallel_for(0, tiles_x * tiles_y,
                           [&](int tile) { render_tile(scene, film, it, tile); });
@@ -288,11 +287,11 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                 if (!pt.is_surface() || !pt.connectible()) continue;
                 const Vec3 wo_local = pt.si.to_local(pt.si.wo);
                 it.grid.for_each_near(pt.p, [&](const PhotonRef& ref) {
-                    const std::vector<PathVertex>& path = it.light_paths[ref.path];
-                    const PathVertex& photon = path[ref.vertex];
                     const int s = static_cast<int>(ref.vertex);
                     if (max_depth >= 0 && s + t - 2 > max_depth) return;
-                    if (length_squared(photon.p - pt.p) > radius2) return;
+                    if (length_squared(ref.p - pt.p) > radius2) return;
+                    const std::vector<PathVertex>& path = it.light_paths[ref.path];
+                    const PathVertex& photon = path[ref.vertex];
                     // A photon on the other side of a surface (a thin wall) lights that side.
                     if (!(glm::dot(photon.ng, pt.ng) > 0.0f)) return;
                     const Spectrum f = pt.bsdf->eval(wo_local, pt.si.to_local(photon.si.wo));
