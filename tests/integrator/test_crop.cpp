@@ -1,6 +1,6 @@
 // Crop windows: every pixel of a cropped render is bit for bit the same pixel of the full
 // render, for each integrator that supports it and for adaptive sampling, whose decisions
-// look at neighbouring pixels; light, bdpt and sppm refuse a crop.
+// look at neighbouring pixels; light, bdpt, vcm and mlt refuse a crop.
 #include <glint/core/error.h>
 
 #include <fmt/format.h>
@@ -55,9 +55,12 @@ class CropWindow : public ::testing::TestWithParam<std::string> {};
 TEST_P(CropWindow, PixelsAreTheFullRendersBitForBit) {
     const std::string settings = GetParam();
     const Image full = render_lua(scene(settings));
-    // An inner window, and one touching the image's corner.
+    // An inner window, one touching the image's corner, and one of two pixels (sppm hashes
+    // its visible points into as many buckets as the window has pixels: in two buckets, a
+    // point's cells collide, and a point listed twice in a bucket would gather twice).
     for (const auto& [x0, y0, x1, y1] :
-         {std::array<int, 4>{5, 3, 17, 11}, std::array<int, 4>{0, 9, 7, 16}}) {
+         {std::array<int, 4>{5, 3, 17, 11}, std::array<int, 4>{0, 9, 7, 16},
+          std::array<int, 4>{10, 10, 12, 11}}) {
         SCOPED_TRACE(fmt::format("crop {{{}, {}, {}, {}}}", x0, y0, x1, y1));
         const Image crop = render_lua(
             scene(fmt::format("{}, crop = {{{}, {}, {}, {}}}", settings, x0, y0, x1, y1)), 2);
@@ -69,12 +72,13 @@ INSTANTIATE_TEST_SUITE_P(
     Integrators, CropWindow,
     ::testing::Values("integrator = 'path', aovs = true", "integrator = 'whitted'",
                       "integrator = 'photon', photons = 2000, caustic_photons = 2000",
+                      "integrator = 'sppm', photons = 3000, photon_radius = 0.4, spp = 3",
                       "integrator = 'path', adaptive = 'sobel', edge_threshold = 0.1",
                       "integrator = 'path', adaptive = 'variance', target_error = 0.3, spp = 2, "
                       "max_spp = 32"));
 
-TEST(Crop, RefusedByLightAndBdptAndCheckedAgainstTheResolution) {
-    for (const char* integrator : {"light", "bdpt", "sppm"}) {
+TEST(Crop, RefusedByLightPathMethodsAndCheckedAgainstTheResolution) {
+    for (const char* integrator : {"light", "bdpt", "vcm", "mlt"}) {
         try {
             render_lua(scene(fmt::format("integrator = '{}', crop = {{0, 0, 4, 4}}", integrator)));
             ADD_FAILURE() << integrator << " accepted a crop";

@@ -51,16 +51,17 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
         throw Error(fmt::format("{}: unknown integrator '{}' (known: {})",
                                 settings.where_of("integrator"), settings.integrator, known));
     }
-    // Only the tile integrators render a window alone. Light paths (light, bdpt, vcm, mlt)
-    // splat anywhere on the film, so a crop window would need the whole film rendered
-    // anyway; sppm's photon passes are shared by all pixels, and its cropped pixels do not
-    // yet match the full render bit for bit. A new integrator is refused until it says so.
-    static const std::set<std::string> kCropIntegrators = {"path", "path_light", "path_bsdf",
-                                                           "whitted", "photon"};
+    // Only the integrators whose pixels do not depend on the others render a window alone:
+    // the tile integrators, and sppm (its photons do not depend on the window, and each
+    // pixel sums their flux in photon order). Light paths (light, bdpt, vcm, mlt) splat
+    // anywhere on the film, so a crop window would need the whole film rendered anyway. A
+    // new integrator is refused until it says so.
+    static const std::set<std::string> kCropIntegrators = {"path",    "path_light", "path_bsdf",
+                                                           "whitted", "photon",     "sppm"};
     if (settings.has_crop() && !kCropIntegrators.contains(settings.integrator)) {
         throw Error(fmt::format(
             "{}: integrator '{}' does not support 'crop'; crop works with path, path_light, "
-            "path_bsdf, whitted and photon",
+            "path_bsdf, whitted, photon and sppm",
             settings.where_of("crop"), settings.integrator));
     }
     // A copy, so that it records only what this integrator reads.

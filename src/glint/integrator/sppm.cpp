@@ -62,10 +62,18 @@ public:
             if (!points[i].valid) continue;
             const glm::ivec3 lo = cell_of(points[i].si.p - Vec3(pixels[i].radius));
             const glm::ivec3 hi = cell_of(points[i].si.p + Vec3(pixels[i].radius));
-            for (int z = lo.z; z <= hi.z; ++z)
-                for (int y = lo.y; y <= hi.y; ++y)
-                    for (int x = lo.x; x <= hi.x; ++x)
-                        m_buckets[bucket(glm::ivec3(x, y, z))].push_back(static_cast<uint32_t>(i));
+            for (int z = lo.z; z <= hi.z; ++z) {
+                for (int y = lo.y; y <= hi.y; ++y) {
+                    for (int x = lo.x; x <= hi.x; ++x) {
+                        // Two of the point's cells may hash to one bucket: list it there once,
+                        // or a photon would be deposited twice (points arrive in index order,
+                        // so a repeat is the bucket's last entry).
+                        std::vector<uint32_t>& list = m_buckets[bucket(glm::ivec3(x, y, z))];
+                        if (list.empty() || list.back() != i)
+                            list.push_back(static_cast<uint32_t>(i));
+                    }
+                }
+            }
         }
     }
     const std::vector<uint32_t>& candidates(const Vec3& p) const {
