@@ -14,7 +14,8 @@
 # At the defaults about 25 minutes on 2 cores; SCENES and INTEGRATORS pick a part.
 #
 # Environment (all optional):
-#   BUILD_DIR    build directory (default build)
+#   BUILD_DIR    build directory (default build), or a copy of its glint and
+#                bench/glint_bench_region_error
 #   THREADS      render threads (default 2)
 #   RES          resolution (default 128x128; the spheres' region is given for it)
 #   SCENES       scenes to run (default "cornell spheres ajar")
@@ -33,7 +34,11 @@ SCENES=${SCENES:-cornell spheres ajar}
 INTEGRATORS=${INTEGRATORS:-path bdpt vcm mlt sppm}
 TARGETS=${TARGETS:-0.02 0.005}
 CLOCK=${CLOCK:-wall}
-ninja -C "$BUILD_DIR" glint_cli glint_bench_region_error >/dev/null
+# A directory without build.ninja holds copies of the two programs (glint and
+# bench/glint_bench_region_error), so that a rebuild elsewhere cannot swap them mid-run.
+if [[ -f $BUILD_DIR/build.ninja ]]; then
+    ninja -C "$BUILD_DIR" glint_cli glint_bench_region_error >/dev/null
+fi
 glint=$BUILD_DIR/glint
 error=$BUILD_DIR/bench/glint_bench_region_error
 tmp=$(mktemp -d)
