@@ -4,8 +4,6 @@
 #   cornell    examples/cornell-box.lua, whole image (reference: path)
 #   spheres    examples/cornell-spheres.lua, the glass sphere's caustic on the floor
 #              (reference: path at 65536 spp over the region alone, with --crop)
-#   spheres-small  the same with a light of a quarter the side and 16 times the radiance
-#              (bench/cornell-spheres-small-light.lua): the same power, a sharper caustic
 #   ajar       examples/ajar-door.lua, whole image: light reaches the room only by bouncing
 #              through a door left ajar (reference: bdpt)
 # Each integrator renders at a ladder of sample counts; the time to a target is interpolated
@@ -52,10 +50,8 @@ scene_spec() {
     case $1 in
     cornell) echo "examples/cornell-box.lua|0 0 $width $height|path|${REF_SPP:-4096}|no" ;;
     spheres) echo "examples/cornell-spheres.lua|74 110 98 122|path|${REF_SPP:-65536}|yes" ;;
-    spheres-small)
-        echo "bench/cornell-spheres-small-light.lua|74 110 98 122|path|${REF_SPP:-65536}|yes" ;;
     ajar) echo "examples/ajar-door.lua|0 0 $width $height|bdpt|${REF_SPP:-1024}|no" ;;
-    *) echo "unknown scene '$1' (expected: cornell, spheres, spheres-small, ajar)" >&2 && exit 2 ;;
+    *) echo "unknown scene '$1' (expected: cornell, spheres, ajar)" >&2 && exit 2 ;;
     esac
 }
 
