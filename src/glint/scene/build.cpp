@@ -94,7 +94,7 @@ private:
                     continue;
                 }
                 const ObjectRef ref = p.get_ref("material", "material");
-                auto shape = make_shape(p, m_desc.directory);
+                auto shape = make_shape(p, m_desc);
                 m_group_shapes[g].push_back(
                     {shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
                 m_scene->m_shapes.push_back(std::move(shape));
