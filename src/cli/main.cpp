@@ -358,6 +358,19 @@ int run_info(const std::string& scene_path, bool trusted_scene) {
     fmt::print("lights:     {}\n", s.lights);
     fmt::print("groups:     {} ({} instances)\n", s.groups, s.instances);
     fmt::print("materials:  {}\n", desc.materials.size());
+    // Memory of the geometry: glint's own arrays (positions, normals, uvs, indices and the
+    // per-triangle frames) and Embree's (BVH and its copies of vertices and indices), per
+    // triangle built (a group placed many times is built once).
+    const double mib = 1.0 / (1024.0 * 1024.0);
+    const double per_triangle =
+        s.unique_triangles
+            ? static_cast<double>(s.mesh_bytes + std::max<int64_t>(s.embree_bytes, 0)) /
+                  static_cast<double>(s.unique_triangles)
+            : 0.0;
+    fmt::print(
+        "memory:     {:.1f} MiB meshes + {:.1f} MiB Embree = {:.1f} bytes per triangle "
+        "({} triangles built)\n",
+        s.mesh_bytes * mib, s.embree_bytes * mib, per_triangle, s.unique_triangles);
     fmt::print("textures:   {}\n", desc.textures.size());
     if (scene->environment())
         fmt::print("environment: yes (lights the scene and is seen behind it)\n");

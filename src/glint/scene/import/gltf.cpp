@@ -104,7 +104,14 @@ private:
     }
 
     void warn(const std::string& what) {
-        m_desc.warnings.push_back(fmt::format("{}: {}: {}", m_target.where, m_target.path, what));
+        m_desc.warnings.push_back(fmt::format("{}: {}", origin(), what));
+    }
+
+    // "script:line: file" for messages about the file's content; just the file when the
+    // file is the scene (`glint render model.glb`).
+    std::string origin() const {
+        if (m_target.where == m_target.path) return m_target.path;
+        return fmt::format("{}: {}", m_target.where, m_target.path);
     }
 
     void load() {
@@ -515,10 +522,14 @@ private:
     ObjectRef material(int material_index) {
         auto it = m_materials.find(material_index);
         if (it != m_materials.end()) return it->second;
-        const std::string where =
-            fmt::format("{}: {}: material {}", m_target.where, m_target.path, material_index);
+        const std::string where = fmt::format("{}: material {}", origin(), material_index);
         Params params("principled", where);
-        if (material_index >= 0) {
+        if (material_index < 0) {
+            // glTF's default material: white, fully metallic, fully rough.
+            params.set("base_color", 1.0);
+            params.set("metallic", 1.0);
+            params.set("roughness", 1.0);
+        } else {
             const tinygltf::Material& m = at(m_model.materials, material_index, "material");
             const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
             auto check_uv = [&](int tex_coord, const char* map) {
@@ -597,7 +608,7 @@ private:
         const Vec3 eye(world * glm::vec4(0, 0, 0, 1));
         const Vec3 forward = glm::normalize(Vec3(world * glm::vec4(0, 0, -1, 0)));
         const Vec3 up = glm::normalize(Vec3(world * glm::vec4(0, 1, 0, 0)));
-        const std::string where = fmt::format("{}: {}: camera", m_target.where, m_target.path);
+        const std::string where = fmt::format("{}: camera", origin());
         Params params("camera", where);
         params.set("eye", numbers_of(eye));
         params.set("look_at", numbers_of(eye + forward));
@@ -617,8 +628,7 @@ private:
     // takes them as W/sr and W/m^2 numerically, times light_scale (see the docs).
     void add_light(int light_index, const Mat4& world) {
         const tinygltf::Light& light = at(m_model.lights, light_index, "light");
-        const std::string where =
-            fmt::format("{}: {}: light {}", m_target.where, m_target.path, light_index);
+        const std::string where = fmt::format("{}: light {}", origin(), light_index);
         Vec3 colour(1.0f);
         if (light.color.size() == 3) colour = Vec3(light.color[0], light.color[1], light.color[2]);
         const Vec3 power = colour * static_cast<float>(light.intensity) * m_target.light_scale;
