@@ -60,7 +60,8 @@ void write_textures(const std::filesystem::path& dir) {
     write_png((dir / "grid.png").string(), 256, image(256, [](double s, double t) {
                   const int cx = static_cast<int>(s * 4), cy = static_cast<int>((1 - t) * 4);
                   const double h = (cx + 4 * cy) / 16.0;
-                  Rgb c{0.5 + 0.45 * std::cos(2 * kPi * h), 0.5 + 0.45 * std::cos(2 * kPi * (h - 1.0 / 3)),
+                  Rgb c{0.5 + 0.45 * std::cos(2 * kPi * h),
+                        0.5 + 0.45 * std::cos(2 * kPi * (h - 1.0 / 3)),
                         0.5 + 0.45 * std::cos(2 * kPi * (h - 2.0 / 3))};
                   if (cx == 0 && cy == 0 && s > 0.08 && s < 0.17 && t > 0.83 && t < 0.92)
                       c = {1, 1, 1};
@@ -97,9 +98,9 @@ struct Buffer {
         views.push_back(fmt::format(R"({{"buffer": 0, "byteOffset": {}, "byteLength": {}}})",
                                     bytes.size(), size));
         bytes.append(static_cast<const char*>(data), size);
-        accessors.push_back(fmt::format(
-            R"({{"bufferView": {}, "componentType": {}, "count": {}, "type": "{}"{}}})",
-            views.size() - 1, component, count, type, extra));
+        accessors.push_back(
+            fmt::format(R"({{"bufferView": {}, "componentType": {}, "count": {}, "type": "{}"{}}})",
+                        views.size() - 1, component, count, type, extra));
         return static_cast<int>(accessors.size()) - 1;
     }
 };
@@ -117,10 +118,9 @@ int add_mesh(Buffer& buffer, const Mesh& m, int* normal, int* uv, int* index) {
         hi[i % 3] = std::max(hi[i % 3], m.p[i]);
     }
     const int count = static_cast<int>(m.p.size() / 3);
-    const int position =
-        buffer.add(m.p.data(), m.p.size() * 4, count, "VEC3", 5126,
-                   fmt::format(R"(, "min": [{}, {}, {}], "max": [{}, {}, {}])", lo[0], lo[1], lo[2],
-                               hi[0], hi[1], hi[2]));
+    const int position = buffer.add(m.p.data(), m.p.size() * 4, count, "VEC3", 5126,
+                                    fmt::format(R"(, "min": [{}, {}, {}], "max": [{}, {}, {}])",
+                                                lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]));
     *normal = buffer.add(m.n.data(), m.n.size() * 4, count, "VEC3", 5126);
     *uv = buffer.add(m.uv.data(), m.uv.size() * 4, count, "VEC2", 5126);
     *index = buffer.add(m.index.data(), m.index.size() * 2, static_cast<int>(m.index.size()),
@@ -155,7 +155,8 @@ Mesh sphere(float radius, int rings, int segments) {
             const auto a = static_cast<uint16_t>(i * (segments + 1) + j);
             const auto b = static_cast<uint16_t>(a + segments + 1);
             m.index.insert(m.index.end(), {a, b, static_cast<uint16_t>(b + 1)});
-            m.index.insert(m.index.end(), {a, static_cast<uint16_t>(b + 1), static_cast<uint16_t>(a + 1)});
+            m.index.insert(m.index.end(),
+                           {a, static_cast<uint16_t>(b + 1), static_cast<uint16_t>(a + 1)});
         }
     }
     return m;
@@ -177,9 +178,9 @@ Mesh cube(float h) {
             m.n.insert(m.n.end(), {n[0], n[1], n[2]});
             m.uv.insert(m.uv.end(), {0.5f * (c[0] + 1), 1 - 0.5f * (c[1] + 1)});
         }
-        m.index.insert(m.index.end(), {base, static_cast<uint16_t>(base + 1),
-                                       static_cast<uint16_t>(base + 2), base,
-                                       static_cast<uint16_t>(base + 2), static_cast<uint16_t>(base + 3)});
+        m.index.insert(m.index.end(),
+                       {base, static_cast<uint16_t>(base + 1), static_cast<uint16_t>(base + 2),
+                        base, static_cast<uint16_t>(base + 2), static_cast<uint16_t>(base + 3)});
     }
     return m;
 }
@@ -210,7 +211,8 @@ void write_scene(const std::filesystem::path& dir) {
     const int panel = add_mesh(buffer, quad(0.5f, 1), &n, &uv, &idx);
     meshes.push_back(primitive(panel, n, uv, idx, 4));
 
-    const std::string json = fmt::format(R"({{
+    const std::string json =
+        fmt::format(R"({{
   "asset": {{"version": "2.0", "generator": "glint examples/gltf/make_gltf.cpp"}},
   "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_transmission", "KHR_materials_ior",
                      "KHR_materials_emissive_strength"],
@@ -268,8 +270,7 @@ void write_scene(const std::filesystem::path& dir) {
   ]
 }}
 )",
-                                         join(meshes), buffer.bytes.size(), join(buffer.views),
-                                         join(buffer.accessors));
+                    join(meshes), buffer.bytes.size(), join(buffer.views), join(buffer.accessors));
     std::ofstream(dir / "scene.gltf", std::ios::binary) << json;
     std::ofstream(dir / "scene.bin", std::ios::binary) << buffer.bytes;
 }
