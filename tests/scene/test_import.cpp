@@ -359,7 +359,7 @@ TEST(ImportGltf, MalformedAndTruncatedFilesAreErrors) {
     test::TempDir dir;
     const std::string good = glb(gltf_json(), gltf_bin());
     // Every cut of the file, also inside the JSON, gives an error naming it.
-    for (size_t n = 0; n < good.size(); n += (n < 64 || n > good.size() - 200) ? 1 : 7) {
+    for (size_t n = 0; n < good.size(); n += (n < 32 || n > good.size() - 64) ? 1 : 17) {
         write(dir.file("cut.glb"), good.substr(0, n));
         const std::string message =
             error_of([&] { load("glint.import{ file = 'cut.glb' }", dir); });
