@@ -12,6 +12,7 @@ packages=(
   libglm-dev           # vector math
   libcli11-dev         # command line
   libfmt-dev           # formatting
+  libtinygltf-dev      # glTF import (glint.import)
   libgtest-dev libgmock-dev # tests
 )
 

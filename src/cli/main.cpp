@@ -8,6 +8,7 @@
 #include <glint/geometry/accel.h>
 #include <glint/integrator/integrator.h>
 #include <glint/scene/build.h>
+#include <glint/scene/import/import.h>
 #include <glint/scene/lua/lua_loader.h>
 
 #include <fmt/format.h>
@@ -106,6 +107,15 @@ LoaderOptions loader_options(bool trusted_scene) {
         options.instruction_limit = 0;
     }
     return options;
+}
+
+// A Lua scene script, or a model file (.obj, .ply, .gltf, .glb) rendered as it is with a
+// default camera and light where it has none. The importers' warnings are printed here.
+SceneDesc load_scene(const std::string& path, bool trusted_scene) {
+    SceneDesc desc = is_model_file(path) ? load_model_scene(path)
+                                         : load_scene_file(path, loader_options(trusted_scene));
+    for (const std::string& warning : desc.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    return desc;
 }
 
 [[noreturn]] void bad_flag(const std::string& flag, const std::string& text,
@@ -255,7 +265,7 @@ void add_debug_images(const RenderSettings& settings, const RenderStats& stats, 
 }
 
 int run_render(const RenderOptions& options) {
-    const SceneDesc desc = load_scene_file(options.scene, loader_options(options.trusted_scene));
+    const SceneDesc desc = load_scene(options.scene, options.trusted_scene);
     const RenderSettings settings = settings_for(desc, options);
     check_debug_views(settings);
     // Every output's directory is checked before the work: a bad path fails now, not
@@ -342,7 +352,7 @@ int run_render(const RenderOptions& options) {
 }
 
 int run_info(const std::string& scene_path, bool trusted_scene) {
-    const SceneDesc desc = load_scene_file(scene_path, loader_options(trusted_scene));
+    const SceneDesc desc = load_scene(scene_path, trusted_scene);
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
     for (const std::string& warning : scene->stats().warnings)
@@ -354,6 +364,19 @@ int run_info(const std::string& scene_path, bool trusted_scene) {
     fmt::print("lights:     {}\n", s.lights);
     fmt::print("groups:     {} ({} instances)\n", s.groups, s.instances);
     fmt::print("materials:  {}\n", desc.materials.size());
+    // Memory of the geometry: glint's own arrays (positions, normals, uvs, indices and the
+    // per-triangle frames) and Embree's (BVH and its copies of vertices and indices), per
+    // triangle built (a group placed many times is built once).
+    const double mib = 1.0 / (1024.0 * 1024.0);
+    const double per_triangle =
+        s.unique_triangles
+            ? static_cast<double>(s.mesh_bytes + std::max<int64_t>(s.embree_bytes, 0)) /
+                  static_cast<double>(s.unique_triangles)
+            : 0.0;
+    fmt::print(
+        "memory:     {:.1f} MiB meshes + {:.1f} MiB Embree = {:.1f} bytes per triangle "
+        "({} triangles built)\n",
+        s.mesh_bytes * mib, s.embree_bytes * mib, per_triangle, s.unique_triangles);
     fmt::print("textures:   {}\n", desc.textures.size());
     if (scene->environment())
         fmt::print("environment: yes (lights the scene and is seen behind it)\n");
@@ -405,7 +428,10 @@ int main(int argc, char** argv) {
 
     RenderOptions render;
     CLI::App* render_cmd = app.add_subcommand("render", "Render a scene to EXR and/or PNG");
-    render_cmd->add_option("scene", render.scene, "Scene script (.lua)")->required();
+    render_cmd
+        ->add_option("scene", render.scene,
+                     "Scene script (.lua) or model file (.obj, .ply, .gltf, .glb)")
+        ->required();
     render_cmd->add_option("-o,--output", render.outputs, "Output image, .exr or .png (repeatable)")
         ->allow_extra_args(false);  // `-o a.png scene.lua`: the scene is not a second output
     render_cmd->add_option("--spp", render.spp, "Samples per pixel (1 to 2^31 - 1)");
@@ -446,7 +472,10 @@ int main(int argc, char** argv) {
     std::string info_scene;
     CLI::App* info_cmd =
         app.add_subcommand("info", "Print counts of shapes, triangles, lights and bounds");
-    info_cmd->add_option("scene", info_scene, "Scene script (.lua)")->required();
+    info_cmd
+        ->add_option("scene", info_scene,
+                     "Scene script (.lua) or model file (.obj, .ply, .gltf, .glb)")
+        ->required();
     bool info_trusted = false;
     info_cmd->add_flag("--trusted-scene", info_trusted, trusted_help);
 

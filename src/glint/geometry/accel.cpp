@@ -11,6 +11,15 @@ namespace glint {
 Accel::Accel() {
     m_device = rtcNewDevice(nullptr);
     if (!m_device) throw Error("could not create the Embree device");
+    // Counts what Embree allocates (and frees) on this device; Accel does not move (its
+    // atomics make it immovable), so `this` stays valid for the device's life.
+    rtcSetDeviceMemoryMonitorFunction(
+        m_device,
+        [](void* user, ssize_t bytes, bool) {
+            static_cast<Accel*>(user)->m_embree_bytes.fetch_add(bytes, std::memory_order_relaxed);
+            return true;
+        },
+        this);
     m_world = rtcNewScene(m_device);
     rtcSetSceneBuildQuality(m_world, RTC_BUILD_QUALITY_HIGH);
 }

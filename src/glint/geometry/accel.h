@@ -103,6 +103,9 @@ public:
     /// bug upstream costs a few black or wrongly lit samples and a warning, not an abort
     /// inside Embree (which checks rays with assertions).
     uint64_t dropped_rays() const { return m_dropped_rays.load(std::memory_order_relaxed); }
+    /// Bytes Embree holds now (its BVHs and its own copies of vertices and indices), as its
+    /// device memory monitor reports them.
+    int64_t embree_bytes() const { return m_embree_bytes.load(std::memory_order_relaxed); }
 
     /// Whether Embree takes this ray: every component of origin and direction at most
     /// 1.844e18 in magnitude (Embree's FLT_LARGE: not NaN, not infinite, not so large that
@@ -160,6 +163,7 @@ private:
     RTCScene m_world = nullptr;
     std::vector<RTCScene> m_prototypes;
     mutable std::atomic<uint64_t> m_dropped_rays{0};
+    std::atomic<int64_t> m_embree_bytes{0};  // written by Embree's memory monitor
 };
 
 }  // namespace glint

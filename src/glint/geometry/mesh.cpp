@@ -174,6 +174,13 @@ TriangleMesh::TriangleFrame TriangleMesh::triangle_frame(size_t first_index) con
     return frame;
 }
 
+size_t TriangleMesh::memory_bytes() const {
+    return m_data.positions.capacity() * sizeof(Vec3) + m_data.normals.capacity() * sizeof(Vec3) +
+           m_data.uvs.capacity() * sizeof(Vec2) + m_data.indices.capacity() * sizeof(uint32_t) +
+           m_frames.capacity() * sizeof(TriangleFrame) +
+           m_flat_shading.capacity() * sizeof(FlatShading);
+}
+
 RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
     auto* vertices = static_cast<float*>(

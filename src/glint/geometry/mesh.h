@@ -27,6 +27,7 @@ public:
     std::string name() const override { return m_name; }
     Bounds3 bounds() const override { return m_bounds; }
     size_t triangle_count() const override { return m_data.indices.size() / 3; }
+    size_t memory_bytes() const override;
     RTCGeometry create_embree_geometry(RTCDevice device) const override;
     void fill_interaction(const Ray& ray, const HitRecord& hit,
                           SurfaceInteraction& si) const override;

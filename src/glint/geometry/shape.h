@@ -54,6 +54,9 @@ public:
     virtual std::string name() const = 0;
     virtual Bounds3 bounds() const = 0;
     virtual size_t triangle_count() const { return 0; }
+    /// Bytes of the shape's own arrays (vertices, indices, per-triangle data), for `glint
+    /// info`; what Embree holds is counted by Accel::embree_bytes().
+    virtual size_t memory_bytes() const { return 0; }
 
     // A committed Embree geometry for this shape; the shape must outlive it.
     virtual RTCGeometry create_embree_geometry(RTCDevice device) const = 0;

@@ -38,6 +38,11 @@ public:
         build_groups();
         place_root();
         m_scene->m_accel.commit();
+        for (const auto& shape : m_scene->m_shapes) {
+            m_scene->m_stats.unique_triangles += shape->triangle_count();
+            m_scene->m_stats.mesh_bytes += shape->memory_bytes();
+        }
+        m_scene->m_stats.embree_bytes = m_scene->m_accel.embree_bytes();
         warn_of_lights_facing_away();
         const Bounds3& bounds = m_scene->m_stats.bounds;
         const Vec3 center = bounds.is_empty() ? Vec3(0.0f) : bounds.center();
@@ -94,7 +99,7 @@ private:
                     continue;
                 }
                 const ObjectRef ref = p.get_ref("material", "material");
-                auto shape = make_shape(p, m_desc.directory);
+                auto shape = make_shape(p, m_desc);
                 m_group_shapes[g].push_back(
                     {shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
                 m_scene->m_shapes.push_back(std::move(shape));

@@ -19,6 +19,9 @@ struct SceneStats {
     size_t lights = 0;
     size_t groups = 0;
     size_t instances = 0;
+    size_t unique_triangles = 0;  // triangles built, each placed group counted once
+    size_t mesh_bytes = 0;        // glint's arrays of the shapes (Shape::memory_bytes)
+    int64_t embree_bytes = 0;     // Embree's BVHs and buffers after the build
     Bounds3 bounds;
     // What building found suspicious but renderable (e.g. a one-sided light that faces
     // away from everything), each naming the script line; the CLI prints them.

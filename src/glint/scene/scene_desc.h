@@ -2,8 +2,10 @@
 // The plain-data description of a scene, as written by a scene script: every object is a
 // type name plus checked Params. Nothing here knows about Lua or Embree.
 #include <glint/core/params.h>
+#include <glint/geometry/mesh.h>
 
 #include <cstddef>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +48,14 @@ struct SceneDesc {
     std::vector<SolidDesc> solids;               // ObjectRef{"solid", i} indexes this
     std::vector<GroupDesc> groups{GroupDesc{}};  // groups[0] is the world (root) group
     std::string directory;  // where the script lives; relative file names start here
+    // Geometry read by glint.import: a "mesh" shape with data = ObjectRef{"mesh_data", i}
+    // takes meshes[i] (shared, so that a description stays cheap to copy).
+    std::vector<std::shared_ptr<const MeshData>> meshes;
+    // The camera came from an imported file: a later glint.camera replaces it.
+    bool camera_imported = false;
+    // What importers read but could not map (e.g. an MTL statement), each naming the file
+    // and line; the CLI prints them.
+    std::vector<std::string> warnings;
 };
 
 }  // namespace glint

@@ -1,7 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/geometry/csg/csg_node.h>
 #include <glint/geometry/csg/primitives.h>
-#include <glint/scene/import/obj.h>
+#include <glint/scene/import/import.h>
 #include <glint/scene/solids.h>
 
 #include <fmt/format.h>
@@ -222,7 +222,7 @@ private:
             std::filesystem::path path = p.get_string("file");
             if (path.is_relative()) path = std::filesystem::path(m_desc.directory) / path;
             try {
-                data = load_obj(path.string());
+                data = load_mesh_file(path.string());
             } catch (const Error& e) {
                 p.fail(e.what());
             }

@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/scene/import/file_bytes.h>
 #include <glint/scene/import/obj.h>
 
 #include <fmt/format.h>
@@ -7,7 +8,7 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
+#include <iterator>
 #include <limits>
 #include <string_view>
 #include <unordered_map>
@@ -24,35 +25,52 @@ struct Corner {
 
 class ObjParser {
 public:
-    explicit ObjParser(std::string name) : m_name(std::move(name)) {}
+    // With `split` false, usemtl is ignored and every face goes into one part.
+    ObjParser(std::string name, bool split) : m_name(std::move(name)), m_split(split) {
+        m_scene.parts.emplace_back();
+        m_states.emplace_back();
+    }
 
     void parse_line(std::string_view line, uint64_t number) {
         m_line = number;
         std::string_view rest = line;
         const std::string_view keyword = next_token(rest);
         if (keyword.empty() || keyword.front() == '#') return;
+        float x[7];
         if (keyword == "v") {
-            const std::vector<float> x = numbers(rest, 3, 7, "'v' (x y z [w])");
+            numbers(rest, x, 3, 7, "'v' (x y z [w])");
             m_positions.emplace_back(x[0], x[1], x[2]);
         } else if (keyword == "vn") {
-            const std::vector<float> x = numbers(rest, 3, 3, "'vn' (x y z)");
+            numbers(rest, x, 3, 3, "'vn' (x y z)");
             m_normals.emplace_back(x[0], x[1], x[2]);
         } else if (keyword == "vt") {
-            const std::vector<float> x = numbers(rest, 1, 3, "'vt' (u [v [w]])");
-            m_uvs.emplace_back(x[0], x.size() > 1 ? x[1] : 0.0f);
+            x[1] = 0.0f;
+            numbers(rest, x, 1, 3, "'vt' (u [v [w]])");
+            m_uvs.emplace_back(x[0], x[1]);
         } else if (keyword == "f") {
             parse_face(rest);
+        } else if (m_split && keyword == "usemtl") {
+            use_material(trimmed(rest));
+        } else if (m_split && keyword == "mtllib") {
+            // Names with spaces are rare; mtllib lists several files separated by spaces.
+            for (std::string_view t = next_token(rest); !t.empty(); t = next_token(rest))
+                m_scene.material_libraries.emplace_back(t);
         }
-        // Everything else (o, g, s, usemtl, mtllib, l, p, curves) carries nothing a
-        // triangle mesh can use.
+        // Everything else (o, g, s, l, p, curves) carries nothing a triangle mesh can use.
     }
 
-    MeshData finish() {
-        if (m_mesh.indices.empty())
-            throw Error(fmt::format("OBJ file '{}' contains no faces", m_name));
-        if (!m_all_normals) m_mesh.normals.clear();
-        if (!m_all_uvs) m_mesh.uvs.clear();
-        return std::move(m_mesh);
+    ObjScene finish() {
+        std::vector<ObjScene::Part> kept;
+        for (size_t i = 0; i < m_scene.parts.size(); ++i) {
+            ObjScene::Part& part = m_scene.parts[i];
+            if (part.mesh.indices.empty()) continue;
+            if (!m_states[i].all_normals) part.mesh.normals.clear();
+            if (!m_states[i].all_uvs) part.mesh.uvs.clear();
+            kept.push_back(std::move(part));
+        }
+        if (kept.empty()) throw Error(fmt::format("OBJ file '{}' contains no faces", m_name));
+        m_scene.parts = std::move(kept);
+        return std::move(m_scene);
     }
 
 private:
@@ -73,9 +91,27 @@ private:
         return token;
     }
 
-    std::vector<float> numbers(std::string_view rest, size_t min, size_t max,
-                               const char* statement) const {
-        std::vector<float> values;
+    static std::string_view trimmed(std::string_view text) {
+        while (!text.empty() && (text.front() == ' ' || text.front() == '\t'))
+            text.remove_prefix(1);
+        while (!text.empty() && (text.back() == ' ' || text.back() == '\t' || text.back() == '\r'))
+            text.remove_suffix(1);
+        return text;
+    }
+
+    void use_material(std::string_view name) {
+        const auto [it, inserted] = m_part_of.try_emplace(std::string(name), m_scene.parts.size());
+        if (inserted) {
+            m_scene.parts.push_back({std::string(name), m_line, {}});
+            m_states.emplace_back();
+        }
+        m_part = it->second;
+    }
+
+    // Reads min to max numbers into `values` (a fixed array: no allocation per line).
+    void numbers(std::string_view rest, float* values, size_t min, size_t max,
+                 const char* statement) const {
+        size_t count = 0;
         for (std::string_view token = next_token(rest); !token.empty(); token = next_token(rest)) {
             if (token.front() == '#') break;
             float value = 0.0f;
@@ -89,13 +125,13 @@ private:
                 fail(fmt::format("'{}' is not a number in {}", token, statement));
             if (!std::isfinite(value))
                 fail(fmt::format("'{}' is not a finite number in {}", token, statement));
-            values.push_back(value);
+            if (count < max) values[count] = value;
+            ++count;
         }
-        if (values.size() < min || values.size() > max) {
+        if (count < min || count > max) {
             fail(fmt::format("{} needs {}{} numbers, found {}", statement, min,
-                             max > min ? fmt::format(" to {}", max) : "", values.size()));
+                             max > min ? fmt::format(" to {}", max) : "", count));
         }
-        return values;
     }
 
     // An index as written: a non-zero integer that fits in 64 bits (no wrap-around).
@@ -144,19 +180,35 @@ private:
         const uint64_t vt = c.vt != 0 ? resolve(c.vt, m_uvs.size(), "uv", "uvs") + 1 : 0;
         const uint64_t vn =
             c.vn != 0 ? resolve(c.vn, m_normals.size(), "normal", "normals") + 1 : 0;
-        if (vt == 0) m_all_uvs = false;
-        if (vn == 0) m_all_normals = false;
-        const Key key{v, vt, vn};
-        const auto [it, inserted] =
-            m_vertex_of.try_emplace(key, static_cast<uint32_t>(m_mesh.positions.size()));
-        if (inserted) {
-            if (m_mesh.positions.size() >= std::numeric_limits<uint32_t>::max())
-                fail("more than 2^32 - 1 distinct vertices");
-            m_mesh.positions.push_back(m_positions[v]);
-            m_mesh.normals.push_back(vn != 0 ? m_normals[vn - 1] : Vec3(0.0f));
-            m_mesh.uvs.push_back(vt != 0 ? m_uvs[vt - 1] : Vec2(0.0f));
+        PartState& state = m_states[m_part];
+        MeshData& mesh = m_scene.parts[m_part].mesh;
+        if (vt == 0) state.all_uvs = false;
+        if (vn == 0) state.all_normals = false;
+        // Most files pair each position with one uv and one normal throughout: the first
+        // corner that uses a position is remembered beside it, and only corners that differ
+        // from it go through the hash map (which took a fifth of the time of a large file).
+        if (m_first_use.size() < m_positions.size()) m_first_use.resize(m_positions.size());
+        FirstUse& first = m_first_use[v];
+        const auto part = static_cast<uint32_t>(m_part);
+        if (first.part == part && first.vt == vt && first.vn == vn) return first.index;
+        const auto next = static_cast<uint32_t>(mesh.positions.size());
+        bool inserted = true;
+        uint32_t index = next;
+        if (first.part == kUnused) {
+            first = {vt, vn, next, part};
+        } else {
+            const auto [it, added] = state.vertex_of.try_emplace(Key{v, vt, vn}, next);
+            inserted = added;
+            index = it->second;
         }
-        return it->second;
+        if (inserted) {
+            if (mesh.positions.size() >= std::numeric_limits<uint32_t>::max())
+                fail("more than 2^32 - 1 distinct vertices");
+            mesh.positions.push_back(m_positions[v]);
+            mesh.normals.push_back(vn != 0 ? m_normals[vn - 1] : Vec3(0.0f));
+            mesh.uvs.push_back(vt != 0 ? m_uvs[vt - 1] : Vec2(0.0f));
+        }
+        return index;
     }
 
     void parse_face(std::string_view rest) {
@@ -170,10 +222,11 @@ private:
         // A fan around the first corner: right for the convex polygons OBJ describes, and
         // linear in the corner count (ear clipping is quadratic: a 200 000-corner face
         // would take minutes).
+        std::vector<uint32_t>& indices = m_scene.parts[m_part].mesh.indices;
         for (size_t i = 1; i + 1 < m_face.size(); ++i) {
-            m_mesh.indices.push_back(m_face[0]);
-            m_mesh.indices.push_back(m_face[i]);
-            m_mesh.indices.push_back(m_face[i + 1]);
+            indices.push_back(m_face[0]);
+            indices.push_back(m_face[i]);
+            indices.push_back(m_face[i + 1]);
         }
     }
 
@@ -194,29 +247,61 @@ private:
     uint64_t m_line = 0;
     std::vector<Vec3> m_positions, m_normals;
     std::vector<Vec2> m_uvs;
-    std::unordered_map<Key, uint32_t, KeyHash> m_vertex_of;
+    // Per part: one glint vertex per distinct corner triple, and whether every corner had
+    // a normal (a uv).
+    struct PartState {
+        std::unordered_map<Key, uint32_t, KeyHash> vertex_of;
+        bool all_normals = true, all_uvs = true;
+    };
+    // Per position: the part, uv and normal of the first corner that used it, and the glint
+    // vertex made for it.
+    static constexpr uint32_t kUnused = std::numeric_limits<uint32_t>::max();
+    struct FirstUse {
+        uint64_t vt = 0, vn = 0;
+        uint32_t index = 0;
+        uint32_t part = kUnused;
+    };
+    std::vector<FirstUse> m_first_use;
     std::vector<uint32_t> m_face;  // reused from face to face
-    bool m_all_normals = true, m_all_uvs = true;
-    MeshData m_mesh;
+    bool m_split;
+    ObjScene m_scene;
+    std::vector<PartState> m_states;  // parallel to m_scene.parts
+    std::unordered_map<std::string, size_t> m_part_of;
+    size_t m_part = 0;
 };
+
+ObjScene parse_text(std::string_view text, const std::string& name, bool split) {
+    ObjParser parser(name, split);
+    uint64_t number = 0;
+    while (!text.empty()) {
+        const size_t end = text.find('\n');
+        parser.parse_line(text.substr(0, end), ++number);
+        if (end == std::string_view::npos) break;
+        text.remove_prefix(end + 1);
+    }
+    return parser.finish();
+}
 
 }  // namespace
 
 MeshData parse_obj(std::istream& in, const std::string& name) {
-    ObjParser parser(name);
-    std::string line;
-    uint64_t number = 0;
-    while (std::getline(in, line)) parser.parse_line(line, ++number);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
     if (in.bad()) throw Error(fmt::format("cannot read OBJ file '{}': read error", name));
-    return parser.finish();
+    return std::move(parse_text(text, name, false).parts.front().mesh);
 }
 
 MeshData load_obj(const std::string& path) {
-    if (!std::filesystem::is_regular_file(path))
-        throw Error(fmt::format("cannot open OBJ file '{}'", path));
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(fmt::format("cannot open OBJ file '{}'", path));
-    return parse_obj(in, path);
+    const std::string text = read_file_bytes(path, "OBJ");
+    return std::move(parse_text(text, path, false).parts.front().mesh);
+}
+
+ObjScene parse_obj_scene(std::string_view text, const std::string& name) {
+    return parse_text(text, name, true);
+}
+
+ObjScene load_obj_scene(const std::string& path) {
+    const std::string text = read_file_bytes(path, "OBJ");
+    return parse_text(text, path, true);
 }
 
 }  // namespace glint

@@ -1,10 +1,12 @@
 #pragma once
 // Wavefront OBJ import: positions, normals, uvs and polygonal faces, every value checked
-// where it enters.
+// where it enters; faces grouped by the material they use (usemtl) for glint.import.
 #include <glint/geometry/mesh.h>
 
 #include <istream>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace glint {
 
@@ -22,5 +24,22 @@ MeshData load_obj(const std::string& path);
 
 /// As load_obj, reading OBJ text from `in`; `name` stands for the file in messages.
 MeshData parse_obj(std::istream& in, const std::string& name);
+
+/// An OBJ file split by material: one mesh per `usemtl` name, in order of first use.
+struct ObjScene {
+    struct Part {
+        std::string material;  ///< the `usemtl` name; empty for faces before any usemtl
+        uint64_t line = 0;     ///< the line of the first usemtl naming it, for messages
+        MeshData mesh;
+    };
+    std::vector<Part> parts;
+    /// File names from `mtllib` statements, as written (relative to the OBJ's directory).
+    std::vector<std::string> material_libraries;
+};
+
+/// As parse_obj, keeping faces of different materials apart (each part has its own
+/// vertices; normals and uvs kept per part when every corner of the part has them).
+ObjScene parse_obj_scene(std::string_view text, const std::string& name);
+ObjScene load_obj_scene(const std::string& path);
 
 }  // namespace glint

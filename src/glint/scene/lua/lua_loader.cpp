@@ -2,6 +2,7 @@
 #include <glint/light/registry.h>
 #include <glint/material/registry.h>
 #include <glint/material/texture/registry.h>
+#include <glint/scene/import/import.h>
 #include <glint/scene/lua/lua_loader.h>
 #include <glint/scene/lua/lua_vm.h>
 #include <glint/scene/shapes.h>
@@ -462,10 +463,25 @@ int transform_multiply(lua_State* L) {
     return 1;
 }
 
+// glint.import{ file = ..., transform = ..., material = ..., light_scale = ... }: the file's
+// content goes into the scene; nothing is returned.
+int import_model(lua_State* L) {
+    SceneDesc& desc = desc_of(L);
+    import_into(desc, to_params(L, 1, "import"));
+    return 0;
+}
+
 template <std::optional<Params> SceneDesc::*Member>
 int set_single(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
     SceneDesc& desc = desc_of(L);
+    // A camera an imported file brought stands in until the script sets its own.
+    if constexpr (Member == &SceneDesc::camera) {
+        if (desc.camera_imported) {
+            desc.camera.reset();
+            desc.camera_imported = false;
+        }
+    }
     if (desc.*Member)
         fail(L, fmt::format("glint.{} was already called at {}", type, (desc.*Member)->where()));
     desc.*Member = to_params(L, 1, type);
@@ -523,6 +539,7 @@ int open_glint(lua_State* L) {
         {"group", guarded<new_group>},     {"place", guarded<place_group>},
         {"translate", guarded<translate>}, {"rotate", guarded<rotate>},
         {"scale", guarded<scale>},         {"matrix", guarded<matrix>},
+        {"import", guarded<import_model>},
     };
     for (const auto& [name, function] : functions) {
         lua_pushcfunction(L, function);

@@ -1,0 +1,682 @@
+#include <glint/core/error.h>
+#include <glint/scene/import/file_bytes.h>
+#include <glint/scene/import/gltf.h>
+
+#include <fmt/format.h>
+#include <tiny_gltf.h>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <map>
+#include <set>
+
+namespace glint {
+namespace {
+
+namespace fs = std::filesystem;
+
+// tinygltf decodes every image with stb_image by default; glint's texture system reads the
+// files itself, so the loader only keeps the encoded bytes (as_is) of embedded images.
+bool keep_image_bytes(tinygltf::Image* image, const int, std::string*, std::string*, int, int,
+                      const unsigned char* bytes, int size, void*) {
+    image->as_is = true;
+    image->image.assign(bytes, bytes + std::max(size, 0));
+    return true;
+}
+
+std::string percent_decoded(const std::string& uri) {
+    std::string out;
+    for (size_t i = 0; i < uri.size(); ++i) {
+        if (uri[i] == '%' && i + 2 < uri.size() &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(uri[i + 2]))) {
+            out.push_back(static_cast<char>(std::stoi(uri.substr(i + 1, 2), nullptr, 16)));
+            i += 2;
+        } else {
+            out.push_back(uri[i]);
+        }
+    }
+    return out;
+}
+
+std::vector<double> numbers_of(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
+
+Mat4 node_matrix(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        Mat4 m;  // glTF stores column-major, as glm does
+        for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = static_cast<float>(node.matrix[i]);
+        return m;
+    }
+    Mat4 m(1.0f);
+    if (node.translation.size() == 3) {
+        m = glm::translate(m, Vec3(node.translation[0], node.translation[1], node.translation[2]));
+    }
+    if (node.rotation.size() == 4) {
+        const glm::quat q(
+            static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+            static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2]));
+        m = m * glm::mat4_cast(glm::normalize(q));
+    }
+    if (node.scale.size() == 3)
+        m = glm::scale(m, Vec3(node.scale[0], node.scale[1], node.scale[2]));
+    return m;
+}
+
+class GltfImporter {
+public:
+    GltfImporter(SceneDesc& desc, const ImportTarget& target) : m_desc(desc), m_target(target) {}
+
+    Bounds3 run() {
+        load();
+        if (m_model.scenes.empty()) {
+            // A file without scenes still holds its nodes: take the roots.
+            std::vector<bool> is_child(m_model.nodes.size(), false);
+            for (const tinygltf::Node& n : m_model.nodes)
+                for (int c : n.children)
+                    if (c >= 0 && static_cast<size_t>(c) < is_child.size()) is_child[c] = true;
+            for (size_t i = 0; i < m_model.nodes.size(); ++i)
+                if (!is_child[i]) m_roots.push_back(static_cast<int>(i));
+        } else {
+            const int scene = m_model.defaultScene >= 0 ? m_model.defaultScene : 0;
+            if (static_cast<size_t>(scene) >= m_model.scenes.size())
+                fail(fmt::format("the default scene {} does not exist", scene));
+            m_roots = m_model.scenes[scene].nodes;
+        }
+        // First pass: how often each mesh is placed, so that repeated meshes become one
+        // group placed several times (Embree instances) instead of copies.
+        std::vector<int> path;
+        for (int root : m_roots) count_uses(root, path);
+        for (int root : m_roots) visit(root, m_target.transform.matrix(), path);
+        return m_bounds;
+    }
+
+private:
+    [[noreturn]] void fail(const std::string& what) const {
+        throw Error(fmt::format("{}: {}", m_target.path, what));
+    }
+
+    void warn(const std::string& what) {
+        m_desc.warnings.push_back(fmt::format("{}: {}", origin(), what));
+    }
+
+    // "script:line: file" for messages about the file's content; just the file when the
+    // file is the scene (`glint render model.glb`).
+    std::string origin() const {
+        if (m_target.where == m_target.path) return m_target.path;
+        return fmt::format("{}: {}", m_target.where, m_target.path);
+    }
+
+    void load() {
+        tinygltf::TinyGLTF loader;
+        loader.SetImageLoader(keep_image_bytes, nullptr);
+        std::string error, warning;
+        std::string ext = fs::path(m_target.path).extension().string();
+        const bool binary = ext == ".glb" || ext == ".GLB";
+        m_directory = fs::path(m_target.path).parent_path();
+        const std::string bytes = read_file_bytes(m_target.path, binary ? "GLB" : "glTF");
+        if (binary) check_glb(bytes);
+        const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+        const auto size = static_cast<unsigned int>(bytes.size());
+        const std::string base = m_directory.empty() ? std::string(".") : m_directory.string();
+        if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("the file is over 4 GB");
+        const bool ok =
+            binary
+                ? loader.LoadBinaryFromMemory(&m_model, &error, &warning, data, size, base)
+                : loader.LoadASCIIFromString(&m_model, &error, &warning, bytes.data(), size, base);
+        if (!ok) {
+            while (!error.empty() && (error.back() == '\n' || error.back() == ' '))
+                error.pop_back();
+            fail(fmt::format("not a valid glTF file: {}", error.empty() ? "unknown error" : error));
+        }
+        while (!warning.empty() && warning.back() == '\n') warning.pop_back();
+        if (!warning.empty()) warn(warning);
+    }
+
+    // The GLB container checked before tinygltf sees it: a header, a JSON chunk and an
+    // optional binary chunk, each wholly inside the file, so that a truncated file is
+    // named as such (with the byte offset where it falls short).
+    void check_glb(const std::string& bytes) const {
+        auto u32 = [&](size_t offset) {
+            uint32_t v;
+            std::memcpy(&v, bytes.data() + offset, 4);
+            return v;
+        };
+        if (bytes.size() < 12)
+            fail(fmt::format("byte {}: the GLB header is cut short (truncated?)", bytes.size()));
+        if (u32(0) != 0x46546C67) fail("byte 0: not a GLB file (no 'glTF' magic)");
+        if (u32(4) != 2) fail(fmt::format("byte 4: GLB version {}; glint reads version 2", u32(4)));
+        if (u32(8) != bytes.size()) {
+            fail(fmt::format("byte 8: the header gives a length of {} bytes, the file has {}{}",
+                             u32(8), bytes.size(), u32(8) > bytes.size() ? " (truncated?)" : ""));
+        }
+        size_t offset = 12;
+        for (int chunk = 0; offset < bytes.size(); ++chunk) {
+            if (bytes.size() - offset < 8)
+                fail(fmt::format("byte {}: a chunk header is cut short (truncated?)", offset));
+            const uint32_t length = u32(offset);
+            const uint32_t type = u32(offset + 4);
+            if (chunk == 0 && type != 0x4E4F534A)
+                fail(fmt::format("byte {}: the first chunk is not JSON", offset + 4));
+            if (length > bytes.size() - offset - 8)
+                fail(
+                    fmt::format("byte {}: chunk {} of {} bytes runs past the end of the file "
+                                "(truncated?)",
+                                offset, chunk, length));
+            offset += 8 + length;
+        }
+        if (offset == 12) fail("byte 12: the GLB file has no JSON chunk");
+    }
+
+    template <typename T>
+    const T& at(const std::vector<T>& list, int index, const char* what) const {
+        if (index < 0 || static_cast<size_t>(index) >= list.size())
+            fail(fmt::format("{} {} does not exist (the file has {})", what, index, list.size()));
+        return list[static_cast<size_t>(index)];
+    }
+
+    void count_uses(int node_index, std::vector<int>& path) {
+        enter(node_index, path);
+        const tinygltf::Node& node = at(m_model.nodes, node_index, "node");
+        if (node.mesh >= 0) ++m_uses[node.mesh];
+        for (int child : node.children) count_uses(child, path);
+        path.pop_back();
+    }
+
+    // Guards the walk: glTF's nodes form trees, but a malformed file can make a cycle.
+    void enter(int node_index, std::vector<int>& path) {
+        if (std::find(path.begin(), path.end(), node_index) != path.end())
+            fail(fmt::format("node {} is its own ancestor", node_index));
+        if (path.size() >= kMaxGroupDepth)
+            fail(fmt::format("nodes nest more than {} deep", kMaxGroupDepth));
+        path.push_back(node_index);
+    }
+
+    void visit(int node_index, const Mat4& parent, std::vector<int>& path) {
+        enter(node_index, path);
+        const tinygltf::Node& node = m_model.nodes[static_cast<size_t>(node_index)];
+        const Mat4 world = parent * node_matrix(node);
+        for (int i = 0; i < 16; ++i) {
+            if (!std::isfinite(world[i / 4][i % 4]))
+                fail(fmt::format("node {} has a transform that is not finite", node_index));
+        }
+        // A node scaled to nothing (a way to hide it) places nothing: its transform has no
+        // inverse.
+        const float det = glm::determinant(Mat3(world));
+        if (node.mesh >= 0 && std::abs(det) > 1e-30f) place_mesh(node.mesh, Transform(world));
+        if (node.camera >= 0) add_camera(at(m_model.cameras, node.camera, "camera"), world);
+        if (node.extensions.count("KHR_lights_punctual")) {
+            const tinygltf::Value& ext = node.extensions.at("KHR_lights_punctual");
+            if (ext.Has("light") && ext.Get("light").IsNumber())
+                add_light(ext.Get("light").GetNumberAsInt(), world);
+        }
+        for (int child : node.children) visit(child, world, path);
+        path.pop_back();
+    }
+
+    struct Primitive {
+        int mesh_data;
+        ObjectRef material;
+        Bounds3 bounds;
+    };
+
+    void place_mesh(int mesh_index, const Transform& to_world) {
+        const std::vector<Primitive>& primitives = primitives_of(mesh_index);
+        for (const Primitive& p : primitives) m_bounds.expand(p.bounds.transformed(to_world));
+        if (m_uses[mesh_index] <= 1) {
+            for (const Primitive& p : primitives) add_shape(0, p, to_world);
+            return;
+        }
+        auto [it, inserted] = m_group_of_mesh.try_emplace(mesh_index, -1);
+        if (inserted) {
+            m_desc.groups.push_back(GroupDesc{m_target.where, {}, {}});
+            it->second = static_cast<int>(m_desc.groups.size()) - 1;
+            for (const Primitive& p : primitives) add_shape(it->second, p, Transform());
+        }
+        m_desc.groups[0].instances.push_back({it->second, to_world, m_target.where});
+    }
+
+    void add_shape(int group, const Primitive& p, const Transform& xf) {
+        Params shape("mesh", m_target.where);
+        shape.set("data", ObjectRef{"mesh_data", p.mesh_data});
+        shape.set("material", m_target.material ? *m_target.material : p.material);
+        if (!xf.is_identity()) shape.set("transform", xf);
+        m_desc.groups.at(group).shapes.push_back(std::move(shape));
+    }
+
+    // A mesh's primitives, read once however often the mesh is placed.
+    const std::vector<Primitive>& primitives_of(int mesh_index) {
+        auto it = m_primitives.find(mesh_index);
+        if (it != m_primitives.end()) return it->second;
+        const tinygltf::Mesh& mesh = at(m_model.meshes, mesh_index, "mesh");
+        std::vector<Primitive> result;
+        for (size_t i = 0; i < mesh.primitives.size(); ++i) {
+            const tinygltf::Primitive& prim = mesh.primitives[i];
+            const std::string what = fmt::format("mesh {} primitive {}", mesh_index, i);
+            MeshData data = read_primitive(prim, what);
+            if (data.indices.empty()) continue;
+            Bounds3 bounds;
+            for (const Vec3& v : data.positions) bounds.expand(v);
+            m_desc.meshes.push_back(std::make_shared<const MeshData>(std::move(data)));
+            result.push_back({static_cast<int>(m_desc.meshes.size()) - 1,
+                              m_target.material ? *m_target.material : material(prim.material),
+                              bounds});
+        }
+        return m_primitives.emplace(mesh_index, std::move(result)).first->second;
+    }
+
+    // An accessor's elements as floats, `components` per element, every byte range checked.
+    std::vector<float> read_floats(int accessor_index, int components, const std::string& what) {
+        const tinygltf::Accessor& a = at(m_model.accessors, accessor_index, "accessor");
+        if (tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type)) != components)
+            fail(fmt::format("{}: accessor {} has {} components, expected {}", what, accessor_index,
+                             tinygltf::GetNumComponentsInType(a.type), components));
+        const auto [bytes, stride] = element_bytes(a, accessor_index, what);
+        const int size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+        std::vector<float> out(a.count * static_cast<size_t>(components));
+        for (size_t e = 0; e < a.count; ++e) {
+            const unsigned char* element = bytes + e * stride;
+            for (int c = 0; c < components; ++c) {
+                const unsigned char* p = element + c * size;
+                float v = 0.0f;
+                switch (a.componentType) {
+                    case TINYGLTF_COMPONENT_TYPE_FLOAT:
+                        std::memcpy(&v, p, 4);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                        v = *p / 255.0f;
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_BYTE:
+                        v = std::max(static_cast<int8_t>(*p) / 127.0f, -1.0f);
+                        break;
+                    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                        uint16_t u;
+                        std::memcpy(&u, p, 2);
+                        v = u / 65535.0f;
+                        break;
+                    }
+                    case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                        int16_t s;
+                        std::memcpy(&s, p, 2);
+                        v = std::max(s / 32767.0f, -1.0f);
+                        break;
+                    }
+                    default:
+                        fail(fmt::format("{}: accessor {} has an unsupported component type {}",
+                                         what, accessor_index, a.componentType));
+                }
+                if (!std::isfinite(v))
+                    fail(fmt::format("{}: accessor {} element {} is not finite", what,
+                                     accessor_index, e));
+                out[e * components + c] = v;
+            }
+        }
+        return out;
+    }
+
+    std::vector<uint32_t> read_indices(int accessor_index, size_t vertex_count,
+                                       const std::string& what) {
+        const tinygltf::Accessor& a = at(m_model.accessors, accessor_index, "accessor");
+        if (a.type != TINYGLTF_TYPE_SCALAR)
+            fail(fmt::format("{}: index accessor {} is not scalar", what, accessor_index));
+        const auto [bytes, stride] = element_bytes(a, accessor_index, what);
+        std::vector<uint32_t> out(a.count);
+        for (size_t e = 0; e < a.count; ++e) {
+            const unsigned char* p = bytes + e * stride;
+            uint32_t v = 0;
+            if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+                v = *p;
+            } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+                uint16_t u;
+                std::memcpy(&u, p, 2);
+                v = u;
+            } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+                std::memcpy(&v, p, 4);
+            } else {
+                fail(fmt::format("{}: indices must be unsigned integers", what));
+            }
+            if (v >= vertex_count)
+                fail(fmt::format("{}: index {} refers to vertex {} of {}", what, e, v,
+                                 vertex_count));
+            out[e] = v;
+        }
+        return out;
+    }
+
+    // The first element's bytes and the stride, once the whole range is known to lie
+    // inside its buffer view and the view inside its buffer.
+    std::pair<const unsigned char*, size_t> element_bytes(const tinygltf::Accessor& a,
+                                                          int accessor_index,
+                                                          const std::string& what) {
+        if (a.sparse.isSparse)
+            fail(fmt::format("{}: accessor {} is sparse, which glint does not read", what,
+                             accessor_index));
+        const int size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(a.componentType));
+        const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(a.type));
+        if (size <= 0 || components <= 0)
+            fail(fmt::format("{}: accessor {} has an invalid type", what, accessor_index));
+        const tinygltf::BufferView& view = at(m_model.bufferViews, a.bufferView, "buffer view");
+        const tinygltf::Buffer& buffer = at(m_model.buffers, view.buffer, "buffer");
+        const size_t element = static_cast<size_t>(size) * static_cast<size_t>(components);
+        const size_t stride = view.byteStride ? view.byteStride : element;
+        if (stride < element)
+            fail(fmt::format("{}: buffer view {} has a stride of {} bytes for {}-byte elements",
+                             what, a.bufferView, stride, element));
+        if (view.byteOffset > buffer.data.size() ||
+            view.byteLength > buffer.data.size() - view.byteOffset) {
+            fail(fmt::format("{}: buffer view {} lies outside its buffer of {} bytes (truncated?)",
+                             what, a.bufferView, buffer.data.size()));
+        }
+        if (a.count == 0) fail(fmt::format("{}: accessor {} is empty", what, accessor_index));
+        const size_t last = a.count - 1;
+        if (a.byteOffset > view.byteLength || last > (view.byteLength - a.byteOffset) / stride ||
+            a.byteOffset + last * stride + element > view.byteLength) {
+            fail(
+                fmt::format("{}: accessor {} ({} elements) runs past the end of buffer view {} "
+                            "(truncated?)",
+                            what, accessor_index, a.count, a.bufferView));
+        }
+        return {buffer.data.data() + view.byteOffset + a.byteOffset, stride};
+    }
+
+    MeshData read_primitive(const tinygltf::Primitive& prim, const std::string& what) {
+        MeshData data;
+        if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            prim.mode != TINYGLTF_MODE_TRIANGLE_FAN && prim.mode != -1) {
+            warn(fmt::format("{}: points and lines are not rendered; skipped", what));
+            return data;
+        }
+        auto attribute = [&](const char* name) {
+            auto it = prim.attributes.find(name);
+            return it == prim.attributes.end() ? -1 : it->second;
+        };
+        const int position = attribute("POSITION");
+        if (position < 0) fail(fmt::format("{}: no POSITION attribute", what));
+        const std::vector<float> p = read_floats(position, 3, what + " POSITION");
+        const size_t n = p.size() / 3;
+        if (n > std::numeric_limits<uint32_t>::max())
+            fail(fmt::format("{}: more than 2^32 - 1 vertices", what));
+        data.positions.resize(n);
+        for (size_t i = 0; i < n; ++i) data.positions[i] = {p[3 * i], p[3 * i + 1], p[3 * i + 2]};
+        if (const int normal = attribute("NORMAL"); normal >= 0) {
+            const std::vector<float> v = read_floats(normal, 3, what + " NORMAL");
+            if (v.size() != p.size())
+                fail(fmt::format("{}: NORMAL and POSITION differ in count", what));
+            data.normals.resize(n);
+            for (size_t i = 0; i < n; ++i) data.normals[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        }
+        if (const int uv = attribute("TEXCOORD_0"); uv >= 0) {
+            const std::vector<float> v = read_floats(uv, 2, what + " TEXCOORD_0");
+            if (v.size() != 2 * n)
+                fail(fmt::format("{}: TEXCOORD_0 and POSITION differ in count", what));
+            data.uvs.resize(n);
+            // glTF puts v = 0 at the top of an image, glint at the bottom.
+            for (size_t i = 0; i < n; ++i) data.uvs[i] = {v[2 * i], 1.0f - v[2 * i + 1]};
+        }
+        std::vector<uint32_t> order;
+        if (prim.indices >= 0) {
+            order = read_indices(prim.indices, n, what);
+        } else {
+            order.resize(n);
+            for (size_t i = 0; i < n; ++i) order[i] = static_cast<uint32_t>(i);
+        }
+        if (prim.mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            for (size_t i = 0; i + 2 < order.size(); ++i) {
+                // Every other triangle of a strip is wound the other way round.
+                const bool odd = i % 2 == 1;
+                data.indices.insert(data.indices.end(), {order[i], order[odd ? i + 2 : i + 1],
+                                                         order[odd ? i + 1 : i + 2]});
+            }
+        } else if (prim.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+            for (size_t i = 1; i + 1 < order.size(); ++i)
+                data.indices.insert(data.indices.end(), {order[0], order[i], order[i + 1]});
+        } else {
+            if (order.size() % 3 != 0)
+                fail(fmt::format("{}: {} indices is not a whole number of triangles", what,
+                                 order.size()));
+            data.indices = std::move(order);
+        }
+        return data;
+    }
+
+    // The file name of an image: its own file, or for an embedded one (GLB buffer view or
+    // data: URI) a copy of its encoded bytes in glint's image cache, named by their hash so
+    // that the same image is written once and never changes under a running render.
+    std::string image_file(int image_index) {
+        auto it = m_image_files.find(image_index);
+        if (it != m_image_files.end()) return it->second;
+        const tinygltf::Image& image = at(m_model.images, image_index, "image");
+        std::string file;
+        if (image.bufferView < 0 && !image.uri.empty() && image.uri.rfind("data:", 0) != 0) {
+            fs::path path = percent_decoded(image.uri);
+            if (path.is_relative()) path = fs::absolute(m_directory / path);
+            file = path.lexically_normal().string();
+        } else {
+            if (image.image.empty()) fail(fmt::format("image {} has no data", image_index));
+            uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a, 64 bits
+            for (unsigned char b : image.image) hash = (hash ^ b) * 0x100000001b3ull;
+            const std::string ext = image.mimeType == "image/jpeg" ? ".jpg" : ".png";
+            const fs::path dir = fs::temp_directory_path() / "glint-gltf-images";
+            const fs::path path = dir / fmt::format("{:016x}-{}{}", hash, image.image.size(), ext);
+            std::error_code ec;
+            if (!fs::is_regular_file(path, ec)) {
+                fs::create_directories(dir, ec);
+                const fs::path temp = dir / fmt::format("{}.{}.tmp", path.filename().string(),
+                                                        static_cast<const void*>(this));
+                std::ofstream out(temp, std::ios::binary);
+                out.write(reinterpret_cast<const char*>(image.image.data()),
+                          static_cast<std::streamsize>(image.image.size()));
+                out.close();
+                if (!out || (fs::rename(temp, path, ec), ec)) {
+                    fs::remove(temp, ec);
+                    fail(fmt::format("cannot write embedded image {} to '{}'", image_index,
+                                     path.string()));
+                }
+            }
+            file = path.string();
+        }
+        return m_image_files.emplace(image_index, file).first->second;
+    }
+
+    // An image texture for a glTF texture: sRGB for colours, linear for data.
+    ObjectRef texture(int texture_index, bool colour, const std::string& where) {
+        const auto key = std::make_pair(texture_index, colour);
+        auto it = m_textures.find(key);
+        if (it != m_textures.end()) return it->second;
+        const tinygltf::Texture& tex = at(m_model.textures, texture_index, "texture");
+        Params params("image", where);
+        params.set("file", image_file(tex.source));
+        params.set("encoding", std::string(colour ? "srgb" : "linear"));
+        if (tex.sampler >= 0) {
+            const tinygltf::Sampler& s = at(m_model.samplers, tex.sampler, "sampler");
+            if (s.wrapS != s.wrapT)
+                warn(fmt::format("{}: texture {} wraps s and t differently; glint uses s's", where,
+                                 texture_index));
+            if (s.wrapS == TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
+                params.set("wrap", std::string("clamp"));
+            else if (s.wrapS == TINYGLTF_TEXTURE_WRAP_MIRRORED_REPEAT)
+                params.set("wrap", std::string("mirror"));
+        }
+        m_desc.textures.push_back(std::move(params));
+        const ObjectRef ref{"texture", static_cast<int>(m_desc.textures.size()) - 1};
+        m_textures.emplace(key, ref);
+        return ref;
+    }
+
+    static double number_in(const tinygltf::ExtensionMap& extensions, const char* extension,
+                            const char* key, double fallback) {
+        auto it = extensions.find(extension);
+        if (it == extensions.end() || !it->second.Has(key) || !it->second.Get(key).IsNumber())
+            return fallback;
+        return it->second.Get(key).GetNumberAsDouble();
+    }
+
+    // The principled material for a glTF material (see docs/scene-language.md, "glTF").
+    ObjectRef material(int material_index) {
+        auto it = m_materials.find(material_index);
+        if (it != m_materials.end()) return it->second;
+        const std::string where = fmt::format("{}: material {}", origin(), material_index);
+        Params params("principled", where);
+        if (material_index < 0) {
+            // glTF's default material: white, fully metallic, fully rough.
+            params.set("base_color", 1.0);
+            params.set("metallic", 1.0);
+            params.set("roughness", 1.0);
+        } else {
+            const tinygltf::Material& m = at(m_model.materials, material_index, "material");
+            const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+            auto check_uv = [&](int tex_coord, const char* map) {
+                if (tex_coord != 0)
+                    warn(fmt::format("material {}: {} uses TEXCOORD_{}; glint reads TEXCOORD_0",
+                                     material_index, map, tex_coord));
+            };
+            Vec3 base(1.0f);
+            if (pbr.baseColorFactor.size() >= 3)
+                base = Vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
+            if (pbr.baseColorTexture.index >= 0) {
+                check_uv(pbr.baseColorTexture.texCoord, "baseColorTexture");
+                params.set("base_color", texture(pbr.baseColorTexture.index, true, where));
+                if (base != Vec3(1.0f))
+                    warn(
+                        fmt::format("material {}: baseColorFactor is ignored where the base "
+                                    "colour is a texture",
+                                    material_index));
+            } else {
+                params.set("base_color", numbers_of(base));
+            }
+            params.set("metallic", pbr.metallicFactor);
+            params.set("roughness", pbr.roughnessFactor);
+            if (pbr.metallicRoughnessTexture.index >= 0) {
+                check_uv(pbr.metallicRoughnessTexture.texCoord, "metallicRoughnessTexture");
+                params.set("metallic_roughness",
+                           texture(pbr.metallicRoughnessTexture.index, false, where));
+            }
+            if (m.normalTexture.index >= 0) {
+                check_uv(m.normalTexture.texCoord, "normalTexture");
+                params.set("normal_map", texture(m.normalTexture.index, false, where));
+                if (m.normalTexture.scale != 1.0)
+                    warn(
+                        fmt::format("material {}: normalTexture.scale is ignored", material_index));
+            }
+            Vec3 emission(0.0f);
+            if (m.emissiveFactor.size() == 3)
+                emission = Vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+            if (m.emissiveTexture.index >= 0 && emission != Vec3(0.0f)) {
+                check_uv(m.emissiveTexture.texCoord, "emissiveTexture");
+                params.set("emission", texture(m.emissiveTexture.index, true, where));
+                if (emission != Vec3(1.0f))
+                    warn(
+                        fmt::format("material {}: emissiveFactor is ignored where the emission "
+                                    "is a texture",
+                                    material_index));
+            } else if (emission != Vec3(0.0f)) {
+                params.set("emission", numbers_of(emission));
+            }
+            const double strength =
+                number_in(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
+            if (strength != 1.0) params.set("emission_strength", strength);
+            const double transmission =
+                number_in(m.extensions, "KHR_materials_transmission", "transmissionFactor", 0.0);
+            if (transmission != 0.0) params.set("transmission", transmission);
+            if (m.extensions.count("KHR_materials_ior"))
+                params.set("ior", number_in(m.extensions, "KHR_materials_ior", "ior", 1.5));
+            if (m.alphaMode != "OPAQUE")
+                warn(fmt::format("material {}: alphaMode {} is not supported; rendered opaque",
+                                 material_index, m.alphaMode));
+            for (const auto& [name, value] : m.extensions) {
+                if (name != "KHR_materials_emissive_strength" &&
+                    name != "KHR_materials_transmission" && name != "KHR_materials_ior")
+                    warn(fmt::format("material {}: extension {} is ignored", material_index, name));
+            }
+        }
+        m_desc.materials.push_back(std::move(params));
+        const ObjectRef ref{"material", static_cast<int>(m_desc.materials.size()) - 1};
+        m_materials.emplace(material_index, ref);
+        return ref;
+    }
+
+    // The first camera found, unless the scene already has one (set before the import).
+    void add_camera(const tinygltf::Camera& camera, const Mat4& world) {
+        if (m_desc.camera) return;
+        const Vec3 eye(world * glm::vec4(0, 0, 0, 1));
+        const Vec3 forward = glm::normalize(Vec3(world * glm::vec4(0, 0, -1, 0)));
+        const Vec3 up = glm::normalize(Vec3(world * glm::vec4(0, 1, 0, 0)));
+        const std::string where = fmt::format("{}: camera", origin());
+        Params params("camera", where);
+        params.set("eye", numbers_of(eye));
+        params.set("look_at", numbers_of(eye + forward));
+        params.set("up", numbers_of(up));
+        if (camera.type == "orthographic") {
+            params.set("type", std::string("orthographic"));
+            // ymag is half the view's height; glint's scale is the whole height.
+            params.set("scale", 2.0 * camera.orthographic.ymag);
+        } else {
+            params.set("fov", camera.perspective.yfov * 180.0 / 3.14159265358979323846);
+        }
+        m_desc.camera = std::move(params);
+        m_desc.camera_imported = true;
+    }
+
+    // KHR_lights_punctual. glTF states candela (point, spot) and lux (directional); glint
+    // takes them as W/sr and W/m^2 numerically, times light_scale (see the docs).
+    void add_light(int light_index, const Mat4& world) {
+        const tinygltf::Light& light = at(m_model.lights, light_index, "light");
+        const std::string where = fmt::format("{}: light {}", origin(), light_index);
+        Vec3 colour(1.0f);
+        if (light.color.size() == 3) colour = Vec3(light.color[0], light.color[1], light.color[2]);
+        const Vec3 power = colour * static_cast<float>(light.intensity) * m_target.light_scale;
+        const Vec3 position(world * glm::vec4(0, 0, 0, 1));
+        const Vec3 direction = glm::normalize(Vec3(world * glm::vec4(0, 0, -1, 0)));
+        Params params;
+        if (light.type == "point") {
+            params = Params("point_light", where);
+            params.set("position", numbers_of(position));
+            params.set("intensity", numbers_of(power));
+        } else if (light.type == "spot") {
+            params = Params("spot_light", where);
+            params.set("position", numbers_of(position));
+            params.set("look_at", numbers_of(position + direction));
+            params.set("intensity", numbers_of(power));
+            const double outer = light.spot.outerConeAngle * 180.0 / 3.14159265358979323846;
+            const double inner = light.spot.innerConeAngle * 180.0 / 3.14159265358979323846;
+            params.set("cone_angle", outer);
+            params.set("falloff_start", std::min(inner, outer));
+        } else if (light.type == "directional") {
+            params = Params("directional_light", where);
+            params.set("direction", numbers_of(direction));
+            params.set("irradiance", numbers_of(power));
+        } else {
+            fail(fmt::format("light {} has unknown type '{}'", light_index, light.type));
+        }
+        if (light.range > 0.0) warn(fmt::format("light {}: 'range' is ignored", light_index));
+        m_desc.lights.push_back(std::move(params));
+    }
+
+    SceneDesc& m_desc;
+    const ImportTarget& m_target;
+    tinygltf::Model m_model;
+    fs::path m_directory;
+    std::vector<int> m_roots;
+    std::map<int, int> m_uses;           // mesh -> placements
+    std::map<int, int> m_group_of_mesh;  // repeated mesh -> its group
+    std::map<int, std::vector<Primitive>> m_primitives;
+    std::map<int, ObjectRef> m_materials;
+    std::map<std::pair<int, bool>, ObjectRef> m_textures;
+    std::map<int, std::string> m_image_files;
+    Bounds3 m_bounds;
+};
+
+}  // namespace
+
+Bounds3 import_gltf(SceneDesc& desc, const ImportTarget& target) {
+    return GltfImporter(desc, target).run();
+}
+
+}  // namespace glint

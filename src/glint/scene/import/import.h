@@ -1,0 +1,48 @@
+#pragma once
+// glint.import: brings a model file (.obj with its .mtl, .ply, .gltf, .glb) into a scene
+// description, with its meshes, materials and (glTF) node hierarchy, cameras and lights.
+#include <glint/scene/scene_desc.h>
+
+#include <optional>
+#include <string>
+
+namespace glint {
+
+/// How one file is brought in.
+struct ImportTarget {
+    std::string path;                   ///< the file, as found (relative to the cwd or absolute)
+    Transform transform;                ///< placed at this transform in the world
+    std::optional<ObjectRef> material;  ///< replaces every material of the file
+    float light_scale = 1.0f;           ///< multiplies glTF light intensities (see the docs)
+    std::string where;                  ///< the script location of the import, for messages
+};
+
+/// glint.import{ file = ..., transform = ..., material = ..., light_scale = ... }: reads the
+/// parameters (file names relative to desc.directory), imports the file into `desc` and
+/// checks that every parameter was used. Throws glint::Error naming the script line and
+/// the file (with its line or byte offset where the format has one).
+void import_into(SceneDesc& desc, const Params& params);
+
+/// Imports `target` into `desc` (what import_into does once the parameters are read).
+/// Dispatches on the file's extension, case-insensitively. Returns the world-space bounds
+/// of the geometry it placed.
+Bounds3 import_file(SceneDesc& desc, const ImportTarget& target);
+
+/// Adds `mesh` to desc.meshes and a "mesh" shape using it to group `group`, with
+/// `material` and `transform`; for the importers.
+void add_mesh_shape(SceneDesc& desc, int group, MeshData mesh, const ObjectRef& material,
+                    const Transform& transform, const std::string& where);
+
+/// The geometry of a mesh file for glint.mesh{ file = ... }: .obj (all groups merged,
+/// materials ignored) or .ply. Throws glint::Error for another extension or a bad file.
+MeshData load_mesh_file(const std::string& path);
+
+/// Whether `path` names a model file that `glint render` takes without a Lua script.
+bool is_model_file(const std::string& path);
+
+/// A whole scene from a model file alone (`glint render model.glb`): the file's content;
+/// its camera, or one framing the bounds of its geometry; a constant white background
+/// when the file brings no lights.
+SceneDesc load_model_scene(const std::string& path);
+
+}  // namespace glint
