@@ -18,6 +18,7 @@ const std::map<std::string, MaterialFactory>& factories() {
         {"phong", make_phong_material},
         {"conductor", make_conductor_material},
         {"plastic", make_plastic_material},
+        {"principled", make_principled_material},
     };
     return table;
 }
