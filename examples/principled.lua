@@ -5,9 +5,9 @@
 -- clear coat with sheen at its rim, a half-metallic textured sphere, and a small lamp
 -- whose principled emission makes it an area light. The camera looks along -z.
 --   build/glint render examples/principled.lua
-glint.render{ width = 640, height = 360, spp = 32, max_depth = 8,
+glint.render{ width = 640, height = 360, spp = 24, max_depth = 8,
               output = {"principled.exr", "principled.png"} }
-glint.camera{ eye = {0, 3.2, 7.5}, look_at = {0, 0.5, 0}, fov = 40 }
+glint.camera{ eye = {0, 5.2, 7.0}, look_at = {0, 0.2, -0.2}, fov = 40 }
 glint.background{ radiance = {0.25, 0.3, 0.4} }
 
 -- A checker floor, to show refraction and blurred reflections.
@@ -21,10 +21,10 @@ glint.quad{ vertices = {{-3, 6, 1}, {3, 6, 1}, {3, 6, 4}, {-3, 6, 4}},
 local roughnesses = {0, 0.25, 0.5, 0.75, 1}
 for i, roughness in ipairs(roughnesses) do
     local x = (i - 3) * 1.1
-    glint.sphere{ center = {x, 0.5, -1.4}, radius = 0.5,
+    glint.sphere{ center = {x, 0.5, -1.9}, radius = 0.5,
                   material = glint.principled{ base_color = {1.0, 0.78, 0.34}, metallic = 1,
                                                roughness = roughness } }
-    glint.sphere{ center = {x, 0.5, -0.2}, radius = 0.5,
+    glint.sphere{ center = {x, 0.5, -0.5}, radius = 0.5,
                   material = glint.principled{ base_color = {0.7, 0.08, 0.06},
                                                roughness = roughness } }
 end
@@ -41,6 +41,6 @@ glint.sphere{ center = {0.6, 0.5, 1.2}, radius = 0.5,
                                            roughness = 0.3,
                                            metallic_roughness = glint.texture.checker{
                                                even = {0, 1, 1}, odd = {0, 0.2, 0}, scale = 8 } } }
-glint.sphere{ center = {1.8, 0.25, 1.4}, radius = 0.25,
+glint.sphere{ center = {1.9, 0.3, 1.2}, radius = 0.3,
               material = glint.principled{ base_color = 0.2, emission = {1.0, 0.7, 0.4},
-                                           emission_strength = 8 } }
+                                           emission_strength = 4 } }
