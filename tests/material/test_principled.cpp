@@ -65,13 +65,12 @@ std::vector<LobeCase> lobe_cases() {
     cases.push_back({"diffuse", params(Spectrum(0.8f, 0.5f, 0.3f), 0.0f, 0.5f), 1.0f, 0.0f});
     for (float roughness : {0.05f, 0.3f, 0.8f}) {
         const float alpha = roughness_to_alpha(roughness);
-        cases.push_back({fmt::format("specular {}", roughness), params(Spectrum(0.0f), 0, roughness),
-                         1.5f, alpha});
+        cases.push_back({fmt::format("specular {}", roughness),
+                         params(Spectrum(0.0f), 0, roughness), 1.5f, alpha});
         cases.push_back({fmt::format("metal {}", roughness),
                          params(Spectrum(0.9f, 0.6f, 0.3f), 1.0f, roughness), 1.5f, alpha});
-        cases.push_back(
-            {fmt::format("black metal {}", roughness), params(Spectrum(0.0f), 1.0f, roughness),
-             1.5f, alpha});
+        cases.push_back({fmt::format("black metal {}", roughness),
+                         params(Spectrum(0.0f), 1.0f, roughness), 1.5f, alpha});
     }
     PrincipledParams coat = params(Spectrum(0.0f), 0.0f, 0.5f);
     coat.clearcoat = 1.0f;
@@ -128,8 +127,7 @@ TEST(PrincipledBsdf, GlassLobeSamplingMatchesPdf) {
                     fmt::format("roughness {}, {}, {}", roughness, describe(wo),
                                 lobe == Lobe::kReflection ? "reflection" : "transmission");
                 EXPECT_TRUE(check.chi_square.passed) << label << ": " << check.chi_square.details;
-                EXPECT_NEAR(check.chi_square.integrated_pdf, check.chi_square.sample_fraction,
-                            5e-3)
+                EXPECT_NEAR(check.chi_square.integrated_pdf, check.chi_square.sample_fraction, 5e-3)
                     << label;
                 EXPECT_EQ(check.inconsistent, 0) << label << ": " << check.first_inconsistency;
             }
@@ -143,8 +141,10 @@ TEST(PrincipledBsdf, MixtureSamplingMatchesPdf) {
     struct Case {
         float metallic, roughness, transmission, clearcoat, sheen;
     };
-    const Case cases[] = {{0.0f, 0.5f, 0.0f, 0.0f, 0.0f}, {0.5f, 0.3f, 0.0f, 0.5f, 0.0f},
-                          {0.2f, 0.6f, 0.5f, 0.3f, 1.0f}, {0.0f, 0.8f, 0.7f, 1.0f, 0.5f},
+    const Case cases[] = {{0.0f, 0.5f, 0.0f, 0.0f, 0.0f},
+                          {0.5f, 0.3f, 0.0f, 0.5f, 0.0f},
+                          {0.2f, 0.6f, 0.5f, 0.3f, 1.0f},
+                          {0.0f, 0.8f, 0.7f, 1.0f, 0.5f},
                           {1.0f, 0.9f, 0.0f, 1.0f, 1.0f}};
     const double significance = 0.01 / (std::size(cases) * outgoing().size());
     for (const Case& c : cases) {
@@ -178,9 +178,9 @@ TEST(PrincipledBsdf, WhiteFurnace) {
         float metallic, transmission, clearcoat, sheen;
         bool promises_one;
     };
-    const Case cases[] = {{"dielectric", 0, 0, 0, 0, true},   {"metal", 1, 0, 0, 0, false},
-                          {"glass", 0, 1, 0, 0, false},       {"clearcoat", 0, 0, 1, 0, false},
-                          {"sheen", 0, 0, 0, 1, false},       {"all", 0.3f, 0.3f, 0.5f, 0.5f, false}};
+    const Case cases[] = {{"dielectric", 0, 0, 0, 0, true}, {"metal", 1, 0, 0, 0, false},
+                          {"glass", 0, 1, 0, 0, false},     {"clearcoat", 0, 0, 1, 0, false},
+                          {"sheen", 0, 0, 0, 1, false},     {"all", 0.3f, 0.3f, 0.5f, 0.5f, false}};
     std::cout << "Principled, white base: directional albedo (4e4 samples each)\n"
               << "case        roughness |";
     for (float a : angles) std::cout << fmt::format(" {:>6.0f}deg", a);
@@ -201,8 +201,7 @@ TEST(PrincipledBsdf, WhiteFurnace) {
                 const std::string where = fmt::format("{}, roughness {}, {} degrees: {} +- {}",
                                                       c.name, roughness, degrees, e.mean, e.error);
                 EXPECT_LE(e.mean, 1.0 + 4.0 * e.error + 1e-3) << where;
-                const bool promised =
-                    c.promises_one || (c.metallic == 1.0f && roughness == 0.0f);
+                const bool promised = c.promises_one || (c.metallic == 1.0f && roughness == 0.0f);
                 if (promised) {
                     EXPECT_GE(e.mean, 1.0 - 4.0 * e.error - 2e-3) << where;
                 }
@@ -326,7 +325,8 @@ TEST(PrincipledMaterial, LuaParametersAreChecked) {
         {"glint.principled{ sheen = glint.texture.checker{} }",
          {"'sheen' must be a number (textures are not supported for it)"}},
         {"glint.principled{ sheen_tint = 3 }", {"'sheen_tint' must lie in [0, 1]"}},
-        {"glint.principled{ emission = {-1, 0, 0} }", {"'emission' must be finite and not negative"}},
+        {"glint.principled{ emission = {-1, 0, 0} }",
+         {"'emission' must be finite and not negative"}},
         {"glint.principled{ emission = glint.texture.checker{} }",
          {"'emission' must be a colour: textured emission is not supported yet"}},
         {"glint.principled{ emission_strength = -2 }", {"'emission_strength' must be a finite"}},

@@ -76,7 +76,7 @@ struct SamplingCheck {
 // density as zero, which keeps the test exact for what remains). Each sample's f, pdf,
 // flags and eta are compared with eval(), pdf() and the side it landed on.
 inline SamplingCheck check_sampling(const Bsdf& bsdf, const Vec3& wo, const Zoom& zoom, Lobe lobe,
-                             float eta_inside, double significance, int samples = 100000) {
+                                    float eta_inside, double significance, int samples = 100000) {
     SamplingCheck check;
     auto wanted = [&](const Vec3& wi) {
         if (lobe == Lobe::kAll) return true;
@@ -145,7 +145,7 @@ struct Albedo {
 };
 
 inline Albedo sampled_albedo(const Bsdf& bsdf, const Vec3& wo, int samples, uint64_t seed,
-                      int channel = 0) {
+                             int channel = 0) {
     Rng rng(seed);
     double sum = 0.0, sum2 = 0.0;
     for (int i = 0; i < samples; ++i) {

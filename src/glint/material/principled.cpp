@@ -36,8 +36,8 @@ public:
     // for a constant, the whole range for a textured one.
     explicit PrincipledMaterial(const PrincipledInputs& in)
         : m_in(in),
-          m_specular_albedo(in.specular_eta, textured_roughness() ? PrincipledBsdf::kMinAlpha
-                                                                  : constant_alpha(),
+          m_specular_albedo(in.specular_eta,
+                            textured_roughness() ? PrincipledBsdf::kMinAlpha : constant_alpha(),
                             textured_roughness() ? 1.0f : constant_alpha()),
           m_coat_albedo(1.5f, clamped_alpha(in.clearcoat_roughness),
                         clamped_alpha(in.clearcoat_roughness)) {}
@@ -71,8 +71,7 @@ private:
     CoatAlbedoTable m_coat_albedo;
 };
 
-float number_in(const Params& params, const std::string& name, float fallback, float lo,
-                float hi) {
+float number_in(const Params& params, const std::string& name, float fallback, float lo, float hi) {
     if (params.is_ref(name, "texture")) {
         params.fail(fmt::format("'{}' must be a number (textures are not supported for it)", name));
     }
@@ -107,8 +106,7 @@ float number_in(const Params& params, const std::string& name, float fallback, f
 //   emission             spectrum             0     emitted radiance (a light source when not
 //                                                   black), times
 //   emission_strength    float                1     >= 0
-std::unique_ptr<Material> make_principled_material(const Params& params,
-                                                   TextureTable& textures) {
+std::unique_ptr<Material> make_principled_material(const Params& params, TextureTable& textures) {
     PrincipledInputs in;
     in.base_color = textures.spectrum(params, "base_color", Spectrum(0.8f), 0.0f, 1.0f);
     in.metallic = textures.scalar(params, "metallic", 0.0f, 0.0f, 1.0f);
@@ -135,7 +133,8 @@ std::unique_ptr<Material> make_principled_material(const Params& params,
             "emit a constant radiance)");
     }
     const Spectrum emission = params.get_spectrum("emission", Spectrum(0.0f));
-    if (!(std::min({emission.r, emission.g, emission.b}) >= 0.0f) || !std::isfinite(emission.max_value()))
+    if (!(std::min({emission.r, emission.g, emission.b}) >= 0.0f) ||
+        !std::isfinite(emission.max_value()))
         params.fail("'emission' must be finite and not negative");
     const float strength = params.get_float("emission_strength", 1.0f);
     if (!(strength >= 0.0f) || !std::isfinite(strength))

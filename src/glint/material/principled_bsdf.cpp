@@ -144,8 +144,8 @@ Spectrum PrincipledBsdf::eval_unscaled(const Vec3& wo, const Vec3& wi) const {
             const float specular = fresnel_dielectric(cos_om, m_specular_eta) * ggx;
             const float through = (1.0f - specular_albedo(o)) * (1.0f - specular_albedo(i));
             const Spectrum diffuse = m_p.base_color * (m_diffuse_scale * through);
-            Spectrum layer = sheen_transmittance(o) * sheen_transmittance(i) *
-                             (Spectrum(specular) + diffuse);
+            Spectrum layer =
+                sheen_transmittance(o) * sheen_transmittance(i) * (Spectrum(specular) + diffuse);
             if (m_p.sheen > 0.0f) layer += m_sheen_color * sheen_factor(i, wm);
             under += layer * opaque;
         }

@@ -53,15 +53,15 @@ float sheen_albedo(float cos_theta);
 
 /// The values of the principled model at one point (textures already evaluated).
 struct PrincipledParams {
-    Spectrum base_color{0.8f};  ///< in [0, 1]
-    float metallic = 0.0f;      ///< in [0, 1]
-    float alpha = 0.25f;        ///< GGX alpha of the base (metal, specular, glass)
-    float ior = 1.5f;           ///< the glass's index inside / outside, > 1
-    float transmission = 0.0f;  ///< in [0, 1], fraction of the dielectric base that is glass
-    float clearcoat = 0.0f;     ///< in [0, 1]
+    Spectrum base_color{0.8f};        ///< in [0, 1]
+    float metallic = 0.0f;            ///< in [0, 1]
+    float alpha = 0.25f;              ///< GGX alpha of the base (metal, specular, glass)
+    float ior = 1.5f;                 ///< the glass's index inside / outside, > 1
+    float transmission = 0.0f;        ///< in [0, 1], fraction of the dielectric base that is glass
+    float clearcoat = 0.0f;           ///< in [0, 1]
     float clearcoat_alpha = 0.0009f;  ///< GGX alpha of the coat
-    float sheen = 0.0f;      ///< in [0, 1]
-    float sheen_tint = 0.5f;  ///< in [0, 1]: 0 white sheen, 1 the base colour's hue
+    float sheen = 0.0f;               ///< in [0, 1]
+    float sheen_tint = 0.5f;          ///< in [0, 1]: 0 white sheen, 1 the base colour's hue
 };
 
 class PrincipledBsdf final : public Bsdf {
@@ -95,9 +95,9 @@ private:
     static float ggx_reflection_pdf(const GgxDistribution& distribution, const Vec3& o,
                                     const Vec3& i);
 
-    float coat_transmittance(const Vec3& w) const;  // T_c
+    float coat_transmittance(const Vec3& w) const;      // T_c
     Spectrum sheen_transmittance(const Vec3& w) const;  // T_s
-    float specular_albedo(const Vec3& w) const;  // E
+    float specular_albedo(const Vec3& w) const;         // E
 
     PrincipledParams m_p;
     GgxDistribution m_base;

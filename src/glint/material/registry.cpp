@@ -11,14 +11,10 @@ using MaterialFactory = std::unique_ptr<Material> (*)(const Params&, TextureTabl
 
 const std::map<std::string, MaterialFactory>& factories() {
     static const std::map<std::string, MaterialFactory> table = {
-        {"diffuse", make_diffuse_material},
-        {"mirror", make_mirror_material},
-        {"dielectric", make_dielectric_material},
-        {"emissive", make_emissive_material},
-        {"phong", make_phong_material},
-        {"conductor", make_conductor_material},
-        {"plastic", make_plastic_material},
-        {"principled", make_principled_material},
+        {"diffuse", make_diffuse_material},       {"mirror", make_mirror_material},
+        {"dielectric", make_dielectric_material}, {"emissive", make_emissive_material},
+        {"phong", make_phong_material},           {"conductor", make_conductor_material},
+        {"plastic", make_plastic_material},       {"principled", make_principled_material},
     };
     return table;
 }
