@@ -90,8 +90,14 @@ const std::vector<Vec3>& outgoing() {
 
 }  // namespace
 
-TEST(PrincipledBsdf, EachReflectionLobeSamplingMatchesPdf) {
-    const std::vector<LobeCase> cases = lobe_cases();
+namespace {
+
+// Chi-square of the lobe cases whose name does (or does not) contain "metal".
+void expect_lobes_sample_their_pdf(bool metal) {
+    std::vector<LobeCase> cases;
+    for (const LobeCase& c : lobe_cases()) {
+        if ((c.name.find("metal") != std::string::npos) == metal) cases.push_back(c);
+    }
     const double significance = 0.01 / (cases.size() * outgoing().size());
     for (const LobeCase& c : cases) {
         const Principled principled(c.p, c.specular_eta);
@@ -102,6 +108,16 @@ TEST(PrincipledBsdf, EachReflectionLobeSamplingMatchesPdf) {
             expect_sampling_ok(check, c.name + ", " + describe(wo));
         }
     }
+}
+
+}  // namespace
+
+TEST(PrincipledBsdf, DielectricReflectionLobesSampleTheirPdf) {
+    expect_lobes_sample_their_pdf(false);
+}
+
+TEST(PrincipledBsdf, MetalLobeSamplesItsPdf) {
+    expect_lobes_sample_their_pdf(true);
 }
 
 // The glass alone (transmission 1), from outside and inside, reflection and refraction each
