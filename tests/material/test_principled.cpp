@@ -151,19 +151,16 @@ TEST(PrincipledBsdf, GlassLobeSamplingMatchesPdf) {
     }
 }
 
-// Every lobe at once, for several parameter sets, unmagnified (reflection and transmission
-// over the whole sphere).
-TEST(PrincipledBsdf, MixtureSamplingMatchesPdf) {
-    struct Case {
-        float metallic, roughness, transmission, clearcoat, sheen;
-    };
-    const Case cases[] = {{0.0f, 0.5f, 0.0f, 0.0f, 0.0f},
-                          {0.5f, 0.3f, 0.0f, 0.5f, 0.0f},
-                          {0.2f, 0.6f, 0.5f, 0.3f, 1.0f},
-                          {0.0f, 0.8f, 0.7f, 1.0f, 0.5f},
-                          {1.0f, 0.9f, 0.0f, 1.0f, 1.0f}};
-    const double significance = 0.01 / (std::size(cases) * outgoing().size());
-    for (const Case& c : cases) {
+namespace {
+
+struct MixtureCase {
+    float metallic, roughness, transmission, clearcoat, sheen;
+};
+
+// Every lobe at once, unmagnified (reflection and transmission over the whole sphere).
+void expect_mixtures_sample_their_pdf(const std::vector<MixtureCase>& cases) {
+    const double significance = 0.01 / (cases.size() * outgoing().size());
+    for (const MixtureCase& c : cases) {
         PrincipledParams p = params(Spectrum(0.8f, 0.6f, 0.4f), c.metallic, c.roughness);
         p.transmission = c.transmission;
         p.clearcoat = c.clearcoat;
@@ -180,6 +177,19 @@ TEST(PrincipledBsdf, MixtureSamplingMatchesPdf) {
                                                   c.clearcoat, c.sheen, describe(wo)));
         }
     }
+}
+
+}  // namespace
+
+TEST(PrincipledBsdf, OpaqueMixtureSamplesItsPdf) {
+    expect_mixtures_sample_their_pdf({{0.0f, 0.5f, 0.0f, 0.0f, 0.0f},
+                                      {0.5f, 0.3f, 0.0f, 0.5f, 0.0f},
+                                      {1.0f, 0.9f, 0.0f, 1.0f, 1.0f}});
+}
+
+TEST(PrincipledBsdf, TransmittingMixtureSamplesItsPdf) {
+    expect_mixtures_sample_their_pdf(
+        {{0.2f, 0.6f, 0.5f, 0.3f, 1.0f}, {0.0f, 0.8f, 0.7f, 1.0f, 0.5f}});
 }
 
 // White furnace. Every parameter set of a sweep reflects (and transmits, counted as energy)
