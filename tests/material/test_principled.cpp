@@ -237,6 +237,41 @@ TEST(PrincipledBsdf, WhiteFurnace) {
     }
 }
 
+// The sampling reaches every direction the BSDF scatters into: pdf > 0 wherever f > 0 (a
+// lobe given zero weight at some wo would be missing from the estimate without the
+// chi-square test noticing: both the samples and the pdf would leave it out). A black metal
+// seen at normal incidence is the case to watch: its Schlick reflectance there is 0, but
+// tilted facets still reflect.
+TEST(PrincipledBsdf, PdfCoversEveryDirectionWithF) {
+    std::vector<PrincipledParams> sets;
+    for (float metallic : {0.0f, 0.5f, 1.0f}) {
+        for (float base : {0.0f, 0.7f}) {
+            PrincipledParams p = params(Spectrum(base), metallic, 0.4f);
+            sets.push_back(p);
+            p.transmission = 0.6f;
+            p.clearcoat = 0.5f;
+            p.sheen = 0.5f;
+            sets.push_back(p);
+        }
+    }
+    Rng rng(59);
+    for (const PrincipledParams& p : sets) {
+        const Principled principled(p);
+        for (int n = 0; n < 2000; ++n) {
+            const Vec3 wo =
+                n < 100 ? direction(0.0f)
+                        : warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+            const Vec3 wi =
+                warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+            if (principled.bsdf.eval(wo, wi).max_value() > 0.0f) {
+                ASSERT_GT(principled.bsdf.pdf(wo, wi), 0.0f)
+                    << "metallic " << p.metallic << " base " << p.base_color.r << " "
+                    << describe(wo);
+            }
+        }
+    }
+}
+
 // Reflection is reciprocal, f(a, b) = f(b, a); refraction obeys generalised reciprocity,
 // f(a, b) / n_a^2 = f(b, a) / n_b^2 (n the index on each direction's side).
 TEST(PrincipledBsdf, Reciprocal) {
