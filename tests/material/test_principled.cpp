@@ -69,9 +69,10 @@ std::vector<LobeCase> lobe_cases() {
                          params(Spectrum(0.0f), 0, roughness), 1.5f, alpha});
         cases.push_back({fmt::format("metal {}", roughness),
                          params(Spectrum(0.9f, 0.6f, 0.3f), 1.0f, roughness), 1.5f, alpha});
-        cases.push_back({fmt::format("black metal {}", roughness),
-                         params(Spectrum(0.0f), 1.0f, roughness), 1.5f, alpha});
     }
+    // A black metal reflects only through Schlick's grazing term (its weight's floor).
+    cases.push_back(
+        {"black metal 0.3", params(Spectrum(0.0f), 1.0f, 0.3f), 1.5f, roughness_to_alpha(0.3f)});
     PrincipledParams coat = params(Spectrum(0.0f), 0.0f, 0.5f);
     coat.clearcoat = 1.0f;
     coat.clearcoat_alpha = roughness_to_alpha(0.1f);
