@@ -141,6 +141,35 @@ TEST(Bdpt, ConvergesToPathOnAGlossySceneUnderTheSky) {
     expect_bdpt_converges_to_path(glossy_scene, 48, 64);
 }
 
+// Principled surfaces (material/principled_bsdf.h) seen by camera paths and by light paths,
+// which use the adjoint BSDF (importance mode): rough glass, a clear-coated metal, a sheen
+// and a sphere whose principled emission makes it the scene's only light.
+TEST(Bdpt, ConvergesToPathOnPrincipledSurfaces) {
+    expect_bdpt_converges_to_path(
+        [](const std::string& integrator, int spp, int seed) {
+            return fmt::format(R"(
+        glint.camera{{ eye = {{0, 1.5, 4}}, look_at = {{0, 0.4, 0}}, fov = 40 }}
+        glint.render{{ width = 32, height = 32, spp = {}, seed = {}, integrator = '{}' }}
+        glint.quad{{ vertices = {{ {{-3, 0, -3}}, {{-3, 0, 3}}, {{3, 0, 3}}, {{3, 0, -3}} }},
+                    material = glint.principled{{ base_color = 0.6, roughness = 0.8 }} }}
+        glint.sphere{{ center = {{0, 1.8, -0.5}}, radius = 0.4,
+                      material = glint.principled{{ base_color = 0.5, emission = {{6, 5, 4}} }} }}
+        glint.sphere{{ center = {{-0.8, 0.45, 0}}, radius = 0.45,
+                      material = glint.principled{{ base_color = {{0.9, 0.95, 1}},
+                                                   transmission = 1, roughness = 0.3 }} }}
+        glint.sphere{{ center = {{0.2, 0.4, 0.3}}, radius = 0.4,
+                      material = glint.principled{{ base_color = {{0.9, 0.6, 0.3}}, metallic = 1,
+                                                   roughness = 0.4, clearcoat = 1,
+                                                   clearcoat_roughness = 0.1 }} }}
+        glint.sphere{{ center = {{1.0, 0.4, -0.2}}, radius = 0.4,
+                      material = glint.principled{{ base_color = {{0.2, 0.3, 0.6}}, sheen = 1,
+                                                   transmission = 0.4, roughness = 0.6 }} }}
+    )",
+                               spp, seed, integrator);
+        },
+        32, 64);
+}
+
 // The caustic of a point light behind a glass ball (test_light's scene): black for the path
 // tracer, found by bdpt's light subpaths (t = 1 and s, t >= 2) and by SPPM. SPPM's finite
 // radius blurs the caustic by about 5 % over this region (see test_light), hence the 8 %.

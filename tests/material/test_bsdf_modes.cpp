@@ -81,6 +81,23 @@ std::vector<BsdfCase> bsdf_cases() {
              p.set("specular", V{0.3, 0.3, 0.3});
              p.set("exponent", 20.0);
          }},
+        {"principled_all_lobes", "principled",
+         [](Params& p) {
+             p.set("base_color", V{0.8, 0.5, 0.2});
+             p.set("metallic", 0.3);
+             p.set("roughness", 0.4);
+             p.set("transmission", 0.5);
+             p.set("clearcoat", 0.7);
+             p.set("clearcoat_roughness", 0.2);
+             p.set("sheen", 1.0);
+         }},
+        {"principled_glass", "principled",
+         [](Params& p) {
+             p.set("base_color", V{0.9, 0.8, 0.7});
+             p.set("transmission", 1.0);
+             p.set("roughness", 0.3);
+             p.set("ior", 1.33);
+         }},
     };
 }
 

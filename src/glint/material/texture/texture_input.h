@@ -36,10 +36,21 @@ public:
     explicit FloatInput(float constant) : m_constant(constant) {}
     FloatInput(const Texture* texture, float lo, float hi)
         : m_texture(texture), m_lo(lo), m_hi(hi) {}
+    // One channel (0 red, 1 green, 2 blue) of a colour texture instead of the channels'
+    // average: for textures that pack several parameters, like glTF's metallic-roughness
+    // maps (roughness in green, metallic in blue).
+    static FloatInput channel(const Texture* texture, int channel, float lo, float hi) {
+        FloatInput input(texture, lo, hi);
+        input.m_channel = channel;
+        return input;
+    }
 
     float eval(const SurfaceInteraction& si) const {
         if (!m_texture) return m_constant;
-        return std::clamp(m_texture->eval_float(TextureContext(si)), m_lo, m_hi);
+        const TextureContext context(si);
+        const float v =
+            m_channel < 0 ? m_texture->eval_float(context) : m_texture->eval(context)[m_channel];
+        return std::clamp(v, m_lo, m_hi);
     }
     bool is_textured() const { return m_texture != nullptr; }
     float representative() const { return m_texture ? 0.5f * (m_lo + m_hi) : m_constant; }
@@ -48,6 +59,7 @@ private:
     float m_constant = 0.0f;
     const Texture* m_texture = nullptr;
     float m_lo = 0.0f, m_hi = 0.0f;
+    int m_channel = -1;  // the average of the channels
 };
 
 }  // namespace glint
