@@ -1,0 +1,168 @@
+// The real-time preview: its caustic converges to sppm's, photons survive a camera move
+// and not a light move, and the image is the same for any thread count.
+#include <glint/core/progress.h>
+#include <glint/film/image.h>
+#include <glint/film/image_io.h>
+#include <glint/integrator/preview.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <support/render_helpers.h>
+
+#include <cstdio>
+#include <filesystem>
+
+using namespace glint;
+
+namespace {
+
+// A glass sphere above a diffuse floor, lit by a point light above and to the side: the
+// sphere focuses the light into a bright caustic on the floor beside it.
+std::string caustic_scene(const std::string& render) {
+    return fmt::format(R"(
+        glint.render{{ width = 64, height = 48, {} }}
+        glint.camera{{ eye = {{0, 3.2, 3.4}}, look_at = {{0.5, 0, 0}}, fov = 40 }}
+        glint.quad{{ vertices = {{{{-4, 0, 4}}, {{4, 0, 4}}, {{4, 0, -4}}, {{-4, 0, -4}}}},
+                    material = glint.diffuse{{ reflectance = 0.7 }} }}
+        glint.sphere{{ center = {{0, 0.9, 0}}, radius = 0.6, material = glint.dielectric{{ ior = 1.5 }} }}
+        glint.point_light{{ position = {{-2.5, 4, 0}}, intensity = 30 }}
+    )",
+                       render);
+}
+
+// The caustic's pixels in caustic_scene (found from the sppm reference: the floor beside
+// the sphere, away from the light, where the caustic is several times the direct light).
+constexpr int kX0 = 36, kY0 = 24, kX1 = 52, kY1 = 38;
+
+Image crop(const Image& image, int x0, int y0, int x1, int y1) {
+    Image region = make_image(x1 - x0, y1 - y0, {"R", "G", "B"});
+    for (int c = 0; c < 3; ++c)
+        for (int y = y0; y < y1; ++y)
+            for (int x = x0; x < x1; ++x) region.at(x - x0, y - y0, c) = image.at(x, y, c);
+    return region;
+}
+
+double region_error(const Image& test, const Image& reference) {
+    return compare_images(crop(test, kX0, kY0, kX1, kY1), crop(reference, kX0, kY0, kX1, kY1))
+        .rel_mse;
+}
+
+struct BuiltScene {
+    SceneDesc desc;
+    RenderSettings settings;
+    std::unique_ptr<Scene> scene;
+};
+
+BuiltScene build(const std::string& code) {
+    BuiltScene b;
+    b.desc = load_scene_string(code, "preview-test.lua");
+    b.settings = parse_render_settings(b.desc.render ? &*b.desc.render : nullptr);
+    b.scene = build_scene(b.desc, b.settings);
+    return b;
+}
+
+}  // namespace
+
+// The preview's caustic region approaches sppm's converged image as passes accumulate.
+TEST(Preview, CausticConvergesToSppm) {
+    const Image reference = test::render_lua(caustic_scene(
+        "integrator = 'sppm', spp = 256, photons = 20000, photon_radius = 0.02, seed = 7"));
+    auto preview = [&](int passes, int seed) {
+        return test::render_lua(caustic_scene(fmt::format(
+            "integrator = 'preview', spp = {}, preview_photons = 20000, seed = {}", passes, seed)));
+    };
+    const double early = region_error(preview(4, 1), reference);
+    const Image late = preview(64, 1);
+    const double error = region_error(late, reference);
+    // The preview's own noise after 64 passes: two independent renders differ by twice it.
+    const double noise = region_error(preview(64, 2), late) / 2.0;
+    std::printf("relative MSE over the caustic: 4 passes %.4f, 64 passes %.4f (noise %.4f)\n",
+                early, error, noise);
+    EXPECT_LT(error, 0.6 * early);
+    EXPECT_LT(error, 0.05);
+}
+
+// Same bits for one and two threads, through the command line.
+TEST(Preview, SameImageForOneAndTwoThreads) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / fmt::format("glint-preview-{}", ::getpid());
+    std::filesystem::create_directories(dir);
+    const std::string scene = (dir / "scene.lua").string();
+    {
+        std::FILE* file = std::fopen(scene.c_str(), "w");
+        ASSERT_NE(file, nullptr);
+        const std::string code = caustic_scene("spp = 4");
+        std::fwrite(code.data(), 1, code.size(), file);
+        std::fclose(file);
+    }
+    std::vector<Image> images;
+    for (int threads : {1, 2}) {
+        const std::string out = (dir / fmt::format("t{}.exr", threads)).string();
+        const test::CommandResult r = test::run_glint(fmt::format(
+            "render {} --integrator preview --threads {} --quiet -o {}", scene, threads, out));
+        ASSERT_EQ(r.exit_code, 0) << r.output;
+        images.push_back(read_image(out));
+    }
+    std::filesystem::remove_all(dir);
+    ASSERT_EQ(images[0].data.size(), images[1].data.size());
+    size_t differing = 0;
+    for (size_t i = 0; i < images[0].data.size(); ++i)
+        differing += images[0].data[i] != images[1].data[i];
+    EXPECT_EQ(differing, 0u);
+}
+
+// A camera move keeps the photons and the shrinking radius; a light move drops them.
+TEST(Preview, CameraChangeKeepsPhotonsLightChangeDropsThem) {
+    BuiltScene b = build(caustic_scene("integrator = 'preview', preview_photons = 5000"));
+    auto integrator = make_integrator(b.settings);
+    auto* preview = dynamic_cast<PreviewIntegrator*>(integrator.get());
+    ASSERT_NE(preview, nullptr);
+    auto* progressive = dynamic_cast<ProgressiveIntegrator*>(integrator.get());
+    ASSERT_NE(progressive, nullptr);
+    Film film(b.settings.width, b.settings.height, false);
+    Progress progress("test", 1, true);
+
+    for (int pass = 0; pass < 3; ++pass) progressive->render_pass(*b.scene, film, pass, progress);
+    EXPECT_EQ(preview->photon_passes(), 3);
+    const size_t photons = preview->stored_photons();
+    const float radius = preview->radius();
+    EXPECT_GT(photons, 0u);
+
+    progressive->scene_changed(SceneChange::camera);
+    film.clear();
+    progressive->render_pass(*b.scene, film, 0, progress);
+    EXPECT_EQ(preview->photon_passes(), 4);
+    EXPECT_GT(preview->stored_photons(), photons);  // one more batch on top of the three
+    EXPECT_LT(preview->radius(), radius);           // the schedule goes on
+
+    progressive->scene_changed(SceneChange::lights_or_objects);
+    film.clear();
+    progressive->render_pass(*b.scene, film, 0, progress);
+    EXPECT_EQ(preview->photon_passes(), 1);
+    EXPECT_LT(preview->stored_photons(), photons);  // one batch only
+}
+
+// After a camera move the first pass's caustic already holds the photons of the passes
+// before it: it is much closer to the reference than a first pass from no photons.
+TEST(Preview, FirstPassAfterCameraMoveKeepsTheCaustic) {
+    const Image reference = test::render_lua(caustic_scene(
+        "integrator = 'sppm', spp = 128, photons = 20000, photon_radius = 0.02, seed = 7"));
+    BuiltScene b = build(caustic_scene("integrator = 'preview', preview_photons = 5000"));
+    auto integrator = make_integrator(b.settings);
+    auto* progressive = dynamic_cast<ProgressiveIntegrator*>(integrator.get());
+    ASSERT_NE(progressive, nullptr);
+    Progress progress("test", 1, true);
+    Film film(b.settings.width, b.settings.height, false);
+    progressive->render_pass(*b.scene, film, 0, progress);
+    const double fresh = region_error(film.resolve(), reference);
+    for (int pass = 1; pass < 16; ++pass) progressive->render_pass(*b.scene, film, pass, progress);
+    progressive->scene_changed(SceneChange::camera);
+    film.clear();
+    progressive->render_pass(*b.scene, film, 0, progress);
+    const double kept = region_error(film.resolve(), reference);
+    std::printf("first pass: from no photons %.4f, after 16 passes and a camera move %.4f\n", fresh,
+                kept);
+    EXPECT_LT(kept, 0.5 * fresh);
+}
