@@ -1,6 +1,7 @@
 // The preview integrator's frame times and convergence, as the viewer would see them: it
 // calls render_pass() in a loop, as the viewer does each frame, and times each pass.
 //   glint_bench_preview SCENE.lua --res WxH [--threads T] [--frames N] [--moves M]
+//                       [--set KEY=NUMBER ...]
 //                       [--snapshots "0.25 1 4" --prefix OUT]
 // Prints the median ms per pass, split into the photon pass and the camera pass, the
 // frames per second that gives, and the median ms of the first pass after a camera move
@@ -58,6 +59,7 @@ int run(int argc, char** argv) {
     int width = 640, height = 480, threads = 0, frames = 30, moves = 5;
     std::vector<double> snapshots;
     std::string prefix;
+    std::vector<std::pair<std::string, double>> overrides;
     for (int i = 2; i < argc; ++i) {
         const std::string flag = argv[i];
         if (i + 1 >= argc) throw Error(fmt::format("{} needs a value", flag));
@@ -76,6 +78,10 @@ int run(int argc, char** argv) {
             std::istringstream in(value);
             for (double t; in >> t;) snapshots.push_back(t);
             std::sort(snapshots.begin(), snapshots.end());
+        } else if (flag == "--set") {
+            const size_t eq = value.find('=');
+            if (eq == std::string::npos) throw Error(fmt::format("--set: '{}' is not KEY=NUMBER", value));
+            overrides.emplace_back(value.substr(0, eq), std::stod(value.substr(eq + 1)));
         } else if (flag == "--prefix") {
             prefix = value;
         } else {
@@ -89,6 +95,7 @@ int run(int argc, char** argv) {
     table.set("width", static_cast<double>(width), "--res");
     table.set("height", static_cast<double>(height), "--res");
     table.set("integrator", std::string("preview"), "bench");
+    for (const auto& [key, number] : overrides) table.set(key, number, "--set");
     const RenderSettings settings = parse_render_settings(&table);
     const auto scene = build_scene(desc, settings);
     const int used_threads = threads > 0 ? threads : tbb::this_task_arena::max_concurrency();

@@ -106,10 +106,10 @@ TEST(Preview, SameImageForOneAndTwoThreads) {
         images.push_back(read_image(out));
     }
     std::filesystem::remove_all(dir);
-    ASSERT_EQ(images[0].data.size(), images[1].data.size());
+    ASSERT_EQ(images[0].pixels.size(), images[1].pixels.size());
     size_t differing = 0;
-    for (size_t i = 0; i < images[0].data.size(); ++i)
-        differing += images[0].data[i] != images[1].data[i];
+    for (size_t i = 0; i < images[0].pixels.size(); ++i)
+        differing += images[0].pixels[i] != images[1].pixels[i];
     EXPECT_EQ(differing, 0u);
 }
 

@@ -20,7 +20,16 @@ void PhotonGrid::build(const std::vector<Photon>& photons, float radius) {
     m_start.assign(static_cast<size_t>(buckets) + 1, 0);
     std::vector<Entry> entries(photons.size());
     std::vector<uint32_t> bucket(photons.size());
+    m_coarse.assign(kCoarseBits / 64, 0);
     for (size_t i = 0; i < photons.size(); ++i) {
+        // The coarse cells are 2r wide: the ball of radius r reaches at most two per axis,
+        // those of its bounding box's corners.
+        for (int corner = 0; corner < 8; ++corner) {
+            const Vec3 offset((corner & 1) ? radius : -radius, (corner & 2) ? radius : -radius,
+                              (corner & 4) ? radius : -radius);
+            const uint32_t bit = coarse_bit(photons[i].p + offset);
+            m_coarse[bit >> 6] |= uint64_t{1} << (bit & 63);
+        }
         entries[i] = {photons[i].p, cell_of(photons[i].p)};
         bucket[i] = bucket_of(entries[i].cell);
         ++m_start[bucket[i] + 1];

@@ -7,7 +7,10 @@
 // each photon keeps its cell, so one whose cell merely shares a bucket with the cell a
 // query visits is not counted (nor counted twice). Unlike PhotonMap's k-nearest kd-tree,
 // a query costs the photons near the point, and a point far from every photon a few empty
-// buckets: what a caustic estimate made at every pixel of every frame needs.
+// buckets: what a caustic estimate made at every pixel of every frame needs. Most points
+// are far from every photon (caustics are small): a bit set over coarser cells (2r, hashed
+// into 64 Kbit, 8 KB) marks the cells some photon's r-ball reaches, and a query whose
+// coarse cell is unmarked ends after one bit, without touching the buckets.
 #include <glint/integrator/photon_map.h>
 
 #include <cstdint>
@@ -39,6 +42,17 @@ private:
         h ^= h >> 15;
         return h & m_mask;
     }
+    uint32_t coarse_bit(const Vec3& p) const {
+        const glm::ivec3 c(glm::floor(p * (0.5f * m_inverse_cell)));
+        uint32_t h = static_cast<uint32_t>(c.x) * 2654435761u ^
+                     static_cast<uint32_t>(c.y) * 2246822519u ^ static_cast<uint32_t>(c.z) * 3266489917u;
+        return (h ^ (h >> 16)) & (kCoarseBits - 1);
+    }
+    bool coarse_marked(const Vec3& p) const {
+        const uint32_t bit = coarse_bit(p);
+        return (m_coarse[bit >> 6] >> (bit & 63)) & 1u;
+    }
+    static constexpr uint32_t kCoarseBits = 1u << 16;
     // What a query reads of every candidate; the rest of the photon only on a hit.
     struct Entry {
         Vec3 p;
@@ -52,11 +66,12 @@ private:
     std::vector<Entry> m_entries;   // sorted by bucket
     std::vector<Photon> m_photons;  // in the same order
     std::vector<uint32_t> m_start;  // bucket b holds [m_start[b], m_start[b + 1])
+    std::vector<uint64_t> m_coarse;  // kCoarseBits bits: coarse cells within r of a photon
 };
 
 template <typename Visit>
 void PhotonGrid::for_each_near(const Vec3& p, Visit&& visit) const {
-    if (m_photons.empty()) return;
+    if (m_photons.empty() || !coarse_marked(p)) return;
     const glm::ivec3 centre = cell_of(p);
     const float r2 = m_radius * m_radius;
     // Squared distance from p to the slabs of cells centre - 1, centre and centre + 1 on

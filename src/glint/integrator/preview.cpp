@@ -1,9 +1,12 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
+#include <glint/core/rng.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/photon_tracer.h>
 #include <glint/integrator/preview.h>
 #include <glint/integrator/transport.h>
+#include <glint/math/frame.h>
+#include <glint/math/warp.h>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
@@ -29,6 +32,30 @@ struct CausticSink {
         if (hit.caustic) photons.push_back({hit.si->p, hit.wi, hit.power});
     }
 };
+
+// The fraction of the light leaving the scene's surfaces that meets another surface rather
+// than escaping: from surface points found by rays from random points of the bounds, the
+// fraction of cosine-distributed directions that hit something (256 probes, fixed seed).
+float enclosure(const Scene& scene) {
+    const Bounds3& bounds = scene.stats().bounds;
+    if (bounds.is_empty()) return 0.0f;
+    Rng rng(0x2545f4914f6cdd1dull);
+    int probes = 0, enclosed = 0;
+    for (int i = 0; i < 4096 && probes < 256; ++i) {
+        Ray ray;
+        ray.origin = bounds.min + bounds.extent() * Vec3(rng.next_float(), rng.next_float(),
+                                                         rng.next_float());
+        ray.direction = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        if (!hit) continue;
+        // Light leaves the side the probe arrived from.
+        const Vec3 n = glm::dot(hit->ng, ray.direction) < 0.0f ? hit->ng : -hit->ng;
+        const Vec3 w = warp::square_to_cosine_hemisphere(Vec2(rng.next_float(), rng.next_float()));
+        ++probes;
+        if (scene.intersect(spawn_ray(*hit, Frame::from_normal(n).to_world(w)))) ++enclosed;
+    }
+    return probes > 0 ? static_cast<float>(enclosed) / static_cast<float>(probes) : 0.0f;
+}
 
 }  // namespace
 
@@ -78,7 +105,7 @@ void PreviewIntegrator::restart(const Scene& scene) {
     const Bounds3& bounds = scene.stats().bounds;
     const Vec3 extent = bounds.is_empty() ? Vec3(1.0f) : bounds.extent();
     const float diagonal = glm::length(extent);
-    const float r0 = m_preview.radius > 0.0f ? m_preview.radius : diagonal / 160.0f;
+    const float r0 = m_preview.radius > 0.0f ? m_preview.radius : diagonal / 400.0f;
     m_radius2 = r0 * r0;
 
     m_projections.assign(scene.lights().size(), std::nullopt);
@@ -87,18 +114,25 @@ void PreviewIntegrator::restart(const Scene& scene) {
             m_projections[i].emplace(scene, *scene.lights()[i]);
     }
 
-    // The ambient term stands for the light that is neither direct nor caustic. A room
-    // whose surfaces all reflect half of what they receive sends back, after all bounces,
-    // as much power as the lights emit (rho / (1 - rho) = 1), spread over its surfaces: an
-    // irradiance of (total power) / area, a radiance of albedo x power / (pi area). The
-    // bounding box's surface stands for the room's.
+    // The ambient term stands for the light that is neither direct nor caustic, after
+    // Cohen et al.'s ambient term of progressive radiosity (1988). Light leaving a surface
+    // meets another with probability c (enclosure(), 1 in a closed room) and is reflected
+    // there with an albedo taken as 1/2, so the light of all later bounces is the lights'
+    // power times k / (1 - k), k = c / 2; spread over the surfaces (the bounding box's
+    // area A stands for theirs), that is an irradiance of power x k / (1 - k) / A and a
+    // radiance of albedo x that / pi. The fraction 1 - c of directions that escape sees
+    // the constant background instead (an environment light is sampled as direct light).
+    const float c = enclosure(scene);
+    const float k = 0.5f * c;
     Spectrum power(0.0f);
     for (const auto& light : scene.lights()) {
         const Spectrum p = light->power();
-        if (p.is_finite()) power += p;
+        if (light.get() != scene.environment() && p.is_finite()) power += p;
     }
     const float area = 2.0f * (extent.x * extent.y + extent.y * extent.z + extent.z * extent.x);
-    m_ambient = area > 0.0f ? power * (m_preview.ambient / (kPi * area)) : Spectrum(0.0f);
+    const Spectrum bounced = area > 0.0f ? power * (k / (1.0f - k) / (kPi * area)) : Spectrum(0.0f);
+    const Spectrum sky = scene.environment() ? Spectrum(0.0f) : scene.background() * (1.0f - c);
+    m_ambient = (bounced + sky) * m_preview.ambient;
 }
 
 void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {

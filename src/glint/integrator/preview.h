@@ -24,13 +24,14 @@ namespace glint {
 /// scene's settings for photon or sppm (whose `photons` mean far more photons) do not slow
 /// the preview down.
 struct PreviewSettings {
-    int photons = 10000;  ///< caustic photons emitted per pass (>= 0)
+    int photons = 20000;  ///< caustic photons emitted per pass (>= 0)
     int window = 4;       ///< passes of photons kept and used by every estimate (>= 1)
-    /// Radius of the first pass's caustic estimate, in scene units (>= 0); 0 means 1/160 of
+    /// Radius of the first pass's caustic estimate, in scene units (>= 0); 0 means 1/400 of
     /// the scene's bounding-box diagonal.
     float radius = 0.0f;
-    /// Scale of the ambient term (>= 0; 0 turns it off): ambient radiance = scale x albedo
-    /// x (total light power) / (pi x surface area of the scene's bounding box).
+    /// Scale of the ambient term (>= 0; 0 turns it off), an estimate of the light of all
+    /// bounces after the first from the lights' power, the scene's size and how closed it
+    /// is, plus the constant background for the directions that escape (see restart()).
     float ambient = 1.0f;
 
     /// Reads and validates preview_photons, preview_window, preview_radius and
