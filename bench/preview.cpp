@@ -80,7 +80,8 @@ int run(int argc, char** argv) {
             std::sort(snapshots.begin(), snapshots.end());
         } else if (flag == "--set") {
             const size_t eq = value.find('=');
-            if (eq == std::string::npos) throw Error(fmt::format("--set: '{}' is not KEY=NUMBER", value));
+            if (eq == std::string::npos)
+                throw Error(fmt::format("--set: '{}' is not KEY=NUMBER", value));
             overrides.emplace_back(value.substr(0, eq), std::stod(value.substr(eq + 1)));
         } else if (flag == "--prefix") {
             prefix = value;

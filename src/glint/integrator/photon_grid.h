@@ -45,7 +45,8 @@ private:
     uint32_t coarse_bit(const Vec3& p) const {
         const glm::ivec3 c(glm::floor(p * (0.5f * m_inverse_cell)));
         uint32_t h = static_cast<uint32_t>(c.x) * 2654435761u ^
-                     static_cast<uint32_t>(c.y) * 2246822519u ^ static_cast<uint32_t>(c.z) * 3266489917u;
+                     static_cast<uint32_t>(c.y) * 2246822519u ^
+                     static_cast<uint32_t>(c.z) * 3266489917u;
         return (h ^ (h >> 16)) & (kCoarseBits - 1);
     }
     bool coarse_marked(const Vec3& p) const {
@@ -62,10 +63,10 @@ private:
     float m_radius = 0.0f;
     float m_cell = 0.0f;
     float m_inverse_cell = 0.0f;
-    uint32_t m_mask = 0;            // bucket count - 1 (a power of two)
-    std::vector<Entry> m_entries;   // sorted by bucket
-    std::vector<Photon> m_photons;  // in the same order
-    std::vector<uint32_t> m_start;  // bucket b holds [m_start[b], m_start[b + 1])
+    uint32_t m_mask = 0;             // bucket count - 1 (a power of two)
+    std::vector<Entry> m_entries;    // sorted by bucket
+    std::vector<Photon> m_photons;   // in the same order
+    std::vector<uint32_t> m_start;   // bucket b holds [m_start[b], m_start[b + 1])
     std::vector<uint64_t> m_coarse;  // kCoarseBits bits: coarse cells within r of a photon
 };
 

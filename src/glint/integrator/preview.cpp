@@ -43,8 +43,8 @@ float enclosure(const Scene& scene) {
     int probes = 0, enclosed = 0;
     for (int i = 0; i < 4096 && probes < 256; ++i) {
         Ray ray;
-        ray.origin = bounds.min + bounds.extent() * Vec3(rng.next_float(), rng.next_float(),
-                                                         rng.next_float());
+        ray.origin = bounds.min +
+                     bounds.extent() * Vec3(rng.next_float(), rng.next_float(), rng.next_float());
         ray.direction = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
         const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
         if (!hit) continue;
