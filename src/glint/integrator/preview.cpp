@@ -85,6 +85,11 @@ std::unique_ptr<Integrator> PreviewIntegrator::create(const RenderSettings& sett
     } catch (const Error& e) {
         throw Error(fmt::format("{}: {}", settings.where_of("sampler"), e.what()));
     }
+    // A pass is one sample in every pixel: there is nothing to adapt.
+    if (settings.adaptive != "none") {
+        throw Error(fmt::format("{}: integrator 'preview' has no adaptive sampling (adaptive '{}')",
+                                settings.where_of("adaptive"), settings.adaptive));
+    }
     return std::make_unique<PreviewIntegrator>(settings, PreviewSettings::read(params));
 }
 
