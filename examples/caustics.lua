@@ -3,6 +3,8 @@
 --   build/glint render examples/caustics.lua                       (photon, default)
 --   build/glint render examples/caustics.lua --integrator sppm --spp 64
 --   build/glint render examples/caustics.lua --integrator photon --debug photons
+--   build/glint render examples/caustics.lua --integrator preview --spp 30   (the viewer's
+--       real-time caustics: the passes of 30 frames, a few seconds)
 local floor = glint.diffuse{ reflectance = {0.75, 0.73, 0.7} }
 local glass = glint.dielectric{ ior = 1.5 }
 local metal = glint.mirror{ tint = {0.95, 0.85, 0.6} }

@@ -31,8 +31,15 @@ using PhotonEmitter =
 
 class PhotonTracer {
 public:
-    PhotonTracer(const Scene& scene, int max_bounces, PhotonEmitter emitter = {})
-        : m_scene(scene), m_max_bounces(max_bounces), m_emitter(std::move(emitter)) {}
+    // With `caustic_paths_only`, a photon ends at its first surface that is not purely
+    // specular, after the sink has seen it: what a caustic map keeps is all it traces (the
+    // photons up to there are the same as without it, keyed by their index).
+    PhotonTracer(const Scene& scene, int max_bounces, PhotonEmitter emitter = {},
+                 bool caustic_paths_only = false)
+        : m_scene(scene),
+          m_max_bounces(max_bounces),
+          m_emitter(std::move(emitter)),
+          m_caustic_paths_only(caustic_paths_only) {}
 
     // Traces photons [first, first + count); photon i is keyed by (seed, i). `make_sink()`
     // makes the sink of each chunk; the sinks come back in chunk order.
@@ -88,8 +95,10 @@ private:
             const Bsdf* bsdf = shade(m_scene, ray, si, arena);
             if (!bsdf) return;
             const Vec3 wi = -glm::normalize(ray.direction);
-            if (!bsdf->is_delta())
+            if (!bsdf->is_delta()) {
                 sink.store(PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0});
+                if (m_caustic_paths_only) return;
+            }
             if (bounces == m_max_bounces) return;
 
             // A photon carries power: the BSDF in importance mode is the adjoint (no 1/eta^2
@@ -112,6 +121,7 @@ private:
     const Scene& m_scene;
     int m_max_bounces;
     PhotonEmitter m_emitter;
+    bool m_caustic_paths_only;
 };
 
 }  // namespace glint

@@ -1,0 +1,168 @@
+// The preview integrator's frame times and convergence, as the viewer would see them: it
+// calls render_pass() in a loop, as the viewer does each frame, and times each pass.
+//   glint_bench_preview SCENE.lua --res WxH [--threads T] [--frames N] [--moves M]
+//                       [--set KEY=NUMBER ...]
+//                       [--snapshots "0.25 1 4" --prefix OUT]
+// Prints the median ms per pass, split into the photon pass and the camera pass, the
+// frames per second that gives, and the median ms of the first pass after a camera move
+// (scene_changed(camera), a cleared film, one pass). With --snapshots, then renders from
+// no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
+// ended within each time t (seconds), for glint_bench_region_error.
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <glint/film/image_io.h>
+#include <glint/integrator/preview.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace glint;
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// CPU time of the whole process (all threads), in seconds: on a machine shared with other
+// work, CPU time per frame divided by the threads is what the frame would take alone.
+double cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+int run(int argc, char** argv) {
+    if (argc < 2)
+        throw Error(
+            "usage: glint_bench_preview SCENE.lua --res WxH [--threads T] "
+            "[--frames N] [--moves M] [--snapshots \"0.25 1 4\" --prefix OUT]");
+    const std::string path = argv[1];
+    int width = 640, height = 480, threads = 0, frames = 30, moves = 5;
+    std::vector<double> snapshots;
+    std::string prefix;
+    std::vector<std::pair<std::string, double>> overrides;
+    for (int i = 2; i < argc; ++i) {
+        const std::string flag = argv[i];
+        if (i + 1 >= argc) throw Error(fmt::format("{} needs a value", flag));
+        const std::string value = argv[++i];
+        if (flag == "--res") {
+            if (std::sscanf(value.c_str(), "%dx%d", &width, &height) != 2 || width < 1 ||
+                height < 1)
+                throw Error(fmt::format("--res: '{}' is not WIDTHxHEIGHT", value));
+        } else if (flag == "--threads") {
+            threads = std::stoi(value);
+        } else if (flag == "--frames") {
+            frames = std::max(1, std::stoi(value));
+        } else if (flag == "--moves") {
+            moves = std::max(0, std::stoi(value));
+        } else if (flag == "--snapshots") {
+            std::istringstream in(value);
+            for (double t; in >> t;) snapshots.push_back(t);
+            std::sort(snapshots.begin(), snapshots.end());
+        } else if (flag == "--set") {
+            const size_t eq = value.find('=');
+            if (eq == std::string::npos)
+                throw Error(fmt::format("--set: '{}' is not KEY=NUMBER", value));
+            overrides.emplace_back(value.substr(0, eq), std::stod(value.substr(eq + 1)));
+        } else if (flag == "--prefix") {
+            prefix = value;
+        } else {
+            throw Error(fmt::format("unknown flag {}", flag));
+        }
+    }
+    if (!snapshots.empty() && prefix.empty()) throw Error("--snapshots needs --prefix");
+
+    const SceneDesc desc = load_scene_file(path);
+    Params table = desc.render ? *desc.render : Params("render", "render settings");
+    table.set("width", static_cast<double>(width), "--res");
+    table.set("height", static_cast<double>(height), "--res");
+    table.set("integrator", std::string("preview"), "bench");
+    for (const auto& [key, number] : overrides) table.set(key, number, "--set");
+    const RenderSettings settings = parse_render_settings(&table);
+    const auto scene = build_scene(desc, settings);
+    const int used_threads = threads > 0 ? threads : tbb::this_task_arena::max_concurrency();
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, used_threads);
+    Progress progress("preview", 1, true);
+
+    auto integrator = make_integrator(settings);
+    auto& preview = dynamic_cast<PreviewIntegrator&>(*integrator);
+    Film film(width, height, false);
+    std::vector<double> photon_ms, camera_ms, total_ms, moved_ms, cpu_ms;
+    for (int pass = 0; pass < frames; ++pass) {
+        const auto start = std::chrono::steady_clock::now();
+        const double cpu_start = cpu_seconds();
+        preview.render_pass(*scene, film, pass, progress);
+        total_ms.push_back(1e3 * seconds_since(start));
+        cpu_ms.push_back(1e3 * (cpu_seconds() - cpu_start) / used_threads);
+        photon_ms.push_back(1e3 * preview.last_pass_timing().photons);
+        camera_ms.push_back(1e3 * preview.last_pass_timing().camera);
+    }
+    // What the viewer does after a camera move: keep the photons, clear the film, one pass.
+    for (int move = 0; move < moves; ++move) {
+        preview.scene_changed(SceneChange::camera);
+        film.clear();
+        const auto start = std::chrono::steady_clock::now();
+        preview.render_pass(*scene, film, 0, progress);
+        moved_ms.push_back(1e3 * seconds_since(start));
+    }
+    const double total = median(total_ms);
+    fmt::print(
+        "{} {}x{} threads {}: {:.1f} fps, {:.1f} ms/frame (photon pass {:.1f} ms, camera "
+        "pass {:.1f} ms, display: measured in the viewer), first pass after a camera "
+        "move {:.1f} ms; CPU time per frame / threads {:.1f} ms; {} photons kept; medians "
+        "of {} passes and {} moves\n",
+        path, width, height, used_threads, 1e3 / total, total, median(photon_ms), median(camera_ms),
+        median(moved_ms), median(cpu_ms), preview.stored_photons(), frames, moves);
+
+    if (!snapshots.empty()) {
+        preview.scene_changed(SceneChange::lights_or_objects);  // from no photons
+        film.clear();
+        Image image = film.resolve();
+        size_t next = 0;
+        int passes = 0;
+        const auto start = std::chrono::steady_clock::now();
+        while (next < snapshots.size()) {
+            preview.render_pass(*scene, film, passes, progress);
+            const double elapsed = seconds_since(start);
+            // The image to keep for a time is the last one finished within it.
+            while (next < snapshots.size() && elapsed > snapshots[next]) {
+                write_image(fmt::format("{}.{}.exr", prefix, snapshots[next]), image, {});
+                fmt::print("  {} s: {} passes\n", snapshots[next], passes);
+                ++next;
+            }
+            ++passes;
+            image = film.resolve();
+        }
+    }
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        return 1;
+    }
+}
