@@ -4,6 +4,7 @@
 #include <glint/integrator/mlt.h>
 #include <glint/integrator/path.h>
 #include <glint/integrator/photon.h>
+#include <glint/integrator/radiosity.h>
 #include <glint/integrator/sppm.h>
 #include <glint/integrator/vcm.h>
 #include <glint/integrator/whitted.h>
@@ -33,6 +34,7 @@ const std::map<std::string, IntegratorCreate>& factories() {
         {"path_light", create_path<DirectLighting::kLightOnly>},
         {"path_bsdf", create_path<DirectLighting::kBsdfOnly>},
         {"photon", PhotonIntegrator::create},
+        {"radiosity", RadiosityIntegrator::create},
         {"sppm", SppmIntegrator::create},
         {"vcm", VcmIntegrator::create},
         {"whitted", WhittedIntegrator::create},
