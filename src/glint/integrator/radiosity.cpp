@@ -61,7 +61,7 @@ RenderStats RadiosityIntegrator::render(const Scene& scene, Film& film, Progress
         m_caustic_radius2 = photon_search_radius2(scene, m_radiosity.caustic);
     }
     RenderStats stats = TileIntegrator::render(scene, film, progress);
-    stats.rays += photon_rays + m_solve_stats.rays;
+    stats.rays += photon_rays;  // the solve's rays are in its note
     size_t leaves = 0;
     for (const RadiosityElement& e : m_mesh.elements) leaves += e.first_child < 0;
     if (m_loaded) {
@@ -70,10 +70,11 @@ RenderStats RadiosityIntegrator::render(const Scene& scene, Film& film, Progress
     } else {
         const RadiositySolveStats& s = m_solve_stats;
         stats.notes.push_back(fmt::format(
-            "radiosity: {} patches, {} elements, {} vertices; {} shots ({:.0f}/s) in {:.2f} s, "
-            "{:.2f} % unshot",
+            "radiosity: {} patches, {} elements, {} vertices; {} shots ({:.0f}/s) and {} rays in "
+            "{:.2f} s, {:.2f} % unshot",
             m_mesh.patches.size(), leaves, m_mesh.vertices.size(), s.shots,
-            s.seconds > 0.0 ? s.shots / s.seconds : 0.0, s.seconds, 100.0 * s.unshot_fraction));
+            s.seconds > 0.0 ? s.shots / s.seconds : 0.0, s.rays, s.seconds,
+            100.0 * s.unshot_fraction));
     }
     if (m_radiosity.hybrid)
         stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));

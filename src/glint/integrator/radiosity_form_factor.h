@@ -22,14 +22,14 @@ struct ShootingTriangle {
 /// diffusely that reaches T (equal, by reciprocity, to what x receives from T per unit of
 /// T's radiosity).
 ///
-/// T is cut into `samples` pieces of area A_T / samples, one point y_k drawn in each stratum
-/// (a stratified uniform point on the triangle, from `rng`), and each piece is taken as a
-/// disc facing x: F = sum_k V(x, y_k) cos_x cos_y dA / (pi r^2 + dA). The disc's exact
-/// form factor stays finite when x is close to y_k, where the point-to-point term
-/// cos cos dA / (pi r^2) would blow up; for small pieces it is that term. V is 1 when
-/// `scene` is null, else whether the segment between the two points (each offset off its
-/// surface) is free. Points behind either surface contribute nothing.
-/// `rays` counts the visibility rays traced.
+/// The unoccluded form factor is exact (the contour integral over T's edges, T clipped to
+/// the half-space in front of x); visibility comes from rays (Wallace et al. 1989): T is cut
+/// into `samples` strata of area dA = A_T / samples, a point y_k drawn in each (from `rng`),
+/// and the result is the exact form factor times the visible fraction of the strata, each
+/// weighted by its disc form factor cos_x cos_y dA / (pi r^2 + dA). Fully visible or fully
+/// hidden triangles are thus exact whatever their size and distance, which the disc sum
+/// alone is not near a shared edge (it misses up to a third there). With `scene` null
+/// nothing occludes. `rays` counts the visibility rays traced.
 double point_to_triangle_form_factor(const Vec3& x, const Vec3& n_x, const ShootingTriangle& t,
                                      int samples, Rng& rng, const Scene* scene, uint64_t& rays);
 

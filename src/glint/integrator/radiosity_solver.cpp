@@ -255,7 +255,7 @@ float radiosity_patch_size(const Scene& scene, const RadiositySettings& settings
     if (settings.patch_size > 0.0f) return settings.patch_size;
     const Bounds3& bounds = scene.stats().bounds;
     const float diagonal = bounds.is_empty() ? 1.0f : glm::length(bounds.extent());
-    return std::max(diagonal, 1e-6f) / 12.0f;
+    return std::max(diagonal, 1e-6f) / 6.0f;
 }
 
 RadiositySolveStats solve_radiosity(const Scene& scene, RadiosityMesh& mesh,

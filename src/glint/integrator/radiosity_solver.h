@@ -16,7 +16,7 @@ class Scene;
 
 /// What the solve reads from glint.render{...} (all optional; see docs/integrators.md).
 struct RadiositySettings {
-    /// Longest patch edge in scene units; 0: 1/12 of the scene's bounding-box diagonal.
+    /// Longest patch edge in scene units; 0: 1/6 of the scene's bounding-box diagonal.
     float patch_size = 0.0f;
     /// Elements split no finer than this edge; 0: 1/8 of the patch size.
     float element_size = 0.0f;
@@ -24,10 +24,10 @@ struct RadiositySettings {
     /// than this fraction of their largest radiosity (in [0, 1]; 1 never splits).
     float subdivide = 0.25f;
     /// Points on the shooting patch per receiving vertex (rays per form factor), >= 1.
-    int shooter_samples = 16;
+    int shooter_samples = 8;
     /// The solve stops when the unshot power is at most this fraction of the power the
     /// lights put into the scene, in [0, 1).
-    float unshot = 0.01f;
+    float unshot = 0.02f;
     /// At most this many patch shots (lights not counted), >= 0.
     int max_shots = 100000;
     /// At most this many elements in all; further splits are skipped.
