@@ -71,10 +71,10 @@ RenderStats RadiosityIntegrator::render(const Scene& scene, Film& film, Progress
         const RadiositySolveStats& s = m_solve_stats;
         stats.notes.push_back(fmt::format(
             "radiosity: {} patches, {} elements, {} vertices; {} shots ({:.0f}/s) and {} rays in "
-            "{:.2f} s, {:.2f} % unshot",
+            "{:.2f} s, {:.2f} % unshot; {:.0f} bytes per element",
             m_mesh.patches.size(), leaves, m_mesh.vertices.size(), s.shots,
             s.seconds > 0.0 ? s.shots / s.seconds : 0.0, s.rays, s.seconds,
-            100.0 * s.unshot_fraction));
+            100.0 * s.unshot_fraction, m_mesh.bytes_per_element()));
     }
     if (m_radiosity.hybrid)
         stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));

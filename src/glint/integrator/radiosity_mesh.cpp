@@ -298,6 +298,16 @@ float RadiosityMesh::longest_edge(uint32_t index) const {
     return std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
 }
 
+double RadiosityMesh::bytes_per_element() const {
+    size_t leaves = 0;
+    for (const RadiosityElement& e : elements) leaves += e.first_child < 0;
+    if (leaves == 0) return 0.0;
+    const double bytes = static_cast<double>(
+        vertices.size() * sizeof(RadiosityVertex) + elements.size() * sizeof(RadiosityElement) +
+        patches.size() * sizeof(RadiosityPatch) + triangles.size() * sizeof(RadiosityTriangle));
+    return bytes / static_cast<double>(leaves);
+}
+
 uint64_t RadiosityMesh::fingerprint() const {
     uint64_t h = hash_combine(patches.size(), vertices.size());
     h = hash_combine(h, triangles.size());

@@ -93,6 +93,10 @@ public:
     /// Longest edge of an element, in world units.
     float longest_edge(uint32_t element) const;
 
+    /// Memory the mesh holds per leaf element (vertices, elements, patches and input
+    /// triangles, as stored; the lookup tables left out), for the solve's summary.
+    double bytes_per_element() const;
+
     /// A hash of what the solve depends on, taken by build(): every patch's corners and
     /// emission and every vertex's reflectance. A saved solution is only valid for a mesh
     /// with the same fingerprint.
