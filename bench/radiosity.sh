@@ -53,7 +53,7 @@ for size in $SIZES; do
         "$SCENE" > "$WORK/radiosity-$size.lua"
     "$GLINT" render "$WORK/radiosity-$size.lua" --res "$RES" --spp "$DISPLAY_SPP" \
         --threads "$THREADS" -o "$WORK/radiosity-$size.exr" > "$WORK/radiosity-$size.log" 2>&1
-    line=$(grep '^radiosity: [0-9]' "$WORK/radiosity-$size.log")
+    line=$(grep ' patches, ' "$WORK/radiosity-$size.log")
     # "radiosity: P patches, E elements, V vertices; S shots (R/s) and N rays in T s, U % unshot; B bytes per element"
     read -r patches elements vertices shots rate solve bytes < <(echo "$line" |
         sed 's/radiosity: \([0-9]*\) patches, \([0-9]*\) elements, \([0-9]*\) vertices; \([0-9]*\) shots (\([0-9]*\)\/s) and [0-9]* rays in \([0-9.]*\) s, [0-9.]* % unshot; \([0-9]*\) bytes per element/\1 \2 \3 \4 \5 \6 \7/')
