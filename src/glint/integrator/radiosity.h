@@ -34,6 +34,10 @@ class RadiosityIntegrator final : public TileIntegrator {
 public:
     RadiosityIntegrator(const RenderSettings& settings,
                         const RadiosityIntegratorSettings& radiosity);
+    /// Reads the settings (RadiosityIntegratorSettings; every key, its type, default and
+    /// meaning are in docs/integrators.md and docs/scene-language.md): the radiosity_* keys,
+    /// hybrid, radiosity_cache and the caustic map's keys; `spp`, `seed` and `max_depth`
+    /// from the common settings.
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
 
     /// Meshes and solves (or loads the cache), builds the hybrid's caustic map, then renders.

@@ -50,7 +50,7 @@ double point_to_triangle_form_factor(const Vec3& x, const Vec3& n_x, const Shoot
                                      int samples, Rng& rng, const Scene* scene, uint64_t& rays) {
     // x behind the shooting side sees none of it (the triangle is planar).
     if (!(glm::dot(t.n, x - t.a) > 0.0f)) {
-        for (int k = 0; k < samples; ++k) rng.next_float(), rng.next_float();
+        for (int k = 0; k < 2 * samples; ++k) rng.next_float();
         return 0.0;
     }
     const double exact =
