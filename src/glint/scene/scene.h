@@ -107,10 +107,11 @@ public:
         return m_environment ? m_environment->le_escaped(direction) : m_background;
     }
     const SceneStats& stats() const { return m_stats; }
-    /// Every placed shape of the world, root shapes first (in world geometry id order),
-    /// then the shapes of each group instance; built on each call.
+    /// Every placed shape of the world, in world geometry id order (an instance's shapes in
+    /// their local id order); built on each call.
     std::vector<ScenePlacement> placements() const;
-    // The raw ray-query structure, for benchmarks that measure Embree alone.
+    // The raw ray-query structure, for benchmarks that measure Embree alone and for
+    // visibility queries that need no SurfaceInteraction (radiosity's form factors).
     const Accel& accel() const { return m_accel; }
 
 private:
