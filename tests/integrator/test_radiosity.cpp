@@ -293,8 +293,8 @@ std::string cornell_path(int seed, int spp) {
 // and its means within 1.5 %. The display takes 256 samples per pixel, so that the edges of
 // the light and of the box are resolved as the reference resolves them.
 TEST(Radiosity, CornellBoxConvergesToPathAsTheMeshIsRefined) {
-    const Image reference = render_lua(cornell_path(1, 1024));
-    const Image other = render_lua(cornell_path(2, 1024));
+    const Image reference = render_lua(cornell_path(1, 512));
+    const Image other = render_lua(cornell_path(2, 512));
     const double noise = compare_images(other, reference).rel_mse / 2.0;
     std::vector<double> errors, mean_errors;
     for (const float patch_size : {400.0f, 200.0f}) {
