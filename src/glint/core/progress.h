@@ -32,6 +32,8 @@ public:
     /// Prints the final line with elapsed time and mean throughput. Idempotent.
     void finish();
 
+    /// Whether this job prints nothing (a job started inside it may follow suit).
+    bool quiet() const { return m_quiet; }
     uint64_t done() const { return m_done.load(std::memory_order_relaxed); }
     double elapsed_seconds() const;
 

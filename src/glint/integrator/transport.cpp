@@ -19,8 +19,8 @@ SpecularChain follow_specular_chain(const Scene& scene, Ray ray, Spectrum beta, 
     SpecularChain chain;
     for (int segment = 0; segment < max_segments; ++segment) {
         ++counter.rays;
-        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
-        if (!hit) {
+        std::optional<SurfaceInteraction> hit(std::in_place);
+        if (!scene.intersect(ray, *hit, chain.record)) {
             if (aov && segment == 0)
                 *aov = AovSample{scene.escaped_radiance(ray.direction), Vec3(0.0f), kInfinity};
             chain.escaped = true;

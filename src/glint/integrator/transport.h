@@ -190,6 +190,7 @@ inline void continue_ray(Ray& ray, SurfaceInteraction& si, const Scattering& sca
 /// Where a ray that follows specular bounces (mirrors, smooth glass) ends.
 struct SpecularChain {
     std::optional<SurfaceInteraction> hit;  ///< the first surface that is not purely specular
+    HitRecord record;                       ///< Embree's record of `hit` (valid when hit is set)
     const Bsdf* bsdf = nullptr;             ///< its BSDF (null when `hit` is empty)
     Spectrum beta{1.0f};     ///< throughput from the chain's start to `hit` (or to the escape)
     Spectrum emitted{0.0f};  ///< emission seen at the chain's surfaces, `hit`'s included, times

@@ -20,4 +20,24 @@ void Scene::fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntr
     si.area_light = entry.lights[hit.local_geometry];
 }
 
+std::vector<ScenePlacement> Scene::placements() const {
+    std::vector<ScenePlacement> result;
+    for (unsigned id = 0; id < m_world.size(); ++id) {
+        const WorldEntry& entry = m_world[id];
+        if (entry.group < 0) {
+            if (!entry.geometry.shape) continue;
+            result.push_back({entry.geometry.shape, entry.geometry.materials, Transform(),
+                              entry.light, id, RTC_INVALID_GEOMETRY_ID});
+            continue;
+        }
+        const std::vector<Geometry>& local = m_group_geometry[entry.group];
+        for (unsigned l = 0; l < local.size(); ++l) {
+            if (!local[l].shape) continue;
+            const Light* light = l < entry.lights.size() ? entry.lights[l] : nullptr;
+            result.push_back({local[l].shape, local[l].materials, entry.to_world, light, id, l});
+        }
+    }
+    return result;
+}
+
 }  // namespace glint

@@ -13,6 +13,18 @@
 
 namespace glint {
 
+/// A shape as the world places it, for integrators that work on the surfaces themselves
+/// (radiosity meshes them): its geometry ids in the Embree world (what a HitRecord names),
+/// where it stands and what covers it.
+struct ScenePlacement {
+    const Shape* shape = nullptr;
+    std::vector<const Material*> materials;             ///< one per part of the shape
+    Transform to_world;                                 ///< shape space to world space
+    const Light* light = nullptr;                       ///< its area light, when it emits
+    unsigned top_geometry = 0;                          ///< HitRecord::top_geometry of its hits
+    unsigned local_geometry = RTC_INVALID_GEOMETRY_ID;  ///< HitRecord::local_geometry
+};
+
 struct SceneStats {
     size_t shapes = 0;     // shape placements in the world
     size_t triangles = 0;  // triangles in the world, counting every placement
@@ -49,6 +61,13 @@ public:
         for_each_lane(hit_lanes,
                       [&](int lane) { fill_interaction(*rays[lane], hits[lane], *si[lane]); });
         return hit_lanes;
+    }
+    // intersect(), also handing back Embree's record of the hit (which geometry, which
+    // triangle, where on it): for integrators that keep data per primitive (radiosity).
+    bool intersect(const Ray& ray, SurfaceInteraction& si, HitRecord& hit) const {
+        if (!m_accel.intersect(ray, hit)) return false;
+        fill_interaction(ray, hit, si);
+        return true;
     }
     // The same, as a value: a fresh SurfaceInteraction (~200 bytes set up) per call.
     std::optional<SurfaceInteraction> intersect(const Ray& ray) const {
@@ -91,7 +110,11 @@ public:
         return m_environment ? m_environment->le_escaped(direction) : m_background;
     }
     const SceneStats& stats() const { return m_stats; }
-    // The raw ray-query structure, for benchmarks that measure Embree alone.
+    /// Every placed shape of the world, in world geometry id order (an instance's shapes in
+    /// their local id order); built on each call.
+    std::vector<ScenePlacement> placements() const;
+    // The raw ray-query structure, for benchmarks that measure Embree alone and for
+    // visibility queries that need no SurfaceInteraction (radiosity's form factors).
     const Accel& accel() const { return m_accel; }
 
 private:
