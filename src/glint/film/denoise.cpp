@@ -1,0 +1,280 @@
+#include <glint/film/denoise.h>
+
+#include <glint/core/error.h>
+#include <glint/film/film.h>
+#include <glint/math/vector.h>
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace glint {
+
+namespace {
+
+// Albedo below this is treated as this when demodulating: dividing by a near-zero albedo
+// (a black surface, the sky, which has no features) would blow the noise up, while any
+// positive divisor that is multiplied back after filtering leaves an unfiltered pixel as
+// it was.
+constexpr float kMinAlbedo = 0.02f;
+
+float luminance(const Vec3& c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
+
+// The channels the denoiser reads from one image.
+struct Channels {
+    int rgb[3], albedo[3], normal[3], depth;
+
+    explicit Channels(const Image& image, const char* which) {
+        const char* names[10] = {"R",        "G",        "B",        "albedo.R", "albedo.G",
+                                 "albedo.B", "normal.X", "normal.Y", "normal.Z", "depth.Z"};
+        int found[10];
+        for (int k = 0; k < 10; ++k) {
+            found[k] = image.channel_index(names[k]);
+            if (found[k] < 0) {
+                throw Error(
+                    fmt::format("denoise: the {} image has no channel {} (the denoiser "
+                                "needs radiance and the albedo, normal and depth AOVs)",
+                                which, names[k]));
+            }
+        }
+        for (int c = 0; c < 3; ++c) {
+            rgb[c] = found[c];
+            albedo[c] = found[3 + c];
+            normal[c] = found[6 + c];
+        }
+        depth = found[9];
+    }
+    Vec3 read(const Image& image, int x, int y, const int (&channels)[3]) const {
+        return Vec3(image.at(x, y, channels[0]), image.at(x, y, channels[1]),
+                    image.at(x, y, channels[2]));
+    }
+};
+
+Vec3 demodulation_divisor(const Vec3& albedo) {
+    return glm::max(albedo, Vec3(kMinAlbedo));
+}
+
+// Row-parallel loop over an image's rows; every row is written by one task only.
+template <typename Body>
+void for_each_row(int height, Body&& body) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+        for (int y = rows.begin(); y < rows.end(); ++y) body(y);
+    });
+}
+
+// Mean of `values` over the (2 radius + 1)^2 box around each pixel, within the image.
+template <typename T>
+std::vector<T> box_mean(const std::vector<T>& values, int width, int height, int radius) {
+    std::vector<T> rows(values.size()), result(values.size());
+    for_each_row(height, [&](int y) {
+        for (int x = 0; x < width; ++x) {
+            T sum{};
+            const int x0 = std::max(0, x - radius), x1 = std::min(width - 1, x + radius);
+            for (int sx = x0; sx <= x1; ++sx) sum += values[static_cast<size_t>(y) * width + sx];
+            rows[static_cast<size_t>(y) * width + x] = sum / static_cast<float>(x1 - x0 + 1);
+        }
+    });
+    for_each_row(height, [&](int y) {
+        const int y0 = std::max(0, y - radius), y1 = std::min(height - 1, y + radius);
+        for (int x = 0; x < width; ++x) {
+            T sum{};
+            for (int sy = y0; sy <= y1; ++sy) sum += rows[static_cast<size_t>(sy) * width + x];
+            result[static_cast<size_t>(y) * width + x] = sum / static_cast<float>(y1 - y0 + 1);
+        }
+    });
+    return result;
+}
+
+// A half pixel brighter (in luminance) than all 16 neighbours of it in both halves is
+// scaled down to the brightest of them. A legitimate bright pixel has bright neighbours
+// or a bright twin in the other half's neighbourhood; an isolated one is a rare path that
+// 8 or 16 samples cannot average out, and would be smeared over the whole search window.
+std::vector<Vec3> clamp_fireflies(const std::vector<Vec3>& own, const std::vector<Vec3>& other,
+                                  int width, int height) {
+    std::vector<Vec3> result(own.size());
+    for_each_row(height, [&](int y) {
+        for (int x = 0; x < width; ++x) {
+            const size_t i = static_cast<size_t>(y) * width + x;
+            float brightest = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= width || ny >= height)
+                        continue;
+                    const size_t j = static_cast<size_t>(ny) * width + nx;
+                    brightest = std::max({brightest, luminance(own[j]), luminance(other[j])});
+                }
+            }
+            const float l = luminance(own[i]);
+            result[i] = l > brightest ? own[i] * (brightest / l) : own[i];
+        }
+    });
+    return result;
+}
+
+}  // namespace
+
+Image denoise(const Image& full, const Image& half_a, const Image& half_b,
+              const DenoiseSettings& settings) {
+    if (full.width != half_a.width || full.height != half_a.height || full.width != half_b.width ||
+        full.height != half_b.height) {
+        throw Error(fmt::format("denoise: the halves ({}x{}, {}x{}) differ from the image ({}x{})",
+                                half_a.width, half_a.height, half_b.width, half_b.height,
+                                full.width, full.height));
+    }
+    if (settings.radius < 0 || settings.radius > 32 || settings.patch_radius < 0 ||
+        settings.patch_radius > 8) {
+        throw Error("denoise: radius must be in [0, 32] and patch_radius in [0, 8]");
+    }
+    if (!(settings.color_strength > 0.0f) || !(settings.albedo_sigma > 0.0f) ||
+        !(settings.normal_sigma > 0.0f) || !(settings.depth_sigma > 0.0f)) {
+        throw Error("denoise: strengths and sigmas must be positive");
+    }
+    const Channels cf(full, "full"), ca(half_a, "first half"), cb(half_b, "second half");
+    const int w = full.width, h = full.height;
+    const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
+
+    // Demodulated halves, each by its own albedo (its samples saw that albedo); the
+    // features of the whole pixel, and their variance from the halves' disagreement:
+    // the variance of the mean of two halves is (a - b)^2 / 4.
+    std::vector<Vec3> a(n), b(n), albedo(n), normal(n), divisor(n);
+    std::vector<float> depth(n), albedo_var(n), normal_var(n), depth_var(n);
+    for_each_row(h, [&](int y) {
+        for (int x = 0; x < w; ++x) {
+            const size_t i = static_cast<size_t>(y) * w + x;
+            const Vec3 albedo_a = ca.read(half_a, x, y, ca.albedo),
+                       albedo_b = cb.read(half_b, x, y, cb.albedo);
+            a[i] = ca.read(half_a, x, y, ca.rgb) / demodulation_divisor(albedo_a);
+            b[i] = cb.read(half_b, x, y, cb.rgb) / demodulation_divisor(albedo_b);
+            albedo[i] = cf.read(full, x, y, cf.albedo);
+            divisor[i] = demodulation_divisor(albedo[i]);
+            normal[i] = cf.read(full, x, y, cf.normal);
+            depth[i] = full.at(x, y, cf.depth);
+            const Vec3 da = albedo_a - albedo_b;
+            const Vec3 dn = ca.read(half_a, x, y, ca.normal) - cb.read(half_b, x, y, cb.normal);
+            const float dz = half_a.at(x, y, ca.depth) - half_b.at(x, y, cb.depth);
+            const float scale = std::max(std::abs(depth[i]), 1e-6f);
+            albedo_var[i] = 0.25f * glm::dot(da, da);
+            normal_var[i] = 0.25f * glm::dot(dn, dn);
+            depth_var[i] = 0.25f * (dz / scale) * (dz / scale);
+        }
+    });
+    if (settings.clamp_fireflies) {
+        std::vector<Vec3> clamped_a = clamp_fireflies(a, b, w, h);
+        b = clamp_fireflies(b, a, w, h);
+        a = std::move(clamped_a);
+    }
+    // The variance of one half, per channel: var(a - b) = 2 var(half). One pixel's estimate
+    // has a single degree of freedom, so it is averaged over a 5 x 5 box.
+    std::vector<Vec3> variance(n);
+    for (size_t i = 0; i < n; ++i) variance[i] = 0.5f * (a[i] - b[i]) * (a[i] - b[i]);
+    variance = box_mean(variance, w, h, 2);
+    albedo_var = box_mean(albedo_var, w, h, 1);
+    normal_var = box_mean(normal_var, w, h, 1);
+    depth_var = box_mean(depth_var, w, h, 1);
+
+    const float k2 = settings.color_strength * settings.color_strength;
+    const float albedo_s2 = settings.albedo_sigma * settings.albedo_sigma;
+    const float normal_s2 = settings.normal_sigma * settings.normal_sigma;
+    const float depth_s2 = settings.depth_sigma * settings.depth_sigma;
+
+    // Non-local means, one neighbour offset at a time: for offset d, term(s) is the colour
+    // distance between pixels s and s + d, and the patch distance between p and p + d is
+    // the mean of term over p's patch (the box-filter formulation of NL-means). Every pixel
+    // accumulates its neighbours in the same order of offsets, whatever the threads do.
+    std::vector<Vec3> sum_a(n, Vec3(0.0f)), sum_b(n, Vec3(0.0f));
+    std::vector<float> weight_a(n, 0.0f), weight_b(n, 0.0f);
+    std::vector<float> term_a(n), term_b(n), valid(n);
+    const int r = settings.radius;
+    for (int dy = -r; dy <= r; ++dy) {
+        for (int dx = -r; dx <= r; ++dx) {
+            // Distances for filtering a come from b and the other way round.
+            for_each_row(h, [&](int y) {
+                for (int x = 0; x < w; ++x) {
+                    const size_t i = static_cast<size_t>(y) * w + x;
+                    const int qx = x + dx, qy = y + dy;
+                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) {
+                        term_a[i] = term_b[i] = valid[i] = 0.0f;
+                        continue;
+                    }
+                    const size_t j = static_cast<size_t>(qy) * w + qx;
+                    float ta = 0.0f, tb = 0.0f;
+                    for (int c = 0; c < 3; ++c) {
+                        const float vp = variance[i][c], vq = variance[j][c];
+                        // Noise alone makes E[(u_p - u_q)^2] exceed the true squared
+                        // difference by vp + vq; subtracting vp + min(vp, vq) removes that
+                        // without cancelling real differences at a noisy pixel's edge.
+                        const float cancel = vp + std::min(vp, vq);
+                        const float norm = 1e-10f + k2 * (vp + vq);
+                        const float db = b[i][c] - b[j][c], da = a[i][c] - a[j][c];
+                        ta += (db * db - cancel) / norm;
+                        tb += (da * da - cancel) / norm;
+                    }
+                    term_a[i] = ta / 3.0f;
+                    term_b[i] = tb / 3.0f;
+                    valid[i] = 1.0f;
+                }
+            });
+            const std::vector<float> patch_a = box_mean(term_a, w, h, settings.patch_radius);
+            const std::vector<float> patch_b = box_mean(term_b, w, h, settings.patch_radius);
+            const std::vector<float> patch_valid = box_mean(valid, w, h, settings.patch_radius);
+            for_each_row(h, [&](int y) {
+                for (int x = 0; x < w; ++x) {
+                    const size_t i = static_cast<size_t>(y) * w + x;
+                    if (valid[i] == 0.0f) continue;
+                    const size_t j = static_cast<size_t>(y + dy) * w + (x + dx);
+                    // Patch means over the pairs that lie inside the image.
+                    const float inv = 1.0f / patch_valid[i];
+                    const float ca_w = std::exp(-std::max(0.0f, patch_a[i] * inv));
+                    const float cb_w = std::exp(-std::max(0.0f, patch_b[i] * inv));
+                    // Features: a squared difference beyond what their own noise explains,
+                    // in units of sigma^2 widened by that noise.
+                    const Vec3 dalb = albedo[i] - albedo[j];
+                    const Vec3 dnor = normal[i] - normal[j];
+                    const float zscale = std::max(std::abs(depth[i]), 1e-6f);
+                    const float dz = (depth[i] - depth[j]) / zscale;
+                    auto feature = [](float d2, float vp, float vq, float s2) {
+                        return std::max(0.0f, d2 - vp - std::min(vp, vq)) / (s2 + vp + vq);
+                    };
+                    const float phi =
+                        feature(glm::dot(dalb, dalb), albedo_var[i], albedo_var[j], albedo_s2) +
+                        feature(glm::dot(dnor, dnor), normal_var[i], normal_var[j], normal_s2) +
+                        feature(dz * dz, depth_var[i], depth_var[j], depth_s2);
+                    const float fw = std::exp(-phi);
+                    const float wa = ca_w * fw, wb = cb_w * fw;
+                    sum_a[i] += wa * a[j];
+                    weight_a[i] += wa;
+                    sum_b[i] += wb * b[j];
+                    weight_b[i] += wb;
+                }
+            });
+        }
+    }
+
+    Image result = make_image(w, h, {"R", "G", "B"});
+    for_each_row(h, [&](int y) {
+        for (int x = 0; x < w; ++x) {
+            const size_t i = static_cast<size_t>(y) * w + x;
+            // The centre pixel always has weight 1, so the sums are never empty.
+            const Vec3 filtered =
+                0.5f * (sum_a[i] / weight_a[i] + sum_b[i] / weight_b[i]) * divisor[i];
+            for (int c = 0; c < 3; ++c) result.at(x, y, c) = filtered[c];
+        }
+    });
+    return result;
+}
+
+Image denoise(const Film& film, const DenoiseSettings& settings) {
+    if (!film.has_halves() || !film.has_aovs())
+        throw Error("denoise: the film must keep halves and AOVs");
+    return denoise(film.resolve(), film.resolve_half(0), film.resolve_half(1), settings);
+}
+
+}  // namespace glint
