@@ -12,9 +12,10 @@
 //  - radiance is divided by the surface albedo ("demodulation"), so that texture detail
 //    is never averaged away: the filter smooths illumination, and the albedo is
 //    multiplied back afterwards;
-//  - fireflies are clamped: a half's pixel brighter than every one of its 16 neighbours
-//    in the two halves (3 x 3 windows, the pixel itself left out) is scaled down to the
-//    brightest of them.
+//  - fireflies are clamped: a half's pixel more than 1.5 times as bright as every one of
+//    its 16 neighbours in the two halves (3 x 3 windows, the pixel itself left out) is
+//    scaled down to the brightest of them, and one more than 1.5 times as bright as the
+//    other half's 3 x 3 window (its own pixel included) down to 1.5 times that.
 // The weight of neighbour q for pixel p is the product of a colour weight (the patch
 // distance of non-local means, with each pixel's variance subtracted, so that noise alone
 // does not make two patches look different) and one weight per feature (albedo, normal,
@@ -31,9 +32,10 @@ struct DenoiseSettings {
     int radius = 7;                ///< search window: (2 radius + 1)^2 neighbours, pixels
     int patch_radius = 2;          ///< colour patches of (2 patch_radius + 1)^2 pixels
     float color_strength = 0.45f;  ///< k of the colour weight: larger smooths more
-    float albedo_sigma = 0.1f;     ///< albedo difference (per channel) that halves a weight
-    float normal_sigma = 0.3f;     ///< shading normal difference (length) ditto
-    float depth_sigma = 0.1f;      ///< depth difference relative to the pixel's depth ditto
+    /// Feature differences that weigh a neighbour by 1/e (beyond the features' own noise):
+    float albedo_sigma = 0.05f;  ///< albedo, length of the RGB difference
+    float normal_sigma = 0.1f;   ///< shading normal, length of the difference
+    float depth_sigma = 0.05f;   ///< depth, relative to the pixel's depth
     bool clamp_fireflies = true;
 };
 
