@@ -293,11 +293,36 @@ TEST(Denoise, BitIdenticalForAnyThreadCount) {
         2);
     EXPECT_EQ(one.a.pixels, two.a.pixels);
     EXPECT_EQ(one.b.pixels, two.b.pixels);
+    // The denoiser on an image big enough for TBB to share its rows among threads: noisy
+    // halves (a fixed pseudo-random sequence) over a few features.
+    const int w = 160, h = 120;
+    Image halves[2];
+    uint32_t state = 12345;
+    auto next = [&state] {
+        state = state * 1664525u + 1013904223u;
+        return static_cast<float>(state >> 8) / 16777216.0f;
+    };
+    for (Image& half : halves) {
+        half = make_image(w, h, one.full.channels);
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                for (int c = 0; c < 3; ++c) {
+                    half.at(x, y, c) = next() * (x < w / 2 ? 1.0f : 4.0f);
+                    half.at(x, y, 3 + c) = (x / 8 + y / 8) % 2 ? 0.7f : 0.2f;
+                }
+                half.at(x, y, y < h / 2 ? 7 : 8) = 1.0f;
+                half.at(x, y, 9) = 1.0f + 0.01f * x;
+            }
+        }
+    }
+    Image full = halves[0];
+    for (size_t i = 0; i < full.pixels.size(); ++i)
+        full.pixels[i] = 0.5f * (halves[0].pixels[i] + halves[1].pixels[i]);
     Image results[3];
-    const int threads[3] = {1, 2, 3};
+    const int threads[3] = {1, 2, 4};
     for (int k = 0; k < 3; ++k) {
         tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads[k]);
-        results[k] = denoise(one.full, one.a, one.b);
+        results[k] = denoise(full, halves[0], halves[1]);
     }
     EXPECT_EQ(results[0].pixels, results[1].pixels);
     EXPECT_EQ(results[0].pixels, results[2].pixels);
