@@ -209,76 +209,114 @@ Image denoise(const Image& full, const Image& half_a, const Image& half_b,
 
     // Non-local means, one neighbour offset at a time: for offset d, term(s) is the colour
     // distance between pixels s and s + d, and the patch distance between p and p + d is
-    // the mean of term over p's patch (the box-filter formulation of NL-means). Every pixel
+    // the mean of term over p's patch (the box-filter formulation of NL-means). Bands of
+    // rows run in parallel, each with the patch's rows above and below it; every pixel
     // accumulates its neighbours in the same order of offsets, whatever the threads do.
     std::vector<Vec3> sum_a(n, Vec3(0.0f)), sum_b(n, Vec3(0.0f));
     std::vector<float> weight_a(n, 0.0f), weight_b(n, 0.0f);
-    std::vector<float> term_a(n), term_b(n), valid(n);
-    const int r = settings.radius;
-    for (int dy = -r; dy <= r; ++dy) {
-        for (int dx = -r; dx <= r; ++dx) {
-            // Distances for filtering a come from b and the other way round.
-            for_each_row(h, [&](int y) {
-                for (int x = 0; x < w; ++x) {
-                    const size_t i = static_cast<size_t>(y) * w + x;
-                    const int qx = x + dx, qy = y + dy;
-                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) {
-                        term_a[i] = term_b[i] = valid[i] = 0.0f;
-                        continue;
+    const int r = settings.radius, pr = settings.patch_radius;
+    constexpr int kBand = 8;
+    auto filter_band = [&](int y0, int y1) {
+        // Term rows [t0, t1): the band and the patch's reach beyond it, within the image.
+        const int t0 = std::max(0, y0 - pr), t1 = std::min(h, y1 + pr);
+        const size_t rows = static_cast<size_t>(t1 - t0) * w;
+        std::vector<float> term_a(rows), term_b(rows), valid(rows);
+        std::vector<float> row_a(rows), row_b(rows), row_valid(rows);
+        for (int dy = -r; dy <= r; ++dy) {
+            for (int dx = -r; dx <= r; ++dx) {
+                // Distances for filtering a come from b and the other way round.
+                for (int y = t0; y < t1; ++y) {
+                    for (int x = 0; x < w; ++x) {
+                        const size_t i = static_cast<size_t>(y) * w + x;
+                        const size_t k = static_cast<size_t>(y - t0) * w + x;
+                        const int qx = x + dx, qy = y + dy;
+                        if (qx < 0 || qy < 0 || qx >= w || qy >= h) {
+                            term_a[k] = term_b[k] = valid[k] = 0.0f;
+                            continue;
+                        }
+                        const size_t j = static_cast<size_t>(qy) * w + qx;
+                        float ta = 0.0f, tb = 0.0f;
+                        for (int c = 0; c < 3; ++c) {
+                            const float vp = variance[i][c], vq = variance[j][c];
+                            // Noise alone makes E[(u_p - u_q)^2] exceed the true squared
+                            // difference by vp + vq; subtracting vp + min(vp, vq) removes
+                            // that without cancelling real differences at a noisy pixel's
+                            // edge.
+                            const float cancel = vp + std::min(vp, vq);
+                            const float norm = 1e-10f + k2 * (vp + vq);
+                            const float db = b[i][c] - b[j][c], da = a[i][c] - a[j][c];
+                            ta += (db * db - cancel) / norm;
+                            tb += (da * da - cancel) / norm;
+                        }
+                        term_a[k] = ta / 3.0f;
+                        term_b[k] = tb / 3.0f;
+                        valid[k] = 1.0f;
                     }
-                    const size_t j = static_cast<size_t>(qy) * w + qx;
-                    float ta = 0.0f, tb = 0.0f;
-                    for (int c = 0; c < 3; ++c) {
-                        const float vp = variance[i][c], vq = variance[j][c];
-                        // Noise alone makes E[(u_p - u_q)^2] exceed the true squared
-                        // difference by vp + vq; subtracting vp + min(vp, vq) removes that
-                        // without cancelling real differences at a noisy pixel's edge.
-                        const float cancel = vp + std::min(vp, vq);
-                        const float norm = 1e-10f + k2 * (vp + vq);
-                        const float db = b[i][c] - b[j][c], da = a[i][c] - a[j][c];
-                        ta += (db * db - cancel) / norm;
-                        tb += (da * da - cancel) / norm;
+                }
+                // The patch means, as box_mean(): along rows, then along columns.
+                for (int y = t0; y < t1; ++y) {
+                    const size_t row = static_cast<size_t>(y - t0) * w;
+                    for (int x = 0; x < w; ++x) {
+                        const int x0 = std::max(0, x - pr), x1 = std::min(w - 1, x + pr);
+                        float sa = 0.0f, sb = 0.0f, sv = 0.0f;
+                        for (int sx = x0; sx <= x1; ++sx) {
+                            sa += term_a[row + sx];
+                            sb += term_b[row + sx];
+                            sv += valid[row + sx];
+                        }
+                        const float count = static_cast<float>(x1 - x0 + 1);
+                        row_a[row + x] = sa / count;
+                        row_b[row + x] = sb / count;
+                        row_valid[row + x] = sv / count;
                     }
-                    term_a[i] = ta / 3.0f;
-                    term_b[i] = tb / 3.0f;
-                    valid[i] = 1.0f;
                 }
-            });
-            const std::vector<float> patch_a = box_mean(term_a, w, h, settings.patch_radius);
-            const std::vector<float> patch_b = box_mean(term_b, w, h, settings.patch_radius);
-            const std::vector<float> patch_valid = box_mean(valid, w, h, settings.patch_radius);
-            for_each_row(h, [&](int y) {
-                for (int x = 0; x < w; ++x) {
-                    const size_t i = static_cast<size_t>(y) * w + x;
-                    if (valid[i] == 0.0f) continue;
-                    const size_t j = static_cast<size_t>(y + dy) * w + (x + dx);
-                    // Patch means over the pairs that lie inside the image.
-                    const float inv = 1.0f / patch_valid[i];
-                    const float ca_w = std::exp(-std::max(0.0f, patch_a[i] * inv));
-                    const float cb_w = std::exp(-std::max(0.0f, patch_b[i] * inv));
-                    // Features: a squared difference beyond what their own noise explains,
-                    // in units of sigma^2 widened by that noise.
-                    const Vec3 dalb = albedo[i] - albedo[j];
-                    const Vec3 dnor = normal[i] - normal[j];
-                    const float zscale = std::max(std::abs(depth[i]), 1e-6f);
-                    const float dz = (depth[i] - depth[j]) / zscale;
-                    auto feature = [](float d2, float vp, float vq, float s2) {
-                        return std::max(0.0f, d2 - vp - std::min(vp, vq)) / (s2 + vp + vq);
-                    };
-                    const float phi =
-                        feature(glm::dot(dalb, dalb), albedo_var[i], albedo_var[j], albedo_s2) +
-                        feature(glm::dot(dnor, dnor), normal_var[i], normal_var[j], normal_s2) +
-                        feature(dz * dz, depth_var[i], depth_var[j], depth_s2);
-                    const float fw = std::exp(-phi);
-                    const float wa = ca_w * fw, wb = cb_w * fw;
-                    sum_a[i] += wa * a[j];
-                    weight_a[i] += wa;
-                    sum_b[i] += wb * b[j];
-                    weight_b[i] += wb;
+                for (int y = y0; y < y1; ++y) {
+                    const int s0 = std::max(0, y - pr), s1 = std::min(h - 1, y + pr);
+                    const float count = static_cast<float>(s1 - s0 + 1);
+                    for (int x = 0; x < w; ++x) {
+                        const size_t i = static_cast<size_t>(y) * w + x;
+                        if (valid[static_cast<size_t>(y - t0) * w + x] == 0.0f) continue;
+                        float pa = 0.0f, pb = 0.0f, pv = 0.0f;
+                        for (int sy = s0; sy <= s1; ++sy) {
+                            const size_t k = static_cast<size_t>(sy - t0) * w + x;
+                            pa += row_a[k];
+                            pb += row_b[k];
+                            pv += row_valid[k];
+                        }
+                        const size_t j = static_cast<size_t>(y + dy) * w + (x + dx);
+                        // Patch means over the pairs that lie inside the image.
+                        const float inv = 1.0f / (pv / count);
+                        const float ca_w = std::exp(-std::max(0.0f, pa / count * inv));
+                        const float cb_w = std::exp(-std::max(0.0f, pb / count * inv));
+                        // Features: a squared difference beyond what their own noise
+                        // explains, in units of sigma^2 widened by that noise.
+                        const Vec3 dalb = albedo[i] - albedo[j];
+                        const Vec3 dnor = normal[i] - normal[j];
+                        const float zscale = std::max(std::abs(depth[i]), 1e-6f);
+                        const float dz = (depth[i] - depth[j]) / zscale;
+                        auto feature = [](float d2, float vp, float vq, float s2) {
+                            return std::max(0.0f, d2 - vp - std::min(vp, vq)) / (s2 + vp + vq);
+                        };
+                        const float phi =
+                            feature(glm::dot(dalb, dalb), albedo_var[i], albedo_var[j], albedo_s2) +
+                            feature(glm::dot(dnor, dnor), normal_var[i], normal_var[j], normal_s2) +
+                            feature(dz * dz, depth_var[i], depth_var[j], depth_s2);
+                        const float fw = std::exp(-phi);
+                        const float wa = ca_w * fw, wb = cb_w * fw;
+                        sum_a[i] += wa * a[j];
+                        weight_a[i] += wa;
+                        sum_b[i] += wb * b[j];
+                        weight_b[i] += wb;
+                    }
                 }
-            });
+            }
         }
-    }
+    };
+    const int bands = (h + kBand - 1) / kBand;
+    tbb::parallel_for(tbb::blocked_range<int>(0, bands), [&](const tbb::blocked_range<int>& range) {
+        for (int band = range.begin(); band < range.end(); ++band)
+            filter_band(band * kBand, std::min(h, (band + 1) * kBand));
+    });
 
     Image result = make_image(w, h, {"R", "G", "B"});
     for_each_row(h, [&](int y) {
