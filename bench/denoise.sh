@@ -24,7 +24,7 @@ ninja -C "$BUILD_DIR" glint_cli >/dev/null
 glint=$(realpath "$BUILD_DIR/glint")
 
 printf "%-12s %-8s %5s %9s %10s %10s %12s %12s %7s\n" scene res spp render_s denoise_s "s/Mpixel" \
-    noisy_rmse denoised_rmse gain
+    noisy_relmse denoised_relmse gain
 for entry in $SCENES; do
     scene=${entry%%:*}
     res=${entry#*:}
