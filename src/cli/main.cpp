@@ -3,6 +3,7 @@
 #include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/core/strict_number.h>
+#include <glint/film/denoise.h>
 #include <glint/film/image_io.h>
 #include <glint/film/output_batch.h>
 #include <glint/geometry/accel.h>
@@ -17,6 +18,7 @@
 #include <CLI/CLI.hpp>
 
 #include <atomic>
+#include <chrono>
 #include <climits>
 #include <csignal>
 #include <ctime>
@@ -88,6 +90,8 @@ struct RenderOptions {
     std::string crop;
     std::string integrator;
     std::string exposure;
+    std::string tonemap;
+    bool denoise = false;
     std::string adaptive;
     std::string photons;
     bool no_mipmap = false;
@@ -176,7 +180,9 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
             bad_flag("--exposure", options.exposure, "a number of stops from -100 to 100");
         table.set("exposure", *stops, "--exposure");
     }
+    if (!options.tonemap.empty()) table.set("tonemap", options.tonemap, "--tonemap");
     if (options.aovs) table.set("aovs", true, "--aovs");
+    if (options.denoise) table.set("denoise", true, "--denoise");
     if (options.no_mipmap) table.set("mipmapping", false, "--no-mipmap");
     if (const auto every = int_flag("--intermediate", options.intermediate, 0, INT_MAX))
         table.set("intermediate", static_cast<double>(*every), "--intermediate");
@@ -247,6 +253,35 @@ std::filesystem::path debug_image_path(const RenderSettings& settings, const std
     return path;
 }
 
+// The denoised image of output NAME.EXT goes beside it as NAME.denoised.EXT.
+std::string denoised_path(const std::string& output) {
+    std::filesystem::path path = output;
+    const std::string extension = path.extension().string();
+    path.replace_extension(".denoised" + extension);
+    return path.string();
+}
+
+// What the denoiser needs, checked before any work: an integrator that fills the film's
+// halves, and two samples in every pixel's each half.
+void check_denoise(const RenderSettings& settings, const Integrator& integrator) {
+    if (!settings.denoise) return;
+    const std::string& where = settings.where_of("denoise");
+    if (!integrator.records_halves()) {
+        throw Error(fmt::format(
+            "{}: the denoiser needs an integrator that renders pixel by pixel (path, whitted, "
+            "photon); '{}' adds light paths to the image, which it cannot split into halves",
+            where, settings.integrator));
+    }
+    if (settings.adaptive == "sobel") {
+        throw Error(
+            fmt::format("{}: the denoiser cannot use --adaptive sobel (its flat pixels "
+                        "get one sample, which cannot be split into two halves)",
+                        where));
+    }
+    if (settings.spp < 2)
+        throw Error(fmt::format("{}: the denoiser needs at least 2 samples per pixel", where));
+}
+
 void add_debug_images(const RenderSettings& settings, const RenderStats& stats, OutputBatch& batch,
                       std::vector<std::string>& written) {
     for (const NamedImage& named : stats.images) {
@@ -273,17 +308,26 @@ int run_render(const RenderOptions& options) {
     std::vector<std::string> targets = settings.outputs;
     for (const std::string& view : settings.debug)
         targets.push_back(debug_image_path(settings, view).string());
+    if (settings.denoise) {
+        for (const std::string& output : settings.outputs) targets.push_back(denoised_path(output));
+    }
     try {
         OutputBatch::check_targets(targets);
     } catch (const Error& e) {
         // Name where the paths came from: a flag, or the scene's line.
         throw Error(fmt::format("{}: {}", settings.where_of("output"), e.what()));
     }
-    check_memory(Film::memory_bytes(settings.width, settings.height, settings.aovs),
+    // The denoiser reads the AOVs and the film's two halves; the outputs get the AOVs
+    // only when asked for.
+    const bool film_aovs = settings.aovs || settings.denoise;
+    check_memory(Film::memory_bytes(settings.width, settings.height, film_aovs, settings.denoise),
                  fmt::format("the film ({}x{}{})", settings.width, settings.height,
-                             settings.aovs ? " with AOVs" : ""));
+                             settings.denoise ? " with AOVs and halves for the denoiser"
+                             : settings.aovs  ? " with AOVs"
+                                              : ""));
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
+    check_denoise(settings, *integrator);
     for (const std::string& warning : warnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto scene = build_scene(desc, settings);
     for (const std::string& warning : scene->stats().warnings)
@@ -293,8 +337,8 @@ int run_render(const RenderOptions& options) {
     const int threads =
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    Film film(settings.output_width(), settings.output_height(), settings.aovs,
-              settings.output_origin());
+    Film film(settings.output_width(), settings.output_height(), film_aovs,
+              settings.output_origin(), settings.denoise);
     Progress progress("rendering", expected_samples(settings), options.quiet);
     progress.set_cancel_flag(&g_signal);
     // Processor time of the render (all threads), besides its wall-clock time: a benchmark on
@@ -308,11 +352,26 @@ int run_render(const RenderOptions& options) {
     // All or nothing: each output is written to a temporary and verified; only when all
     // are good are they renamed into place. The batch removes its temporaries on any
     // exception, an interruption included.
-    const Image image = final_image(film, stats);
+    Image image = final_image(film, stats);
+    if (film_aovs && !settings.aovs)
+        image = without_channels(image, {"albedo.", "normal.", "depth."});
+    const WriteOptions write_options{settings.exposure, settings.tonemap};
     OutputBatch batch;
     for (const std::string& path : settings.outputs) {
-        batch.add(path, image, WriteOptions{settings.exposure});
+        batch.add(path, image, write_options);
         throw_if_interrupted();
+    }
+    double denoise_seconds = 0.0;
+    if (settings.denoise) {
+        const auto start = std::chrono::steady_clock::now();
+        const Image denoised = denoise(film);
+        denoise_seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        throw_if_interrupted();
+        for (const std::string& path : settings.outputs) {
+            batch.add(denoised_path(path), denoised, write_options);
+            throw_if_interrupted();
+        }
     }
     add_debug_images(settings, stats, batch, targets);
     {
@@ -336,6 +395,7 @@ int run_render(const RenderOptions& options) {
                    stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
         fmt::print(stderr, "{} samples and {} rays in all, {:.2f} s of processor time\n",
                    stats.samples, stats.rays, cpu_seconds);
+        if (settings.denoise) fmt::print(stderr, "denoised in {:.2f} s\n", denoise_seconds);
         for (const std::string& path : targets) {
             if (std::filesystem::exists(path)) fmt::print(stderr, "wrote {}\n", path);
         }
@@ -446,6 +506,11 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--integrator", render.integrator,
                            "Light transport algorithm, e.g. path");
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
+    render_cmd->add_option("--tonemap", render.tonemap,
+                           "Tone curve of PNG output: clip (default), reinhard, filmic (ACES fit)");
+    render_cmd->add_flag("--denoise", render.denoise,
+                         "Also write each output denoised, as NAME.denoised.EXT (path, whitted "
+                         "and photon integrators)");
     render_cmd->add_flag("--aovs", render.aovs,
                          "Add albedo, normal and depth channels to EXR output");
     render_cmd->add_option(

@@ -189,3 +189,39 @@ TEST(Film, ResolveWithoutSplatsIsTheWeightedMean) {
 }
 
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+TEST(FilmHalves, EvenAndOddSamplesSplitAndTheWholeStaysTheSame) {
+    Film plain(2, 1, true);
+    Film split(2, 1, true, Vec2i(0, 0), true);
+    EXPECT_FALSE(plain.has_halves());
+    EXPECT_TRUE(split.has_halves());
+    const float values[] = {1.0f, 2.0f, 4.0f, 8.0f, 16.0f};
+    for (int k = 0; k < 5; ++k) {
+        const AovSample aov{Spectrum(0.1f * k), Vec3(0, 0, 1), static_cast<float>(k)};
+        for (Film* film : {&plain, &split}) {
+            film->add_sample(Vec2i(1, 0), Spectrum(values[k]), 1.0f, &aov, k);
+            film->add_sample(Vec2i(0, 0), Spectrum(1.0f), 0.5f, &aov, k);
+        }
+    }
+    EXPECT_EQ(split.resolve().pixels, plain.resolve().pixels);
+    const Image even = split.resolve_half(0), odd = split.resolve_half(1);
+    EXPECT_EQ(even.channels, plain.resolve().channels);
+    EXPECT_FLOAT_EQ(even.at(1, 0, 0), (1.0f + 4.0f + 16.0f) / 3.0f);
+    EXPECT_FLOAT_EQ(odd.at(1, 0, 0), (2.0f + 8.0f) / 2.0f);
+    EXPECT_FLOAT_EQ(even.at(1, 0, even.channel_index("depth.Z")), 2.0f);  // (0 + 2 + 4) / 3
+    EXPECT_FLOAT_EQ(odd.at(1, 0, odd.channel_index("depth.Z")), 2.0f);    // (1 + 3) / 2
+    EXPECT_FLOAT_EQ(odd.at(0, 0, 0), 1.0f);
+    // A window keeps its pixels' halves; a film without halves has none to give.
+    const Film right = split.window(Vec2i(1, 0), 1, 1);
+    EXPECT_TRUE(right.has_halves());
+    EXPECT_FLOAT_EQ(right.resolve_half(1).at(0, 0, 0), 5.0f);
+    EXPECT_THROW(plain.resolve_half(0), Error);
+    split.clear();
+    EXPECT_EQ(split.resolve_half(0).at(1, 0, 0), 0.0f);
+}
+
+}  // namespace
+}  // namespace glint

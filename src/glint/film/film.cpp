@@ -21,17 +21,29 @@ Film::Film(int width, int height, bool with_aovs)
     if (with_aovs) m_aovs.resize(count);
 }
 
-uint64_t Film::memory_bytes(int width, int height, bool with_aovs) {
+uint64_t Film::memory_bytes(int width, int height, bool with_aovs, bool with_halves) {
     const uint64_t pixels = saturating_product(static_cast<uint64_t>(std::max(width, 0)),
                                                static_cast<uint64_t>(std::max(height, 0)));
     const uint64_t channels = with_aovs ? 10 : 3;
-    const uint64_t per_pixel = sizeof(Pixel) + (with_aovs ? sizeof(AovPixel) : 0) +
-                               3 * sizeof(double) + 2 * channels * sizeof(float);
+    const uint64_t accumulators = sizeof(Pixel) + (with_aovs ? sizeof(AovPixel) : 0);
+    // With halves: two more accumulators, and the denoiser's two half images, its
+    // variance and feature buffers and its output (about four more images).
+    const uint64_t per_pixel = accumulators * (with_halves ? 3 : 1) + 3 * sizeof(double) +
+                               (with_halves ? 6 : 2) * channels * sizeof(float);
     return saturating_product(pixels, per_pixel);
 }
 
 Film::Film(int width, int height, bool with_aovs, Vec2i origin) : Film(width, height, with_aovs) {
     m_origin = origin;
+}
+
+Film::Film(int width, int height, bool with_aovs, Vec2i origin, bool with_halves)
+    : Film(width, height, with_aovs, origin) {
+    m_with_halves = with_halves;
+    if (with_halves) {
+        m_half_pixels.resize(2 * m_pixels.size());
+        if (with_aovs) m_half_aovs.resize(2 * m_pixels.size());
+    }
 }
 
 Film Film::window(Vec2i origin, int width, int height) const {
@@ -42,7 +54,7 @@ Film Film::window(Vec2i origin, int width, int height) const {
                                 width, height, origin.x, origin.y, m_width, m_height, m_origin.x,
                                 m_origin.y));
     }
-    Film result(width, height, m_with_aovs, origin);
+    Film result(width, height, m_with_aovs, origin, m_with_halves);
     result.m_splat_scale = m_splat_scale;
     if (!m_splats.empty()) result.m_splats.assign(3 * result.m_pixels.size(), 0.0);
     for (int y = 0; y < height; ++y) {
@@ -53,6 +65,10 @@ Film Film::window(Vec2i origin, int width, int height) const {
                 static_cast<std::size_t>(y) * width + static_cast<std::size_t>(x);
             result.m_pixels[to] = m_pixels[from];
             if (m_with_aovs) result.m_aovs[to] = m_aovs[from];
+            for (std::size_t h = 0; h < 2 && m_with_halves; ++h) {
+                result.m_half_pixels[2 * to + h] = m_half_pixels[2 * from + h];
+                if (m_with_aovs) result.m_half_aovs[2 * to + h] = m_half_aovs[2 * from + h];
+            }
             if (!m_splats.empty()) {
                 for (int c = 0; c < 3; ++c) result.m_splats[3 * to + c] = m_splats[3 * from + c];
             }
@@ -61,7 +77,8 @@ Film Film::window(Vec2i origin, int width, int height) const {
     return result;
 }
 
-void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov) {
+void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov,
+                      int sample_index) {
     pixel -= m_origin;
     // A stray index would silently corrupt a neighbour's accumulator; the test is one
     // well-predicted branch per sample.
@@ -71,29 +88,39 @@ void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSam
     }
     const std::size_t i = static_cast<std::size_t>(pixel.y) * static_cast<std::size_t>(m_width) +
                           static_cast<std::size_t>(pixel.x);
+    const std::size_t half = 2 * i + static_cast<std::size_t>(sample_index & 1);
     Pixel& p = m_pixels[i];
     if (L.is_finite() && std::isfinite(weight)) {
         // Dropping the weight too, not only the radiance, keeps one NaN path from
         // darkening the pixel: the mean is over the samples that could be measured.
         p.weight_sum += weight;
         for (int c = 0; c < 3; ++c) p.rgb[c] += static_cast<double>(weight) * L[c];
+        if (m_with_halves) {
+            Pixel& h = m_half_pixels[half];
+            h.weight_sum += weight;
+            for (int c = 0; c < 3; ++c) h.rgb[c] += static_cast<double>(weight) * L[c];
+        }
     } else {
         ++p.non_finite;
     }
 
     if (!m_with_aovs || aov == nullptr) return;
+    accumulate_aov(m_aovs[i], weight, *aov);
+    if (m_with_halves) accumulate_aov(m_half_aovs[half], weight, *aov);
+}
+
+void Film::accumulate_aov(AovPixel& a, float weight, const AovSample& aov) {
     const float w = std::abs(weight);
-    if (!std::isfinite(w) || !aov->albedo.is_finite() || !is_finite(aov->normal) ||
-        !std::isfinite(aov->depth)) {
+    if (!std::isfinite(w) || !aov.albedo.is_finite() || !is_finite(aov.normal) ||
+        !std::isfinite(aov.depth)) {
         return;
     }
-    AovPixel& a = m_aovs[i];
     a.weight_sum += w;
     for (int c = 0; c < 3; ++c) {
-        a.albedo[c] += static_cast<double>(w) * aov->albedo[c];
-        a.normal[c] += static_cast<double>(w) * aov->normal[c];
+        a.albedo[c] += static_cast<double>(w) * aov.albedo[c];
+        a.normal[c] += static_cast<double>(w) * aov.normal[c];
     }
-    a.depth += static_cast<double>(w) * aov->depth;
+    a.depth += static_cast<double>(w) * aov.depth;
 }
 
 void Film::add_splats(std::span<const Splat> splats) {
@@ -117,6 +144,19 @@ void Film::add_splats(std::span<const Splat> splats) {
 }
 
 Image Film::resolve() const {
+    return resolve_pixels(m_pixels.data(), 1, m_with_aovs ? m_aovs.data() : nullptr, 1, true);
+}
+
+Image Film::resolve_half(int half) const {
+    if (!m_with_halves || half < 0 || half > 1)
+        throw Error(fmt::format("film: no half {} (the film keeps no halves)", half));
+    const std::size_t h = static_cast<std::size_t>(half);
+    return resolve_pixels(m_half_pixels.data() + h, 2,
+                          m_with_aovs ? m_half_aovs.data() + h : nullptr, 2, false);
+}
+
+Image Film::resolve_pixels(const Pixel* pixels, std::size_t pixel_stride, const AovPixel* aovs,
+                           std::size_t aov_stride, bool with_splats) const {
     std::vector<std::string> channels = {"R", "G", "B"};
     if (m_with_aovs) {
         channels.insert(channels.end(), {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y",
@@ -127,17 +167,17 @@ Image Film::resolve() const {
         for (int x = 0; x < m_width; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_width) +
                                   static_cast<std::size_t>(x);
-            const Pixel& p = m_pixels[i];
+            const Pixel& p = pixels[i * pixel_stride];
             // Mitchell's negative lobes can cancel the positive weights exactly; such a
             // pixel has no defined mean and resolves to black rather than infinity.
             const double inv = p.weight_sum != 0.0 ? 1.0 / p.weight_sum : 0.0;
             for (int c = 0; c < 3; ++c) {
                 double value = p.rgb[c] * inv;
-                if (!m_splats.empty()) value += m_splat_scale * m_splats[3 * i + c];
+                if (with_splats && !m_splats.empty()) value += m_splat_scale * m_splats[3 * i + c];
                 image.at(x, y, c) = static_cast<float>(value);
             }
             if (!m_with_aovs) continue;
-            const AovPixel& a = m_aovs[i];
+            const AovPixel& a = aovs[i * aov_stride];
             const double ainv = a.weight_sum > 0.0 ? 1.0 / a.weight_sum : 0.0;
             for (int c = 0; c < 3; ++c) {
                 image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c] * ainv);
@@ -158,6 +198,8 @@ uint64_t Film::non_finite_samples() const {
 void Film::clear() {
     std::fill(m_pixels.begin(), m_pixels.end(), Pixel{});
     std::fill(m_aovs.begin(), m_aovs.end(), AovPixel{});
+    std::fill(m_half_pixels.begin(), m_half_pixels.end(), Pixel{});
+    std::fill(m_half_aovs.begin(), m_half_aovs.end(), AovPixel{});
     m_splats.clear();
     m_non_finite_splats = 0;
 }

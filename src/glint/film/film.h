@@ -33,12 +33,17 @@ public:
     /// window): add_sample() and add_splats() take positions in the larger image's pixels,
     /// resolve() gives the window's pixels only.
     Film(int width, int height, bool with_aovs, Vec2i origin);
+    /// A film that also keeps two half accumulators, for a denoiser (film/denoise.h): a
+    /// sample with an even index goes to half 0, an odd one to half 1, besides the full
+    /// mean, which stays exactly what a film without halves holds. The two halves are
+    /// independent estimates of the same pixel, so their difference measures its noise.
+    Film(int width, int height, bool with_aovs, Vec2i origin, bool with_halves);
 
     /// Bytes a film of this size holds at most: its accumulators, splat sums, and the
     /// resolved Image (floats, 3 or 10 channels) with one more image's worth for encoding
     /// and verifying the output. For checking a render against the memory budget before
     /// anything is allocated; saturates rather than wraps.
-    static uint64_t memory_bytes(int width, int height, bool with_aovs);
+    static uint64_t memory_bytes(int width, int height, bool with_aovs, bool with_halves = false);
 
     int width() const { return m_width; }
     int height() const { return m_height; }
@@ -49,6 +54,7 @@ public:
     /// there. Throws glint::Error for a window outside this film.
     Film window(Vec2i origin, int width, int height) const;
     bool has_aovs() const { return m_with_aovs; }
+    bool has_halves() const { return m_with_halves; }
 
     /// Adds one sample to `pixel` ((0, 0) is the top-left pixel) with its filter weight
     /// (FilterSample::weight, possibly negative). Each pixel is only ever written by the
@@ -58,8 +64,12 @@ public:
     /// A sample whose radiance or weight is not finite is dropped from the radiance
     /// mean and counted in non_finite_samples(); its finite AOVs still count.
     /// `aov` may be null; it is ignored when the film has no AOVs.
+    /// `sample_index` (the sample's index within its pixel) chooses the half of a film with
+    /// halves by its parity; integrators that do not pass it cannot feed a denoiser
+    /// (Integrator::records_halves()).
     /// Throws glint::Error for a pixel outside the film.
-    void add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov);
+    void add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSample* aov,
+                    int sample_index = 0);
 
     /// Adds splats to the pixel containing each film position; splats outside the film are
     /// ignored. Not thread-safe: integrators gather splats per fixed chunk of work and add
@@ -77,6 +87,9 @@ public:
     /// albedo.B normal.X normal.Y normal.Z depth.Z. AOVs are averaged with |weight|.
     /// Pixels with zero total weight resolve to 0.
     Image resolve() const;
+    /// The weighted mean of half `half` (0: even sample indices, 1: odd), with the same
+    /// channels as resolve() but no splats. Throws glint::Error unless the film has halves.
+    Image resolve_half(int half) const;
 
     /// Samples (and splats) dropped so far for non-finite radiance or weight, over all
     /// pixels.
@@ -97,11 +110,20 @@ private:
         double depth = 0.0;
     };
 
+    static void accumulate_aov(AovPixel& a, float weight, const AovSample& aov);
+    Image resolve_pixels(const Pixel* pixels, std::size_t pixel_stride, const AovPixel* aovs,
+                         std::size_t aov_stride, bool with_splats) const;
+
     int m_width, m_height;
     bool m_with_aovs;
+    bool m_with_halves = false;
     Vec2i m_origin{0, 0};
     std::vector<Pixel> m_pixels;
     std::vector<AovPixel> m_aovs;  // empty without AOVs
+    // Halves: two radiance accumulators (and, with AOVs, two AOV accumulators) per pixel,
+    // interleaved [pixel][half]; empty without halves.
+    std::vector<Pixel> m_half_pixels;
+    std::vector<AovPixel> m_half_aovs;
     // Sums of splats, three per pixel; empty until the first splat, so films without any
     // cost nothing and resolve exactly as before.
     std::vector<double> m_splats;

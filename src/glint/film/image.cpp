@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace glint {
 
 int Image::channel_index(const std::string& name) const {
@@ -42,6 +44,29 @@ Image with_channel(const Image& image, const std::string& name, const std::vecto
         for (int c = 0; c < old_count; ++c)
             result.pixels[p * (old_count + 1) + c] = image.pixels[p * old_count + c];
         result.pixels[p * (old_count + 1) + old_count] = values[p];
+    }
+    return result;
+}
+
+Image without_channels(const Image& image, const std::vector<std::string>& prefixes) {
+    std::vector<int> kept;
+    std::vector<std::string> names;
+    for (int c = 0; c < image.num_channels(); ++c) {
+        const std::string& name = image.channels[static_cast<size_t>(c)];
+        const bool dropped = std::any_of(prefixes.begin(), prefixes.end(), [&](const auto& p) {
+            return name.compare(0, p.size(), p) == 0;
+        });
+        if (!dropped) {
+            kept.push_back(c);
+            names.push_back(name);
+        }
+    }
+    Image result = make_image(image.width, image.height, std::move(names));
+    for (int y = 0; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            for (size_t k = 0; k < kept.size(); ++k)
+                result.at(x, y, static_cast<int>(k)) = image.at(x, y, kept[k]);
+        }
     }
     return result;
 }

@@ -32,6 +32,10 @@ Image make_image(int width, int height, std::vector<std::string> channels);
 // A copy of `image` with one more channel; `values` holds width * height floats.
 Image with_channel(const Image& image, const std::string& name, const std::vector<float>& values);
 
+// A copy of `image` without the channels whose names start with one of `prefixes`
+// (e.g. {"albedo.", "normal.", "depth."} drops the AOVs).
+Image without_channels(const Image& image, const std::vector<std::string>& prefixes);
+
 // A single-channel image of `values` replicated into R, G, B (for writing masks as PNG).
 Image grey_image(int width, int height, const std::vector<float>& values);
 

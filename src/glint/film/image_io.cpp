@@ -43,15 +43,16 @@ float srgb_decode(float encoded) {
     return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
 }
 
-uint8_t to_srgb8(float linear, double scale) {
-    const double v = static_cast<double>(linear) * scale;
-    // !(v > 0) also sends NaN to black.
+uint8_t to_srgb8(float linear, double scale, Tonemap curve) {
+    // tone_curve sends NaN and negative values to black.
+    const double v = tone_curve(curve, static_cast<double>(linear) * scale);
     if (!(v > 0.0)) return 0;
     if (v >= 1.0) return 255;
     return static_cast<uint8_t>(std::floor(srgb_encode(v) * 255.0 + 0.5));
 }
 
-std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure, int& channels_out) {
+std::vector<uint8_t> encode_png_pixels(const Image& image, const WriteOptions& options,
+                                       int& channels_out) {
     int src[3];
     const int r = image.channel_index("R"), g = image.channel_index("G"),
               b = image.channel_index("B");
@@ -64,7 +65,7 @@ std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure, int& 
     } else {
         throw Error("PNG output needs channels R, G and B, or a single channel");
     }
-    const double scale = std::exp2(static_cast<double>(exposure));
+    const double scale = std::exp2(static_cast<double>(options.exposure));
     std::vector<uint8_t> out(static_cast<std::size_t>(image.width) *
                              static_cast<std::size_t>(image.height) *
                              static_cast<std::size_t>(channels_out));
@@ -72,7 +73,7 @@ std::vector<uint8_t> encode_png_pixels(const Image& image, float exposure, int& 
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             for (int c = 0; c < channels_out; ++c)
-                out[k++] = to_srgb8(image.at(x, y, src[c]), scale);
+                out[k++] = to_srgb8(image.at(x, y, src[c]), scale, options.tonemap);
         }
     }
     return out;
@@ -145,7 +146,7 @@ void write_image_file(const std::string& file, const Image& image, const WriteOp
         write_with_oiio(file, spec, image.pixels.data());
     } else {
         int channels = 0;
-        const std::vector<uint8_t> bytes = encode_png_pixels(image, options.exposure, channels);
+        const std::vector<uint8_t> bytes = encode_png_pixels(image, options, channels);
         OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
         spec.attribute("oiio:ColorSpace", "sRGB");
         write_with_oiio(file, spec, bytes.data());

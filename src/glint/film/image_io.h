@@ -2,6 +2,7 @@
 // Reading and writing images through OpenImageIO, and the relative-MSE comparison the
 // tests and `glint compare` use. OpenImageIO is confined to this file's .cpp.
 #include <glint/film/image.h>
+#include <glint/film/tonemap.h>
 
 #include <array>
 #include <cstdint>
@@ -10,12 +11,14 @@
 namespace glint {
 
 struct WriteOptions {
-    float exposure = 0.0f;  ///< stops; scales linear values by 2^exposure, PNG only
+    float exposure = 0.0f;            ///< stops; scales linear values by 2^exposure, PNG only
+    Tonemap tonemap = Tonemap::clip;  ///< the display curve after the exposure, PNG only
 };
 
 /// Writes by extension (case-insensitive): ".exr" stores every channel as 32-bit float;
-/// ".png" stores 8-bit sRGB-encoded R, G, B (or one channel as grey), linear values
-/// scaled by 2^exposure, clamped to [0, 1] and correctly rounded. Anything else throws.
+/// ".png" stores 8-bit sRGB-encoded R, G, B (or one channel as grey): linear values
+/// scaled by 2^exposure, mapped by the tone curve to [0, 1] (tonemap.h; "clip" clamps) and
+/// correctly rounded. Anything else throws.
 /// The image goes to a temporary file beside `path` that is renamed over it, so `path`
 /// is never left half-written; on failure the temporary is removed and glint::Error
 /// names the path and the reason. (An OutputBatch of one image; see output_batch.h.)

@@ -40,6 +40,9 @@ class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual RenderStats render(const Scene& scene, Film& film, Progress& progress) = 0;
+    /// Whether render() fills a film's halves (Film::has_halves(), by each sample's index),
+    /// which a denoiser needs. Integrators that splat light paths onto the film do not.
+    virtual bool records_halves() const { return false; }
 };
 
 // Counts rays per thread without contention; summed once per tile.
@@ -53,6 +56,7 @@ class TileIntegrator : public Integrator {
 public:
     explicit TileIntegrator(const RenderSettings& settings);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    bool records_halves() const override { return true; }
 
     // Radiance arriving along `ray`. When `aov` is not null, fills first-hit features.
     virtual Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
@@ -82,9 +86,10 @@ protected:
     };
     CameraSample start_camera_sample(const Scene& scene, Vec2i pixel, int index,
                                      Sampler& sampler) const;
-    // Adds a sample's radiance (and features, or null) to the film and to `moments`.
-    static void record_sample(Film& film, Vec2i pixel, const Spectrum& L, float filter_weight,
-                              const AovSample* aov, PixelMoments& moments);
+    // Adds sample `index` of `pixel` (its radiance, and features or null) to the film and
+    // to `moments`; the index's parity chooses the film's half.
+    static void record_sample(Film& film, Vec2i pixel, int index, const Spectrum& L,
+                              float filter_weight, const AovSample* aov, PixelMoments& moments);
 
     // Renders samples [first, first + count) of `pixel` into `film`: li() for one sample
     // after the other. An integrator may override it to trace a pixel's samples together
@@ -128,10 +133,10 @@ inline TileIntegrator::CameraSample TileIntegrator::start_camera_sample(const Sc
     return sample;
 }
 
-inline void TileIntegrator::record_sample(Film& film, Vec2i pixel, const Spectrum& L,
+inline void TileIntegrator::record_sample(Film& film, Vec2i pixel, int index, const Spectrum& L,
                                           float filter_weight, const AovSample* aov,
                                           PixelMoments& moments) {
-    film.add_sample(pixel, L, filter_weight, aov);
+    film.add_sample(pixel, L, filter_weight, aov, index);
     const double y = L.is_finite() ? L.luminance() : 0.0;
     moments.sum += y;
     moments.sum_squares += y * y;

@@ -184,8 +184,8 @@ TileIntegrator::PixelMoments PathIntegrator::render_pixel(const Scene& scene, Fi
         worker.arena.reset();
         trace_packet(scene, paths, lanes, worker.arena, worker.counter);
         for (int lane = 0; lane < lanes; ++lane) {
-            record_sample(film, pixel, paths[lane].L, filter_samples[lane].weight, paths[lane].aov,
-                          moments);
+            record_sample(film, pixel, packet_first + lane, paths[lane].L,
+                          filter_samples[lane].weight, paths[lane].aov, moments);
         }
     }
     return moments;

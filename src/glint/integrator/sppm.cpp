@@ -121,7 +121,7 @@ void write_intermediate(const std::vector<PixelState>& pixels, int width, int he
     for (const std::string& output : settings.outputs) {
         std::filesystem::path path(output);
         path.replace_extension(fmt::format(".pass{:04d}{}", passes, path.extension().string()));
-        write_image(path.string(), image, WriteOptions{settings.exposure});
+        write_image(path.string(), image, WriteOptions{settings.exposure, settings.tonemap});
     }
 }
 

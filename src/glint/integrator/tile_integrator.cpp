@@ -93,7 +93,7 @@ RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& pro
     if (lo == film.origin() && hi == window_end) {
         render_window(scene, film, progress, stats);
     } else {
-        Film wider(hi.x - lo.x, hi.y - lo.y, film.has_aovs(), lo);
+        Film wider(hi.x - lo.x, hi.y - lo.y, film.has_aovs(), lo, film.has_halves());
         render_window(scene, wider, progress, stats);
         film = wider.window(film.origin(), film.width(), film.height());
         for (ExtraChannel& channel : stats.channels) {
@@ -306,7 +306,7 @@ TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Fi
         AovSample* features = film.has_aovs() ? &aov : nullptr;
         worker.arena.reset();
         const Spectrum L = li(sample.ray, scene, sampler, worker.arena, worker.counter, features);
-        record_sample(film, pixel, L, sample.filter.weight, features, moments);
+        record_sample(film, pixel, index, L, sample.filter.weight, features, moments);
     }
     return moments;
 }

@@ -1,5 +1,7 @@
 #include <glint/scene/render_settings.h>
 
+#include <glint/core/error.h>
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -21,7 +23,14 @@ RenderSettings parse_render_settings(const Params* params) {
     s.filter = p.get_string("filter", s.filter);
     s.filter_radius = p.get_float("filter_radius", 0.0f);
     s.exposure = p.get_float("exposure", 0.0f);
+    const std::string tonemap = p.get_string("tonemap", "clip");
+    try {
+        s.tonemap = parse_tonemap(tonemap);
+    } catch (const Error& e) {
+        p.fail_at("tonemap", e.what());
+    }
     s.aovs = p.get_bool("aovs", false);
+    s.denoise = p.get_bool("denoise", false);
     s.outputs = p.get_strings("output");
     s.csg_shortcuts = p.get_bool("csg_shortcuts", true);
     s.mipmapping = p.get_bool("mipmapping", true);

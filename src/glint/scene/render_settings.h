@@ -6,6 +6,7 @@
 // that integrator's create() from `params`; see integrator/registry.cpp.
 #include <glint/core/params.h>
 #include <glint/core/spectrum.h>
+#include <glint/film/tonemap.h>
 
 #include <array>
 #include <cstdint>
@@ -28,9 +29,11 @@ struct RenderSettings {
     std::string integrator = "path";
     std::string sampler = "sobol";
     std::string filter = "box";
-    float filter_radius = 0.0f;  // 0 = the filter's default
-    float exposure = 0.0f;       // stops, applied to PNG output
-    bool aovs = false;           // albedo/normal/depth channels in EXR output
+    float filter_radius = 0.0f;       // 0 = the filter's default
+    float exposure = 0.0f;            // stops, applied to PNG output
+    Tonemap tonemap = Tonemap::clip;  // display curve of PNG output (film/tonemap.h)
+    bool aovs = false;                // albedo/normal/depth channels in EXR output
+    bool denoise = false;             // also write NAME.denoised.EXT (film/denoise.h)
     std::vector<std::string> outputs;
     int threads = 0;            // 0 = all cores
     bool csg_shortcuts = true;  // bounding-box pruning inside CSG trees
@@ -59,6 +62,9 @@ struct RenderSettings {
     // The glint.render{...} table with the flags' values in it. Records which keys the
     // common settings read; integrators read their own keys from a copy.
     Params params{"render", "render settings"};
+
+    /// How display (PNG) outputs map radiance: the tone curve and the exposure.
+    ToneMapping tone_mapping() const { return {tonemap, exposure}; }
 
     /// Bounces a path may take: max_depth, or kMaxPathDepth when it is -1.
     int depth_limit() const { return max_depth >= 0 ? max_depth : kMaxPathDepth; }
