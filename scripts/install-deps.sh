@@ -13,6 +13,8 @@ packages=(
   libcli11-dev         # command line
   libfmt-dev           # formatting
   libgtest-dev libgmock-dev # tests
+  libglfw3-dev libimgui-dev # the viewer (glint view): window and input, panel
+  xvfb libgl1-mesa-dri # the viewer's end-to-end test: a virtual X server, software OpenGL
 )
 
 SUDO=""

@@ -42,8 +42,7 @@ public:
     /// every pass is uniform. Throws glint::Error unless 0 <= pass < settings.spp. State the
     /// passes share (photon maps) is made by prepare() before the first pass and again after
     /// scene_changed(SceneChange::lights_or_objects).
-    RenderStats render_pass(const Scene& scene, Film& film, int pass,
-                            Progress& progress) override;
+    RenderStats render_pass(const Scene& scene, Film& film, int pass, Progress& progress) override;
     void scene_changed(SceneChange change) override;
 
     // Radiance arriving along `ray`. When `aov` is not null, fills first-hit features.

@@ -32,10 +32,11 @@ public:
     /// viewer renders one pass 0 at reduced resolution (a smaller film, with the scene's
     /// camera made for that resolution) to show something at once, then clears the full
     /// film and starts again at pass 0. Progress::advance() may throw glint::Interrupted
-    /// when the viewer cancels a pass (the film is then cleared before it is used again). Tile integrators add their sample `pass` of every pixel to the
-    /// film, so that passes 0 .. N-1 into a cleared film give bit for bit what render()
-    /// gives with spp = N (same seed, sampler and filter); stateful integrators (preview)
-    /// may keep state between passes and write the film as they need.
+    /// when the viewer cancels a pass (the film is then cleared before it is used again). Tile
+    /// integrators add their sample `pass` of every pixel to the film, so that passes 0 .. N-1 into
+    /// a cleared film give bit for bit what render() gives with spp = N (same seed, sampler and
+    /// filter); stateful integrators (preview) may keep state between passes and write the film as
+    /// they need.
     virtual RenderStats render_pass(const Scene& scene, Film& film, int pass,
                                     Progress& progress) = 0;
 
