@@ -80,7 +80,9 @@ void RenderThread::run() {
             m_cancel.store(0);
         }
         Progress progress("view", 1, true);
-        progress.set_cancel_flag(&m_cancel);
+        // The reduced pass is short and runs to its end: while the user drags, changes
+        // arrive every frame, and cancelling it too would leave the window without a view.
+        if (!m_session.next_pass_reduced()) progress.set_cancel_flag(&m_cancel);
         PassKind kind = PassKind::none;
         try {
             kind = m_session.render_next(progress);

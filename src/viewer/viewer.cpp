@@ -331,6 +331,7 @@ private:
         ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
         ImGui::SetNextWindowBgAlpha(0.8f);
         ImGui::Begin("glint", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+        ImGui::PushItemWidth(ImGui::GetFontSize() * 11.0f);
         if (!m_integrators.empty()) {
             const char* current = m_integrators[m_ui.integrator].c_str();
             if (ImGui::BeginCombo("integrator", current)) {
@@ -376,7 +377,12 @@ private:
             fmt::print("{}\n", m_ui.message);
             std::fflush(stdout);
         }
-        if (!m_ui.message.empty()) ImGui::TextWrapped("%s", m_ui.message.c_str());
+        if (!m_ui.message.empty()) {
+            ImGui::PushTextWrapPos(ImGui::GetFontSize() * 24.0f);
+            ImGui::TextUnformatted(m_ui.message.c_str());
+            ImGui::PopTextWrapPos();
+        }
+        ImGui::PopItemWidth();
         ImGui::End();
         return restyle;
     }

@@ -25,8 +25,25 @@ Image ramp() {
     return image;
 }
 
+// The ramp, and below it every 8-bit code's neighbourhood: values spread evenly through
+// [0, 1.1), where the codes change at thresholds the display looks up.
+Image test_image() {
+    const Image top = ramp();
+    Image image = make_image(64, top.height + 256, {"R", "G", "B"});
+    std::copy(top.pixels.begin(), top.pixels.end(), image.pixels.begin());
+    for (int y = top.height; y < image.height; ++y) {
+        for (int x = 0; x < image.width; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const int i = ((y - top.height) * image.width + x) * 3 + c;
+                image.at(x, y, c) = 1.1f * static_cast<float>(i) / (256 * 64 * 3);
+            }
+        }
+    }
+    return image;
+}
+
 TEST(Display, ClipShowsThePngBytes) {
-    const Image image = ramp();
+    const Image image = test_image();
     for (const float exposure : {0.0f, -1.5f, 2.0f}) {
         const std::string path =
             (std::filesystem::path(testing::TempDir()) / "glint_display_test.png").string();

@@ -61,6 +61,9 @@ void expect_same_bits(const Image& a, const Image& b) {
 struct SameBitsCase {
     std::string integrator, sampler;
     int threads;
+    friend void PrintTo(const SameBitsCase& c, std::ostream* os) {
+        *os << c.integrator << ", " << c.sampler << ", " << c.threads << " threads";
+    }
 };
 
 class SameBits : public testing::TestWithParam<SameBitsCase> {};

@@ -37,13 +37,19 @@ bool emissive_shape(const SceneDesc& desc, const Params& shape) {
            desc.materials[ref.index].type() == "emissive";
 }
 
+// "file.lua:12" of a script location, without the directories: the panel is narrow.
+std::string short_where(const std::string& where) {
+    const size_t slash = where.rfind('/');
+    return slash == std::string::npos ? where : where.substr(slash + 1);
+}
+
 }  // namespace
 
 LightEdits::LightEdits(const SceneDesc& desc) {
     for (size_t i = 0; i < desc.lights.size(); ++i) {
         const Params& p = desc.lights[i];
         EditableLight light;
-        light.name = fmt::format("{} ({})", p.type(), p.where());
+        light.name = fmt::format("{} ({})", p.type(), short_where(p.where()));
         light.movable = p.type() == "point_light" || p.type() == "spot_light";
         m_lights.push_back(light);
         m_sources.push_back({false, i});
@@ -52,7 +58,8 @@ LightEdits::LightEdits(const SceneDesc& desc) {
     for (size_t i = 0; i < shapes.size(); ++i) {
         if (!emissive_shape(desc, shapes[i])) continue;
         EditableLight light;
-        light.name = fmt::format("emissive {} ({})", shapes[i].type(), shapes[i].where());
+        light.name =
+            fmt::format("emissive {} ({})", shapes[i].type(), short_where(shapes[i].where()));
         light.movable = true;
         m_lights.push_back(light);
         m_sources.push_back({true, i});

@@ -56,6 +56,12 @@ public:
     /// call starts again from a cleared film.
     PassKind render_next(Progress& progress);
 
+    /// Whether the next render_next() renders the reduced pass (a change is pending, or
+    /// none has been shown since the last one).
+    bool next_pass_reduced() const {
+        return m_options.reduced_scale > 1 &&
+               (m_reduced_due || m_camera_changed || m_rebuild || m_restart);
+    }
     /// Full-resolution passes in the film since the last change (its samples per pixel).
     int passes() const { return m_passes; }
     /// The number of passes after which accumulation stops.
