@@ -55,6 +55,11 @@ bool RenderThread::latest(Frame& frame) const {
     return true;
 }
 
+uint64_t RenderThread::version() const {
+    const std::lock_guard lock(m_mutex);
+    return m_frame.version;
+}
+
 void RenderThread::run() {
     bool idle = false;  // the session reached its target, or the last change failed
     for (;;) {

@@ -49,6 +49,8 @@ public:
 
     /// Copies the latest frame into `frame` when it is newer than frame.version.
     bool latest(Frame& frame) const;
+    /// The version of the latest frame (see Frame::version).
+    uint64_t version() const;
 
 private:
     void run();

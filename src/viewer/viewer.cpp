@@ -225,8 +225,13 @@ private:
         int frames = 0;
         m_thread->allow_passes(1);
         while (frames < m_options.frames) {
-            if (glfwWindowShouldClose(window)) return 1;
-            glfwPollEvents();
+            if (glfwWindowShouldClose(window)) {
+                throw Error(fmt::format("the window was closed after {} of the {} frames", frames,
+                                        m_options.frames));
+            }
+            // Draw only what is new: on two cores a spinning window would slow the passes.
+            glfwWaitEventsTimeout(0.005);
+            if (m_thread->version() == m_frame.version) continue;
             new_frame();
             if (m_ui.show_panel) panel();
             const bool fresh = update_texture(texture, false);
