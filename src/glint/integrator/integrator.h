@@ -29,8 +29,8 @@ struct RayCounter {
 
 // An integrator that estimates radiance along camera rays independently per pixel sample:
 // the tile loop, sampling and film handling live here; subclasses supply li().
-// Every tile integrator also renders pass by pass (ProgressiveIntegrator, defined in
-// integrator/progressive.h, which includes this header).
+// Every tile integrator also renders pass by pass, for the viewer (ProgressiveIntegrator,
+// integrator/progressive.h).
 class TileIntegrator : public Integrator, public ProgressiveIntegrator {
 public:
     explicit TileIntegrator(const RenderSettings& settings);

@@ -28,15 +28,16 @@ public:
 
     /// Renders pass number `pass` (0 for the first pass after the film was cleared) over
     /// `film`'s window; afterwards film.resolve() is the image to show. A pass takes one
-    /// sample per pixel. The film's size may differ from call to call: after a change the
-    /// viewer renders one pass 0 at reduced resolution (a smaller film, with the scene's
-    /// camera made for that resolution) to show something at once, then clears the full
-    /// film and starts again at pass 0. Progress::advance() may throw glint::Interrupted
-    /// when the viewer cancels a pass (the film is then cleared before it is used again). Tile
-    /// integrators add their sample `pass` of every pixel to the film, so that passes 0 .. N-1 into
-    /// a cleared film give bit for bit what render() gives with spp = N (same seed, sampler and
-    /// filter); stateful integrators (preview) may keep state between passes and write the film as
-    /// they need.
+    /// sample per pixel. Tile integrators add their sample `pass` of every pixel to the
+    /// film, so that passes 0 .. N-1 into a cleared film give bit for bit what render()
+    /// gives with spp = N (same seed, sampler and filter); stateful integrators (preview)
+    /// may keep state between passes and write the film as they need.
+    ///
+    /// The film's size may differ from call to call: after a change the viewer renders one
+    /// pass 0 at reduced resolution (a smaller film, with the scene's camera made for that
+    /// resolution) to show something at once, then clears the full film and starts again
+    /// at pass 0. Progress::advance() may throw glint::Interrupted when the viewer cancels
+    /// a pass; the film is cleared before it is used again.
     virtual RenderStats render_pass(const Scene& scene, Film& film, int pass,
                                     Progress& progress) = 0;
 

@@ -5,6 +5,7 @@
 #include <glint/view/progressive_session.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 namespace glint {
 namespace {
@@ -14,8 +15,10 @@ std::pair<std::unique_ptr<Integrator>, ProgressiveIntegrator*> make_progressive(
     std::unique_ptr<Integrator> integrator = make_integrator(settings);
     auto* progressive = dynamic_cast<ProgressiveIntegrator*>(integrator.get());
     if (!progressive) {
-        throw Error(fmt::format("{}: integrator '{}' cannot render pass by pass in the viewer",
-                                settings.where_of("integrator"), settings.integrator));
+        throw Error(fmt::format(
+            "{}: integrator '{}' cannot render pass by pass in the viewer (these can: {})",
+            settings.where_of("integrator"), settings.integrator,
+            fmt::join(ProgressiveSession::progressive_integrators(settings), ", ")));
     }
     return {std::move(integrator), progressive};
 }
