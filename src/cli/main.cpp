@@ -437,6 +437,7 @@ int run_view(const ViewOptions& view) {
     }
     options.reduced_scale = int_flag("--reduced-scale", view.reduced_scale, 1, 64).value_or(4);
     options.hide_panel = view.hide_panel;
+    options.interrupt = &g_signal;
 
     const SceneDesc desc =
         load_scene_file(view.render.scene, loader_options(view.render.trusted_scene));
@@ -447,7 +448,9 @@ int run_view(const ViewOptions& view) {
     const int threads =
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-    return viewer::run_viewer(desc, settings, options);
+    const int code = viewer::run_viewer(desc, settings, options);
+    throw_if_interrupted();  // the window closed on SIGINT or SIGTERM
+    return code;
 #endif
 }
 

@@ -206,7 +206,7 @@ private:
     }
 
     int run_interactive(GLFWwindow* window, ImageTexture& texture) {
-        while (!glfwWindowShouldClose(window)) {
+        while (!glfwWindowShouldClose(window) && interrupted() == 0) {
             // Wake at least 60 times a second for new passes; input wakes it at once.
             glfwWaitEventsTimeout(1.0 / 60.0);
             new_frame();
@@ -231,6 +231,7 @@ private:
             }
             // Draw only what is new: on two cores a spinning window would slow the passes.
             glfwWaitEventsTimeout(0.005);
+            if (const int signal = interrupted()) throw Interrupted(signal);
             if (m_thread->version() == m_frame.version) continue;
             new_frame();
             if (m_ui.show_panel) panel();
@@ -266,6 +267,8 @@ private:
         }
         return 0;
     }
+
+    int interrupted() const { return m_options.interrupt ? m_options.interrupt->load() : 0; }
 
     void handle_input(GLFWwindow* window) {
         const ImGuiIO& io = ImGui::GetIO();

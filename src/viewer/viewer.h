@@ -4,6 +4,7 @@
 #include <glint/scene/render_settings.h>
 #include <glint/scene/scene_desc.h>
 
+#include <atomic>
 #include <string>
 
 namespace glint::viewer {
@@ -22,6 +23,9 @@ struct ViewerOptions {
     // about the target (0: none).
     float orbit_degrees = 0.0f;
     int orbit_after = 0;
+    /// Set to a signal number (SIGINT, SIGTERM) by the command's handler: the window closes
+    /// (interactive), or glint::Interrupted is thrown (headless). Null: never.
+    const std::atomic<int>* interrupt = nullptr;
 };
 
 /// Opens the window and runs until it is closed (or, headless, until the screenshot is
