@@ -183,6 +183,33 @@ TEST(ProgressiveSession, MovedLightChangesTheScene) {
     EXPECT_NE(original.pixels, shifted.pixels);
 }
 
+// An emissive shape moves by a transform in front of its own: the built light emits from
+// the moved quad, and the picture changes.
+TEST(ProgressiveSession, MovedAreaLightEmitsFromItsNewPlace) {
+    const std::string code = cornell(", integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    LightEdits lights(desc);
+    ASSERT_EQ(lights.lights().size(), 1u);
+    lights.lights()[0].offset = Vec3(10.0f, -300.0f, 20.0f);
+    const SceneDesc moved = lights.apply(desc);
+    const RenderSettings settings = parse_render_settings(&*desc.render);
+    const auto scene = build_scene(moved, settings);
+    ASSERT_EQ(scene->lights().size(), 1u);
+    for (const Vec2 u : {Vec2(0.1f, 0.2f), Vec2(0.9f, 0.7f)}) {
+        const auto emission = scene->lights()[0]->sample_le(u, Vec2(0.5f), 0.5f);
+        ASSERT_TRUE(emission.has_value());
+        EXPECT_NEAR(emission->ray.origin.y, 548.7f - 300.0f, 0.1f);
+        EXPECT_GE(emission->ray.origin.x, 213.0f + 10.0f - 0.1f);
+        EXPECT_LE(emission->ray.origin.x, 343.0f + 10.0f + 0.1f);
+        EXPECT_GE(emission->ray.origin.z, 227.0f + 20.0f - 0.1f);
+        EXPECT_LE(emission->ray.origin.z, 332.0f + 20.0f + 0.1f);
+    }
+    ProgressiveSession session(desc, settings);
+    const Image before = render_all(session);
+    session.set_lights(lights);
+    EXPECT_NE(render_all(session).pixels, before.pixels);
+}
+
 TEST(ProgressiveSession, CancelledPassRestarts) {
     const std::string code = cornell(", integrator = 'path'");
     ProgressiveSession session = make_session(code);
