@@ -14,6 +14,8 @@ packages=(
   libfmt-dev           # formatting
   libtinygltf-dev      # glTF import (glint.import)
   libgtest-dev libgmock-dev # tests
+  libglfw3-dev libimgui-dev # the viewer (glint view): window and input, panel
+  xvfb libgl1-mesa-dri # the viewer's end-to-end test: a virtual X server, software OpenGL
 )
 
 SUDO=""

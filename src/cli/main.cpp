@@ -1,4 +1,5 @@
-// The `glint` command: render, info and compare. The only place that catches glint::Error.
+// The `glint` command: render, info, compare and view. The only place that catches
+// glint::Error.
 #include <glint/core/error.h>
 #include <glint/core/memory.h>
 #include <glint/core/progress.h>
@@ -11,6 +12,10 @@
 #include <glint/scene/build.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/lua/lua_loader.h>
+
+#ifdef GLINT_HAVE_VIEWER
+#include <viewer/viewer.h>
+#endif
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -478,6 +483,66 @@ int run_compare(const std::string& test_path, const std::string& reference_path,
     return 0;
 }
 
+// `glint view`: the render flags that make sense in a window, and the viewer's own.
+struct ViewOptions {
+    RenderOptions render;  // scene, spp (the target), res, threads, seed, integrator, exposure
+    std::string tone_map = "clip";
+    std::string frames;
+    std::string screenshot;
+    std::string orbit;
+    std::string orbit_after;
+    std::string reduced_scale;
+    bool hide_panel = false;
+};
+
+constexpr int kDefaultViewSpp = 1024;
+
+int run_view(const ViewOptions& view) {
+#ifndef GLINT_HAVE_VIEWER
+    (void)view;
+    throw Error(
+        "this glint was built without the viewer: install libglfw3-dev and libimgui-dev "
+        "(scripts/install-deps.sh) and build again");
+#else
+    viewer::ViewerOptions options;
+    options.scene_path = view.render.scene;
+    options.tone_map = view.tone_map;
+    if (options.tone_map != "clip" && options.tone_map != "reinhard")
+        bad_flag("--tone-map", view.tone_map, "clip or reinhard");
+    options.frames = int_flag("--frames", view.frames, 1, 1 << 20).value_or(0);
+    options.screenshot = view.screenshot;
+    if (!options.screenshot.empty() && options.frames == 0)
+        bad_flag("--screenshot", view.screenshot, "usable without --frames N");
+    if (!view.orbit.empty()) {
+        const auto degrees = parse_finite(view.orbit);
+        if (!degrees || std::abs(*degrees) > 360.0)
+            bad_flag("--orbit", view.orbit, "a number of degrees from -360 to 360");
+        options.orbit_degrees = static_cast<float>(*degrees);
+        options.orbit_after = int_flag("--orbit-after", view.orbit_after, 1, 1 << 20).value_or(1);
+        if (options.frames == 0 || options.orbit_after >= options.frames) {
+            bad_flag("--orbit-after", view.orbit_after.empty() ? "1" : view.orbit_after,
+                     "a number of frames below --frames N (the move is scripted for headless use)");
+        }
+    }
+    options.reduced_scale = int_flag("--reduced-scale", view.reduced_scale, 1, 64).value_or(4);
+    options.hide_panel = view.hide_panel;
+    options.interrupt = &g_signal;
+
+    const SceneDesc desc =
+        load_scene_file(view.render.scene, loader_options(view.render.trusted_scene));
+    RenderOptions render = view.render;
+    if (render.spp.empty()) render.spp = std::to_string(kDefaultViewSpp);
+    const RenderSettings settings = settings_for(desc, render);
+    options.exposure = settings.exposure;
+    const int threads =
+        settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const int code = viewer::run_viewer(desc, settings, options);
+    throw_if_interrupted();  // the window closed on SIGINT or SIGTERM
+    return code;
+#endif
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -552,6 +617,33 @@ int main(int argc, char** argv) {
     compare_cmd->add_option("--threshold", threshold,
                             "Exit with 1 when the relative MSE exceeds this (finite, >= 0)");
 
+    ViewOptions view;
+    CLI::App* view_cmd = app.add_subcommand(
+        "view", "Show a scene in a window as it renders, pass by pass (docs/viewer.md)");
+    view_cmd->add_option("scene", view.render.scene, "Scene script (.lua)")->required();
+    view_cmd->add_option("--spp", view.render.spp,
+                         fmt::format("Passes after which accumulation stops (default {}); after "
+                                     "N passes the image is `glint render --spp N`'s",
+                                     kDefaultViewSpp));
+    view_cmd->add_option("--res", view.render.resolution, "Resolution WIDTHxHEIGHT");
+    view_cmd->add_option("--threads", view.render.threads, "Worker threads (default: all cores)");
+    view_cmd->add_option("--seed", view.render.seed, "Random seed, 0 to 2^64 - 1");
+    view_cmd->add_option("--integrator", view.render.integrator,
+                         "Light transport algorithm that renders pass by pass, e.g. path");
+    view_cmd->add_option("--exposure", view.render.exposure, "Display exposure in stops");
+    view_cmd->add_option("--tone-map", view.tone_map, "Display tone mapping: clip or reinhard");
+    view_cmd->add_option("--frames", view.frames,
+                         "Headless: render N full passes, write --screenshot, exit");
+    view_cmd->add_option("--screenshot", view.screenshot,
+                         "Headless: write what the window shows after --frames N (.png)");
+    view_cmd->add_option("--orbit", view.orbit,
+                         "Headless: orbit the camera by DEG degrees after --orbit-after K frames");
+    view_cmd->add_option("--orbit-after", view.orbit_after, "Frames before the --orbit move");
+    view_cmd->add_option("--reduced-scale", view.reduced_scale,
+                         "The first pass after a change renders at 1/N size (1 to 64, default 4)");
+    view_cmd->add_flag("--hide-panel", view.hide_panel, "Start with the panel hidden (key H)");
+    view_cmd->add_flag("--trusted-scene", view.render.trusted_scene, trusted_help);
+
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
@@ -564,6 +656,7 @@ int main(int argc, char** argv) {
         if (render_cmd->parsed()) return run_render(render);
         if (info_cmd->parsed()) return run_info(info_scene, info_trusted);
         if (compare_cmd->parsed()) return run_compare(test_image, reference_image, threshold);
+        if (view_cmd->parsed()) return run_view(view);
     } catch (const CLI::ValidationError& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());
         return kExitUsageError;

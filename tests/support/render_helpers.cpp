@@ -116,11 +116,14 @@ double standard_error_of_uniform_mean(const Image& image, int c) {
     return std::sqrt(sum / (n - 1.0) / n);
 }
 
-CommandResult run_glint(const std::string& arguments) {
+std::string glint_binary() {
     const char* from_environment = std::getenv("GLINT_BINARY");
-    const char* binary = from_environment ? from_environment : GLINT_BINARY_PATH;
+    return from_environment ? from_environment : GLINT_BINARY_PATH;
+}
+
+CommandResult run_command(const std::string& command_line) {
     CommandResult result;
-    const std::string command = std::string(binary) + " " + arguments + " 2>&1";
+    const std::string command = command_line + " 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     if (!pipe) return result;
     std::array<char, 4096> buffer;
@@ -130,6 +133,10 @@ CommandResult run_glint(const std::string& arguments) {
     const int status = pclose(pipe);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+CommandResult run_glint(const std::string& arguments) {
+    return run_command(glint_binary() + " " + arguments);
 }
 
 }  // namespace glint::test

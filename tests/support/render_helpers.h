@@ -52,5 +52,9 @@ struct CommandResult {
 };
 // Runs the glint binary ($GLINT_BINARY, else the one this build made) with `arguments`.
 CommandResult run_glint(const std::string& arguments);
+// The path of that binary.
+std::string glint_binary();
+// Runs a shell command line, capturing stdout and stderr together.
+CommandResult run_command(const std::string& command_line);
 
 }  // namespace glint::test

@@ -4,6 +4,8 @@
 #include <glint/core/sampler.h>
 #include <glint/film/film.h>
 #include <glint/film/filter.h>
+#include <glint/integrator/progressive.h>
+#include <glint/integrator/render_stats.h>
 #include <glint/scene/render_settings.h>
 #include <glint/scene/scene.h>
 
@@ -13,28 +15,6 @@
 namespace glint {
 
 class Progress;
-
-// A per-pixel channel an integrator adds to the image (e.g. samples taken per pixel).
-struct ExtraChannel {
-    std::string name;           // EXR channel name, e.g. "samples.Y"
-    std::vector<float> values;  // width * height, row-major, top row first
-};
-
-// An image an integrator makes besides the render, for a debug view (bdpt's strategies):
-// the command line writes it next to the first output as NAME.<name>.exr.
-struct NamedImage {
-    std::string name;
-    Image image;
-};
-
-struct RenderStats {
-    uint64_t samples = 0;
-    uint64_t rays = 0;  // closest-hit plus shadow rays
-    double seconds = 0.0;
-    std::vector<ExtraChannel> channels;
-    std::vector<std::string> notes;  // lines for the user (photon counts, ...)
-    std::vector<NamedImage> images;  // debug views that are images of their own
-};
 
 class Integrator {
 public:
@@ -52,17 +32,39 @@ struct RayCounter {
 
 // An integrator that estimates radiance along camera rays independently per pixel sample:
 // the tile loop, sampling and film handling live here; subclasses supply li().
-class TileIntegrator : public Integrator {
+// Every tile integrator also renders pass by pass, for the viewer (ProgressiveIntegrator,
+// integrator/progressive.h).
+class TileIntegrator : public Integrator, public ProgressiveIntegrator {
 public:
     explicit TileIntegrator(const RenderSettings& settings);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     bool records_halves() const override { return true; }
+
+    /// Adds sample `pass` of every pixel of `film`'s window, drawn from the sampler
+    /// render() uses (made for settings.spp samples per pixel, so passes 0 .. spp - 1 into
+    /// a cleared film give render()'s image bit for bit). Adaptive sampling does not apply:
+    /// every pass is uniform. Throws glint::Error unless 0 <= pass < settings.spp. State the
+    /// passes share (photon maps) is made by prepare() before the first pass and again after
+    /// scene_changed(SceneChange::lights_or_objects).
+    RenderStats render_pass(const Scene& scene, Film& film, int pass, Progress& progress) override;
+    void scene_changed(SceneChange change) override;
 
     // Radiance arriving along `ray`. When `aov` is not null, fills first-hit features.
     virtual Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                         RayCounter& counter, AovSample* aov) const = 0;
 
 protected:
+    // Makes what every pixel of a render of `scene` reads besides the scene (photon maps)
+    // and returns the rays that took; render() and the first pass call it. Nothing by default.
+    virtual uint64_t prepare(const Scene& scene) {
+        (void)scene;
+        return 0;
+    }
+
+    // render() after prepare(): the tile loop over `film`'s window, for debug views that
+    // render a second image from what prepare() made.
+    RenderStats render_tiles(const Scene& scene, Film& film, Progress& progress);
+
     // What one thread renders pixels with: its sampler, scratch memory for BSDFs, and the
     // rays it traced. An integrator that needs more per thread derives from it and makes
     // its own in make_worker().
@@ -119,6 +121,9 @@ protected:
 
     RenderSettings m_settings;
     std::unique_ptr<Filter> m_filter;
+
+private:
+    bool m_prepared = false;  // prepare() ran for the scene the passes render
 };
 
 // Inline: called for every sample.
@@ -159,5 +164,8 @@ using IntegratorCreate = std::unique_ptr<Integrator> (*)(const RenderSettings& s
 /// several): when `warnings` is not null, one line naming them is appended to it.
 std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
                                             std::vector<std::string>* warnings = nullptr);
+
+/// The names make_integrator() knows, in name order.
+std::vector<std::string> integrator_names();
 
 }  // namespace glint

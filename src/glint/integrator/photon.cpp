@@ -137,7 +137,7 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
     const uint64_t photon_rays = build_maps(scene);
     const double photon_seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    RenderStats stats = TileIntegrator::render(scene, film, progress);
+    RenderStats stats = render_tiles(scene, film, progress);
     stats.rays += photon_rays;
     stats.notes.push_back(
         fmt::format("photon maps: {} global and {} caustic photons stored in {:.2f} s "
@@ -150,7 +150,7 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
         Film photons(film.width(), film.height(), false, film.origin());
         Progress quiet("photon view", 1, true);
         m_show_photons = true;
-        const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);
+        const RenderStats view_stats = render_tiles(scene, photons, quiet);
         m_show_photons = false;
         const Image image = photons.resolve();
         ExtraChannel channel{"photons.Y", {}};

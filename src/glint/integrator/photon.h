@@ -58,6 +58,8 @@ public:
     double caustic_photons_per_second() const { return m_caustic_rate; }
 
 private:
+    // The passes' photon maps (render() builds them itself, to time them).
+    uint64_t prepare(const Scene& scene) override { return build_maps(scene); }
     Spectrum estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const;
     Spectrum final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                           Sampler& sampler, Arena& arena, RayCounter& counter) const;

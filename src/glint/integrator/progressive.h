@@ -3,9 +3,15 @@
 // the scene, calls render_pass() while nothing changes, and says what changed when the
 // user moves the camera, a light or an object, so that an integrator keeps what is still
 // valid (world-space photons survive a camera move, not a light move).
-#include <glint/integrator/integrator.h>
+// Included by integrator.h (every TileIntegrator is progressive), so it includes only
+// what its declarations need.
+#include <glint/film/film.h>
+#include <glint/integrator/render_stats.h>
+#include <glint/scene/scene.h>
 
 namespace glint {
+
+class Progress;
 
 /// What changed in the scene since the previous pass.
 enum class SceneChange {
@@ -26,6 +32,12 @@ public:
     /// film, so that passes 0 .. N-1 into a cleared film give bit for bit what render()
     /// gives with spp = N (same seed, sampler and filter); stateful integrators (preview)
     /// may keep state between passes and write the film as they need.
+    ///
+    /// The film's size may differ from call to call: after a change the viewer renders one
+    /// pass 0 at reduced resolution (a smaller film, with the scene's camera made for that
+    /// resolution) to show something at once, then clears the full film and starts again
+    /// at pass 0. Progress::advance() may throw glint::Interrupted when the viewer cancels
+    /// a pass; the film is cleared before it is used again.
     virtual RenderStats render_pass(const Scene& scene, Film& film, int pass,
                                     Progress& progress) = 0;
 

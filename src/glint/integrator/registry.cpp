@@ -105,6 +105,12 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
     return integrator;
 }
 
+std::vector<std::string> integrator_names() {
+    std::vector<std::string> names;
+    for (const auto& [name, create] : factories()) names.push_back(name);
+    return names;
+}
+
 Image final_image(const Film& film, const RenderStats& stats) {
     Image image = film.resolve();
     for (const ExtraChannel& channel : stats.channels)

@@ -81,6 +81,16 @@ TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(sett
 
 RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    const uint64_t prepare_rays = prepare(scene);
+    m_prepared = false;  // render() may be given another scene each time than the passes
+    RenderStats stats = render_tiles(scene, film, progress);
+    stats.rays += prepare_rays;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+RenderStats TileIntegrator::render_tiles(const Scene& scene, Film& film, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
     // A crop window: samples never leave their pixel (filter importance sampling), but
     // adaptive sampling decides from neighbours; so render the window widened by how far
@@ -109,6 +119,36 @@ RenderStats TileIntegrator::render(const Scene& scene, Film& film, Progress& pro
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
+}
+
+RenderStats TileIntegrator::render_pass(const Scene& scene, Film& film, int pass,
+                                        Progress& progress) {
+    if (pass < 0 || pass >= m_settings.spp) {
+        throw Error(fmt::format("pass {} is outside the {} samples per pixel of the sampler", pass,
+                                m_settings.spp));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    RenderStats stats;
+    if (!m_prepared) {
+        stats.rays = prepare(scene);
+        m_prepared = true;
+    }
+    // Made exactly as render_uniform makes it (samplers are cheap to make): sample `pass`
+    // of a pixel is then the same numbers as in a render with spp samples.
+    const auto sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
+    stats.rays +=
+        for_each_pixel(film, *sampler, progress, nullptr, [&](Vec2i pixel, Worker& worker) {
+            render_pixel(scene, film, pixel, worker, pass, 1);
+            return uint64_t{1};
+        });
+    stats.samples = static_cast<uint64_t>(film.width()) * film.height();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+void TileIntegrator::scene_changed(SceneChange change) {
+    // Photon maps live in world space: a camera move keeps them.
+    if (change == SceneChange::lights_or_objects) m_prepared = false;
 }
 
 void TileIntegrator::render_window(const Scene& scene, Film& film, Progress& progress,

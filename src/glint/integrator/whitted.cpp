@@ -97,7 +97,7 @@ WhittedIntegrator::WhittedIntegrator(const RenderSettings& settings, const Whitt
       m_whitted(whitted),
       m_max_depth(settings.max_depth >= 0 ? settings.max_depth : kDefaultMaxDepth) {}
 
-RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+uint64_t WhittedIntegrator::prepare(const Scene& scene) {
     // Checked here, not in create(), which also runs to learn which keys whitted reads.
     if (m_max_depth > kMaxWhittedDepth) {
         throw Error(
@@ -110,8 +110,11 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
         m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, photon_rays);
         m_caustic_radius2 = photon_search_radius2(scene, m_whitted.caustic);
     }
+    return photon_rays;
+}
+
+RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     RenderStats stats = TileIntegrator::render(scene, film, progress);
-    stats.rays += photon_rays;
     if (m_whitted.caustics)
         stats.notes.push_back(fmt::format("caustic map: {} photons", m_caustics.size()));
     for (const std::string& view : m_settings.debug) {
@@ -121,7 +124,7 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
         Film photons(film.width(), film.height(), false, film.origin());
         Progress quiet("photon view", 1, true);
         m_show_photons = true;
-        const RenderStats view_stats = TileIntegrator::render(scene, photons, quiet);
+        const RenderStats view_stats = render_tiles(scene, photons, quiet);
         m_show_photons = false;
         const Image image = photons.resolve();
         ExtraChannel channel{"photons.Y", {}};

@@ -48,6 +48,8 @@ public:
                                RayCounter& counter) const;
 
 private:
+    // Checks max_depth and builds the caustic map (caustics = true).
+    uint64_t prepare(const Scene& scene) override;
     // Radiance along `ray`, recursing into delta lobes. `budget` is what is left of the
     // camera sample's kRayBudget: each call takes one, and once none is left a delta hit
     // follows only its strongest lobe (see whitted.cpp).

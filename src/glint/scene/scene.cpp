@@ -1,6 +1,12 @@
+#include <glint/core/error.h>
 #include <glint/scene/scene.h>
 
 namespace glint {
+
+void Scene::set_camera(std::unique_ptr<Camera> camera) {
+    if (!camera) throw Error("a scene needs a camera");
+    m_camera = std::move(camera);
+}
 
 void Scene::fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
                            SurfaceInteraction& si) const {

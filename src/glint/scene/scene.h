@@ -99,6 +99,9 @@ public:
     }
 
     const Camera& camera() const { return *m_camera; }
+    /// Replaces the camera (the viewer moves it; see make_camera). Not while a render reads
+    /// the scene. Throws glint::Error for a null camera.
+    void set_camera(std::unique_ptr<Camera> camera);
     const std::vector<std::unique_ptr<Light>>& lights() const { return m_lights; }
     const LightSampler& light_sampler() const { return m_light_sampler; }
     const Spectrum& background() const { return m_background; }

@@ -1,0 +1,109 @@
+#pragma once
+// The viewer's render loop without a window: it owns the scene, the integrator and the film,
+// counts the passes accumulated since the last change, and restarts when the camera, a
+// light or the integrator changes. The first pass after a change renders at reduced
+// resolution, so that the window shows the new view at once; then full passes accumulate
+// until the target (settings.spp), after which the image equals `glint render --spp N`
+// bit for bit (tile integrators, same seed, no adaptive sampling).
+#include <glint/core/params.h>
+#include <glint/film/film.h>
+#include <glint/film/image.h>
+#include <glint/integrator/integrator.h>
+#include <glint/integrator/progressive.h>
+#include <glint/scene/render_settings.h>
+#include <glint/scene/scene_desc.h>
+#include <glint/view/light_edits.h>
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glint {
+
+class Progress;
+
+struct SessionOptions {
+    /// The first pass after a change renders an image 1/reduced_scale the size on each
+    /// side (rounded up), shown enlarged; 1 renders full passes only.
+    int reduced_scale = 4;
+};
+
+/// What render_next() did.
+enum class PassKind {
+    none,     ///< nothing: the target number of passes is reached
+    reduced,  ///< the reduced-resolution pass after a change
+    full,     ///< one more full-resolution pass into the film
+};
+
+class ProgressiveSession {
+public:
+    /// Builds the scene and the integrator settings.integrator; settings.spp is the number
+    /// of passes after which accumulation stops. Throws glint::Error for a bad scene or an
+    /// integrator that cannot render pass by pass.
+    ProgressiveSession(SceneDesc desc, RenderSettings settings, SessionOptions options = {});
+
+    /// Changes take effect at the next render_next(), which restarts accumulation.
+    /// `camera` is a glint.camera{...} table (CameraController::params()); errors are
+    /// thrown by render_next().
+    void set_camera(Params camera);
+    void set_lights(const LightEdits& lights);
+    /// Throws glint::Error when `name` is unknown or not progressive.
+    void set_integrator(const std::string& name);
+
+    /// Applies pending changes, then renders one pass. Passes may be cancelled through
+    /// `progress` (Progress::set_cancel_flag): glint::Interrupted propagates, and the next
+    /// call starts again from a cleared film.
+    PassKind render_next(Progress& progress);
+
+    /// Whether the next render_next() renders the reduced pass (a change is pending, or
+    /// none has been shown since the last one).
+    bool next_pass_reduced() const {
+        return m_options.reduced_scale > 1 &&
+               (m_reduced_due || m_camera_changed || m_rebuild || m_restart);
+    }
+    /// Full-resolution passes in the film since the last change (its samples per pixel).
+    int passes() const { return m_passes; }
+    /// The number of passes after which accumulation stops.
+    int target() const { return m_settings.spp; }
+    /// Whether image() is the reduced pass (no full pass finished since the change).
+    bool showing_reduced() const { return m_passes == 0 && m_reduced.has_value(); }
+    /// The image to show, full size, linear radiance (R, G, B): the film's, or the reduced
+    /// pass enlarged (each of its pixels covers reduced_scale x reduced_scale pixels).
+    Image image() const;
+    /// The film's own image (what `glint render` would write after passes() samples).
+    Image film_image() const { return m_film.resolve(); }
+    /// What the last pass reported (samples, rays, seconds).
+    const RenderStats& last_stats() const { return m_last; }
+
+    const RenderSettings& settings() const { return m_settings; }
+    const Scene& scene() const { return *m_scene; }
+    const std::string& integrator() const { return m_settings.integrator; }
+
+    /// Names of the integrators that render pass by pass with these settings.
+    static std::vector<std::string> progressive_integrators(const RenderSettings& settings);
+
+private:
+    std::unique_ptr<Camera> make_camera_for(Vec2i resolution) const;
+    void restart();
+
+    SceneDesc m_desc;  // as loaded; light edits are applied to a copy
+    RenderSettings m_settings;
+    SessionOptions m_options;
+    Params m_camera;
+    std::optional<LightEdits> m_lights;
+    std::unique_ptr<Scene> m_scene;
+    std::unique_ptr<Integrator> m_integrator;
+    ProgressiveIntegrator* m_progressive = nullptr;  // m_integrator, seen as progressive
+    Film m_film;
+    std::optional<Image> m_reduced;
+    int m_passes = 0;
+    bool m_reduced_due = true;
+    // What changed since the last pass.
+    bool m_camera_changed = false;
+    bool m_rebuild = false;
+    bool m_restart = false;
+    RenderStats m_last;
+};
+
+}  // namespace glint

@@ -1,0 +1,120 @@
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <viewer/render_thread.h>
+
+namespace glint::viewer {
+
+RenderThread::RenderThread(ProgressiveSession session, int full_pass_budget)
+    : m_session(std::move(session)), m_budget(full_pass_budget), m_thread([this] { run(); }) {}
+
+RenderThread::~RenderThread() {
+    {
+        const std::lock_guard lock(m_mutex);
+        m_stop = true;
+        cancel_locked();
+    }
+    m_wake.notify_all();
+    m_thread.join();
+}
+
+void RenderThread::cancel_locked() {
+    m_cancel.store(1);
+}
+
+void RenderThread::request_camera(const Params& camera) {
+    const std::lock_guard lock(m_mutex);
+    m_camera = camera;
+    cancel_locked();
+    m_wake.notify_all();
+}
+
+void RenderThread::request_lights(const LightEdits& lights) {
+    const std::lock_guard lock(m_mutex);
+    m_lights = lights;
+    cancel_locked();
+    m_wake.notify_all();
+}
+
+void RenderThread::request_integrator(const std::string& name) {
+    const std::lock_guard lock(m_mutex);
+    m_integrator = name;
+    cancel_locked();
+    m_wake.notify_all();
+}
+
+void RenderThread::allow_passes(int count) {
+    const std::lock_guard lock(m_mutex);
+    if (m_budget >= 0) m_budget += count;
+    m_wake.notify_all();
+}
+
+bool RenderThread::latest(Frame& frame) const {
+    const std::lock_guard lock(m_mutex);
+    if (m_frame.version == frame.version) return false;
+    frame = m_frame;
+    return true;
+}
+
+uint64_t RenderThread::version() const {
+    const std::lock_guard lock(m_mutex);
+    return m_frame.version;
+}
+
+void RenderThread::run() {
+    bool idle = false;  // the session reached its target, or the last change failed
+    for (;;) {
+        {
+            std::unique_lock lock(m_mutex);
+            auto changes = [&] { return m_camera || m_lights || m_integrator; };
+            // Nothing to do until a change, more budget, or the end. A change may always
+            // render its reduced pass: the budget counts full passes only.
+            m_wake.wait(lock, [&] { return m_stop || changes() || (!idle && m_budget != 0); });
+            if (m_stop) return;
+            try {
+                if (m_integrator) m_session.set_integrator(*m_integrator);
+                m_frame.error.clear();
+            } catch (const Error& e) {
+                m_frame.error = e.what();
+            }
+            if (m_camera) m_session.set_camera(*m_camera);
+            if (m_lights) m_session.set_lights(*m_lights);
+            if (changes()) idle = false;
+            m_camera.reset();
+            m_lights.reset();
+            m_integrator.reset();
+            m_cancel.store(0);
+        }
+        Progress progress("view", 1, true);
+        // The reduced pass is short and runs to its end: while the user drags, changes
+        // arrive every frame, and cancelling it too would leave the window without a view.
+        if (!m_session.next_pass_reduced()) progress.set_cancel_flag(&m_cancel);
+        PassKind kind = PassKind::none;
+        try {
+            kind = m_session.render_next(progress);
+        } catch (const Interrupted&) {
+            continue;  // a change is waiting
+        } catch (const Error& e) {
+            const std::lock_guard lock(m_mutex);
+            m_frame.error = e.what();
+            ++m_frame.version;
+            idle = true;
+            continue;
+        }
+        if (kind == PassKind::none) {
+            idle = true;
+            continue;
+        }
+        Image image = m_session.image();
+        const std::lock_guard lock(m_mutex);
+        if (kind == PassKind::full && m_budget > 0) --m_budget;
+        m_frame.image = std::move(image);
+        m_frame.passes = m_session.passes();
+        m_frame.reduced = kind == PassKind::reduced;
+        m_frame.pass_seconds = m_session.last_stats().seconds;
+        m_frame.pass_samples = m_session.last_stats().samples;
+        m_frame.integrator = m_session.integrator();
+        ++m_frame.version;
+    }
+}
+
+}  // namespace glint::viewer

@@ -1,0 +1,72 @@
+#pragma once
+// The viewer's worker: runs a ProgressiveSession on a thread of its own (the passes use TBB
+// inside), so that the window never waits for a pass. The window asks for changes, which
+// cancel the pass in flight, and takes the latest image when it draws.
+#include <glint/core/params.h>
+#include <glint/film/image.h>
+#include <glint/view/light_edits.h>
+#include <glint/view/progressive_session.h>
+
+#include <atomic>
+#include <condition_variable>
+#include <cstdint>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+
+namespace glint::viewer {
+
+/// What the window shows: the session's image after a pass, and what it counts.
+struct Frame {
+    Image image;
+    int passes = 0;        ///< full passes in the image (samples per pixel)
+    bool reduced = false;  ///< the reduced-resolution pass after a change
+    uint64_t version = 0;  ///< grows with every frame published
+    double pass_seconds = 0.0;
+    uint64_t pass_samples = 0;
+    std::string integrator;
+    std::string error;  ///< the last error of a change (bad integrator, scene that fails)
+};
+
+class RenderThread {
+public:
+    /// Starts rendering `session`, which the thread owns from now on. `full_pass_budget`:
+    /// how many full passes it may render before it waits for allow_passes() (-1: no limit,
+    /// it stops at the session's target).
+    RenderThread(ProgressiveSession session, int full_pass_budget = -1);
+    /// Cancels the pass in flight and joins the thread.
+    ~RenderThread();
+    RenderThread(const RenderThread&) = delete;
+    RenderThread& operator=(const RenderThread&) = delete;
+
+    /// Changes, applied before the next pass; each cancels the pass in flight.
+    void request_camera(const Params& camera);
+    void request_lights(const LightEdits& lights);
+    void request_integrator(const std::string& name);
+    /// Lets the thread render `count` more full passes (with a budget).
+    void allow_passes(int count);
+
+    /// Copies the latest frame into `frame` when it is newer than frame.version.
+    bool latest(Frame& frame) const;
+    /// The version of the latest frame (see Frame::version).
+    uint64_t version() const;
+
+private:
+    void run();
+    void cancel_locked();
+
+    ProgressiveSession m_session;
+    mutable std::mutex m_mutex;
+    std::condition_variable m_wake;
+    std::atomic<int> m_cancel{0};  // Progress throws Interrupted while it is set
+    bool m_stop = false;
+    int m_budget;
+    std::optional<Params> m_camera;
+    std::optional<LightEdits> m_lights;
+    std::optional<std::string> m_integrator;
+    Frame m_frame;
+    std::thread m_thread;  // last: starts once everything above exists
+};
+
+}  // namespace glint::viewer

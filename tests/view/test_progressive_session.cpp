@@ -1,0 +1,248 @@
+// The viewer's progressive loop without a window: N passes equal `glint render --spp N` bit
+// for bit, changes restart accumulation, and a cancelled pass leaves nothing behind.
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <glint/scene/build.h>
+#include <glint/scene/lua/lua_loader.h>
+#include <glint/view/camera_controller.h>
+#include <glint/view/progressive_session.h>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <support/render_helpers.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <atomic>
+
+namespace glint {
+namespace {
+
+constexpr int kPasses = 8;
+
+std::string cornell(const std::string& extra) {
+    return test::example_with_settings(
+        "cornell-box.lua",
+        fmt::format("width = 20, height = 16, spp = {}, seed = 3{}", kPasses, extra));
+}
+
+ProgressiveSession make_session(const std::string& code) {
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    return ProgressiveSession(desc, parse_render_settings(&*desc.render));
+}
+
+// Every pass of the session until it stops; returns the film's image.
+Image render_all(ProgressiveSession& session) {
+    Progress progress("test", 1, true);
+    EXPECT_EQ(session.render_next(progress), PassKind::reduced);
+    EXPECT_TRUE(session.showing_reduced());
+    for (int pass = 1; pass <= kPasses; ++pass) {
+        EXPECT_EQ(session.render_next(progress), PassKind::full);
+        EXPECT_EQ(session.passes(), pass);
+        EXPECT_FALSE(session.showing_reduced());
+    }
+    EXPECT_EQ(session.render_next(progress), PassKind::none);
+    EXPECT_EQ(session.passes(), kPasses);
+    return session.image();
+}
+
+void expect_same_bits(const Image& a, const Image& b) {
+    ASSERT_EQ(a.width, b.width);
+    ASSERT_EQ(a.height, b.height);
+    int differing = 0;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            for (int c = 0; c < 3; ++c) differing += a.at(x, y, c) != b.at(x, y, c);
+        }
+    }
+    EXPECT_EQ(differing, 0) << "values differ from the one-go render";
+}
+
+struct SameBitsCase {
+    std::string integrator, sampler;
+    int threads;
+    friend void PrintTo(const SameBitsCase& c, std::ostream* os) {
+        *os << c.integrator << ", " << c.sampler << ", " << c.threads << " threads";
+    }
+};
+
+class SameBits : public testing::TestWithParam<SameBitsCase> {};
+
+// The claim of issue 18: with the camera still, N passes show what render --spp N writes.
+TEST_P(SameBits, PassesEqualOneRender) {
+    const SameBitsCase& c = GetParam();
+    const std::string code =
+        cornell(fmt::format(", integrator = '{}', sampler = '{}', photons = 2000, "
+                            "caustic_photons = 2000",
+                            c.integrator, c.sampler));
+    const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, c.threads);
+    ProgressiveSession session = make_session(code);
+    expect_same_bits(render_all(session), test::render_lua(code, c.threads));
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    View, SameBits,
+    testing::Values(SameBitsCase{"path", "sobol", 1}, SameBitsCase{"path", "sobol", 2},
+                    SameBitsCase{"path", "stratified", 2}, SameBitsCase{"path", "independent", 2},
+                    SameBitsCase{"whitted", "sobol", 2}, SameBitsCase{"photon", "sobol", 2}),
+    [](const testing::TestParamInfo<SameBitsCase>& info) {
+        return info.param.integrator + "_" + info.param.sampler + "_" +
+               std::to_string(info.param.threads);
+    });
+
+// Full passes until the session stops; returns the film's image.
+Image finish(ProgressiveSession& session) {
+    Progress progress("test", 1, true);
+    while (session.render_next(progress) != PassKind::none) {
+    }
+    EXPECT_EQ(session.passes(), kPasses);
+    return session.image();
+}
+
+TEST(ProgressiveSession, CameraMoveRestartsAndEqualsAFreshSession) {
+    const std::string code = cornell(", integrator = 'path'");
+    SceneDesc desc = load_scene_string(code, "cornell.lua");
+    ProgressiveSession session = make_session(code);
+    Progress progress("test", 1, true);
+    for (int i = 0; i < 3; ++i) session.render_next(progress);
+    ASSERT_EQ(session.passes(), 2);
+
+    CameraController controller(&*desc.camera);
+    controller.orbit(20.0f, 10.0f);
+    session.set_camera(controller.params());
+    EXPECT_EQ(session.passes(), 2) << "a change waits for the next pass";
+    EXPECT_EQ(session.render_next(progress), PassKind::reduced);
+    EXPECT_EQ(session.passes(), 0);
+    EXPECT_TRUE(session.showing_reduced());
+    EXPECT_EQ(session.render_next(progress), PassKind::full);
+    EXPECT_EQ(session.passes(), 1);
+    const Image moved = finish(session);
+
+    // The same view from the start: nothing of the old view may remain in the film.
+    desc.camera = controller.params();
+    ProgressiveSession fresh(desc, parse_render_settings(&*desc.render));
+    expect_same_bits(moved, render_all(fresh));
+}
+
+TEST(ProgressiveSession, ReducedPassIsShownEnlarged) {
+    ProgressiveSession session = make_session(cornell(""));
+    Progress progress("test", 1, true);
+    ASSERT_EQ(session.render_next(progress), PassKind::reduced);
+    const Image shown = session.image();
+    ASSERT_EQ(shown.width, 20);
+    ASSERT_EQ(shown.height, 16);
+    // 1/4 size: each 4 x 4 block is one pixel of the reduced pass; the blocks are not all
+    // the same (the box is not uniform).
+    bool blocks_differ = false;
+    for (int y = 0; y < 16; ++y) {
+        for (int x = 0; x < 20; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                EXPECT_EQ(shown.at(x, y, c), shown.at(x / 4 * 4, y / 4 * 4, c));
+                blocks_differ |= shown.at(x, y, c) != shown.at(0, 0, c);
+            }
+        }
+    }
+    EXPECT_TRUE(blocks_differ);
+}
+
+TEST(ProgressiveSession, LightPowerRestartsAndScalesTheImage) {
+    const std::string code = cornell(", integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    ProgressiveSession session = make_session(code);
+    const Image before = render_all(session);
+
+    LightEdits lights(desc);
+    ASSERT_EQ(lights.lights().size(), 1u);  // the one emissive quad
+    EXPECT_TRUE(lights.lights()[0].movable);
+    lights.lights()[0].power_scale = 2.0f;
+    session.set_lights(lights);
+    const Image after = render_all(session);
+    // One light: the light sampler's choice and every pdf stay; each sample's radiance is
+    // exactly doubled (a power of two), and so is every pixel.
+    for (size_t i = 0; i < before.pixels.size(); ++i)
+        ASSERT_EQ(after.pixels[i], 2.0f * before.pixels[i]) << "value " << i;
+}
+
+TEST(ProgressiveSession, MovedLightChangesTheScene) {
+    const std::string code = test::example_with_settings(
+        "point-caustic.lua", "width = 16, height = 16, spp = 8, integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "point.lua");
+    LightEdits lights(desc);
+    ASSERT_FALSE(lights.lights().empty());
+    ASSERT_TRUE(lights.lights()[0].movable);
+    lights.lights()[0].offset = Vec3(0.5f, -0.25f, 1.0f);
+    const SceneDesc moved = lights.apply(desc);
+    const Params before = desc.lights[0], after = moved.lights[0];
+    const Vec3 p0 = before.get_vec3("position"), p1 = after.get_vec3("position");
+    EXPECT_EQ(p1, p0 + Vec3(0.5f, -0.25f, 1.0f));
+
+    ProgressiveSession session(desc, parse_render_settings(&*desc.render));
+    const Image original = render_all(session);
+    session.set_lights(lights);
+    const Image shifted = render_all(session);
+    EXPECT_NE(original.pixels, shifted.pixels);
+}
+
+// An emissive shape moves by a transform in front of its own: the built light emits from
+// the moved quad, and the picture changes.
+TEST(ProgressiveSession, MovedAreaLightEmitsFromItsNewPlace) {
+    const std::string code = cornell(", integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    LightEdits lights(desc);
+    ASSERT_EQ(lights.lights().size(), 1u);
+    lights.lights()[0].offset = Vec3(10.0f, -300.0f, 20.0f);
+    const SceneDesc moved = lights.apply(desc);
+    const RenderSettings settings = parse_render_settings(&*desc.render);
+    const auto scene = build_scene(moved, settings);
+    ASSERT_EQ(scene->lights().size(), 1u);
+    for (const Vec2 u : {Vec2(0.1f, 0.2f), Vec2(0.9f, 0.7f)}) {
+        const auto emission = scene->lights()[0]->sample_le(u, Vec2(0.5f), 0.5f);
+        ASSERT_TRUE(emission.has_value());
+        EXPECT_NEAR(emission->ray.origin.y, 548.7f - 300.0f, 0.1f);
+        EXPECT_GE(emission->ray.origin.x, 213.0f + 10.0f - 0.1f);
+        EXPECT_LE(emission->ray.origin.x, 343.0f + 10.0f + 0.1f);
+        EXPECT_GE(emission->ray.origin.z, 227.0f + 20.0f - 0.1f);
+        EXPECT_LE(emission->ray.origin.z, 332.0f + 20.0f + 0.1f);
+    }
+    ProgressiveSession session(desc, settings);
+    const Image before = render_all(session);
+    session.set_lights(lights);
+    EXPECT_NE(render_all(session).pixels, before.pixels);
+}
+
+TEST(ProgressiveSession, CancelledPassRestarts) {
+    const std::string code = cornell(", integrator = 'path'");
+    ProgressiveSession session = make_session(code);
+    Progress quiet("test", 1, true);
+    session.render_next(quiet);
+    session.render_next(quiet);
+    ASSERT_EQ(session.passes(), 1);
+    std::atomic<int> cancel{1};
+    Progress cancelled("test", 1, true);
+    cancelled.set_cancel_flag(&cancel);
+    EXPECT_THROW(session.render_next(cancelled), Interrupted);
+    // The cut pass is thrown away with the rest; the result is still the one-go render.
+    expect_same_bits(render_all(session), test::render_lua(code));
+}
+
+TEST(ProgressiveSession, IntegratorChoice) {
+    const std::string code = cornell("");
+    ProgressiveSession session = make_session(code);
+    const std::vector<std::string> names =
+        ProgressiveSession::progressive_integrators(session.settings());
+    for (const char* name : {"path", "path_light", "path_bsdf", "whitted", "photon"})
+        EXPECT_NE(std::find(names.begin(), names.end(), name), names.end()) << name;
+    for (const char* name : {"bdpt", "light", "sppm", "vcm", "mlt"})
+        EXPECT_EQ(std::find(names.begin(), names.end(), name), names.end()) << name;
+    EXPECT_THROW(session.set_integrator("bdpt"), Error);
+    EXPECT_EQ(session.integrator(), "path");
+    Progress progress("test", 1, true);
+    session.render_next(progress);
+    session.render_next(progress);
+    session.set_integrator("whitted");
+    EXPECT_EQ(session.render_next(progress), PassKind::reduced);
+    EXPECT_EQ(session.passes(), 0);
+}
+
+}  // namespace
+}  // namespace glint
