@@ -47,7 +47,7 @@ BuiltScene build(const std::string& code) {
 std::unique_ptr<RadiosityIntegrator> solved(const BuiltScene& b) {
     auto integrator = std::make_unique<RadiosityIntegrator>(
         b.settings, RadiosityIntegratorSettings::read(b.settings.params));
-    integrator->prepare(*b.scene, true);
+    integrator->solve(*b.scene, true);
     return integrator;
 }
 

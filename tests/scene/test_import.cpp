@@ -338,7 +338,7 @@ TEST(ImportGltf, BuildsWithALuaMaterial) {
 
 // To be enabled once the principled material (branch `principled`) is merged: the glTF
 // materials then build as they are.
-TEST(ImportGltf, DISABLED_BuildsWithPrincipledMaterialsAfterMerge) {
+TEST(ImportGltf, BuildsWithPrincipledMaterials) {
     test::TempDir dir;
     write(dir.file("model.gltf"),
           "{\"asset\": {\"version\": \"2.0\"}, \"buffers\": [{\"byteLength\": 36, \"uri\": "

@@ -38,7 +38,7 @@ RadiosityIntegrator::RadiosityIntegrator(const RenderSettings& settings,
                                          const RadiosityIntegratorSettings& radiosity)
     : TileIntegrator(settings), m_radiosity(radiosity) {}
 
-void RadiosityIntegrator::prepare(const Scene& scene, bool quiet) {
+void RadiosityIntegrator::solve(const Scene& scene, bool quiet) {
     const float patch_size = radiosity_patch_size(scene, m_radiosity.solve);
     m_mesh = RadiosityMesh::build(scene, patch_size, kMaxPatches);
     const std::string& cache = m_radiosity.cache;
@@ -53,15 +53,19 @@ void RadiosityIntegrator::prepare(const Scene& scene, bool quiet) {
     if (!cache.empty()) save_radiosity_cache(m_mesh, cache);
 }
 
-RenderStats RadiosityIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
-    prepare(scene, progress.quiet());
+uint64_t RadiosityIntegrator::prepare(const Scene& scene) {
+    solve(scene, m_quiet);
     uint64_t photon_rays = 0;
     if (m_radiosity.hybrid && m_radiosity.caustic.caustic_photons > 0) {
         m_caustics = build_caustic_map(scene, m_settings, m_radiosity.caustic, photon_rays);
         m_caustic_radius2 = photon_search_radius2(scene, m_radiosity.caustic);
     }
+    return photon_rays;  // the solve's rays are in its note
+}
+
+RenderStats RadiosityIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    m_quiet = progress.quiet();
     RenderStats stats = TileIntegrator::render(scene, film, progress);
-    stats.rays += photon_rays;  // the solve's rays are in its note
     size_t leaves = 0;
     for (const RadiosityElement& e : m_mesh.elements) leaves += e.first_child < 0;
     if (m_loaded) {

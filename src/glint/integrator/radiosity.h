@@ -49,10 +49,16 @@ public:
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
 
-    /// The first half of render(): mesh and solve `scene`, or load the cache. Tests call it.
-    void prepare(const Scene& scene, bool quiet);
+    /// Meshes and solves `scene`, or loads the cache; `quiet` hides the solve's progress.
+    /// prepare() calls it before render()'s tiles and before the viewer's first pass.
+    void solve(const Scene& scene, bool quiet);
     const RadiosityMesh& mesh() const { return m_mesh; }
     const RadiositySolveStats& solve_stats() const { return m_solve_stats; }
+
+protected:
+    /// solve(), and the hybrid's caustic map: what every pass reads; returns the photon
+    /// rays traced.
+    uint64_t prepare(const Scene& scene) override;
 
 private:
     // Radiance leaving side `side` of the mesh at `at`: the interpolated radiosity (all of
@@ -69,6 +75,7 @@ private:
     RadiosityMesh m_mesh;
     RadiositySolveStats m_solve_stats;
     bool m_loaded = false;  // the solution came from the cache
+    bool m_quiet = false;   // the solve's progress hidden (render() follows its Progress)
     PhotonMap m_caustics;
     float m_caustic_radius2 = 0.0f;
 };

@@ -568,17 +568,14 @@ private:
             Vec3 emission(0.0f);
             if (m.emissiveFactor.size() == 3)
                 emission = Vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+            // glint's area lights emit one radiance over their surface, so an emissive
+            // texture cannot be followed: the factor alone is the emission.
             if (m.emissiveTexture.index >= 0 && emission != Vec3(0.0f)) {
-                check_uv(m.emissiveTexture.texCoord, "emissiveTexture");
-                params.set("emission", texture(m.emissiveTexture.index, true, where));
-                if (emission != Vec3(1.0f))
-                    warn(
-                        fmt::format("material {}: emissiveFactor is ignored where the emission "
-                                    "is a texture",
-                                    material_index));
-            } else if (emission != Vec3(0.0f)) {
-                params.set("emission", numbers_of(emission));
+                warn(fmt::format("material {}: emissiveTexture is ignored (an emitting surface "
+                                 "emits its emissiveFactor evenly)",
+                                 material_index));
             }
+            if (emission != Vec3(0.0f)) params.set("emission", numbers_of(emission));
             const double strength =
                 number_in(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
             if (strength != 1.0) params.set("emission_strength", strength);
