@@ -507,8 +507,9 @@ int run_view(const ViewOptions& view) {
     viewer::ViewerOptions options;
     options.scene_path = view.render.scene;
     options.tone_map = view.tone_map;
-    if (options.tone_map != "clip" && options.tone_map != "reinhard")
-        bad_flag("--tone-map", view.tone_map, "clip or reinhard");
+    if (options.tone_map != "clip" && options.tone_map != "reinhard" &&
+        options.tone_map != "filmic")
+        bad_flag("--tonemap", view.tone_map, "clip, reinhard or filmic");
     options.frames = int_flag("--frames", view.frames, 1, 1 << 20).value_or(0);
     options.screenshot = view.screenshot;
     if (!options.screenshot.empty() && options.frames == 0)
@@ -631,7 +632,8 @@ int main(int argc, char** argv) {
     view_cmd->add_option("--integrator", view.render.integrator,
                          "Light transport algorithm that renders pass by pass, e.g. path");
     view_cmd->add_option("--exposure", view.render.exposure, "Display exposure in stops");
-    view_cmd->add_option("--tone-map", view.tone_map, "Display tone mapping: clip or reinhard");
+    view_cmd->add_option("--tonemap", view.tone_map,
+                         "Display tone mapping: clip, reinhard or filmic (as render's PNG output)");
     view_cmd->add_option("--frames", view.frames,
                          "Headless: render N full passes, write --screenshot, exit");
     view_cmd->add_option("--screenshot", view.screenshot,

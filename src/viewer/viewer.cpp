@@ -126,7 +126,7 @@ struct UiState {
     std::array<char, 512> save_path{};
     std::string message;  // the last save, camera line or error, shown in the panel
 };
-constexpr const char* kToneMaps[] = {"clip", "reinhard"};
+constexpr const char* kToneMaps[] = {"clip", "reinhard", "filmic"};
 
 class Viewer {
 public:
@@ -137,7 +137,7 @@ public:
           m_lights(desc),
           m_integrators(ProgressiveSession::progressive_integrators(settings)) {
         m_ui.exposure = options.exposure;
-        m_ui.tone_map = parse_display_tone_map(options.tone_map) == DisplayToneMap::clip ? 0 : 1;
+        m_ui.tone_map = static_cast<int>(parse_tonemap(options.tone_map));
         m_ui.show_panel = !options.hide_panel;
         const auto it = std::find(m_integrators.begin(), m_integrators.end(), settings.integrator);
         m_ui.integrator =
@@ -180,8 +180,8 @@ private:
         const bool fresh = m_thread->latest(m_frame);
         if (fresh && !m_frame.error.empty()) m_ui.message = m_frame.error;
         if ((fresh || force) && !m_frame.image.pixels.empty()) {
-            m_shown = display_pixels(m_frame.image, m_ui.exposure,
-                                     parse_display_tone_map(kToneMaps[m_ui.tone_map]));
+            m_shown = display_pixels(
+                m_frame.image, ToneMapping{parse_tonemap(kToneMaps[m_ui.tone_map]), m_ui.exposure});
             texture.upload(m_shown);
         }
         return fresh;
@@ -354,7 +354,7 @@ private:
             }
         }
         restyle |= ImGui::SliderFloat("exposure", &m_ui.exposure, -8.0f, 8.0f, "%.2f stops");
-        restyle |= ImGui::Combo("tone mapping", &m_ui.tone_map, kToneMaps, 2);
+        restyle |= ImGui::Combo("tone mapping", &m_ui.tone_map, kToneMaps, 3);
         ImGui::Text("%d / %d spp%s", m_frame.passes, m_settings.spp,
                     m_frame.reduced ? " (reduced preview)" : "");
         const double rate =

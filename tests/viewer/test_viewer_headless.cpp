@@ -113,9 +113,9 @@ TEST(ViewerHeadless, BadFlagsNameTheFlag) {
     EXPECT_NE(r.exit_code, 0);
 #ifdef GLINT_HAVE_VIEWER
     EXPECT_NE(r.output.find("--screenshot"), std::string::npos) << r.output;
-    const test::CommandResult tone = test::run_glint("view " + kCornell + " --tone-map filmic");
+    const test::CommandResult tone = test::run_glint("view " + kCornell + " --tonemap aces");
     EXPECT_EQ(tone.exit_code, 2);
-    EXPECT_NE(tone.output.find("--tone-map"), std::string::npos) << tone.output;
+    EXPECT_NE(tone.output.find("--tonemap"), std::string::npos) << tone.output;
 #endif
 }
 

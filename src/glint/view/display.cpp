@@ -63,27 +63,22 @@ private:
 
 }  // namespace
 
-DisplayToneMap parse_display_tone_map(const std::string& name) {
-    if (name == "clip") return DisplayToneMap::clip;
-    if (name == "reinhard") return DisplayToneMap::reinhard;
-    throw Error(fmt::format("unknown tone mapping '{}' (expected: clip, reinhard)", name));
-}
-
-std::vector<uint8_t> display_pixels(const Image& image, float exposure, DisplayToneMap tone_map) {
+std::vector<uint8_t> display_pixels(const Image& image, const ToneMapping& mapping) {
     const int channel[3] = {image.channel_index("R"), image.channel_index("G"),
                             image.channel_index("B")};
     if (channel[0] < 0 || channel[1] < 0 || channel[2] < 0)
         throw Error("the viewer shows images with channels R, G and B");
     static const SrgbEncoder to_srgb8;
-    const double scale = std::exp2(static_cast<double>(exposure));
+    const double scale = std::exp2(static_cast<double>(mapping.exposure));
     const size_t count = static_cast<size_t>(image.width) * image.height;
     const size_t stride = image.channels.size();
     std::vector<uint8_t> out(count * 4);
     const float* pixel = image.pixels.data();
     for (size_t i = 0; i < count; ++i, pixel += stride) {
         for (int c = 0; c < 3; ++c) {
-            double v = static_cast<double>(pixel[channel[c]]) * scale;
-            if (tone_map == DisplayToneMap::reinhard && v > 0.0) v = v / (1.0 + v);
+            // As the PNG writer does (film/image_io.cpp): the curve of the scaled value.
+            const double v =
+                tone_curve(mapping.curve, static_cast<double>(pixel[channel[c]]) * scale);
             out[i * 4 + c] = to_srgb8(v);
         }
         out[i * 4 + 3] = 255;
