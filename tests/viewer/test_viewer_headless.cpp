@@ -27,7 +27,13 @@ std::string xvfb_prefix(std::string& why_not) {
         why_not = "xvfb-run is not installed (package xvfb)";
         return {};
     }
-    return "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 640x480x24' ";
+    // Under the sanitizers (the CI's second build), leak checking is off for the window's
+    // process alone: Mesa's software driver, which libGL loads and unloads itself, leaves
+    // 240 bytes that LeakSanitizer reports from an "<unknown module>" (unloaded before the
+    // report), so no suppression can name them. Its address and UB checks still run; in
+    // other builds the variable is not read.
+    return "ASAN_OPTIONS=\"${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0\" "
+           "LIBGL_ALWAYS_SOFTWARE=1 xvfb-run -a -s '-screen 0 640x480x24' ";
 #endif
 }
 
