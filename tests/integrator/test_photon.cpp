@@ -27,18 +27,10 @@ constexpr int kSppmPhotons = 10000;
 
 namespace {
 
-struct BuiltScene {
-    SceneDesc desc;
-    RenderSettings settings;
-    std::unique_ptr<Scene> scene;
-};
+using test::BuiltScene;
 
 BuiltScene build(const std::string& code) {
-    BuiltScene b;
-    b.desc = load_scene_string(code, "photon-test.lua");
-    b.settings = parse_render_settings(b.desc.render ? &*b.desc.render : nullptr);
-    b.scene = build_scene(b.desc, b.settings);
-    return b;
+    return test::build_lua(code, "photon-test.lua");
 }
 
 double total_power(const PhotonMap& map) {

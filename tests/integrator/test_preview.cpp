@@ -51,18 +51,10 @@ double region_error(const Image& test, const Image& reference) {
         .rel_mse;
 }
 
-struct BuiltScene {
-    SceneDesc desc;
-    RenderSettings settings;
-    std::unique_ptr<Scene> scene;
-};
+using test::BuiltScene;
 
 BuiltScene build(const std::string& code) {
-    BuiltScene b;
-    b.desc = load_scene_string(code, "preview-test.lua");
-    b.settings = parse_render_settings(b.desc.render ? &*b.desc.render : nullptr);
-    b.scene = build_scene(b.desc, b.settings);
-    return b;
+    return test::build_lua(code, "preview-test.lua");
 }
 
 }  // namespace

@@ -30,18 +30,10 @@ namespace {
 
 constexpr double kPiD = 3.14159265358979323846;
 
-struct BuiltScene {
-    SceneDesc desc;
-    RenderSettings settings;
-    std::unique_ptr<Scene> scene;
-};
+using test::BuiltScene;
 
 BuiltScene build(const std::string& code) {
-    BuiltScene b;
-    b.desc = load_scene_string(code, "radiosity-test.lua");
-    b.settings = parse_render_settings(b.desc.render ? &*b.desc.render : nullptr);
-    b.scene = build_scene(b.desc, b.settings);
-    return b;
+    return test::build_lua(code, "radiosity-test.lua");
 }
 
 std::unique_ptr<RadiosityIntegrator> solved(const BuiltScene& b) {

@@ -139,4 +139,12 @@ CommandResult run_glint(const std::string& arguments) {
     return run_command(glint_binary() + " " + arguments);
 }
 
+BuiltScene build_lua(const std::string& code, const std::string& name) {
+    BuiltScene b;
+    b.desc = load_scene_string(code, name);
+    b.settings = parse_render_settings(b.desc.render ? &*b.desc.render : nullptr);
+    b.scene = build_scene(b.desc, b.settings);
+    return b;
+}
+
 }  // namespace glint::test

@@ -4,6 +4,8 @@
 #include <glint/film/image.h>
 #include <glint/integrator/integrator.h>
 #include <glint/scene/render_settings.h>
+#include <glint/scene/scene.h>
+#include <glint/scene/scene_desc.h>
 
 #include <string>
 
@@ -22,6 +24,15 @@ RenderResult render_lua_with_stats(const std::string& code, int threads = 0);
 
 // The whole content of a text file (throws glint::Error when it cannot be read).
 std::string read_text(const std::string& path);
+
+// A scene script loaded and built, with what it was built from, for tests that drive an
+// integrator or the scene directly. `name` stands for the script's file in messages.
+struct BuiltScene {
+    SceneDesc desc;
+    RenderSettings settings;
+    std::unique_ptr<Scene> scene;
+};
+BuiltScene build_lua(const std::string& code, const std::string& name = "test.lua");
 
 // The example scene examples/`name` with its glint.render{...} call replaced by
 // glint.render{ `settings` } (a second glint.render would be an error).
