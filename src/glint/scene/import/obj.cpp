@@ -272,13 +272,8 @@ private:
 
 ObjScene parse_text(std::string_view text, const std::string& name, bool split) {
     ObjParser parser(name, split);
-    uint64_t number = 0;
-    while (!text.empty()) {
-        const size_t end = text.find('\n');
-        parser.parse_line(text.substr(0, end), ++number);
-        if (end == std::string_view::npos) break;
-        text.remove_prefix(end + 1);
-    }
+    for_each_line(text,
+                  [&](std::string_view line, uint64_t number) { parser.parse_line(line, number); });
     return parser.finish();
 }
 
