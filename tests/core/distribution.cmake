@@ -1,1 +1,0 @@
-glint_test(test_core_distribution test_distribution.cpp)
