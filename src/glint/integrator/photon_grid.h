@@ -3,14 +3,19 @@
 // every query has the same radius r, and cells are r wide, so every photon within r of a
 // point lies in the 3 x 3 x 3 cells around it -- fewer, since a cell whose box is farther
 // than r from the point is skipped (on a surface about nine cells remain, 9 r^2 of area
-// for the pi r^2 that counts). Built in O(n) by a counting sort of the photons by bucket;
-// each photon keeps its cell, so one whose cell merely shares a bucket with the cell a
-// query visits is not counted (nor counted twice). Unlike PhotonMap's k-nearest kd-tree,
-// a query costs the photons near the point, and a point far from every photon a few empty
-// buckets: what a caustic estimate made at every pixel of every frame needs. Most points
+// for the pi r^2 that counts). Unlike PhotonMap's k-nearest kd-tree, a query costs the
+// photons near the point, and a point far from every photon a few empty cells: what a
+// caustic estimate made at every pixel of every frame needs.
+//
+// The layout is for that query. Only occupied cells are stored, in an open-addressing hash
+// table of 32-bit slots (linear probing, at most half full) that points into a dense array
+// of cells; each cell's photons are contiguous, their positions in an array of their own
+// (12 bytes a photon: all a query reads of a photon it rejects), the rest of each photon
+// in a parallel array read only on a hit. An empty cell thus costs a hash and one slot
+// (usually); an occupied one a key compare and a linear walk of positions. Most points
 // are far from every photon (caustics are small): a bit set over coarser cells (2r, hashed
 // into 64 Kbit, 8 KB) marks the cells some photon's r-ball reaches, and a query whose
-// coarse cell is unmarked ends after one bit, without touching the buckets.
+// coarse cell is unmarked ends after one bit, without touching the table.
 #include <glint/integrator/photon_map.h>
 
 #include <cstdint>
@@ -25,8 +30,9 @@ public:
     /// Indexes `photons` for queries of radius `radius` (> 0, scene units).
     void build(const std::vector<Photon>& photons, float radius);
 
-    /// Calls visit(photon) for every photon strictly within the radius of `p`, in an order
-    /// that depends only on the photons and `p` (never on threads).
+    /// Calls visit(photon) for every photon strictly within the radius of `p`: the cells
+    /// around p in z, y, x order, and each cell's photons in the order build() was given
+    /// them -- an order that depends only on the photons and `p` (never on threads).
     template <typename Visit>
     void for_each_near(const Vec3& p, Visit&& visit) const;
 
@@ -35,12 +41,22 @@ public:
 
 private:
     glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p * m_inverse_cell)); }
-    uint32_t bucket_of(const glm::ivec3& c) const {
-        uint32_t h = static_cast<uint32_t>(c.x) * 73856093u ^
-                     static_cast<uint32_t>(c.y) * 19349663u ^
-                     static_cast<uint32_t>(c.z) * 83492791u;
-        h ^= h >> 15;
-        return h & m_mask;
+    // A full avalanche of the three coordinates (a multiply-xorshift mix): neighbouring
+    // cells must land in unrelated slots, or linear probing runs into clusters.
+    static uint32_t hash_cell(const glm::ivec3& c) {
+        uint64_t h = static_cast<uint32_t>(c.x) * 0x9e3779b97f4a7c15ull;
+        h ^= static_cast<uint32_t>(c.y) * 0xc2b2ae3d27d4eb4full;
+        h ^= static_cast<uint32_t>(c.z) * 0x165667b19e3779f9ull;
+        h ^= h >> 29;
+        h *= 0xbf58476d1ce4e5b9ull;
+        return static_cast<uint32_t>(h >> 32);
+    }
+    // The index into m_cells of cell `c`, or kNoCell when no photon lies in it.
+    uint32_t find_cell(const glm::ivec3& c) const {
+        for (uint32_t slot = hash_cell(c) & m_mask;; slot = (slot + 1) & m_mask) {
+            const uint32_t index = m_slots[slot];
+            if (index == kNoCell || m_cells[index].key == c) return index;
+        }
     }
     uint32_t coarse_bit(const Vec3& p) const {
         const glm::ivec3 c(glm::floor(p * (0.5f * m_inverse_cell)));
@@ -54,19 +70,20 @@ private:
         return (m_coarse[bit >> 6] >> (bit & 63)) & 1u;
     }
     static constexpr uint32_t kCoarseBits = 1u << 16;
-    // What a query reads of every candidate; the rest of the photon only on a hit.
-    struct Entry {
-        Vec3 p;
-        glm::ivec3 cell;
+    static constexpr uint32_t kNoCell = ~0u;
+    struct Cell {
+        glm::ivec3 key;
+        uint32_t begin, end;  // its photons: [begin, end) of m_positions and m_photons
     };
 
     float m_radius = 0.0f;
     float m_cell = 0.0f;
     float m_inverse_cell = 0.0f;
-    uint32_t m_mask = 0;             // bucket count - 1 (a power of two)
-    std::vector<Entry> m_entries;    // sorted by bucket
-    std::vector<Photon> m_photons;   // in the same order
-    std::vector<uint32_t> m_start;   // bucket b holds [m_start[b], m_start[b + 1])
+    uint32_t m_mask = 0;             // slot count - 1 (a power of two)
+    std::vector<uint32_t> m_slots;   // index into m_cells, or kNoCell
+    std::vector<Cell> m_cells;       // the occupied cells, in order of first photon
+    std::vector<Vec3> m_positions;   // the photons' positions, cell by cell
+    std::vector<Photon> m_photons;   // the same photons in the same order
     std::vector<uint64_t> m_coarse;  // kCoarseBits bits: coarse cells within r of a photon
 };
 
@@ -91,12 +108,11 @@ void PhotonGrid::for_each_near(const Vec3& p, Visit&& visit) const {
             if (dyz >= r2) continue;
             for (int x = 0; x < 3; ++x) {
                 if (dyz + d2[0][x] >= r2) continue;
-                const glm::ivec3 cell = centre + glm::ivec3(x - 1, y - 1, z - 1);
-                const uint32_t b = bucket_of(cell);
-                for (uint32_t i = m_start[b]; i < m_start[b + 1]; ++i) {
-                    const Entry& e = m_entries[i];
-                    if (e.cell == cell && length_squared(e.p - p) < r2) visit(m_photons[i]);
-                }
+                const uint32_t index = find_cell(centre + glm::ivec3(x - 1, y - 1, z - 1));
+                if (index == kNoCell) continue;
+                const Cell& cell = m_cells[index];
+                for (uint32_t i = cell.begin; i < cell.end; ++i)
+                    if (length_squared(m_positions[i] - p) < r2) visit(m_photons[i]);
             }
         }
     }
