@@ -65,11 +65,22 @@ public:
     /// The radius the next pass's caustic estimate uses (0 before the first pass).
     float radius() const { return m_photon_passes > 0 ? std::sqrt(m_radius2) : 0.0f; }
 
+    /// Whether the camera pass traces its rays in packets (the default) or one at a time:
+    /// the same image bit for bit, the one-ray form being the plain loop the packet form is
+    /// tested against (and what bench/preview compares its speed with).
+    void set_packets(bool packets) { m_packets = packets; }
+
 private:
+    struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
     void restart(const Scene& scene);
     void trace_photons(const Scene& scene, RenderStats& stats);
+    Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf) const;
+    Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                               Spectrum reflected) const;
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                            RayCounter& counter) const;
+    void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,
+                      Arena& arena, RayCounter& counter) const;
 
     RenderSettings m_settings;
     PreviewSettings m_preview;
@@ -81,6 +92,7 @@ private:
     int m_photon_passes = 0;  // batches traced since the restart
     float m_radius2 = 0.0f;   // squared radius of the current pass's estimate
     PassTiming m_timing;
+    bool m_packets = true;
 };
 
 }  // namespace glint
