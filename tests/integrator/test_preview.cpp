@@ -237,6 +237,7 @@ TEST(Preview, PhotonGridFindsThePhotonsWithinTheRadius) {
     rebuilt.build(photons, radius);
     ASSERT_EQ(grid.size(), photons.size());
     int found = 0;
+    PhotonGrid::Cache cache;
     for (int q = 0; q < 2000; ++q) {
         Vec3 p;
         switch (q % 4) {
@@ -260,11 +261,26 @@ TEST(Preview, PhotonGridFindsThePhotonsWithinTheRadius) {
         grid.for_each_near(p, [&](const Photon& ph) { visited.push_back(int(ph.power[0])); });
         rebuilt.for_each_near(p, [&](const Photon& ph) { again.push_back(int(ph.power[0])); });
         EXPECT_EQ(visited, again) << "query " << q;
+        // One cache across all queries (as a thread keeps it) changes nothing.
+        std::vector<int> cached;
+        grid.for_each_near(p, cache, [&](const Photon& ph) { cached.push_back(int(ph.power[0])); });
+        EXPECT_EQ(cached, visited) << "query " << q;
         std::sort(visited.begin(), visited.end());
         EXPECT_EQ(visited, expected) << "query " << q;
         found += static_cast<int>(expected.size());
     }
     EXPECT_GT(found, 5000);  // the queries met photons (in the spot, many per query)
+
+    // A rebuild with other photons: the cache notices and forgets what it knew.
+    const Vec3 spot(0.52f, 0.0f, -0.28f);
+    int before = 0, after = 0;
+    grid.for_each_near(spot, cache, [&](const Photon&) { ++before; });
+    grid.build(std::vector<Photon>(photons.begin(), photons.begin() + 1500), radius);
+    grid.for_each_near(spot, cache, [&](const Photon&) { ++after; });
+    int fresh = 0;
+    grid.for_each_near(spot, [&](const Photon&) { ++fresh; });
+    EXPECT_GT(before, after);
+    EXPECT_EQ(after, fresh);
 }
 
 // The camera pass's packet form (4 x 2 pixels a packet, shadow rays as a second packet)

@@ -12,6 +12,7 @@ void PhotonGrid::build(const std::vector<Photon>& photons, float radius) {
         throw Error("photon grid: the query radius must be a finite number > 0");
     if (photons.size() >= kNoCell) throw Error("photon grid: too many photons");
     m_radius = radius;
+    ++m_build;
     m_cell = radius;
     m_inverse_cell = 1.0f / radius;
     // Twice as many slots as photons, so at least twice as many as cells, for the build.

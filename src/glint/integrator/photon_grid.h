@@ -18,6 +18,7 @@
 // coarse cell is unmarked ends after one bit, without touching the table.
 #include <glint/integrator/photon_map.h>
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -30,11 +31,41 @@ public:
     /// Indexes `photons` for queries of radius `radius` (> 0, scene units).
     void build(const std::vector<Photon>& photons, float radius);
 
+    /// What one thread keeps from query to query: where the photons of the cells around
+    /// the last query's cell are. Neighbouring pixels' queries mostly fall in the same cell
+    /// (a cell is several pixels wide), and then skip the table's probes. A cache notices
+    /// a rebuild of its grid and starts afresh; it must not outlive the grid (nor be used
+    /// after the grid is assigned another). It only saves work: results never depend on it.
+    class Cache {
+        friend class PhotonGrid;
+        static constexpr uint32_t kUnknown = ~0u;
+        struct Neighbourhood {
+            glm::ivec3 centre{0};
+            // Cell (x, y, z) - 1 + centre at [9 z + 3 y + x]: its photons' [begin, end), or
+            // begin = kUnknown when not looked up yet.
+            std::array<std::array<uint32_t, 2>, 27> ranges{};
+        };
+        const PhotonGrid* grid = nullptr;
+        uint64_t build = 0;
+        // The last two centres: a floor at y = 0 puts hit points on either side of a cell
+        // boundary, by rounding, from one pixel to the next.
+        std::array<Neighbourhood, 2> recent;
+        std::array<bool, 2> filled{false, false};
+        int newest = 0;
+        Neighbourhood& find(const glm::ivec3& centre);
+    };
+
     /// Calls visit(photon) for every photon strictly within the radius of `p`: the cells
     /// around p in z, y, x order, and each cell's photons in the order build() was given
-    /// them -- an order that depends only on the photons and `p` (never on threads).
+    /// them -- an order that depends only on the photons and `p` (never on threads or on
+    /// the cache).
     template <typename Visit>
-    void for_each_near(const Vec3& p, Visit&& visit) const;
+    void for_each_near(const Vec3& p, Cache& cache, Visit&& visit) const;
+    template <typename Visit>
+    void for_each_near(const Vec3& p, Visit&& visit) const {
+        Cache cache;
+        for_each_near(p, cache, visit);
+    }
 
     size_t size() const { return m_photons.size(); }
     float radius() const { return m_radius; }
@@ -77,6 +108,7 @@ private:
     };
 
     float m_radius = 0.0f;
+    uint64_t m_build = 0;  // builds so far: a cache filled by an earlier one is refilled
     float m_cell = 0.0f;
     float m_inverse_cell = 0.0f;
     uint32_t m_mask = 0;             // slot count - 1 (a power of two)
@@ -88,9 +120,15 @@ private:
 };
 
 template <typename Visit>
-void PhotonGrid::for_each_near(const Vec3& p, Visit&& visit) const {
+void PhotonGrid::for_each_near(const Vec3& p, Cache& cache, Visit&& visit) const {
     if (m_photons.empty() || !coarse_marked(p)) return;
     const glm::ivec3 centre = cell_of(p);
+    if (cache.grid != this || cache.build != m_build) {
+        cache.grid = this;
+        cache.build = m_build;
+        cache.filled = {false, false};
+    }
+    Cache::Neighbourhood& near = cache.find(centre);
     const float r2 = m_radius * m_radius;
     // Squared distance from p to the slabs of cells centre - 1, centre and centre + 1 on
     // each axis (0 for its own cell).
@@ -108,14 +146,28 @@ void PhotonGrid::for_each_near(const Vec3& p, Visit&& visit) const {
             if (dyz >= r2) continue;
             for (int x = 0; x < 3; ++x) {
                 if (dyz + d2[0][x] >= r2) continue;
-                const uint32_t index = find_cell(centre + glm::ivec3(x - 1, y - 1, z - 1));
-                if (index == kNoCell) continue;
-                const Cell& cell = m_cells[index];
-                for (uint32_t i = cell.begin; i < cell.end; ++i)
+                std::array<uint32_t, 2>& range = near.ranges[9 * z + 3 * y + x];
+                if (range[0] == Cache::kUnknown) {
+                    const uint32_t index = find_cell(centre + glm::ivec3(x - 1, y - 1, z - 1));
+                    range = index == kNoCell
+                                ? std::array<uint32_t, 2>{0, 0}
+                                : std::array<uint32_t, 2>{m_cells[index].begin, m_cells[index].end};
+                }
+                for (uint32_t i = range[0]; i < range[1]; ++i)
                     if (length_squared(m_positions[i] - p) < r2) visit(m_photons[i]);
             }
         }
     }
+}
+
+inline PhotonGrid::Cache::Neighbourhood& PhotonGrid::Cache::find(const glm::ivec3& centre) {
+    for (int i : {newest, 1 - newest})
+        if (filled[i] && recent[i].centre == centre) return recent[i];
+    newest = 1 - newest;  // the older one makes way
+    filled[newest] = true;
+    recent[newest].centre = centre;
+    for (auto& range : recent[newest].ranges) range[0] = kUnknown;
+    return recent[newest];
 }
 
 }  // namespace glint

@@ -247,15 +247,17 @@ struct PreviewIntegrator::CameraLanes {
     PerLane<SurfaceInteraction> si;
     PerLane<SpecularChain> chains;  // for the lanes whose camera ray met a mirror or glass
     PerLane<Spectrum> L;
+    PhotonGrid::Cache photon_cache;  // the lanes' caustic estimates, one after the other
 };
 
 // The caustic photons within the radius of `si`, each batch an estimate of its own (Knaus
 // and Zwicker): sum f Phi / (pi r^2) over the photons, divided by the batches kept.
-Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf) const {
+Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                                             PhotonGrid::Cache& cache) const {
     const Vec3 wo = si.to_local(si.wo);
     const float viewer_side = glm::dot(si.wo, si.ng);
     Spectrum sum(0.0f);
-    m_grid.for_each_near(si.p, [&](const Photon& photon) {
+    m_grid.for_each_near(si.p, cache, [&](const Photon& photon) {
         if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) return;  // the other side
         sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power;
     });
@@ -266,8 +268,8 @@ Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const
 // Light leaving the first surface that is not purely specular towards the camera, but for
 // the direct light: the caustic photons and the ambient term.
 Spectrum PreviewIntegrator::indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
-                                              Spectrum reflected) const {
-    if (m_grid.size() > 0) reflected += caustic_estimate(si, bsdf);
+                                              Spectrum reflected, PhotonGrid::Cache& cache) const {
+    if (m_grid.size() > 0) reflected += caustic_estimate(si, bsdf, cache);
     reflected += m_ambient * si.material->albedo(si);
     return reflected;
 }
@@ -277,7 +279,8 @@ Spectrum PreviewIntegrator::indirect_estimate(const SurfaceInteraction& si, cons
 // that is not purely specular, where direct light, the caustic photons and the ambient
 // term meet.
 Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler,
-                                          Arena& arena, RayCounter& counter) const {
+                                          Arena& arena, RayCounter& counter,
+                                          PhotonGrid::Cache& cache) const {
     const SpecularChain chain = follow_specular_chain(scene, ray, Spectrum(1.0f), sampler, arena,
                                                       counter, kMaxCameraSegments, nullptr);
     Spectrum L = chain.emitted;
@@ -287,7 +290,7 @@ Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sa
     const Bsdf& bsdf = *chain.bsdf;
     const Spectrum direct =
         estimate_direct_light(scene, si, bsdf, sampler, LightWeighting::kNone, counter);
-    return L + chain.beta * indirect_estimate(si, bsdf, direct);
+    return L + chain.beta * indirect_estimate(si, bsdf, direct, cache);
 }
 
 // The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
@@ -379,8 +382,8 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
     }
     for_each_lane(shading, [&](int lane) {
         lanes.L[lane] =
-            emitted[lane] +
-            beta[lane] * indirect_estimate(*surface[lane], *bsdf_of[lane], reflected[lane]);
+            emitted[lane] + beta[lane] * indirect_estimate(*surface[lane], *bsdf_of[lane],
+                                                           reflected[lane], lanes.photon_cache);
     });
     for_each_lane(active, [&](int lane) {
         film.add_sample(lanes.pixels[lane], lanes.L[lane], 1.0f, nullptr);
@@ -417,6 +420,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
             } else {
                 PassSampler sampler;
                 sampler.set_seed(m_settings.seed);
+                PhotonGrid::Cache cache;
                 for (int y = rows.begin() * kBlockHeight;
                      y < std::min(h, rows.end() * kBlockHeight); ++y) {
                     for (int x = 0; x < w; ++x) {
@@ -425,7 +429,8 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                         const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
                         const Ray ray = scene.camera().sample_ray(film_point, sampler);
                         arena.reset();
-                        film.add_sample(pixel, camera_sample(scene, ray, sampler, arena, counter),
+                        film.add_sample(pixel,
+                                        camera_sample(scene, ray, sampler, arena, counter, cache),
                                         1.0f, nullptr);
                     }
                 }

@@ -74,11 +74,12 @@ private:
     struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
     void restart(const Scene& scene);
     void trace_photons(const Scene& scene, RenderStats& stats);
-    Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf) const;
-    Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
-                               Spectrum reflected) const;
+    Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                              PhotonGrid::Cache& cache) const;
+    Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf, Spectrum reflected,
+                               PhotonGrid::Cache& cache) const;
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
-                           RayCounter& counter) const;
+                           RayCounter& counter, PhotonGrid::Cache& cache) const;
     void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,
                       Arena& arena, RayCounter& counter) const;
 
