@@ -27,11 +27,13 @@ void PhotonGrid::build(const std::vector<Photon>& photons, float radius) {
     std::vector<uint32_t> cell_of_photon(photons.size());
     for (size_t i = 0; i < photons.size(); ++i) {
         // The coarse cells are 2r wide: the ball of radius r reaches at most two per axis,
-        // those of its bounding box's corners.
+        // those of its bounding box's corners p - r and p + r.
+        const glm::ivec3 low = coarse_cell_of(photons[i].p - Vec3(radius));
+        const glm::ivec3 high = coarse_cell_of(photons[i].p + Vec3(radius));
         for (int corner = 0; corner < 8; ++corner) {
-            const Vec3 offset((corner & 1) ? radius : -radius, (corner & 2) ? radius : -radius,
-                              (corner & 4) ? radius : -radius);
-            const uint32_t bit = coarse_bit(photons[i].p + offset);
+            const glm::ivec3 c((corner & 1) ? high.x : low.x, (corner & 2) ? high.y : low.y,
+                               (corner & 4) ? high.z : low.z);
+            const uint32_t bit = coarse_bit(c);
             m_coarse[bit >> 6] |= uint64_t{1} << (bit & 63);
         }
         const glm::ivec3 key = cell_of(photons[i].p);

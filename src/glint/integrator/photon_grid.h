@@ -89,15 +89,17 @@ private:
             if (index == kNoCell || m_cells[index].key == c) return index;
         }
     }
-    uint32_t coarse_bit(const Vec3& p) const {
-        const glm::ivec3 c(glm::floor(p * (0.5f * m_inverse_cell)));
+    glm::ivec3 coarse_cell_of(const Vec3& p) const {
+        return glm::ivec3(glm::floor(p * (0.5f * m_inverse_cell)));
+    }
+    static uint32_t coarse_bit(const glm::ivec3& c) {
         uint32_t h = static_cast<uint32_t>(c.x) * 2654435761u ^
                      static_cast<uint32_t>(c.y) * 2246822519u ^
                      static_cast<uint32_t>(c.z) * 3266489917u;
         return (h ^ (h >> 16)) & (kCoarseBits - 1);
     }
     bool coarse_marked(const Vec3& p) const {
-        const uint32_t bit = coarse_bit(p);
+        const uint32_t bit = coarse_bit(coarse_cell_of(p));
         return (m_coarse[bit >> 6] >> (bit & 63)) & 1u;
     }
     static constexpr uint32_t kCoarseBits = 1u << 16;
