@@ -38,12 +38,16 @@ public:
     /// after the grid is assigned another). It only saves work: results never depend on it.
     class Cache {
         friend class PhotonGrid;
-        static constexpr uint32_t kUnknown = ~0u;
+        // The occupied cells around a centre cell, in z, y, x order: where each lies
+        // (0, 1, 2 per axis for centre - 1, centre, centre + 1) and its photons.
         struct Neighbourhood {
             glm::ivec3 centre{0};
-            // Cell (x, y, z) - 1 + centre at [9 z + 3 y + x]: its photons' [begin, end), or
-            // begin = kUnknown when not looked up yet.
-            std::array<std::array<uint32_t, 2>, 27> ranges{};
+            int count = 0;
+            struct Occupied {
+                uint8_t x, y, z;
+                uint32_t begin, end;
+            };
+            std::array<Occupied, 27> cells;
         };
         const PhotonGrid* grid = nullptr;
         uint64_t build = 0;
@@ -52,7 +56,6 @@ public:
         std::array<Neighbourhood, 2> recent;
         std::array<bool, 2> filled{false, false};
         int newest = 0;
-        Neighbourhood& find(const glm::ivec3& centre);
     };
 
     /// Calls visit(photon) for every photon strictly within the radius of `p`: the cells
@@ -82,6 +85,8 @@ private:
         h *= 0xbf58476d1ce4e5b9ull;
         return static_cast<uint32_t>(h >> 32);
     }
+    // The occupied cells around `centre`, from `cache` or looked up into it.
+    const Cache::Neighbourhood& neighbourhood(Cache& cache, const glm::ivec3& centre) const;
     // The index into m_cells of cell `c`, or kNoCell when no photon lies in it.
     uint32_t find_cell(const glm::ivec3& c) const {
         for (uint32_t slot = hash_cell(c) & m_mask;; slot = (slot + 1) & m_mask) {
@@ -125,12 +130,8 @@ template <typename Visit>
 void PhotonGrid::for_each_near(const Vec3& p, Cache& cache, Visit&& visit) const {
     if (m_photons.empty() || !coarse_marked(p)) return;
     const glm::ivec3 centre = cell_of(p);
-    if (cache.grid != this || cache.build != m_build) {
-        cache.grid = this;
-        cache.build = m_build;
-        cache.filled = {false, false};
-    }
-    Cache::Neighbourhood& near = cache.find(centre);
+    const Cache::Neighbourhood& near = neighbourhood(cache, centre);
+    if (near.count == 0) return;
     const float r2 = m_radius * m_radius;
     // Squared distance from p to the slabs of cells centre - 1, centre and centre + 1 on
     // each axis (0 for its own cell).
@@ -142,34 +143,40 @@ void PhotonGrid::for_each_near(const Vec3& p, Cache& cache, Visit&& visit) const
         d2[a][1] = 0.0f;
         d2[a][2] = above * above;
     }
-    for (int z = 0; z < 3; ++z) {
-        for (int y = 0; y < 3; ++y) {
-            const float dyz = d2[2][z] + d2[1][y];
-            if (dyz >= r2) continue;
-            for (int x = 0; x < 3; ++x) {
-                if (dyz + d2[0][x] >= r2) continue;
-                std::array<uint32_t, 2>& range = near.ranges[9 * z + 3 * y + x];
-                if (range[0] == Cache::kUnknown) {
-                    const uint32_t index = find_cell(centre + glm::ivec3(x - 1, y - 1, z - 1));
-                    range = index == kNoCell
-                                ? std::array<uint32_t, 2>{0, 0}
-                                : std::array<uint32_t, 2>{m_cells[index].begin, m_cells[index].end};
-                }
-                for (uint32_t i = range[0]; i < range[1]; ++i)
-                    if (length_squared(m_positions[i] - p) < r2) visit(m_photons[i]);
-            }
-        }
+    for (int c = 0; c < near.count; ++c) {
+        const Cache::Neighbourhood::Occupied& cell = near.cells[c];
+        // A cell whose box is at least r from p is skipped.
+        const float dyz = d2[2][cell.z] + d2[1][cell.y];
+        if (dyz >= r2 || dyz + d2[0][cell.x] >= r2) continue;
+        for (uint32_t i = cell.begin; i < cell.end; ++i)
+            if (length_squared(m_positions[i] - p) < r2) visit(m_photons[i]);
     }
 }
 
-inline PhotonGrid::Cache::Neighbourhood& PhotonGrid::Cache::find(const glm::ivec3& centre) {
-    for (int i : {newest, 1 - newest})
-        if (filled[i] && recent[i].centre == centre) return recent[i];
-    newest = 1 - newest;  // the older one makes way
-    filled[newest] = true;
-    recent[newest].centre = centre;
-    for (auto& range : recent[newest].ranges) range[0] = kUnknown;
-    return recent[newest];
+inline const PhotonGrid::Cache::Neighbourhood& PhotonGrid::neighbourhood(
+    Cache& cache, const glm::ivec3& centre) const {
+    if (cache.grid != this || cache.build != m_build) {
+        cache.grid = this;
+        cache.build = m_build;
+        cache.filled = {false, false};
+    }
+    for (int i : {cache.newest, 1 - cache.newest})
+        if (cache.filled[i] && cache.recent[i].centre == centre) return cache.recent[i];
+    cache.newest = 1 - cache.newest;  // the older one makes way
+    cache.filled[cache.newest] = true;
+    Cache::Neighbourhood& near = cache.recent[cache.newest];
+    near.centre = centre;
+    near.count = 0;
+    for (uint8_t z = 0; z < 3; ++z) {
+        for (uint8_t y = 0; y < 3; ++y) {
+            for (uint8_t x = 0; x < 3; ++x) {
+                const uint32_t index = find_cell(centre + glm::ivec3(x - 1, y - 1, z - 1));
+                if (index != kNoCell)
+                    near.cells[near.count++] = {x, y, z, m_cells[index].begin, m_cells[index].end};
+            }
+        }
+    }
+    return near;
 }
 
 }  // namespace glint
