@@ -342,7 +342,8 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
         const Bsdf* bsdf = shade(scene, ray, si, arena);
         surface[lane] = &si;
         if (bsdf && bsdf->is_delta()) {
-            // Through mirrors and glass, one ray at a time (its camera ray counted above).
+            // Through mirrors and glass, one ray at a time, from the camera again: the chain
+            // traces and counts the camera ray anew (few pixels see a mirror or glass).
             --counter.rays;
             lanes.chains[lane] =
                 follow_specular_chain(scene, ray, Spectrum(1.0f), lanes.samplers[lane], arena,
