@@ -1,12 +1,13 @@
 // The preview integrator's frame times and convergence, as the viewer would see them: it
 // calls render_pass() in a loop, as the viewer does each frame, and times each pass.
 //   glint_bench_preview SCENE.lua --res WxH [--threads T] [--frames N] [--moves M]
-//                       [--set KEY=NUMBER ...]
+//                       [--set KEY=NUMBER ...] [--packets 0|1]
 //                       [--snapshots "0.25 1 4" --prefix OUT]
 // Prints the median ms per pass, split into the photon pass and the camera pass, the
 // frames per second that gives, and the median ms of the first pass after a camera move
-// (scene_changed(camera), a cleared film, one pass). With --snapshots, then renders from
-// no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
+// (scene_changed(camera), a cleared film, one pass). --packets 0 traces the camera pass one
+// ray at a time (the same image; to measure what the packets gain). With --snapshots, then renders
+// from no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
 // ended within each time t (seconds), for glint_bench_region_error.
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
@@ -54,11 +55,13 @@ int run(int argc, char** argv) {
     if (argc < 2)
         throw Error(
             "usage: glint_bench_preview SCENE.lua --res WxH [--threads T] "
-            "[--frames N] [--moves M] [--snapshots \"0.25 1 4\" --prefix OUT]");
+            "[--frames N] [--moves M] [--set KEY=NUMBER] [--packets 0|1] "
+            "[--snapshots \"0.25 1 4\" --prefix OUT]");
     const std::string path = argv[1];
     int width = 640, height = 480, threads = 0, frames = 30, moves = 5;
     std::vector<double> snapshots;
     std::string prefix;
+    bool packets = true;
     std::vector<std::pair<std::string, double>> overrides;
     for (int i = 2; i < argc; ++i) {
         const std::string flag = argv[i];
@@ -83,6 +86,8 @@ int run(int argc, char** argv) {
             if (eq == std::string::npos)
                 throw Error(fmt::format("--set: '{}' is not KEY=NUMBER", value));
             overrides.emplace_back(value.substr(0, eq), std::stod(value.substr(eq + 1)));
+        } else if (flag == "--packets") {
+            packets = value != "0";
         } else if (flag == "--prefix") {
             prefix = value;
         } else {
@@ -105,6 +110,7 @@ int run(int argc, char** argv) {
 
     auto integrator = make_integrator(settings);
     auto& preview = dynamic_cast<PreviewIntegrator&>(*integrator);
+    preview.set_packets(packets);
     Film film(width, height, false);
     std::vector<double> photon_ms, camera_ms, total_ms, moved_ms, cpu_ms;
     for (int pass = 0; pass < frames; ++pass) {

@@ -9,7 +9,10 @@
 // Zwicker's radius schedule), and an ambient term for the light neither of those carries.
 // The film averages the passes, so the image converges while nothing changes; photons
 // survive a camera move (they are in world space) and are dropped when a light or an
-// object moves.
+// object moves. For speed (15 frames per second at 640x480 is the aim) the camera rays of
+// 4 x 2 pixel blocks and their shadow rays are traced as Embree packets, the pass draws its
+// numbers from a cheap sampler of its own, and the photon grid caches its cells per thread;
+// see docs/integrators.md.
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/photon_grid.h>
 #include <glint/integrator/progressive.h>
@@ -65,11 +68,23 @@ public:
     /// The radius the next pass's caustic estimate uses (0 before the first pass).
     float radius() const { return m_photon_passes > 0 ? std::sqrt(m_radius2) : 0.0f; }
 
+    /// Whether the camera pass traces its rays in packets (the default) or one at a time:
+    /// the same image bit for bit, the one-ray form being the plain loop the packet form is
+    /// tested against (and what bench/preview compares its speed with).
+    void set_packets(bool packets) { m_packets = packets; }
+
 private:
+    struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
     void restart(const Scene& scene);
     void trace_photons(const Scene& scene, RenderStats& stats);
+    Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                              PhotonGrid::Cache& cache) const;
+    Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf, Spectrum reflected,
+                               PhotonGrid::Cache& cache) const;
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
-                           RayCounter& counter) const;
+                           RayCounter& counter, PhotonGrid::Cache& cache) const;
+    void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,
+                      Arena& arena, RayCounter& counter) const;
 
     RenderSettings m_settings;
     PreviewSettings m_preview;
@@ -81,6 +96,7 @@ private:
     int m_photon_passes = 0;  // batches traced since the restart
     float m_radius2 = 0.0f;   // squared radius of the current pass's estimate
     PassTiming m_timing;
+    bool m_packets = true;
 };
 
 }  // namespace glint
