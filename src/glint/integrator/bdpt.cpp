@@ -84,27 +84,32 @@ bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
 float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                           std::span<const PathVertex> camera, int s, int t,
                           const PathVertex& sampled, MisHeuristic heuristic,
-                          std::vector<MisVertex>& scratch, float merge_eta) {
+                          std::vector<MisVertex>& scratch, float merge_eta,
+                          float light_tracing_count) {
     // A light seen directly by the lens is made by (0, 2) or (1, 1); but (1, 1) is only done
     // for lights with a surface: a point, spot or infinite light seen directly is (0, 2)'s
     // alone (the environment) or nobody's (the others, invisible in every glint integrator).
     if (s + t == 2 && is_point_like(s == 0 ? camera[t - 1] : light[0])) return 1.0f;
     const bool delta_light = fill_mis_path(scene, light, camera, s, t, sampled, false, scratch);
-    return vcm_strategy_weight(scratch, s, false, delta_light, merge_eta, heuristic);
+    return vcm_strategy_weight(scratch, s, false, delta_light, merge_eta, heuristic,
+                               light_tracing_count);
 }
 
 float merge_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                        std::span<const PathVertex> camera, int s, int t, float merge_eta,
-                       MisHeuristic heuristic, std::vector<MisVertex>& scratch) {
+                       MisHeuristic heuristic, std::vector<MisVertex>& scratch,
+                       float light_tracing_count) {
     const bool delta_light =
         fill_mis_path(scene, light, camera, s, t, camera[t - 1], true, scratch);
-    return vcm_strategy_weight(scratch, s, true, delta_light, merge_eta, heuristic);
+    return vcm_strategy_weight(scratch, s, true, delta_light, merge_eta, heuristic,
+                               light_tracing_count);
 }
 
 StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVertex> light,
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
-                                      std::vector<MisVertex>& scratch, float merge_eta) {
+                                      std::vector<MisVertex>& scratch, float merge_eta,
+                                      float light_tracing_count) {
     StrategyContribution result;
     // The draws come first, so that later draws never depend on what a strategy found.
     Vec2 u_lens(0.0f), u_light(0.0f);
@@ -217,8 +222,8 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         L = qs.beta * f_light * f_camera * pt.beta * g;
     }
     if (L.is_black()) return result;
-    result.weight =
-        strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch, merge_eta);
+    result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch,
+                                        merge_eta, light_tracing_count);
     result.L = L * result.weight;
     return result;
 }
