@@ -14,7 +14,11 @@
 // vertex with a delta lobe (x_{j-1} or x_j, for s = j >= 1), and s = 0 when the light is a
 // delta light (a point, a spot or a direction: no camera path hits it). A delta vertex
 // stores its densities as 0, counted as 1 in the ratios (the delta lobe's probability is
-// taken to be the same from both sides), as in pbrt.
+// taken to be the same from both sides), as in pbrt; but the two densities that enter a
+// chain of delta vertices, one from each side, are not per unit area at the chain's first
+// vertex as pbrt has them: the caller gives them as each walk makes the chain's far end
+// (bdpt.cpp, weigh_specular_chains), else light tracing and merging are weighed far too low
+// for caustics seen directly or through glass.
 //
 // Vertex connection and merging (Georgiev et al. 2012) adds one more strategy per inner
 // vertex x_i (1 <= i <= k-2, no delta lobe there): the camera walk makes x_{k-1} .. x_i, the
