@@ -4,12 +4,17 @@
 #   cornell    examples/cornell-box.lua, whole image (reference: path)
 #   spheres    examples/cornell-spheres.lua, the glass sphere's caustic on the floor
 #              (reference: path at 65536 spp over the region alone, with --crop)
+#   spheres-direct  the same renders, the part of that region where the caustic on the floor
+#              is seen directly (light, glass, floor, lens; see bench/README.md)
+#   spheres-glass   the same renders, the part seen through the glass sphere (lens, glass,
+#              floor, glass, light: specular-diffuse-specular)
 #   ajar       examples/ajar-door.lua, whole image: light reaches the room only by bouncing
 #              through a door left ajar (reference: bdpt)
 # Each integrator renders at a ladder of sample counts; the time to a target is interpolated
 # in log-log between the two renders around it (a render's time is the CLI's own summary,
 # scene loading excluded). See bench/README.md, "Bidirectional methods".
-# At the defaults about 25 minutes on 2 cores; SCENES and INTEGRATORS pick a part.
+# At the defaults about 25 minutes on 2 cores; SCENES and INTEGRATORS pick a part. Scenes that
+# share a file share their renders (each is made once per run, and timed once).
 #
 # Environment (all optional):
 #   BUILD_DIR    build directory (default build), or a copy of its glint and
@@ -18,7 +23,12 @@
 #   RES          resolution (default 128x128; the spheres' region is given for it)
 #   SCENES       scenes to run (default "cornell spheres ajar")
 #   INTEGRATORS  integrators to time (default "path bdpt vcm mlt sppm"; those this build
-#                does not have are skipped)
+#                does not have are skipped). An entry LABEL=INTEGRATOR times INTEGRATOR
+#                under the name LABEL (letters, digits, _), so that one integrator can be
+#                timed with several settings in one run
+#   SETTINGS_<label>  extra glint.render{} settings (Lua) for the entry LABEL (or for a plain
+#                entry, the integrator's name), e.g. SETTINGS_vcm8x="vcm_light_paths = 131072"
+#   LADDER_<label>    its sample counts instead of the integrator's default ladder
 #   REF_SPP      samples per pixel of the references (default 4096 for path, 1024 for bdpt)
 #   TARGETS      relative MSE targets (default "0.02 0.005")
 #   CLOCK        wall (default: the render's wall-clock seconds) or cpu (its processor
@@ -50,14 +60,23 @@ scene_spec() {
     case $1 in
     cornell) echo "examples/cornell-box.lua|0 0 $width $height|path|${REF_SPP:-4096}|no" ;;
     spheres) echo "examples/cornell-spheres.lua|74 110 98 122|path|${REF_SPP:-65536}|yes" ;;
+    # Parts of the spheres' region at 128 x 128 (bench/README.md says how they were chosen).
+    spheres-direct) echo "examples/cornell-spheres.lua|78 116 92 118|path|${REF_SPP:-65536}|yes" ;;
+    spheres-glass) echo "examples/cornell-spheres.lua|74 110 90 113|path|${REF_SPP:-65536}|yes" ;;
     ajar) echo "examples/ajar-door.lua|0 0 $width $height|bdpt|${REF_SPP:-1024}|no" ;;
-    *) echo "unknown scene '$1' (expected: cornell, spheres, ajar)" >&2 && exit 2 ;;
+    *) echo "unknown scene '$1' (expected: cornell, spheres, spheres-direct, spheres-glass," \
+        "ajar)" >&2 && exit 2 ;;
     esac
 }
 
-# The sample counts each integrator is timed at: about the same time span for each.
+# The sample counts an entry (label, integrator) is timed at: about the same time span for each.
 ladder() {
-    case $1 in
+    local override="LADDER_$1"
+    if [[ -n ${!override:-} ]]; then
+        echo "${!override}"
+        return
+    fi
+    case $2 in
     path) echo "4 16 64 256 1024" ;;
     bdpt | vcm) echo "1 4 16 64 256" ;;
     mlt) echo "1 4 16 64 256" ;;
@@ -69,6 +88,24 @@ ladder() {
 has_integrator() {
     "$glint" render "$1" --integrator "$2" --res 4x4 --spp 1 -o "$tmp/probe.exr" --quiet \
         >/dev/null 2>&1
+}
+
+# The scene for an entry: `scene` itself, or a copy beside the other temporary files with the
+# entry's settings added to its glint.render{} (the scene must not require files beside it).
+scene_for() {  # scene, label -> path
+    local settings="SETTINGS_$2"
+    if [[ -z ${!settings:-} ]]; then
+        echo "$1"
+        return
+    fi
+    local out
+    out="$tmp/$2.$(basename "$1")"
+    sed "s/glint\.render{ */glint.render{ ${!settings}, /" "$1" >"$out"
+    if cmp -s "$1" "$out"; then
+        echo "error: no glint.render{ in $1 to add SETTINGS_$2 to" >&2
+        exit 2
+    fi
+    echo "$out"
 }
 
 render() {  # scene, output, args... -> seconds of the render (from the CLI's summary line)
@@ -102,17 +139,30 @@ for name in $SCENES; do
         "$([[ $ref_crop == yes ]] && echo "over the region ")($ref_seconds s)"
     printf '  %-6s %6s %9s %10s\n' integr. spp seconds "rel. MSE"
     rows=""
-    for integrator in $INTEGRATORS; do
+    for entry in $INTEGRATORS; do
+        label=${entry%%=*}
+        integrator=${entry#*=}
+        if [[ ! $label =~ ^[A-Za-z0-9_]+$ ]]; then
+            echo "error: '$label' in INTEGRATORS is not a label (letters, digits, _)" >&2
+            exit 2
+        fi
         if ! has_integrator "$scene" "$integrator"; then
             echo "  $integrator: not in this build, skipped"
             continue
         fi
-        for n in $(ladder "$integrator"); do
-            t=$(render "$scene" "$tmp/t.exr" --integrator "$integrator" --spp "$n" --seed 0)
+        entry_scene=$(scene_for "$scene" "$label")
+        for n in $(ladder "$label" "$integrator"); do
+            # Renders are kept for the run: scenes that share a file share them.
+            cached="$tmp/cache.$(basename "$scene").$label.$n"
+            if [[ ! -f $cached.exr ]]; then
+                render "$entry_scene" "$cached.exr" --integrator "$integrator" --spp "$n" \
+                    --seed 0 >"$cached.seconds"
+            fi
+            t=$(cat "$cached.seconds")
             # shellcheck disable=SC2086
-            e=$("$error" "$tmp/t.exr" "$tmp/ref.exr" $region)
-            printf '  %-6s %6d %9.2f %10.5f\n' "$integrator" "$n" "$t" "$e"
-            rows+="$integrator $n $t $e"$'\n'
+            e=$("$error" "$cached.exr" "$tmp/ref.exr" $region)
+            printf '  %-6s %6d %9.2f %10.5f\n' "$label" "$n" "$t" "$e"
+            rows+="$label $n $t $e"$'\n'
         done
     done
     for target in $TARGETS; do

@@ -33,26 +33,66 @@ using namespace glint::test;
 // 0.2 % at r = 0.05 (albedo 1, 256 iterations); r_0 = 0.05 shrinking, hence 0.3 % on top
 // of the noise. Merges carry a few per cent of this image (eta = n pi r^2 = 2 for n = 16 x 16 light
 // paths): the point light's furnace below is where merging is weighed.
-TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
-    auto scene = [](int seed) {
-        return fmt::format(R"(
-            glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
-            glint.render{{ width = 16, height = 16, spp = 32, seed = {}, integrator = 'vcm',
-                          vcm_radius = 0.05 }}
-            glint.sphere{{ center = {{0, 0, 0}}, radius = 3,
-                          material = glint.emissive{{ radiance = 2, two_sided = true }} }}
-            glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
-                          material = glint.diffuse{{ reflectance = {{0.8, 0.5, 0.2}} }} }}
-        )",
-                           seed);
-    };
+namespace {
+
+// The scene of the test below, with `extra` settings for glint.render.
+std::string emitting_sphere(int seed, const std::string& extra) {
+    return fmt::format(R"(
+        glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
+        glint.render{{ width = 16, height = 16, spp = 32, seed = {}, integrator = 'vcm',
+                      vcm_radius = 0.05 {} }}
+        glint.sphere{{ center = {{0, 0, 0}}, radius = 3,
+                      material = glint.emissive{{ radiance = 2, two_sided = true }} }}
+        glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
+                      material = glint.diffuse{{ reflectance = {{0.8, 0.5, 0.2}} }} }}
+    )",
+                       seed, extra);
+}
+
+void expect_emitting_sphere(const std::string& extra) {
     const double expected[3] = {1.6, 1.0, 0.4};
     for (int c = 0; c < 3; ++c) {
-        const Estimate e = image_mean(scene, 6, c);
+        const Estimate e = image_mean([&](int seed) { return emitting_sphere(seed, extra); }, 6, c);
         fmt::print("channel {}: {:.5f} +- {:.5f} (exact {})\n", c, e.mean, e.se, expected[c]);
         EXPECT_LT(4.0 * e.se, 0.01 * expected[c]);
         EXPECT_NEAR(e.mean, expected[c], 4.0 * e.se + 0.003 * expected[c]) << "channel " << c;
     }
+}
+
+// The scene of ClosedSphereAroundPointLightSumsEveryBounce, with `extra` settings.
+std::string point_light_sphere(int seed, const std::string& extra) {
+    return fmt::format(R"(
+        glint.camera{{ eye = {{0, 0, 0}}, look_at = {{0, 0, -1}}, fov = 70 }}
+        glint.render{{ width = 32, height = 32, spp = 16, seed = {}, integrator = 'vcm',
+                      vcm_radius = 0.05 {} }}
+        glint.sphere{{ center = {{0, 0, 0}}, radius = 1, material = glint.diffuse{{ reflectance = 0.5 }} }}
+        glint.point_light{{ position = {{0, 0, 0}}, intensity = math.pi }}
+    )",
+                       seed, extra);
+}
+
+void expect_point_light_sphere(const std::string& extra, int images) {
+    for (int c = 0; c < 3; c += 2) {
+        const Estimate e =
+            image_mean([&](int seed) { return point_light_sphere(seed, extra); }, images, c);
+        fmt::print("channel {}: {:.5f} +- {:.5f} (exact 1)\n", c, e.mean, e.se);
+        EXPECT_LT(4.0 * e.se, 0.01);
+        EXPECT_NEAR(e.mean, 1.0, 4.0 * e.se + 0.003) << "channel " << c;
+    }
+}
+
+}  // namespace
+
+// test_bdpt's closed furnace: a diffuse sphere (albedo a) inside a sphere emitting Le inwards
+// reflects exactly a Le. Merging has no bias here: the photons lie on a sphere, where the
+// part within distance r of a point has area exactly pi r^2 (Archimedes), and the irradiance
+// is uniform. What is left is the bias of the merges' weights, computed as if the photon lay
+// at the camera vertex: it grows as r^2 and was measured as 1.4 % at a fixed r = 0.2 and
+// 0.2 % at r = 0.05 (albedo 1, 256 iterations); r_0 = 0.05 shrinking, hence 0.3 % on top
+// of the noise. Merges carry a few per cent of this image (eta = n pi r^2 = 2 for n = 16 x 16 light
+// paths): the point light's furnace below is where merging is weighed.
+TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
+    expect_emitting_sphere("");
 }
 
 // A point light of intensity pi at the centre of a closed diffuse sphere (radius 1, albedo
@@ -61,22 +101,23 @@ TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
 // 32 x 32 light paths: about 40 % of the image) and connections share the rest. The merges'
 // weights leave a bias of -0.2 % (measured), within the 0.3 % allowed as above.
 TEST(Vcm, ClosedSphereAroundPointLightSumsEveryBounce) {
-    auto scene = [](int seed) {
-        return fmt::format(R"(
-            glint.camera{{ eye = {{0, 0, 0}}, look_at = {{0, 0, -1}}, fov = 70 }}
-            glint.render{{ width = 32, height = 32, spp = 16, seed = {}, integrator = 'vcm',
-                          vcm_radius = 0.05 }}
-            glint.sphere{{ center = {{0, 0, 0}}, radius = 1, material = glint.diffuse{{ reflectance = 0.5 }} }}
-            glint.point_light{{ position = {{0, 0, 0}}, intensity = math.pi }}
-        )",
-                           seed);
-    };
-    for (int c = 0; c < 3; c += 2) {
-        const Estimate e = image_mean(scene, 6, c);
-        fmt::print("channel {}: {:.5f} +- {:.5f} (exact 1)\n", c, e.mean, e.se);
-        EXPECT_LT(4.0 * e.se, 0.01);
-        EXPECT_NEAR(e.mean, 1.0, 4.0 * e.se + 0.003) << "channel " << c;
-    }
+    expect_point_light_sphere("", 6);
+}
+
+// Both furnaces with 4 times as many light subpaths as pixels and a quarter as many: the
+// merges' kernel and eta, light tracing's count and the splats' scale follow n_L (with 4x,
+// merging takes about 70 % of the point light's image, with 1/4 about 15 %).
+TEST(Vcm, EmittingSphereFurnaceWithMoreOrFewerLightSubpaths) {
+    expect_emitting_sphere(", vcm_light_paths = 1024");
+    expect_emitting_sphere(", vcm_light_paths = 64");
+}
+
+TEST(Vcm, PointLightFurnaceWithMoreLightSubpaths) {
+    expect_point_light_sphere(", vcm_light_paths = 4096", 4);
+}
+
+TEST(Vcm, PointLightFurnaceWithFewerLightSubpaths) {
+    expect_point_light_sphere(", vcm_light_paths = 256", 6);
 }
 
 namespace {
@@ -102,10 +143,11 @@ void expect_converges(const std::function<std::string(int)>& test,
     EXPECT_FALSE(biased.agrees()) << "a 3 % bias passes: " << biased.describe();
 }
 
-void expect_vcm_converges_to_path(const char* file) {
+void expect_vcm_converges_to_path(const char* file, const std::string& extra = "", int spp = 32) {
     expect_converges(
         [&](int seed) {
-            return example(file, fmt::format("spp = 32, seed = {}, integrator = 'vcm'", seed));
+            return example(
+                file, fmt::format("spp = {}, seed = {}, integrator = 'vcm'{}", spp, seed, extra));
         },
         [&](int seed) {
             return example(file, fmt::format("spp = 64, seed = {}, integrator = 'path'", seed));
@@ -125,6 +167,18 @@ TEST(Vcm, ConvergesToPathOnTheCornellBox) {
 // and connections share the paths).
 TEST(Vcm, ConvergesToPathOnTheCornellSpheres) {
     expect_vcm_converges_to_path("cornell-spheres.lua");
+}
+
+// 4 times as many light subpaths as pixels (32 x 32) and a quarter as many: with 4x, every
+// pixel connects to one of the first 1024 subpaths and the rest only merge and join the
+// lens; with 1/4, each subpath serves 4 pixels 8 rows apart. 4x costs about 3 times as much
+// per iteration: 12 iterations, and the bound follows the noise.
+TEST(Vcm, ConvergesToPathOnTheCornellSpheresWithMoreLightSubpaths) {
+    expect_vcm_converges_to_path("cornell-spheres.lua", ", vcm_light_paths = 4096", 12);
+}
+
+TEST(Vcm, ConvergesToPathOnTheCornellSpheresWithFewerLightSubpaths) {
+    expect_vcm_converges_to_path("cornell-spheres.lua", ", vcm_light_paths = 256");
 }
 
 // With a merging radius far below a pixel's footprint merges get almost no weight: vcm is
@@ -250,6 +304,33 @@ TEST(Vcm, ImageIsIdenticalForAnyThreadCount) {
     EXPECT_TRUE(one.pixels == two.pixels);
 }
 
+// The same with more light subpaths than pixels (9316 for 48 x 48 x 4: a last chunk partly
+// filled) and fewer (1000, shared by pixels).
+TEST(Vcm, ImageIsIdenticalForAnyThreadCountWithMoreOrFewerLightSubpaths) {
+    for (int n : {9316, 1000}) {
+        const std::string scene = example_with_settings(
+            "cornell-spheres.lua",
+            fmt::format("width = 48, height = 48, spp = 2, seed = 7, integrator = 'vcm', "
+                        "vcm_light_paths = {}",
+                        n));
+        const Image one = render_lua(scene, 1);
+        const Image two = render_lua(scene, 2);
+        ASSERT_EQ(one.pixels.size(), two.pixels.size());
+        EXPECT_TRUE(one.pixels == two.pixels) << n << " light subpaths";
+    }
+}
+
+// One light subpath per pixel, given explicitly, is the default bit for bit (the splats'
+// scale, eta and the kernel are computed from n_L as they were from the pixel count).
+TEST(Vcm, OneLightSubpathPerPixelIsTheDefault) {
+    const std::string settings = "width = 24, height = 20, spp = 3, seed = 5, integrator = 'vcm'";
+    const Image plain = render_lua(example_with_settings("cornell-spheres.lua", settings), 2);
+    const Image given = render_lua(
+        example_with_settings("cornell-spheres.lua", settings + ", vcm_light_paths = 480"), 2);
+    ASSERT_EQ(plain.pixels.size(), given.pixels.size());
+    EXPECT_TRUE(plain.pixels == given.pixels);
+}
+
 TEST(Vcm, RadiusShrinksWithAlpha) {
     EXPECT_FLOAT_EQ(VcmIntegrator::radius_at(0.1f, 0.75f, 0), 0.1f);
     EXPECT_NEAR(VcmIntegrator::radius_at(0.1f, 0.75f, 15), 0.1 * std::pow(16.0, -0.125), 1e-7);
@@ -257,7 +338,9 @@ TEST(Vcm, RadiusShrinksWithAlpha) {
 }
 
 TEST(Vcm, RejectsBadSettings) {
-    for (const char* bad : {"vcm_radius = -1", "vcm_alpha = 0", "vcm_alpha = 1.5"}) {
+    for (const char* bad :
+         {"vcm_radius = -1", "vcm_alpha = 0", "vcm_alpha = 1.5", "vcm_light_paths = -1",
+          "vcm_light_paths = 16777217", "vcm_light_paths = 2.5"}) {
         const std::string code = fmt::format(
             "glint.camera{{ eye = {{0, 0, 1}}, look_at = {{0, 0, 0}} }}\n"
             "glint.render{{ width = 4, height = 4, integrator = 'vcm', {} }}",
@@ -275,15 +358,15 @@ TEST(VcmMis, WeightsOfConnectionsAndMergesSumToOne) {
                                          {0.05f, 3.0f, false},
                                          {2.5f, 0.9f, false},
                                          {1.0f, 1.0f, false}};
-    auto total = [](const std::vector<MisVertex>& path, bool delta_light, float eta,
-                    MisHeuristic h) {
+    auto total = [](const std::vector<MisVertex>& path, bool delta_light, float eta, MisHeuristic h,
+                    float count = 1.0f) {
         const int k = static_cast<int>(path.size());
         double sum = 0.0;
         for (int s = 0; s < k; ++s) {
             const bool possible = s == 0 ? !delta_light : !path[s].delta && !path[s - 1].delta;
-            if (possible) sum += vcm_strategy_weight(path, s, false, delta_light, eta, h);
+            if (possible) sum += vcm_strategy_weight(path, s, false, delta_light, eta, h, count);
             if (s >= 1 && s <= k - 2 && !path[s].delta)
-                sum += vcm_strategy_weight(path, s, true, delta_light, eta, h);
+                sum += vcm_strategy_weight(path, s, true, delta_light, eta, h, count);
         }
         return sum;
     };
@@ -304,12 +387,37 @@ TEST(VcmMis, WeightsOfConnectionsAndMergesSumToOne) {
             EXPECT_EQ(vcm_strategy_weight(five, s, false, false, 0.0f, h),
                       strategy_weight(five, s, false, h));
     }
+    // n_L / n_C light subpaths per camera subpath: light tracing (s = k - 1) counts n_L / n_C,
+    // the rest as before, and the weights still sum to 1.
+    for (MisHeuristic h : {MisHeuristic::kBalance, MisHeuristic::kPower}) {
+        for (float count : {0.25f, 1.0f, 4.0f, 8.0f}) {
+            for (float eta : {0.0f, 0.7f, 30.0f}) {
+                for (size_t k = 2; k <= five.size(); ++k) {
+                    const std::vector<MisVertex> path(five.end() - k, five.end());
+                    EXPECT_NEAR(total(path, false, eta, h, count), 1.0, 1e-6)
+                        << k << " vertices, count " << count;
+                }
+                std::vector<MisVertex> mirrored = five;
+                mirrored[2] = {0.0f, 0.0f, true};
+                mirrored[3].pdf_light = 0.0f;
+                mirrored[1].pdf_camera = 0.0f;
+                EXPECT_NEAR(total(mirrored, false, eta, h, count), 1.0, 1e-6) << count;
+                EXPECT_NEAR(total(five, true, eta, h, count), 1.0, 1e-6) << count;
+            }
+        }
+    }
     // Equal densities and eta = 1: the connection at x_1 and the merge there share equally
     // with the connection at x_2 (three strategies for a three-vertex path, one merge).
     const std::vector<MisVertex> even = {
         {1.0f, 1.0f, false}, {1.0f, 1.0f, false}, {1.0f, 1.0f, false}};
     EXPECT_NEAR(vcm_strategy_weight(even, 1, true, false, 1.0f, MisHeuristic::kBalance), 1.0 / 4.0,
                 1e-6);
+    // With 4 light subpaths per camera subpath light tracing (s = 2) counts 4 against the
+    // other connections' 1 and the merge's eta = 1: 4 / 7, and the merge 1 / 7.
+    EXPECT_NEAR(vcm_strategy_weight(even, 2, false, false, 1.0f, MisHeuristic::kBalance, 4.0f),
+                4.0 / 7.0, 1e-6);
+    EXPECT_NEAR(vcm_strategy_weight(even, 1, true, false, 1.0f, MisHeuristic::kBalance, 4.0f),
+                1.0 / 7.0, 1e-6);
 }
 
 // The weights vcm computes from real subpaths in the Cornell box: for the path light[0, 2)

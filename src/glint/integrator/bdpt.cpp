@@ -27,6 +27,53 @@ bool is_point_like(const PathVertex& v) {
 
 namespace {
 
+// A specular chain x_a .. x_b (delta vertices between non-delta x_{a-1} and x_{b+1}) is
+// entered once from each side: the light walk makes x_a with p_L(a) (per unit area at x_a),
+// the camera walk x_b with p_C(b), and every other density in the chain is a delta (1 in the
+// ratios). Only their ratio matters to the weights (a strategy joins on one side of the
+// chain or the other), and per unit area at the chain's first vertex it is wrong: what each
+// walk really makes is the chain's far end, x_{b+1} (or x_{a-1}), with the density of its
+// direction times |d omega / dA| through the chain. That Jacobian is G / cos at the start,
+// with G the chain's generalised geometry term, the same both ways (etendue is conserved by
+// reflection and refraction between ends in the same medium): the ratio is that of
+// p_omega(a-1 -> a) |cos at x_{b+1}| and p_omega(b+1 -> b) |cos at x_{a-1}|. Stored per area
+// at x_a and x_b instead, it is off by (d_{a-1,a}^2 / d_{b,b+1}^2) and two cosines: for a
+// caustic under a glass ball lit from a ceiling, a factor of ~100 towards the camera walk,
+// so that bdpt and vcm weighed light tracing and merging there far below what they are worth.
+// Both entries are rewritten here, so the weights of every strategy of the path still come
+// from one set of densities and sum to 1. Chains with an end at infinity or without a surface
+// normal (a point light, a pinhole lens) are left as they are (no cosine to take there).
+template <typename VertexAt>
+void weigh_specular_chains(std::vector<MisVertex>& path, VertexAt&& vertex_at) {
+    const int k = static_cast<int>(path.size());
+    auto finite_surface = [](const PathVertex& v) { return !v.infinite && v.ng != Vec3(0.0f); };
+    for (int i = 1; i + 1 < k; ++i) {
+        if (!path[i].delta || path[i - 1].delta) continue;
+        const int a = i;
+        int b = a;
+        while (b + 1 < k && path[b + 1].delta) ++b;
+        if (b + 1 >= k) return;
+        i = b;
+        const PathVertex& before = vertex_at(a - 1);
+        const PathVertex& first = vertex_at(a);
+        const PathVertex& last = vertex_at(b);
+        const PathVertex& after = vertex_at(b + 1);
+        if (!finite_surface(before) || !finite_surface(after) || first.infinite || last.infinite)
+            continue;
+        const Vec3 d_in = first.p - before.p, d_out = after.p - last.p;
+        const float in2 = glm::dot(d_in, d_in), out2 = glm::dot(d_out, d_out);
+        if (!(in2 > 0.0f && out2 > 0.0f)) continue;
+        const float cos_before = std::abs(glm::dot(before.ng, d_in)) / std::sqrt(in2);
+        const float cos_first = std::abs(glm::dot(first.ng, d_in)) / std::sqrt(in2);
+        const float cos_last = std::abs(glm::dot(last.ng, d_out)) / std::sqrt(out2);
+        const float cos_after = std::abs(glm::dot(after.ng, d_out)) / std::sqrt(out2);
+        if (!(cos_before > 0.0f && cos_first > 0.0f && cos_last > 0.0f && cos_after > 0.0f))
+            continue;
+        path[a].pdf_light *= in2 / cos_first * cos_after;
+        path[b].pdf_camera *= out2 / cos_last * cos_before;
+    }
+}
+
 // The path of light[0, s) and camera[0, t) as the weights see it, in `scratch`, for the
 // connection (s, t) (merge false) or the merge of a light subpath's vertex s with camera
 // vertex t - 1, which stands for both (merge true). Returns whether x_0 is a delta light.
@@ -76,6 +123,9 @@ bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
     if (qs) scratch[s - 1].pdf_camera = continuation_pdf(scene, pt_minus, pt, *qs);
     if (qs_minus)
         scratch[s - 2].pdf_camera = delta_qs ? 0.0f : continuation_pdf(scene, &pt, *qs, *qs_minus);
+    weigh_specular_chains(scratch, [&](int i) -> const PathVertex& {
+        return i < s ? light_at(i) : camera_at(k - 1 - i);
+    });
     return s > 0 && light_at(0).light && light_at(0).light->is_delta();
 }
 
@@ -84,27 +134,32 @@ bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
 float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                           std::span<const PathVertex> camera, int s, int t,
                           const PathVertex& sampled, MisHeuristic heuristic,
-                          std::vector<MisVertex>& scratch, float merge_eta) {
+                          std::vector<MisVertex>& scratch, float merge_eta,
+                          float light_tracing_count) {
     // A light seen directly by the lens is made by (0, 2) or (1, 1); but (1, 1) is only done
     // for lights with a surface: a point, spot or infinite light seen directly is (0, 2)'s
     // alone (the environment) or nobody's (the others, invisible in every glint integrator).
     if (s + t == 2 && is_point_like(s == 0 ? camera[t - 1] : light[0])) return 1.0f;
     const bool delta_light = fill_mis_path(scene, light, camera, s, t, sampled, false, scratch);
-    return vcm_strategy_weight(scratch, s, false, delta_light, merge_eta, heuristic);
+    return vcm_strategy_weight(scratch, s, false, delta_light, merge_eta, heuristic,
+                               light_tracing_count);
 }
 
 float merge_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                        std::span<const PathVertex> camera, int s, int t, float merge_eta,
-                       MisHeuristic heuristic, std::vector<MisVertex>& scratch) {
+                       MisHeuristic heuristic, std::vector<MisVertex>& scratch,
+                       float light_tracing_count) {
     const bool delta_light =
         fill_mis_path(scene, light, camera, s, t, camera[t - 1], true, scratch);
-    return vcm_strategy_weight(scratch, s, true, delta_light, merge_eta, heuristic);
+    return vcm_strategy_weight(scratch, s, true, delta_light, merge_eta, heuristic,
+                               light_tracing_count);
 }
 
 StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVertex> light,
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
-                                      std::vector<MisVertex>& scratch, float merge_eta) {
+                                      std::vector<MisVertex>& scratch, float merge_eta,
+                                      float light_tracing_count) {
     StrategyContribution result;
     // The draws come first, so that later draws never depend on what a strategy found.
     Vec2 u_lens(0.0f), u_light(0.0f);
@@ -217,8 +272,8 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         L = qs.beta * f_light * f_camera * pt.beta * g;
     }
     if (L.is_black()) return result;
-    result.weight =
-        strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch, merge_eta);
+    result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch,
+                                        merge_eta, light_tracing_count);
     result.L = L * result.weight;
     return result;
 }

@@ -43,28 +43,34 @@ struct StrategyContribution {
 /// s = 1 the light point (2D), the light (1D) and its part (1D), in sample_direct_light's
 /// order. `scratch` holds the path as the weights see it. `merge_eta` > 0 weights it among
 /// the merges of vertex connection and merging too (vcm_strategy_weight); 0 is bdpt.
+/// `light_tracing_count` is n_L / n_C, light subpaths per camera subpath (vcm_strategy_weight);
+/// the contribution of t = 1 is that of one light subpath either way (the film's splat scale
+/// divides by the number of them).
 StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVertex> light,
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
-                                      std::vector<MisVertex>& scratch, float merge_eta = 0.0f);
+                                      std::vector<MisVertex>& scratch, float merge_eta = 0.0f,
+                                      float light_tracing_count = 1.0f);
 
 /// The MIS weight of strategy (s, t) for the path made of light[0, s) and camera[0, t), where
 /// `sampled` stands for light[0] when s = 1 and t > 1 (the light point chosen by the
-/// strategy) and for camera[0] when t = 1 (the lens point chosen by it). `merge_eta` as for
-/// connect_strategy.
+/// strategy) and for camera[0] when t = 1 (the lens point chosen by it). `merge_eta` and
+/// `light_tracing_count` as for connect_strategy.
 float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                           std::span<const PathVertex> camera, int s, int t,
                           const PathVertex& sampled, MisHeuristic heuristic,
-                          std::vector<MisVertex>& scratch, float merge_eta = 0.0f);
+                          std::vector<MisVertex>& scratch, float merge_eta = 0.0f,
+                          float light_tracing_count = 1.0f);
 
 /// The MIS weight (vcm_strategy_weight) of merging light subpath vertex s (a photon, not in
 /// `light`: light[0, s) are the vertices before it) with camera vertex t - 1 (t >= 2, s >= 1,
 /// a surface that is not purely delta), which stands for the photon's position: the path
 /// light[0, s), camera[t - 1] ... camera[0]. `merge_eta` = n pi r^2 for n light paths merged
-/// per camera path within radius r.
+/// per camera path within radius r; `light_tracing_count` as for connect_strategy.
 float merge_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                        std::span<const PathVertex> camera, int s, int t, float merge_eta,
-                       MisHeuristic heuristic, std::vector<MisVertex>& scratch);
+                       MisHeuristic heuristic, std::vector<MisVertex>& scratch,
+                       float light_tracing_count = 1.0f);
 
 class BdptIntegrator final : public Integrator {
 public:

@@ -8,7 +8,7 @@ float strategy_weight(std::span<const MisVertex> path, int s, bool delta_light,
 }
 
 float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bool delta_light,
-                          float merge_eta, MisHeuristic heuristic) {
+                          float merge_eta, MisHeuristic heuristic, float light_tracing_count) {
     const int k = static_cast<int>(path.size());
     // A delta vertex's densities are stored as 0 and stand for the same discrete choice
     // on both sides: they count as 1 in a ratio.
@@ -24,8 +24,12 @@ float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bo
     auto merge_term = [&](int i, double ratio) {
         return term(ratio * remap(path[i].pdf_light) * eta);
     };
-    double own = 1.0;
-    double sum = 1.0;  // the strategy itself
+    // The sample count of connection j: light tracing (j = k - 1) is done n_L / n_C times per
+    // camera subpath, every other connection once.
+    const double light_tracing = light_tracing_count;
+    auto count = [&](int j) { return j == k - 1 ? light_tracing : 1.0; };
+    double own = term(count(s));
+    double sum = own;  // the strategy itself
     if (merge) {
         // The merge at x_s; the connection s counts as any other strategy.
         own = merge_term(s, 1.0);
@@ -47,7 +51,7 @@ float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bo
     ratio = 1.0;
     for (int i = s; i < k - 1; ++i) {
         ratio *= remap(path[i].pdf_light) / remap(path[i].pdf_camera);
-        if (!path[i].delta && !path[i + 1].delta) sum += term(ratio);
+        if (!path[i].delta && !path[i + 1].delta) sum += term(ratio * count(i + 1));
         if (can_merge(i + 1)) sum += merge_term(i + 1, ratio);
     }
     return static_cast<float>(own / sum);

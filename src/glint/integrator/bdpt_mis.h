@@ -14,7 +14,11 @@
 // vertex with a delta lobe (x_{j-1} or x_j, for s = j >= 1), and s = 0 when the light is a
 // delta light (a point, a spot or a direction: no camera path hits it). A delta vertex
 // stores its densities as 0, counted as 1 in the ratios (the delta lobe's probability is
-// taken to be the same from both sides), as in pbrt.
+// taken to be the same from both sides), as in pbrt; but the two densities that enter a
+// chain of delta vertices, one from each side, are not per unit area at the chain's first
+// vertex as pbrt has them: the caller gives them as each walk makes the chain's far end
+// (bdpt.cpp, weigh_specular_chains), else light tracing and merging are weighed far too low
+// for caustics seen directly or through glass.
 //
 // Vertex connection and merging (Georgiev et al. 2012) adds one more strategy per inner
 // vertex x_i (1 <= i <= k-2, no delta lobe there): the camera walk makes x_{k-1} .. x_i, the
@@ -23,6 +27,12 @@
 //   p_VM(i) = p_i p_L(i) eta,   eta = n pi r^2,
 // against 1 light path per camera path for the connections (Georgiev's eta_VCM). The same
 // ratios give its weight, and the weights of connections and merges of a path sum to 1.
+//
+// Sample counts (Veach's n_j in n_s p_s / sum_j n_j p_j): every connection with t >= 2 and
+// every merge is made once per camera subpath, so their counts are 1 and eta. Light tracing
+// (t = 1, the strategy s = k - 1) is made once per light subpath, and the lens density p_C
+// of x_{k-1} is over the whole frame (camera.h): with n_L light subpaths for n_C camera
+// subpaths (pixels) per iteration its count is n_L / n_C, 1 for bdpt.
 #include <span>
 
 namespace glint {
@@ -50,7 +60,10 @@ float strategy_weight(std::span<const MisVertex> path, int s, bool delta_light,
 /// 1 <= s <= path.size() - 2), among every connection and every merge that can make the
 /// path. `merge_eta` is eta = n pi r^2 (n light paths merged, r the merging radius, in the
 /// units of the per-area densities); 0 leaves merging out, which is strategy_weight.
+/// `light_tracing_count` is n_L / n_C, the count of strategy s = path.size() - 1 (t = 1)
+/// relative to the others (see above); 1 when there is one light subpath per camera subpath.
 float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bool delta_light,
-                          float merge_eta, MisHeuristic heuristic);
+                          float merge_eta, MisHeuristic heuristic,
+                          float light_tracing_count = 1.0f);
 
 }  // namespace glint

@@ -93,12 +93,13 @@ private:
 struct VcmIntegrator::Iteration {
     int index = 0;
     float radius = 0.0f;
-    float eta = 0.0f;          // n pi r^2, n = light subpaths merged per camera subpath
-    float merge_scale = 0.0f;  // the kernel over the light subpaths: 1 / (n pi r^2)
+    float eta = 0.0f;                  // n_L pi r^2: the merges' count against a connection's 1
+    float merge_scale = 0.0f;          // the kernel over the light subpaths: 1 / (n_L pi r^2)
+    float light_tracing_count = 1.0f;  // n_L / n_C: light tracing's count (bdpt_mis.h)
     WalkLimits camera_limits, light_limits;
     const Sampler* camera_sampler = nullptr;  // prototypes
     const Sampler* light_sampler = nullptr;
-    std::vector<std::vector<PathVertex>> light_paths;  // one per pixel, row-major
+    std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<Arena> arenas;                         // per chunk: the light BSDFs
     std::vector<std::vector<Splat>> splats;            // per chunk
     PhotonGrid grid;
@@ -110,10 +111,15 @@ VcmSettings VcmSettings::read(const Params& p) {
     VcmSettings s;
     s.radius = p.get_float("vcm_radius", s.radius);
     s.alpha = p.get_float("vcm_alpha", s.alpha);
+    s.light_paths = p.get_int("vcm_light_paths", s.light_paths);
     if (!(s.radius >= 0.0f && s.radius <= 1e12f))
         p.fail_at("vcm_radius", "'vcm_radius' must be in [0, 1e12] (0: from the scene's size)");
     if (!(s.alpha > 0.0f && s.alpha <= 1.0f))
         p.fail_at("vcm_alpha", "'vcm_alpha' must be in (0, 1] (1 keeps the radius fixed)");
+    if (s.light_paths < 0 || s.light_paths > VcmSettings::kMaxLightPaths)
+        p.fail_at("vcm_light_paths",
+                  fmt::format("'vcm_light_paths' must be in [0, {}] (0: one per pixel)",
+                              VcmSettings::kMaxLightPaths));
     return s;
 }
 
@@ -148,9 +154,13 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     const auto start = std::chrono::steady_clock::now();
     const int w = film.width(), h = film.height();
     const size_t pixels = static_cast<size_t>(w) * h;
-    // One light subpath per pixel and iteration, each splatting once: spp light paths per
-    // pixel, as bdpt's (camera.h).
-    film.set_splat_scale(1.0 / static_cast<double>(m_settings.spp));
+    const size_t n_light = m_vcm.light_paths > 0 ? static_cast<size_t>(m_vcm.light_paths) : pixels;
+    // A light subpath's splat is an estimate of the whole image as one light path per pixel
+    // would make it (the lens importance is normalised over the frame, camera.h): n_L of them
+    // per iteration make pixels / n_L of that image each. With n_L = pixels the scale is
+    // 1 / spp (exactly: both roundings are of the same quotient), as bdpt's.
+    film.set_splat_scale(static_cast<double>(pixels) /
+                         (static_cast<double>(n_light) * m_settings.spp));
     const SceneStats& scene_stats = scene.stats();
     const float scene_size =
         scene_stats.bounds.is_empty() ? 1.0f : glm::length(scene_stats.bounds.extent());
@@ -166,8 +176,10 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     it.light_limits = WalkLimits{max_depth >= 0 ? max_depth + 1 : kMaxVertices, true};
     it.camera_sampler = camera_sampler.get();
     it.light_sampler = light_sampler.get();
-    it.light_paths.resize(pixels);
-    const int chunks = static_cast<int>((pixels + kChunkPaths - 1) / kChunkPaths);
+    it.light_tracing_count =
+        static_cast<float>(static_cast<double>(n_light) / static_cast<double>(pixels));
+    it.light_paths.resize(n_light);
+    const int chunks = static_cast<int>((n_light + kChunkPaths - 1) / kChunkPaths);
     it.arenas.resize(chunks);
     it.splats.resize(chunks);
     it.progress = &progress;
@@ -178,15 +190,15 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
         it.index = iteration;
         it.radius = radius_at(r0, m_vcm.alpha, iteration);
         const double area = kPi * static_cast<double>(it.radius) * it.radius;
-        it.eta = static_cast<float>(static_cast<double>(pixels) * area);
-        it.merge_scale = static_cast<float>(1.0 / (static_cast<double>(pixels) * area));
+        it.eta = static_cast<float>(static_cast<double>(n_light) * area);
+        it.merge_scale = static_cast<float>(1.0 / (static_cast<double>(n_light) * area));
 
         tbb::parallel_for(0, chunks, [&](int chunk) { trace_light_chunk(scene, film, it, chunk); });
         for (std::vector<Splat>& splats : it.splats) film.add_splats(splats);
 
-        // The photons in pixel order, vertex order within a subpath.
+        // The photons in subpath order, vertex order within a subpath.
         photons.clear();
-        for (size_t i = 0; i < pixels; ++i) {
+        for (size_t i = 0; i < n_light; ++i) {
             const std::vector<PathVertex>& path = it.light_paths[i];
             for (size_t v = 1; v < path.size(); ++v) {
                 if (path[v].is_surface() && path[v].connectible())
@@ -202,21 +214,24 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     }
     stats.rays = it.rays.load();
     stats.notes.push_back(
-        fmt::format("vcm: merging radius {:.4g} at the first iteration, {:.4g} at the last", r0,
-                    radius_at(r0, m_vcm.alpha, m_settings.spp - 1)));
+        fmt::format("vcm: {} light subpaths per iteration, merging radius {:.4g} at the first "
+                    "iteration, {:.4g} at the last",
+                    n_light, r0, radius_at(r0, m_vcm.alpha, m_settings.spp - 1)));
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
 }
 
-// The light subpaths of one chunk of pixels, and their joins to the lens (t = 1). Draws, per
-// pixel from the light sampler at (pixel, iteration): the subpath (subpath.h), then a lens
-// point (2D) per strategy (s, 1), s = 1, 2, ...
+// The light subpaths of one chunk, and their joins to the lens (t = 1). Light subpath i draws
+// from the light sampler at (pixel (i mod width, i div width), iteration) -- rows past the
+// image's last stand for the subpaths beyond one per pixel; the sampler keys on the pixel
+// alone, so they are as independent as those of real pixels: the subpath (subpath.h), then a
+// lens point (2D) per strategy (s, 1), s = 1, 2, ...
 void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iteration& it,
                                       int chunk) const {
     const int w = film.width();
-    const size_t pixels = it.light_paths.size();
+    const size_t n_light = it.light_paths.size();
     const size_t begin = static_cast<size_t>(chunk) * kChunkPaths;
-    const size_t end = std::min(pixels, begin + kChunkPaths);
+    const size_t end = std::min(n_light, begin + kChunkPaths);
     const int max_depth = m_settings.max_depth;
     auto sampler = it.light_sampler->clone();
     Arena& arena = it.arenas[chunk];
@@ -236,15 +251,19 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
             if (max_depth >= 0 && s - 1 > max_depth) break;
             const StrategyContribution c =
                 connect_strategy(scene, light, no_camera, s, 1, *sampler, counter,
-                                 MisHeuristic::kBalance, scratch, it.eta);
+                                 MisHeuristic::kBalance, scratch, it.eta, it.light_tracing_count);
             if (!c.L.is_black()) splats.push_back({c.film, c.L});
         }
     }
     it.rays += counter.rays;
 }
 
-// One camera subpath per pixel of the tile: every connection with its pixel's light subpath
-// (t >= 2, t outer, s inner, as bdpt), then the merges at each of its vertices in order.
+// One camera subpath per pixel of the tile: every connection with one light subpath (t >= 2,
+// t outer, s inner, as bdpt), then the merges at each of its vertices in order. Pixel j (row-
+// major) connects to light subpath j mod n_L: each camera subpath needs one light subpath
+// independent of itself, and any fixed choice is unbiased; with n_L >= pixels each pixel has
+// one of its own (the default: its own pixel's), with fewer the pixels that share one are n_L
+// apart in scan order, rows apart, so the error they share is not a visible block.
 // Draws, from the camera sampler at (pixel, iteration): the filter (2D), the camera ray, the
 // subpath (subpath.h), then the strategies' draws (connect_strategy).
 void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration& it,
@@ -270,7 +289,7 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
             arena.reset();
             generate_camera_subpath(scene, ray, *sampler, arena, counter, it.camera_limits, camera);
             const std::vector<PathVertex>& light =
-                it.light_paths[static_cast<size_t>(y) * film.width() + x];
+                it.light_paths[(static_cast<size_t>(y) * film.width() + x) % it.light_paths.size()];
             Spectrum L(0.0f);
             const int n_camera = static_cast<int>(camera.size());
             const int n_light = std::max(1, static_cast<int>(light.size()));
@@ -278,7 +297,8 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                 for (int s = 0; s <= n_light; ++s) {
                     if (max_depth >= 0 && s + t - 2 > max_depth) continue;
                     L += connect_strategy(scene, light, camera, s, t, *sampler, counter,
-                                          MisHeuristic::kBalance, scratch, it.eta)
+                                          MisHeuristic::kBalance, scratch, it.eta,
+                                          it.light_tracing_count)
                              .L;
                 }
             }
@@ -296,9 +316,9 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     if (!(glm::dot(photon.ng, pt.ng) > 0.0f)) return;
                     const Spectrum f = pt.bsdf->eval(wo_local, pt.si.to_local(photon.si.wo));
                     if (f.is_black()) return;
-                    const float weight =
-                        merge_mis_weight(scene, std::span(path).first(ref.vertex), camera, s, t,
-                                         it.eta, MisHeuristic::kBalance, scratch);
+                    const float weight = merge_mis_weight(
+                        scene, std::span(path).first(ref.vertex), camera, s, t, it.eta,
+                        MisHeuristic::kBalance, scratch, it.light_tracing_count);
                     L += pt.beta * f * photon.beta * (it.merge_scale * weight);
                 });
             }

@@ -5,12 +5,18 @@
 // importance sampling (bdpt_mis.h, vcm_strategy_weight).
 //
 // Each iteration (spp of them):
-//   1. one light subpath per pixel (subpath.h); each joins the lens (t = 1, splatted), and
-//      its vertices on surfaces that are not purely delta are kept as photons in a hash grid;
-//   2. one camera subpath per pixel, which does what bdpt's camera side does with the light
-//      subpath of its own pixel (s = 0, s = 1, s, t >= 2: vertex connection), and at every
-//      vertex that is not purely delta gathers the photons of all light subpaths within the
-//      radius r_i (vertex merging: a density estimate with the constant kernel 1 / (pi r^2)).
+//   1. n_L light subpaths (subpath.h; n_L = vcm_light_paths, by default one per pixel); each
+//      joins the lens (t = 1, splatted), and its vertices on surfaces that are not purely
+//      delta are kept as photons in a hash grid;
+//   2. one camera subpath per pixel, which does what bdpt's camera side does with one light
+//      subpath (s = 0, s = 1, s, t >= 2: vertex connection; pixel j takes light subpath
+//      j mod n_L), and at every vertex that is not purely delta gathers the photons of all
+//      n_L light subpaths within the radius r_i (vertex merging: a density estimate with the
+//      constant kernel 1 / (n_L pi r^2)).
+// The MIS counts follow n_L (bdpt_mis.h): merges weigh eta = n_L pi r^2 against a
+// connection's 1, light tracing n_L / n_C against the camera's strategies (n_C pixels).
+// More light subpaths than pixels buy denser photons and more light tracing for caustics
+// that only merging (or the lens joins) sample well, at the cost of the light pass.
 // Merging finds what no connection can: paths with a delta vertex on each side of a diffuse
 // one, such as the caustic of a point light through glass seen in a mirror. It is biased (the
 // kernel blurs over the disc); the radius shrinks as r_i = r_0 i^((alpha - 1) / 2) so the
@@ -24,13 +30,19 @@
 namespace glint {
 
 /// The settings of "vcm", from glint.render{...}. `spp` is the number of iterations, each
-/// with one light subpath and one camera subpath per pixel.
+/// with `light_paths` light subpaths and one camera subpath per pixel.
 struct VcmSettings {
+    /// Most light subpaths per iteration (they are all held in memory at once).
+    static constexpr int kMaxLightPaths = 1 << 24;
+
     float radius = 0.0f;  ///< initial merging radius r_0 (scene units); 0: 1/256 of the
                           ///< diagonal of the scene's bounding box (sppm's default)
     float alpha = 0.75f;  ///< radius reduction: r_i = r_0 i^((alpha - 1) / 2), in (0, 1]
+    int light_paths = 0;  ///< n_L, light subpaths per iteration in [1, kMaxLightPaths];
+                          ///< 0: one per pixel (width x height)
 
-    /// Reads and validates "vcm_radius" and "vcm_alpha"; errors name the key's location.
+    /// Reads and validates "vcm_radius", "vcm_alpha" and "vcm_light_paths"; errors name the
+    /// key's location.
     static VcmSettings read(const Params& params);
 };
 
