@@ -5,7 +5,8 @@
 // A scene runs sandboxed unless the user trusts it: the safe part of Lua's standard library
 // (base without dofile/loadfile and with text-only load, string, table, math, utf8,
 // coroutine, os.clock/os.time/os.difftime), `require` of Lua modules beside the scene, a
-// memory limit and an instruction budget. See docs/scene-language.md, "Sandbox".
+// memory limit, an instruction budget and a time limit. See docs/scene-language.md,
+// "The sandbox and its limits".
 #include <glint/scene/scene_desc.h>
 
 #include <cstddef>
@@ -25,6 +26,17 @@ struct LoaderOptions {
     /// billion is some seconds of a busy loop, a hundred times what a large procedural
     /// scene needs.
     uint64_t instruction_limit = 2'000'000'000;
+    /// Seconds the script may run, wall clock, from the start of the Lua VM to its end
+    /// (finalisers included); time spent inside glint's own functions (e.g. `glint.import`
+    /// reading a large model) does not count. 0 = no limit. Past it, a script running Lua
+    /// code ends with an error naming its line, as for the instruction budget. A script
+    /// that is inside one call of a Lua library function written in C (e.g. a string
+    /// pattern that backtracks for hours) cannot be interrupted: one second later a watchdog
+    /// thread prints `glint: error: FILE:LINE: script ran past its time limit ...` (the last
+    /// line the script was seen at) on stderr and ends the process with exit code 1
+    /// (std::_Exit). While a script runs no output file exists yet, so nothing is left
+    /// behind.
+    double time_limit = 60.0;
 };
 
 /// Tables inside parameter tables a script may nest; deeper is an error naming the line.
