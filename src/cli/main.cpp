@@ -126,6 +126,7 @@ SceneDesc load_scene(const std::string& path, const LoaderOptions& options) {
 // for it; --script-time-limit sets the time limit either way.
 LoaderOptions loader_options(bool trusted_scene, const std::string& time_limit) {
     LoaderOptions options;
+    options.interrupt = &g_signal;  // SIGINT and SIGTERM stop a script too
     if (trusted_scene) {
         options.trusted = true;
         options.memory_limit = 0;

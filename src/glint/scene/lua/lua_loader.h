@@ -9,6 +9,7 @@
 // "The sandbox and its limits".
 #include <glint/scene/scene_desc.h>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -37,6 +38,12 @@ struct LoaderOptions {
     /// (std::_Exit). While a script runs no output file exists yet, so nothing is left
     /// behind.
     double time_limit = 60.0;
+    /// A signal number that a SIGINT/SIGTERM handler sets (0 = none), or null. Once it is
+    /// set, a script running Lua code stops at once and loading throws glint::Interrupted;
+    /// a script stuck inside one C call is ended by the watchdog one second later, which
+    /// prints `glint: interrupted by SIGINT; no output written` and ends the process with
+    /// exit code 128 + the signal.
+    const std::atomic<int>* interrupt = nullptr;
 };
 
 /// Tables inside parameter tables a script may nest; deeper is an error naming the line.

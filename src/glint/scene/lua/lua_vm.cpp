@@ -3,12 +3,15 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
 #include <condition_variable>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <thread>
 #include <utility>
 
@@ -56,6 +59,10 @@ void end_glint_time(LuaVm::Limits& limits, Clock::time_point now) {
 
 // Seconds the script itself has run: since the VM started, less the time in glint's own
 // functions.
+int interrupt_signal(const LuaVm::Limits& limits) {
+    return limits.interrupt ? limits.interrupt->load(std::memory_order_relaxed) : 0;
+}
+
 double script_seconds(LuaVm::Limits& limits) {
     const Clock::time_point now = Clock::now();
     const std::lock_guard lock(limits.mutex);
@@ -104,18 +111,21 @@ void count_hook(lua_State* L, lua_Debug* ar) {
             std::memcpy(limits.last_source, ar->short_src, sizeof(limits.last_source));
         }
     }
-    const bool over_budget =
-        limits.instruction_limit > 0 && limits.instructions > limits.instruction_limit;
-    const bool over_time =
-        !over_budget && limits.time_limit > 0 && script_seconds(limits) > limits.time_limit;
-    if (!over_budget && !over_time) return;
+    const bool interrupted = interrupt_signal(limits) != 0;
+    const bool over_budget = !interrupted && limits.instruction_limit > 0 &&
+                             limits.instructions > limits.instruction_limit;
+    const bool over_time = !interrupted && !over_budget && limits.time_limit > 0 &&
+                           script_seconds(limits) > limits.time_limit;
+    if (!interrupted && !over_budget && !over_time) return;
     // A script that catches this error with pcall must not go on: from now on every
     // instruction, in this coroutine and the main one, raises it again.
     lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
     lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_MAINTHREAD);
     if (lua_State* main = lua_tothread(L, -1)) lua_sethook(main, count_hook, LUA_MASKCOUNT, 1);
     lua_pop(L, 1);
-    if (over_budget) {
+    if (interrupted) {
+        lua_pushfstring(L, "%s:%d: interrupted", ar->short_src, ar->currentline);
+    } else if (over_budget) {
         lua_pushfstring(L,
                         "%s:%d: script ran past its instruction budget of %I Lua instructions "
                         "(an endless loop?)",
@@ -443,10 +453,23 @@ int setup(lua_State* L) {
     std::_Exit(1);
 }
 
+// As the CLI says it for an interrupted render.
+[[noreturn]] void end_interrupted_script(int signal) {
+    const std::string message = fmt::format("glint: interrupted by {}; no output written\n",
+                                            signal == SIGINT    ? "SIGINT"
+                                            : signal == SIGTERM ? "SIGTERM"
+                                                                : "a signal");
+    std::fputs(message.c_str(), stderr);
+    std::fflush(stderr);
+    std::_Exit(128 + signal);
+}
+
 }  // namespace
 
 // A thread that sleeps until the script's time limit (plus a grace) and ends the process if
 // the script is still running then; the count hook ends a script that runs Lua code sooner.
+// With an interrupt flag it looks at the flag ten times a second, and ends the process a
+// grace after it was raised.
 class LuaVm::Watchdog {
 public:
     explicit Watchdog(Limits& limits) : m_limits(limits), m_thread([this] { watch(); }) {}
@@ -464,12 +487,24 @@ public:
 private:
     void watch() {
         std::unique_lock lock(m_mutex);
+        std::optional<Clock::time_point> interrupted_at;
         while (!m_done) {
-            // Time in glint's functions does not count, so the deadline can move: sleep until
-            // it as it stands, then look again.
-            const double left =
-                m_limits.time_limit + kWatchdogGraceSeconds - script_seconds(m_limits);
-            if (left <= 0) end_stuck_script(m_limits);
+            double left = 0.1;
+            if (const int signal = interrupt_signal(m_limits); signal != 0) {
+                if (!interrupted_at) interrupted_at = Clock::now();
+                const double since =
+                    std::chrono::duration<double>(Clock::now() - *interrupted_at).count();
+                if (since > kWatchdogGraceSeconds) end_interrupted_script(signal);
+                left = std::min(left, kWatchdogGraceSeconds - since);
+            }
+            if (m_limits.time_limit > 0) {
+                // Time in glint's functions does not count, so the deadline can move: sleep
+                // until it as it stands, then look again.
+                const double until_deadline =
+                    m_limits.time_limit + kWatchdogGraceSeconds - script_seconds(m_limits);
+                if (until_deadline <= 0) end_stuck_script(m_limits);
+                left = m_limits.interrupt ? std::min(left, until_deadline) : until_deadline;
+            }
             m_wake.wait_for(lock, std::chrono::duration<double>(left));
         }
     }
@@ -486,6 +521,7 @@ LuaVm::LuaVm(const LoaderOptions& options, const std::string& directory)
     m_limits->memory_limit = options.memory_limit;
     m_limits->instruction_limit = options.instruction_limit;
     m_limits->time_limit = options.time_limit > 0 ? options.time_limit : 0.0;
+    m_limits->interrupt = options.interrupt;
     m_limits->start = Clock::now();
     m_state = lua_newstate(limited_alloc, m_limits.get());
     if (!m_state) throw Error("could not start the Lua interpreter");
@@ -498,7 +534,8 @@ LuaVm::LuaVm(const LoaderOptions& options, const std::string& directory)
         lua_close(m_state);
         throw Error("could not open the Lua libraries: " + message);
     }
-    if (m_limits->time_limit > 0) m_watchdog = std::make_unique<Watchdog>(*m_limits);
+    if (m_limits->time_limit > 0 || m_limits->interrupt)
+        m_watchdog = std::make_unique<Watchdog>(*m_limits);
 }
 
 // The watchdog watches lua_close too: finalisers are script code.
@@ -537,6 +574,7 @@ void LuaVm::call_main(const std::string& chunk_name) {
         lua_pop(m_state, 1);
         return;
     }
+    if (const int signal = interrupt_signal(*m_limits); signal != 0) throw Interrupted(signal);
     if (status == LUA_ERRMEM) throw Error(memory_message(chunk_name));
     const char* message = lua_tostring(m_state, -1);
     throw Error(message ? message : chunk_name + ": unknown Lua error");

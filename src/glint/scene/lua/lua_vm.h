@@ -7,6 +7,7 @@
 
 #include <lua.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -31,7 +32,8 @@ public:
 
     /// Calls the function on top of the stack (no arguments, no results) under the message
     /// handler. Throws glint::Error "file:line: message" on any error, including running out
-    /// of the memory limit, the instruction budget or the time limit.
+    /// of the memory limit, the instruction budget or the time limit; glint::Interrupted when
+    /// the interrupt flag of LoaderOptions was raised.
     void call_main(const std::string& chunk_name);
 
     /// Throws glint::Error for a load status other than LUA_OK (message on the stack).
@@ -45,6 +47,7 @@ public:
         uint64_t instructions = 0;    // counted in steps of kHookStep
         lua_State* script = nullptr;  // the main thread, once a script runs on it
         double time_limit = 0;        // seconds; 0 = none
+        const std::atomic<int>* interrupt = nullptr;
         std::chrono::steady_clock::time_point start;
         std::string chunk_name;  // for a message when no line is known
 
@@ -63,7 +66,7 @@ private:
 
     std::unique_ptr<Limits> m_limits;
     lua_State* m_state = nullptr;
-    std::unique_ptr<Watchdog> m_watchdog;  // only with a time limit
+    std::unique_ptr<Watchdog> m_watchdog;  // only with a time limit or an interrupt flag
 };
 
 /// Held by a glint function called from a script while it runs: its time does not count
@@ -81,7 +84,8 @@ private:
     LuaVm::Limits& m_limits;
 };
 
-/// Grace after the time limit before the watchdog ends a script stuck in one C call.
+/// Grace after the time limit (or an interrupt) before the watchdog ends a script stuck in
+/// one C call.
 inline constexpr double kWatchdogGraceSeconds = 1.0;
 
 /// Instructions between two calls of the budget hook (the budget's granularity).
