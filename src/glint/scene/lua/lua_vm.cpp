@@ -57,12 +57,13 @@ void end_glint_time(LuaVm::Limits& limits, Clock::time_point now) {
     limits.in_glint = false;
 }
 
-// Seconds the script itself has run: since the VM started, less the time in glint's own
-// functions.
+// The signal the interrupt flag holds, 0 for none.
 int interrupt_signal(const LuaVm::Limits& limits) {
     return limits.interrupt ? limits.interrupt->load(std::memory_order_relaxed) : 0;
 }
 
+// Seconds the script itself has run: since the VM started, less the time in glint's own
+// functions.
 double script_seconds(LuaVm::Limits& limits) {
     const Clock::time_point now = Clock::now();
     const std::lock_guard lock(limits.mutex);
@@ -579,10 +580,6 @@ void LuaVm::call_main(const std::string& chunk_name) {
     const char* message = lua_tostring(m_state, -1);
     throw Error(message ? message : chunk_name + ": unknown Lua error");
 }
-
-}  // namespace glint
-
-namespace glint {
 
 GlintCallTime::GlintCallTime(lua_State* L) : m_limits(limits_of(L)) {
     const std::lock_guard lock(m_limits.mutex);
