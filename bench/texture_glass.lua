@@ -2,7 +2,8 @@
 -- colour there": a textured quad behind a glass ball. Compare, one thread, alternating:
 --   build/glint render bench/texture_glass.lua --threads 1 -o /tmp/tex.exr
 --   GLINT_PLAIN=1 build/glint render bench/texture_glass.lua --threads 1 -o /tmp/plain.exr
--- (GLINT_ROUGH=1 makes the glass rough). Measured 2026-11-24: 1.3-1.9x, not 5x.
+-- (GLINT_ROUGH=1 makes the glass rough). Measured 2026-11-24: about 1.4x, not 5x (see
+-- bench/README.md, "Textures seen through glass").
 local plain = os.getenv("GLINT_PLAIN") ~= nil
 local rough = os.getenv("GLINT_ROUGH") ~= nil and 0.2 or 0
 glint.camera{ eye = {0, 0, 4}, look_at = {0, 0, 0}, fov = 40 }

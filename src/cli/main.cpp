@@ -39,6 +39,7 @@ constexpr int kExitInputError = 1;
 constexpr int kExitUsageError = 2;
 constexpr int kMaxResolution = 65536;  // as glint.render{width, height}
 constexpr int kMaxThreads = 4096;
+constexpr double kMaxScriptTimeLimit = 1e6;  // seconds, about 11 days
 
 // The number of the first SIGINT or SIGTERM received, 0 before. The one global of the
 // program: a signal handler can reach nothing else. The handler only stores to it (a
@@ -105,24 +106,13 @@ struct RenderOptions {
     bool aovs = false;
     bool quiet = false;
     bool trusted_scene = false;
+    std::string script_time_limit;
 };
-
-// A scene runs sandboxed with bounded memory and instructions unless the user vouches for it.
-LoaderOptions loader_options(bool trusted_scene) {
-    LoaderOptions options;
-    if (trusted_scene) {
-        options.trusted = true;
-        options.memory_limit = 0;
-        options.instruction_limit = 0;
-    }
-    return options;
-}
 
 // A Lua scene script, or a model file (.obj, .ply, .gltf, .glb) rendered as it is with a
 // default camera and light where it has none. The importers' warnings are printed here.
-SceneDesc load_scene(const std::string& path, bool trusted_scene) {
-    SceneDesc desc = is_model_file(path) ? load_model_scene(path)
-                                         : load_scene_file(path, loader_options(trusted_scene));
+SceneDesc load_scene(const std::string& path, const LoaderOptions& options) {
+    SceneDesc desc = is_model_file(path) ? load_model_scene(path) : load_scene_file(path, options);
     for (const std::string& warning : desc.warnings) fmt::print(stderr, "warning: {}\n", warning);
     return desc;
 }
@@ -130,6 +120,29 @@ SceneDesc load_scene(const std::string& path, bool trusted_scene) {
 [[noreturn]] void bad_flag(const std::string& flag, const std::string& text,
                            const std::string& expected) {
     throw CLI::ValidationError(flag, fmt::format("'{}' is not {}", text, expected));
+}
+
+// A scene runs sandboxed with bounded memory, instructions and time unless the user vouches
+// for it; --script-time-limit sets the time limit either way.
+LoaderOptions loader_options(bool trusted_scene, const std::string& time_limit) {
+    LoaderOptions options;
+    options.interrupt = &g_signal;  // SIGINT and SIGTERM stop a script too
+    if (trusted_scene) {
+        options.trusted = true;
+        options.memory_limit = 0;
+        options.instruction_limit = 0;
+        options.time_limit = 0;
+    }
+    if (!time_limit.empty()) {
+        const auto seconds = parse_finite(time_limit);
+        if (!seconds || *seconds < 0 || *seconds > kMaxScriptTimeLimit) {
+            bad_flag(
+                "--script-time-limit", time_limit,
+                fmt::format("a number of seconds from 0 (no limit) to {:g}", kMaxScriptTimeLimit));
+        }
+        options.time_limit = *seconds;
+    }
+    return options;
 }
 
 // x0,y0,x1,y1 as numbers; render settings check them against the resolution.
@@ -305,7 +318,8 @@ void add_debug_images(const RenderSettings& settings, const RenderStats& stats, 
 }
 
 int run_render(const RenderOptions& options) {
-    const SceneDesc desc = load_scene(options.scene, options.trusted_scene);
+    const SceneDesc desc =
+        load_scene(options.scene, loader_options(options.trusted_scene, options.script_time_limit));
     const RenderSettings settings = settings_for(desc, options);
     check_debug_views(settings);
     // Every output's directory is checked before the work: a bad path fails now, not
@@ -416,8 +430,8 @@ int run_render(const RenderOptions& options) {
     return 0;
 }
 
-int run_info(const std::string& scene_path, bool trusted_scene) {
-    const SceneDesc desc = load_scene(scene_path, trusted_scene);
+int run_info(const std::string& scene_path, const LoaderOptions& loader) {
+    const SceneDesc desc = load_scene(scene_path, loader);
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
     const auto scene = build_scene(desc, settings);
     for (const std::string& warning : scene->stats().warnings)
@@ -530,7 +544,8 @@ int run_view(const ViewOptions& view) {
     options.interrupt = &g_signal;
 
     const SceneDesc desc =
-        load_scene_file(view.render.scene, loader_options(view.render.trusted_scene));
+        load_scene_file(view.render.scene,
+                        loader_options(view.render.trusted_scene, view.render.script_time_limit));
     RenderOptions render = view.render;
     if (render.spp.empty()) render.spp = std::to_string(kDefaultViewSpp);
     const RenderSettings settings = settings_for(desc, render);
@@ -597,8 +612,13 @@ int main(int argc, char** argv) {
     render_cmd->add_flag("-q,--quiet", render.quiet, "No progress or summary on stderr");
     const char* trusted_help =
         "Run the scene script with Lua's full standard library (io, os, debug, package) and "
-        "without memory or instruction limits: only for scenes you trust";
+        "without memory, instruction or time limits: only for scenes you trust";
     render_cmd->add_flag("--trusted-scene", render.trusted_scene, trusted_help);
+    const std::string time_limit_help = fmt::format(
+        "Seconds the scene script may run (default {:g}; 0 = no limit); a script past it ends "
+        "with an error naming its line",
+        LoaderOptions{}.time_limit);
+    render_cmd->add_option("--script-time-limit", render.script_time_limit, time_limit_help);
 
     std::string info_scene;
     CLI::App* info_cmd =
@@ -609,6 +629,8 @@ int main(int argc, char** argv) {
         ->required();
     bool info_trusted = false;
     info_cmd->add_flag("--trusted-scene", info_trusted, trusted_help);
+    std::string info_time_limit;
+    info_cmd->add_option("--script-time-limit", info_time_limit, time_limit_help);
 
     std::string test_image, reference_image;
     std::string threshold;
@@ -645,6 +667,7 @@ int main(int argc, char** argv) {
                          "The first pass after a change renders at 1/N size (1 to 64, default 4)");
     view_cmd->add_flag("--hide-panel", view.hide_panel, "Start with the panel hidden (key H)");
     view_cmd->add_flag("--trusted-scene", view.render.trusted_scene, trusted_help);
+    view_cmd->add_option("--script-time-limit", view.render.script_time_limit, time_limit_help);
 
     try {
         app.parse(argc, argv);
@@ -656,7 +679,8 @@ int main(int argc, char** argv) {
     install_signal_handlers();
     try {
         if (render_cmd->parsed()) return run_render(render);
-        if (info_cmd->parsed()) return run_info(info_scene, info_trusted);
+        if (info_cmd->parsed())
+            return run_info(info_scene, loader_options(info_trusted, info_time_limit));
         if (compare_cmd->parsed()) return run_compare(test_image, reference_image, threshold);
         if (view_cmd->parsed()) return run_view(view);
     } catch (const CLI::ValidationError& e) {

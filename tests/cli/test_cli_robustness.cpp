@@ -146,6 +146,33 @@ TEST_P(CliSignal, StopsTheRenderAndLeavesNothing) {
     EXPECT_EQ(leftovers(), std::vector<std::string>{});
 }
 
+// A signal while the scene script runs stops it too, whether it runs Lua code (the count
+// hook sees the flag) or is stuck inside one C call (the loader's watchdog ends the process
+// a second later); the time limit is far away.
+TEST_P(CliSignal, StopsARunawayScript) {
+    const int signal = GetParam();
+    const std::string scripts[] = {
+        "local x = 0\nwhile true do x = x + 1 end\n",
+        "local s = string.rep('a', 100000)\nlocal found = s:find('.-.-.-.-.-b')\n",
+    };
+    for (const std::string& script : scripts) {
+        const std::string scene = (m_root / "runaway.lua").string();
+        std::ofstream(scene) << script;
+        const pid_t pid = start({"render", scene, "-o", "a.png", "--script-time-limit", "600"});
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (!catches(pid, signal) && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));  // into the script
+        const auto sent = std::chrono::steady_clock::now();
+        ::kill(pid, signal);
+        EXPECT_EQ(wait_for(pid, 20.0), 128 + signal) << script << stderr_text();
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count(),
+                  5.0);
+        EXPECT_NE(stderr_text().find("interrupted"), std::string::npos) << stderr_text();
+        EXPECT_EQ(leftovers(), std::vector<std::string>{});
+    }
+}
+
 INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM),
                          [](const auto& info) {
                              return std::string(info.param == SIGINT ? "SIGINT" : "SIGTERM");

@@ -20,6 +20,7 @@ fail() {
 
 expected_exit=""
 messages=()
+environment=()
 if [ -d "$case_path" ]; then
     [ -f "$case_path/case.txt" ] || fail "no case.txt"
     cp -R "$case_path"/. "$work"/
@@ -29,6 +30,7 @@ if [ -d "$case_path" ]; then
             command:*) command=${line#command:} ;;
             expect-exit:*) expected_exit=${line#expect-exit:} ;;
             expect-message:*) messages+=("$(echo "${line#expect-message:}" | sed 's/^ //')") ;;
+            env:*) environment+=("$(echo "${line#env:}" | sed 's/^ //')") ;;
         esac
     done < "$case_path/case.txt"
     [ -n "$command" ] || fail "case.txt has no 'command:' line"
@@ -44,6 +46,7 @@ else
             "-- expect-exit:"*) expected_exit=${line#-- expect-exit:} ;;
             "-- expect-message:"*) messages+=("$(echo "${line#-- expect-message:}" | sed 's/^ //')") ;;
             "-- args:"*) args=${line#-- args:} ;;
+            "-- env:"*) environment+=("$(echo "${line#-- env:}" | sed 's/^ //')") ;;
             --*) ;;
             *) break ;;
         esac
@@ -60,7 +63,8 @@ expected_exit=$(echo "$expected_exit" | tr -d ' ')
 
 inputs_before=$(cd "$work" && find . -mindepth 1 | LC_ALL=C sort)
 read -r -a argv <<< "$command"
-(cd "$work" && timeout 60 "$glint" "${argv[@]}" > "$scratch/stdout" 2> "$scratch/stderr")
+(cd "$work" && env "${environment[@]}" timeout 60 "$glint" "${argv[@]}" > "$scratch/stdout" \
+    2> "$scratch/stderr")
 code=$?
 inputs_after=$(cd "$work" && find . -mindepth 1 | LC_ALL=C sort)
 
@@ -81,7 +85,7 @@ if [ "$inputs_before" != "$inputs_after" ]; then
     status=1
 fi
 if [ "$status" != 0 ]; then
-    echo "command: glint $command"
+    echo "command: ${environment[*]} glint $command"
     echo "--- stderr ---"
     head -c 4000 "$scratch/stderr"
     exit 1

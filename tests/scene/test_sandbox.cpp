@@ -128,6 +128,72 @@ TEST(Sandbox, InstructionBudgetEndsEndlessLoops) {
     EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
 }
 
+// The time limit ends a loop that the instruction budget would let run (here none), with
+// the line, also when the script catches the error and carries on.
+TEST(Sandbox, TimeLimitEndsEndlessLoops) {
+    LoaderOptions options;
+    options.instruction_limit = 0;
+    options.time_limit = 0.25;
+    const auto start = std::chrono::steady_clock::now();
+    const std::string message = error_in("local x = 0\nwhile true do x = x + 1 end\n", options);
+    EXPECT_NE(message.find("scene.lua:2: script ran past its time limit of 0.25 s"),
+              std::string::npos)
+        << message;
+    const std::string caught =
+        error_in("while true do\n pcall(function() while true do end end)\nend\n", options);
+    EXPECT_NE(caught.find("time limit"), std::string::npos) << caught;
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+}
+
+// Time inside glint's own functions (here an import of a model that takes longer than the
+// whole limit) does not count against the script.
+TEST(Sandbox, TimeInGlintFunctionsDoesNotCount) {
+    TempDir dir;
+    {
+        std::ofstream obj(dir.file("grid.obj"));
+        const int n = 400;
+        for (int y = 0; y <= n; ++y)
+            for (int x = 0; x <= n; ++x) obj << "v " << x << ' ' << y << " 0\n";
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const int a = y * (n + 1) + x + 1;
+                obj << "f " << a << ' ' << a + 1 << ' ' << a + n + 2 << ' ' << a + n + 1 << '\n';
+            }
+    }
+    // The loop after the imports runs the count hook, which checks the time.
+    const std::string code =
+        "local m = glint.diffuse{}\n"
+        "for i = 1, 4 do glint.import{ file = 'grid.obj', material = m } end\n"
+        "local x = 0\n"
+        "for i = 1, 100000 do x = x + i end\n";
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_EQ(error_in(code, {}, dir.file("")), "");
+    const double import_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    LoaderOptions options;
+    options.time_limit = import_seconds / 4;
+    EXPECT_EQ(error_in(code, options, dir.file("")), "")
+        << "imports took " << import_seconds << " s";
+}
+
+// The library functions the time limit watches (string.find, rep, ...) are called through a
+// closure that notes the line; their errors still name the function and the script's line.
+TEST(Sandbox, WatchedLibraryFunctionsKeepTheirMessages) {
+    EXPECT_NE(error_in("\nstring.rep()\n").find("scene.lua:2: bad argument #1 to 'rep'"),
+              std::string::npos)
+        << error_in("\nstring.rep()\n");
+    EXPECT_NE(error_in("\n\n('x'):find({})\n").find("scene.lua:3: bad argument #1 to 'find'"),
+              std::string::npos)
+        << error_in("\n\n('x'):find({})\n");
+    EXPECT_EQ(error_in(R"lua(
+        assert(("a1b2"):gsub("%d", "") == "ab" and string.match("key=7", "=(%d)") == "7")
+        local n = 0
+        for _ in ("a b c"):gmatch("%a") do n = n + 1 end
+        assert(n == 3 and table.concat({1, 2}, ",") == "1,2" and ("x"):rep(3) == "xxx")
+    )lua"),
+              "");
+}
+
 TEST(Sandbox, MemoryLimitEndsGrowingTables) {
     LoaderOptions options;
     options.memory_limit = size_t{32} << 20;

@@ -64,10 +64,12 @@ std::string where(lua_State* L) {
 }
 
 // Runs a binding, turning glint errors into Lua errors (which carry their own location).
-// The message is on the Lua stack before lua_error, whose jump skips C++ destructors.
+// The message is on the Lua stack before lua_error, whose jump skips C++ destructors. Its
+// time does not count against the script's time limit.
 template <int (*F)(lua_State*)>
 int guarded(lua_State* L) {
     try {
+        const GlintCallTime own_time(L);
         return F(L);
     } catch (const std::exception& e) {
         lua_pushstring(L, e.what());

@@ -5,9 +5,11 @@
 // A scene runs sandboxed unless the user trusts it: the safe part of Lua's standard library
 // (base without dofile/loadfile and with text-only load, string, table, math, utf8,
 // coroutine, os.clock/os.time/os.difftime), `require` of Lua modules beside the scene, a
-// memory limit and an instruction budget. See docs/scene-language.md, "Sandbox".
+// memory limit, an instruction budget and a time limit. See docs/scene-language.md,
+// "The sandbox and its limits".
 #include <glint/scene/scene_desc.h>
 
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -25,6 +27,23 @@ struct LoaderOptions {
     /// billion is some seconds of a busy loop, a hundred times what a large procedural
     /// scene needs.
     uint64_t instruction_limit = 2'000'000'000;
+    /// Seconds the script may run, wall clock, from the start of the Lua VM to its end
+    /// (finalisers included); time spent inside glint's own functions (e.g. `glint.import`
+    /// reading a large model) does not count. 0 = no limit. Past it, a script running Lua
+    /// code ends with an error naming its line, as for the instruction budget. A script
+    /// that is inside one call of a Lua library function written in C (e.g. a string
+    /// pattern that backtracks for hours) cannot be interrupted: one second later a watchdog
+    /// thread prints `glint: error: FILE:LINE: script ran past its time limit ...` (the last
+    /// line the script was seen at) on stderr and ends the process with exit code 1
+    /// (std::_Exit). While a script runs no output file exists yet, so nothing is left
+    /// behind.
+    double time_limit = 60.0;
+    /// A signal number that a SIGINT/SIGTERM handler sets (0 = none), or null. Once it is
+    /// set, a script running Lua code stops at once and loading throws glint::Interrupted;
+    /// a script stuck inside one C call is ended by the watchdog one second later, which
+    /// prints `glint: interrupted by SIGINT; no output written` and ends the process with
+    /// exit code 128 + the signal.
+    const std::atomic<int>* interrupt = nullptr;
 };
 
 /// Tables inside parameter tables a script may nest; deeper is an error naming the line.

@@ -3,13 +3,22 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cctype>
+#include <condition_variable>
+#include <csignal>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <optional>
+#include <thread>
+#include <utility>
 
 namespace glint {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 constexpr const char* kTrustedHint =
     "is not available to a scene: scenes run sandboxed (glint render --trusted-scene gives a "
@@ -21,6 +30,12 @@ LuaVm::Limits& limits_of(lua_State* L) {
     return *static_cast<LuaVm::Limits*>(ud);
 }
 
+void set_place(LuaVm::Limits& limits, const lua_Debug& ar) {
+    const std::lock_guard lock(limits.mutex);
+    limits.last_line = ar.currentline;
+    std::memcpy(limits.last_source, ar.short_src, sizeof(limits.last_source));
+}
+
 // Records the line the script is at, for a memory error (which Lua reports without a
 // place). Reading the stack allocates nothing, so the allocator may do it; the main thread
 // is what it can see (a coroutine's line is approximated by where it was resumed).
@@ -29,11 +44,32 @@ void remember_line(LuaVm::Limits& limits) {
     lua_Debug ar;
     for (int level = 0; lua_getstack(limits.script, level, &ar); ++level) {
         if (lua_getinfo(limits.script, "Sl", &ar) && ar.currentline > 0) {
-            limits.last_line = ar.currentline;
-            std::memcpy(limits.last_source, ar.short_src, sizeof(limits.last_source));
+            set_place(limits, ar);
             return;
         }
     }
+}
+
+// Ends the time a glint function runs (the caller holds the mutex).
+void end_glint_time(LuaVm::Limits& limits, Clock::time_point now) {
+    if (!limits.in_glint) return;
+    limits.paused += now - limits.glint_start;
+    limits.in_glint = false;
+}
+
+// The signal the interrupt flag holds, 0 for none.
+int interrupt_signal(const LuaVm::Limits& limits) {
+    return limits.interrupt ? limits.interrupt->load(std::memory_order_relaxed) : 0;
+}
+
+// Seconds the script itself has run: since the VM started, less the time in glint's own
+// functions.
+double script_seconds(LuaVm::Limits& limits) {
+    const Clock::time_point now = Clock::now();
+    const std::lock_guard lock(limits.mutex);
+    Clock::duration paused = limits.paused;
+    if (limits.in_glint) paused += now - limits.glint_start;
+    return std::chrono::duration<double>(now - limits.start - paused).count();
 }
 
 // Counts every allocation against the limit; growing past it fails, which Lua reports as a
@@ -59,29 +95,88 @@ void* limited_alloc(void* ud, void* ptr, size_t old_size, size_t new_size) {
     return memory;
 }
 
-// Called every kHookStep instructions of every coroutine: counts them against the budget
-// and remembers the line, so that a memory error (which Lua reports without a place) can
-// name where the script was.
+// Called every kHookStep instructions of every coroutine: counts them against the budget,
+// checks the time limit, and remembers the line, so that a memory error (which Lua reports
+// without a place) or the watchdog can name where the script was.
 void count_hook(lua_State* L, lua_Debug* ar) {
     LuaVm::Limits& limits = limits_of(L);
     limits.instructions += kHookStep;
-    if (lua_getinfo(L, "Sl", ar) && ar->currentline > 0) {
-        limits.last_line = ar->currentline;
-        std::memcpy(limits.last_source, ar->short_src, sizeof(limits.last_source));
+    const bool placed = lua_getinfo(L, "Sl", ar) && ar->currentline > 0;
+    {
+        const std::lock_guard lock(limits.mutex);
+        // Lua code runs, so no glint function does (a Lua error may have jumped past the end
+        // of one).
+        end_glint_time(limits, Clock::now());
+        if (placed) {
+            limits.last_line = ar->currentline;
+            std::memcpy(limits.last_source, ar->short_src, sizeof(limits.last_source));
+        }
     }
-    if (limits.instruction_limit == 0 || limits.instructions <= limits.instruction_limit) return;
+    const bool interrupted = interrupt_signal(limits) != 0;
+    const bool over_budget = !interrupted && limits.instruction_limit > 0 &&
+                             limits.instructions > limits.instruction_limit;
+    const bool over_time = !interrupted && !over_budget && limits.time_limit > 0 &&
+                           script_seconds(limits) > limits.time_limit;
+    if (!interrupted && !over_budget && !over_time) return;
     // A script that catches this error with pcall must not go on: from now on every
     // instruction, in this coroutine and the main one, raises it again.
     lua_sethook(L, count_hook, LUA_MASKCOUNT, 1);
     lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_MAINTHREAD);
     if (lua_State* main = lua_tothread(L, -1)) lua_sethook(main, count_hook, LUA_MASKCOUNT, 1);
     lua_pop(L, 1);
-    lua_pushfstring(L,
-                    "%s:%d: script ran past its instruction budget of %I Lua instructions "
-                    "(an endless loop?)",
-                    ar->short_src, ar->currentline,
-                    static_cast<lua_Integer>(limits.instruction_limit));
+    if (interrupted) {
+        lua_pushfstring(L, "%s:%d: interrupted", ar->short_src, ar->currentline);
+    } else if (over_budget) {
+        lua_pushfstring(L,
+                        "%s:%d: script ran past its instruction budget of %I Lua instructions "
+                        "(an endless loop?)",
+                        ar->short_src, ar->currentline,
+                        static_cast<lua_Integer>(limits.instruction_limit));
+    } else {  // the string is gone before lua_error jumps past its destructor
+        const std::string seconds = fmt::format("{:g}", limits.time_limit);
+        lua_pushfstring(L, "%s:%d: script ran past its time limit of %s s (an endless loop?)",
+                        ar->short_src, ar->currentline, seconds.c_str());
+    }
     lua_error(L);
+}
+
+// A Lua library function written in C, called through this closure, which first notes the
+// line that calls it: the count hook does not run while C code does, and the watchdog
+// names this line when the call never ends (a backtracking string pattern can run for
+// hours). The original (upvalue 1, a light C function) runs in this closure's frame, not
+// through lua_call, so that its errors still name the function and the script's line.
+int noted_library_call(lua_State* L) {
+    lua_Debug ar;
+    if (lua_getstack(L, 1, &ar) && lua_getinfo(L, "Sl", &ar) && ar.currentline > 0)
+        set_place(limits_of(L), ar);
+    return lua_tocfunction(L, lua_upvalueindex(1))(L);
+}
+
+// Wraps the library functions whose one call can take long in noted_library_call: the
+// pattern functions (polynomial of high degree in the subject's length), and those that
+// build long strings.
+void note_long_library_calls(lua_State* L) {
+    const std::pair<const char*, const char*> functions[] = {
+        {LUA_STRLIBNAME, "find"},   {LUA_STRLIBNAME, "match"}, {LUA_STRLIBNAME, "gmatch"},
+        {LUA_STRLIBNAME, "gsub"},   {LUA_STRLIBNAME, "rep"},   {LUA_STRLIBNAME, "format"},
+        {LUA_TABLIBNAME, "concat"},
+    };
+    for (const auto& [library, name] : functions) {
+        lua_getglobal(L, library);
+        lua_getfield(L, -1, name);
+        bool plain = lua_iscfunction(L, -1) != 0;
+        if (plain && lua_getupvalue(L, -1, 1) != nullptr) {
+            lua_pop(L, 1);
+            plain = false;
+        }
+        if (plain) {
+            lua_pushcclosure(L, noted_library_call, 1);
+            lua_setfield(L, -2, name);
+        } else {
+            lua_pop(L, 1);  // not a plain C function: leave it as it is
+        }
+        lua_pop(L, 1);
+    }
 }
 
 // "file:line:" of the innermost Lua function on the stack (C functions have no line).
@@ -324,6 +419,7 @@ void open_trusted_libraries(lua_State* L, const std::string& directory) {
 // opening the libraries is an error, not an abort.
 struct Setup {
     bool trusted;
+    bool timed;
     const std::string* directory;
 };
 
@@ -333,19 +429,105 @@ int setup(lua_State* L) {
         open_trusted_libraries(L, *s->directory);
     else
         open_sandboxed_libraries(L, *s->directory);
+    if (s->timed) note_long_library_calls(L);
     return 0;
 }
 
+// Past the time limit and its grace the script is inside one C call (otherwise the count
+// hook would have ended it): no Lua error can reach it there, and no C++ exception can
+// unwind through Lua's C frames, so the process ends. The script runs before any output
+// file is opened, so none is left behind.
+[[noreturn]] void end_stuck_script(LuaVm::Limits& limits) {
+    std::string where;
+    {
+        const std::lock_guard lock(limits.mutex);
+        where = limits.last_line > 0 ? fmt::format("{}:{}", limits.last_source, limits.last_line)
+                                     : limits.chunk_name;
+    }
+    const std::string message = fmt::format(
+        "glint: error: {}: script ran past its time limit of {:g} s inside one call of a "
+        "function of Lua's library, which cannot be interrupted (a string pattern that "
+        "backtracks without end?)\n",
+        where, limits.time_limit);
+    std::fputs(message.c_str(), stderr);
+    std::fflush(stderr);
+    std::_Exit(1);
+}
+
+// As the CLI says it for an interrupted render.
+[[noreturn]] void end_interrupted_script(int signal) {
+    const std::string message = fmt::format("glint: interrupted by {}; no output written\n",
+                                            signal == SIGINT    ? "SIGINT"
+                                            : signal == SIGTERM ? "SIGTERM"
+                                                                : "a signal");
+    std::fputs(message.c_str(), stderr);
+    std::fflush(stderr);
+    std::_Exit(128 + signal);
+}
+
 }  // namespace
+
+// A thread that sleeps until the script's time limit (plus a grace) and ends the process if
+// the script is still running then; the count hook ends a script that runs Lua code sooner.
+// With an interrupt flag it looks at the flag ten times a second, and ends the process a
+// grace after it was raised.
+class LuaVm::Watchdog {
+public:
+    explicit Watchdog(Limits& limits) : m_limits(limits), m_thread([this] { watch(); }) {}
+    ~Watchdog() {
+        {
+            const std::lock_guard lock(m_mutex);
+            m_done = true;
+        }
+        m_wake.notify_one();
+        m_thread.join();
+    }
+    Watchdog(const Watchdog&) = delete;
+    Watchdog& operator=(const Watchdog&) = delete;
+
+private:
+    void watch() {
+        std::unique_lock lock(m_mutex);
+        std::optional<Clock::time_point> interrupted_at;
+        while (!m_done) {
+            double left = 0.1;
+            if (const int signal = interrupt_signal(m_limits); signal != 0) {
+                if (!interrupted_at) interrupted_at = Clock::now();
+                const double since =
+                    std::chrono::duration<double>(Clock::now() - *interrupted_at).count();
+                if (since > kWatchdogGraceSeconds) end_interrupted_script(signal);
+                left = std::min(left, kWatchdogGraceSeconds - since);
+            }
+            if (m_limits.time_limit > 0) {
+                // Time in glint's functions does not count, so the deadline can move: sleep
+                // until it as it stands, then look again.
+                const double until_deadline =
+                    m_limits.time_limit + kWatchdogGraceSeconds - script_seconds(m_limits);
+                if (until_deadline <= 0) end_stuck_script(m_limits);
+                left = m_limits.interrupt ? std::min(left, until_deadline) : until_deadline;
+            }
+            m_wake.wait_for(lock, std::chrono::duration<double>(left));
+        }
+    }
+
+    Limits& m_limits;
+    std::mutex m_mutex;
+    std::condition_variable m_wake;
+    bool m_done = false;
+    std::thread m_thread;  // last: it starts once the members above exist
+};
 
 LuaVm::LuaVm(const LoaderOptions& options, const std::string& directory)
     : m_limits(std::make_unique<Limits>()) {
     m_limits->memory_limit = options.memory_limit;
     m_limits->instruction_limit = options.instruction_limit;
+    m_limits->time_limit = options.time_limit > 0 ? options.time_limit : 0.0;
+    m_limits->interrupt = options.interrupt;
+    m_limits->start = Clock::now();
     m_state = lua_newstate(limited_alloc, m_limits.get());
     if (!m_state) throw Error("could not start the Lua interpreter");
     lua_sethook(m_state, count_hook, LUA_MASKCOUNT, kHookStep);
-    Setup s{options.trusted, &directory};
+    Setup s{options.trusted, m_limits->time_limit > 0, &directory};
     lua_pushcfunction(m_state, setup);
     lua_pushlightuserdata(m_state, &s);
     if (lua_pcall(m_state, 1, 0, 0) != LUA_OK) {
@@ -353,10 +535,14 @@ LuaVm::LuaVm(const LoaderOptions& options, const std::string& directory)
         lua_close(m_state);
         throw Error("could not open the Lua libraries: " + message);
     }
+    if (m_limits->time_limit > 0 || m_limits->interrupt)
+        m_watchdog = std::make_unique<Watchdog>(*m_limits);
 }
 
+// The watchdog watches lua_close too: finalisers are script code.
 LuaVm::~LuaVm() {
     lua_close(m_state);
+    m_watchdog.reset();
 }
 
 std::string LuaVm::memory_message(const std::string& chunk_name) const {
@@ -378,6 +564,10 @@ void LuaVm::check_load(int status, const std::string& chunk_name) {
 
 void LuaVm::call_main(const std::string& chunk_name) {
     m_limits->script = m_state;
+    {
+        const std::lock_guard lock(m_limits->mutex);
+        m_limits->chunk_name = chunk_name;
+    }
     lua_pushcfunction(m_state, message_handler);
     lua_insert(m_state, -2);
     const int status = lua_pcall(m_state, 0, 0, -2);
@@ -385,9 +575,21 @@ void LuaVm::call_main(const std::string& chunk_name) {
         lua_pop(m_state, 1);
         return;
     }
+    if (const int signal = interrupt_signal(*m_limits); signal != 0) throw Interrupted(signal);
     if (status == LUA_ERRMEM) throw Error(memory_message(chunk_name));
     const char* message = lua_tostring(m_state, -1);
     throw Error(message ? message : chunk_name + ": unknown Lua error");
+}
+
+GlintCallTime::GlintCallTime(lua_State* L) : m_limits(limits_of(L)) {
+    const std::lock_guard lock(m_limits.mutex);
+    m_limits.in_glint = true;
+    m_limits.glint_start = Clock::now();
+}
+
+GlintCallTime::~GlintCallTime() {
+    const std::lock_guard lock(m_limits.mutex);
+    end_glint_time(m_limits, Clock::now());
 }
 
 }  // namespace glint
