@@ -33,6 +33,8 @@
 #   TARGETS      relative MSE targets (default "0.02 0.005")
 #   CLOCK        wall (default: the render's wall-clock seconds) or cpu (its processor
 #                seconds, all threads: steadier on a machine busy with other work)
+#   SEEDS        seeds each ladder step renders with (default "0"); the time and the relative
+#                MSE printed are their means: at few samples one seed's error is heavy-tailed
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 BUILD_DIR=${BUILD_DIR:-build}
@@ -42,6 +44,8 @@ SCENES=${SCENES:-cornell spheres ajar}
 INTEGRATORS=${INTEGRATORS:-path bdpt vcm mlt sppm}
 TARGETS=${TARGETS:-0.02 0.005}
 CLOCK=${CLOCK:-wall}
+SEEDS=${SEEDS:-0}
+seed_count=$(wc -w <<<"$SEEDS")
 # A directory without build.ninja holds copies of the two programs (glint and
 # bench/glint_bench_region_error), so that a rebuild elsewhere cannot swap them mid-run.
 if [[ -f $BUILD_DIR/build.ninja ]]; then
@@ -152,15 +156,24 @@ for name in $SCENES; do
         fi
         entry_scene=$(scene_for "$scene" "$label")
         for n in $(ladder "$label" "$integrator"); do
-            # Renders are kept for the run: scenes that share a file share them.
-            cached="$tmp/cache.$(basename "$scene").$label.$n"
-            if [[ ! -f $cached.exr ]]; then
-                render "$entry_scene" "$cached.exr" --integrator "$integrator" --spp "$n" \
-                    --seed 0 >"$cached.seconds"
-            fi
-            t=$(cat "$cached.seconds")
-            # shellcheck disable=SC2086
-            e=$("$error" "$cached.exr" "$tmp/ref.exr" $region)
+            # Each seed's render: its time and error are averaged over the seeds (the mean
+            # relative MSE is the expected error, which one seed's only estimates).
+            t=0
+            e=0
+            for seed in $SEEDS; do
+                # Renders are kept for the run: scenes that share a file share them.
+                cached="$tmp/cache.$(basename "$scene").$label.$n.$seed"
+                if [[ ! -f $cached.exr ]]; then
+                    render "$entry_scene" "$cached.exr" --integrator "$integrator" --spp "$n" \
+                        --seed "$seed" >"$cached.seconds"
+                fi
+                # shellcheck disable=SC2086
+                seed_error=$("$error" "$cached.exr" "$tmp/ref.exr" $region)
+                t=$(awk -v a="$t" -v b="$(cat "$cached.seconds")" 'BEGIN { print a + b }')
+                e=$(awk -v a="$e" -v b="$seed_error" 'BEGIN { print a + b }')
+            done
+            t=$(awk -v a="$t" -v k="$seed_count" 'BEGIN { print a / k }')
+            e=$(awk -v a="$e" -v k="$seed_count" 'BEGIN { print a / k }')
             printf '  %-6s %6d %9.2f %10.5f\n' "$label" "$n" "$t" "$e"
             rows+="$label $n $t $e"$'\n'
         done
