@@ -13,7 +13,6 @@ void PhotonGrid::build(const std::vector<Photon>& photons, float radius) {
     if (photons.size() >= kNoCell) throw Error("photon grid: too many photons");
     m_radius = radius;
     ++m_build;
-    m_cell = radius;
     m_inverse_cell = 1.0f / radius;
     // Twice as many slots as photons, so at least twice as many as cells, for the build.
     const size_t wanted = std::clamp<size_t>(2 * photons.size(), 16, size_t{1} << 31);

@@ -116,7 +116,6 @@ private:
 
     float m_radius = 0.0f;
     uint64_t m_build = 0;  // builds so far: a cache filled by an earlier one is refilled
-    float m_cell = 0.0f;
     float m_inverse_cell = 0.0f;
     uint32_t m_mask = 0;             // slot count - 1 (a power of two)
     std::vector<uint32_t> m_slots;   // index into m_cells, or kNoCell
@@ -137,8 +136,8 @@ void PhotonGrid::for_each_near(const Vec3& p, Cache& cache, Visit&& visit) const
     // each axis (0 for its own cell).
     float d2[3][3];
     for (int a = 0; a < 3; ++a) {
-        const float below = p[a] - static_cast<float>(centre[a]) * m_cell;
-        const float above = static_cast<float>(centre[a] + 1) * m_cell - p[a];
+        const float below = p[a] - static_cast<float>(centre[a]) * m_radius;
+        const float above = static_cast<float>(centre[a] + 1) * m_radius - p[a];
         d2[a][0] = below * below;
         d2[a][1] = 0.0f;
         d2[a][2] = above * above;

@@ -101,17 +101,13 @@ void* limited_alloc(void* ud, void* ptr, size_t old_size, size_t new_size) {
 void count_hook(lua_State* L, lua_Debug* ar) {
     LuaVm::Limits& limits = limits_of(L);
     limits.instructions += kHookStep;
-    const bool placed = lua_getinfo(L, "Sl", ar) && ar->currentline > 0;
     {
         const std::lock_guard lock(limits.mutex);
         // Lua code runs, so no glint function does (a Lua error may have jumped past the end
         // of one).
         end_glint_time(limits, Clock::now());
-        if (placed) {
-            limits.last_line = ar->currentline;
-            std::memcpy(limits.last_source, ar->short_src, sizeof(limits.last_source));
-        }
     }
+    if (lua_getinfo(L, "Sl", ar) && ar->currentline > 0) set_place(limits, *ar);
     const bool interrupted = interrupt_signal(limits) != 0;
     const bool over_budget = !interrupted && limits.instruction_limit > 0 &&
                              limits.instructions > limits.instruction_limit;
