@@ -1,7 +1,9 @@
 #include "render_command.h"
 
 #include "flags.h"
-#include "render_pipeline.h"
+#include "signals.h"
+
+#include <glint/render/render_job.h>
 
 #include <fmt/format.h>
 
@@ -63,8 +65,12 @@ int run_render(const RenderOptions& options) {
     const SceneDesc desc =
         load_scene(options.scene, loader_options(options.trusted_scene, options.script_time_limit));
     const RenderSettings settings = settings_for(desc, options);
-    const RenderReport report = render_to_files(desc, settings, options.quiet);
-    const RenderStats& stats = report.stats;
+    RenderControl control;
+    control.quiet = options.quiet;
+    control.cancel = &g_signal;
+    const RenderReport report = render_to_files(desc, settings, control);
+    const RenderedImage& render = report.render;
+    const RenderStats& stats = render.stats;
     if (!options.quiet) {
         for (const std::string& note : stats.notes) fmt::print(stderr, "{}\n", note);
     }
@@ -77,22 +83,22 @@ int run_render(const RenderOptions& options) {
     if (!options.quiet) {
         fmt::print(stderr,
                    "{}x{}, {} spp, {} threads: {:.2f} s, {:.3f} M samples/s, {:.2f} M rays/s\n",
-                   settings.width, settings.height, settings.spp, report.threads, stats.seconds,
+                   settings.width, settings.height, settings.spp, render.threads, stats.seconds,
                    stats.samples / stats.seconds * 1e-6, stats.rays / stats.seconds * 1e-6);
         fmt::print(stderr, "{} samples and {} rays in all, {:.2f} s of processor time\n",
-                   stats.samples, stats.rays, report.cpu_seconds);
-        if (settings.denoise) fmt::print(stderr, "denoised in {:.2f} s\n", report.denoise_seconds);
+                   stats.samples, stats.rays, render.cpu_seconds);
+        if (settings.denoise) fmt::print(stderr, "denoised in {:.2f} s\n", render.denoise_seconds);
         for (const std::string& path : report.targets) {
             if (std::filesystem::exists(path)) fmt::print(stderr, "wrote {}\n", path);
         }
     }
-    if (report.non_finite_samples > 0) {
+    if (render.non_finite_samples > 0) {
         fmt::print(stderr, "warning: {} samples were not finite and were skipped\n",
-                   report.non_finite_samples);
+                   render.non_finite_samples);
     }
-    if (report.dropped_rays > 0) {
+    if (render.dropped_rays > 0) {
         fmt::print(stderr, "warning: {} rays were not finite and were dropped\n",
-                   report.dropped_rays);
+                   render.dropped_rays);
     }
     return 0;
 }

@@ -2,7 +2,7 @@
 
 #include <glint/core/error.h>
 
-#include <pthread.h>
+#include <csignal>
 
 namespace glint::cli {
 
@@ -28,18 +28,6 @@ void install_signal_handlers() {
 
 void throw_if_interrupted() {
     if (const int signal = g_signal.load(); signal != 0) throw Interrupted(signal);
-}
-
-SignalBlock::SignalBlock() {
-    sigset_t set;
-    sigemptyset(&set);
-    sigaddset(&set, SIGINT);
-    sigaddset(&set, SIGTERM);
-    pthread_sigmask(SIG_BLOCK, &set, &m_old);
-}
-
-SignalBlock::~SignalBlock() {
-    pthread_sigmask(SIG_SETMASK, &m_old, nullptr);
 }
 
 }  // namespace glint::cli

@@ -1,7 +1,6 @@
 #pragma once
 // SIGINT and SIGTERM for the `glint` command: recorded by a handler, polled by the work.
 #include <atomic>
-#include <csignal>
 
 namespace glint::cli {
 
@@ -15,18 +14,5 @@ void install_signal_handlers();
 
 /// Throws Interrupted when a signal has arrived.
 void throw_if_interrupted();
-
-/// SIGINT and SIGTERM held back while the outputs are renamed into place, so that a run
-/// ends either with every output renamed or with none.
-class SignalBlock {
-public:
-    SignalBlock();
-    ~SignalBlock();
-    SignalBlock(const SignalBlock&) = delete;
-    SignalBlock& operator=(const SignalBlock&) = delete;
-
-private:
-    sigset_t m_old;
-};
 
 }  // namespace glint::cli

@@ -3,6 +3,7 @@
 // rectangle behind the panel, so this file needs no shaders of its own.
 #include <glint/core/error.h>
 #include <glint/film/image_io.h>
+#include <glint/render/render_job.h>
 #include <glint/view/camera_controller.h>
 #include <glint/view/display.h>
 #include <glint/view/light_edits.h>
@@ -261,7 +262,7 @@ private:
         const Image shot = image_from_display(read_framebuffer(width, height), width, height);
         glfwSwapBuffers(window);
         if (!m_options.screenshot.empty()) {
-            write_image(m_options.screenshot, shot);
+            write_outputs({{m_options.screenshot, &shot, {}}});
             fmt::print(stderr, "wrote {} ({}x{}, {} spp)\n", m_options.screenshot, width, height,
                        m_frame.passes);
         }
@@ -401,11 +402,13 @@ private:
         try {
             if (m_frame.image.pixels.empty()) throw Error("nothing rendered yet");
             const std::string extension = std::filesystem::path(path).extension().string();
+            // Written as `glint render` writes: complete, or not at all.
             if (extension == ".png" || extension == ".PNG") {
-                write_image(path,
-                            image_from_display(m_shown, m_frame.image.width, m_frame.image.height));
+                const Image shown =
+                    image_from_display(m_shown, m_frame.image.width, m_frame.image.height);
+                write_outputs({{path, &shown, {}}});
             } else {
-                write_image(path, m_frame.image);
+                write_outputs({{path, &m_frame.image, {}}});
             }
             m_ui.message = fmt::format("wrote {} ({} spp)", path, m_frame.passes);
         } catch (const Error& e) {

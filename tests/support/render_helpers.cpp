@@ -1,6 +1,6 @@
 #include <glint/core/error.h>
-#include <glint/core/progress.h>
 #include <glint/integrator/integrator.h>
+#include <glint/render/render_job.h>
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 
@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
 
-#include <tbb/global_control.h>
 #include <cmath>
 
 #include <sys/wait.h>
@@ -24,20 +23,13 @@ Image render_lua(const std::string& code, int threads) {
 
 RenderResult render_lua_with_stats(const std::string& code, int threads) {
     const SceneDesc desc = load_scene_string(code, "test.lua");
-    const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
-    const auto scene = build_scene(desc, settings);
-    auto integrator = make_integrator(settings);
-    Film film(settings.output_width(), settings.output_height(), settings.aovs,
-              settings.output_origin());
-    Progress progress("test", 1, true);
-    RenderStats stats;
-    if (threads > 0) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        stats = integrator->render(*scene, film, progress);
-    } else {
-        stats = integrator->render(*scene, film, progress);
-    }
-    return {final_image(film, stats), stats};
+    RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
+    settings.threads = threads;
+    RenderControl control;
+    control.quiet = true;
+    control.warn = [](const std::string&) {};  // keys of other integrators: not a test's concern
+    RenderedImage rendered = render_image(desc, settings, control);
+    return {std::move(rendered.image), std::move(rendered.stats)};
 }
 
 std::string read_text(const std::string& path) {

@@ -11,18 +11,44 @@
 
 #include <atomic>
 #include <memory>
+#include <string>
+#include <vector>
 
 namespace glint {
 
 class Progress;
 
+/// A debug image an integrator can add (`--debug NAME`; its channel NAME.Y in RenderStats).
+struct DebugView {
+    std::string name;
+    /// What the user must ask for to get it, for the error when the integrator chosen
+    /// cannot write it: "needs <needs>".
+    std::string needs;
+};
+
+/// What an integrator can do. The registry, the render pipeline and the viewer ask this,
+/// never an integrator's name, so that a new integrator states its abilities in one place.
+struct IntegratorCapabilities {
+    /// Renders a crop window alone: its pixels do not depend on the rest of the image
+    /// (light paths that splat anywhere on the film do).
+    bool crop_windows = false;
+    /// Honours `adaptive` (sobel, variance): takes a different number of samples per pixel.
+    bool adaptive_sampling = false;
+    /// Fills the film's two halves (Film::has_halves(), by each sample's index), which the
+    /// denoiser needs. Integrators that splat light paths onto the film cannot.
+    bool film_halves = false;
+    /// The debug views it can write, besides those every integrator's settings give.
+    std::vector<DebugView> debug_views;
+
+    bool has_debug_view(const std::string& name) const;
+};
+
 class Integrator {
 public:
     virtual ~Integrator() = default;
     virtual RenderStats render(const Scene& scene, Film& film, Progress& progress) = 0;
-    /// Whether render() fills a film's halves (Film::has_halves(), by each sample's index),
-    /// which a denoiser needs. Integrators that splat light paths onto the film do not.
-    virtual bool records_halves() const { return false; }
+    /// What this integrator can do; nothing beyond plain whole-image rendering by default.
+    virtual IntegratorCapabilities capabilities() const { return {}; }
 };
 
 // Counts rays per thread without contention; summed once per tile.
@@ -50,5 +76,8 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
 
 /// The names make_integrator() knows, in name order.
 std::vector<std::string> integrator_names();
+
+/// The capabilities of the integrator registered as `name`, as made with default settings.
+IntegratorCapabilities integrator_capabilities(const std::string& name);
 
 }  // namespace glint

@@ -2,19 +2,20 @@
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/light_tracer.h>
 #include <glint/integrator/bidirectional/mlt.h>
+#include <glint/integrator/bidirectional/vcm.h>
 #include <glint/integrator/path/path.h>
+#include <glint/integrator/path/whitted.h>
 #include <glint/integrator/photon/photon.h>
 #include <glint/integrator/photon/preview.h>
-#include <glint/integrator/radiosity/radiosity.h>
 #include <glint/integrator/photon/sppm.h>
-#include <glint/integrator/bidirectional/vcm.h>
-#include <glint/integrator/path/whitted.h>
+#include <glint/integrator/radiosity/radiosity.h>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
-#include <map>
+#include <algorithm>
 #include <set>
+#include <vector>
 
 namespace glint {
 namespace {
@@ -24,63 +25,82 @@ std::unique_ptr<Integrator> create_path(const RenderSettings& settings, const Pa
     return std::make_unique<PathIntegrator>(settings, Strategy);
 }
 
-// Name -> create(). An integrator with settings of its own reads them in its create();
-// adding one is one row here.
-const std::map<std::string, IntegratorCreate>& factories() {
-    static const std::map<std::string, IntegratorCreate> table = {
-        {"bdpt", BdptIntegrator::create},
-        {"light", LightTracer::create},
-        {"mlt", MltIntegrator::create},
+struct Factory {
+    std::string name;
+    IntegratorCreate create;
+};
+
+// Name -> create(). An integrator with settings of its own reads them in its create(),
+// and states what it can do in capabilities(); adding one is one row here. Listed by
+// family, the order in which messages name them.
+const std::vector<Factory>& factories() {
+    static const std::vector<Factory> table = {
         {"path", create_path<DirectLighting::kMis>},
         {"path_light", create_path<DirectLighting::kLightOnly>},
         {"path_bsdf", create_path<DirectLighting::kBsdfOnly>},
+        {"whitted", WhittedIntegrator::create},
         {"photon", PhotonIntegrator::create},
+        {"sppm", SppmIntegrator::create},
         {"preview", PreviewIntegrator::create},
         {"radiosity", RadiosityIntegrator::create},
-        {"sppm", SppmIntegrator::create},
+        {"light", LightTracer::create},
+        {"bdpt", BdptIntegrator::create},
         {"vcm", VcmIntegrator::create},
-        {"whitted", WhittedIntegrator::create},
+        {"mlt", MltIntegrator::create},
     };
     return table;
+}
+
+const Factory* find_factory(const std::string& name) {
+    for (const Factory& factory : factories()) {
+        if (factory.name == name) return &factory;
+    }
+    return nullptr;
+}
+
+// "a, b and c"
+std::string spoken_list(const std::vector<std::string>& names) {
+    std::string text;
+    for (size_t i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " and " : ", ") + names[i];
+    return text;
+}
+
+// A crop window is refused unless the integrator renders one alone (its capabilities).
+void check_crop(const RenderSettings& settings, const Integrator& integrator) {
+    if (!settings.has_crop() || integrator.capabilities().crop_windows) return;
+    std::vector<std::string> able;
+    for (const Factory& factory : factories()) {
+        if (integrator_capabilities(factory.name).crop_windows) able.push_back(factory.name);
+    }
+    throw Error(fmt::format("{}: integrator '{}' does not support 'crop'; crop works with {}",
+                            settings.where_of("crop"), settings.integrator, spoken_list(able)));
 }
 
 }  // namespace
 
 std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
                                             std::vector<std::string>* warnings) {
-    auto it = factories().find(settings.integrator);
-    if (it == factories().end()) {
-        std::string known;
-        for (const auto& [name, create] : factories()) known += (known.empty() ? "" : ", ") + name;
+    const Factory* factory = find_factory(settings.integrator);
+    if (!factory) {
         throw Error(fmt::format("{}: unknown integrator '{}' (known: {})",
-                                settings.where_of("integrator"), settings.integrator, known));
-    }
-    // Only the integrators whose pixels do not depend on the others render a window alone:
-    // the tile integrators, and sppm (its photons do not depend on the window, and each
-    // pixel sums their flux in photon order). Light paths (light, bdpt, vcm, mlt) splat
-    // anywhere on the film, so a crop window would need the whole film rendered anyway. A
-    // new integrator is refused until it says so.
-    static const std::set<std::string> kCropIntegrators = {"path",    "path_light", "path_bsdf",
-                                                           "whitted", "photon",     "sppm"};
-    if (settings.has_crop() && !kCropIntegrators.contains(settings.integrator)) {
-        throw Error(fmt::format(
-            "{}: integrator '{}' does not support 'crop'; crop works with path, path_light, "
-            "path_bsdf, whitted, photon and sppm",
-            settings.where_of("crop"), settings.integrator));
+                                settings.where_of("integrator"), settings.integrator,
+                                fmt::join(integrator_names(), ", ")));
     }
     // A copy, so that it records only what this integrator reads.
     Params params = settings.params;
-    std::unique_ptr<Integrator> integrator = it->second(settings, params);
+    std::unique_ptr<Integrator> integrator = factory->create(settings, params);
+    check_crop(settings, *integrator);
     const std::vector<std::string> unread = params.unused();
     if (unread.empty()) return integrator;
 
     // Which keys the other integrators read: each reads all of its keys unconditionally, so
     // creating it from an empty table asks for every one of them.
     std::set<std::string> foreign_keys;
-    for (const auto& [name, create] : factories()) {
-        if (name == settings.integrator) continue;
+    for (const Factory& other : factories()) {
+        if (other.name == settings.integrator) continue;
         const Params empty(params.type(), params.where());
-        create(settings, empty);
+        other.create(settings, empty);
         foreign_keys.insert(empty.asked().begin(), empty.asked().end());
     }
     std::vector<std::string> foreign;
@@ -107,8 +127,22 @@ std::unique_ptr<Integrator> make_integrator(const RenderSettings& settings,
 
 std::vector<std::string> integrator_names() {
     std::vector<std::string> names;
-    for (const auto& [name, create] : factories()) names.push_back(name);
+    for (const Factory& factory : factories()) names.push_back(factory.name);
+    std::sort(names.begin(), names.end());
     return names;
+}
+
+IntegratorCapabilities integrator_capabilities(const std::string& name) {
+    const Factory* factory = find_factory(name);
+    if (!factory) throw Error(fmt::format("unknown integrator '{}'", name));
+    const RenderSettings defaults;
+    const Params empty("render", "default settings");
+    return factory->create(defaults, empty)->capabilities();
+}
+
+bool IntegratorCapabilities::has_debug_view(const std::string& name) const {
+    return std::any_of(debug_views.begin(), debug_views.end(),
+                       [&](const DebugView& view) { return view.name == name; });
 }
 
 Image final_image(const Film& film, const RenderStats& stats) {

@@ -20,8 +20,8 @@
 // `--debug strategies` also returns the weighted image of each (s, t) with s + t <=
 // kDebugMaxVertices and one of all longer paths; they sum to the image.
 #include <glint/integrator/bidirectional/bdpt_mis.h>
-#include <glint/integrator/integrator.h>
 #include <glint/integrator/bidirectional/subpath.h>
+#include <glint/integrator/integrator.h>
 
 #include <span>
 #include <vector>
@@ -84,6 +84,13 @@ public:
     /// sampling, which it does not do.
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    /// Light paths splat anywhere on the film: no crop window, no halves. One image per
+    /// strategy under --debug strategies.
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities;
+        capabilities.debug_views = {{"strategies", "--integrator bdpt"}};
+        return capabilities;
+    }
 
     /// Index of strategy (s, t) among the debug images (the last one holds longer paths),
     /// and the number of those images.

@@ -37,6 +37,11 @@ public:
     // With `caustics = true`, builds a caustic photon map first and adds its estimate at
     // every diffuse hit: the caustics a classic ray tracer cannot find on its own.
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities = TileIntegrator::capabilities();
+        capabilities.debug_views.push_back(photons_debug_view());
+        return capabilities;
+    }
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
 

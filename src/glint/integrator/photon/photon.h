@@ -43,11 +43,21 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
 // or 1/20 of the scene's diagonal when that is 0.
 float photon_search_radius2(const Scene& scene, const CausticSettings& caustic);
 
+// The photon maps' debug view: their estimate alone (photon, and whitted's caustics).
+inline DebugView photons_debug_view() {
+    return {"photons", "--integrator photon (or whitted with caustics = true)"};
+}
+
 class PhotonIntegrator final : public TileIntegrator {
 public:
     PhotonIntegrator(const RenderSettings& settings, const PhotonSettings& photon);
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities = TileIntegrator::capabilities();
+        capabilities.debug_views.push_back(photons_debug_view());
+        return capabilities;
+    }
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
 

@@ -24,6 +24,13 @@ public:
         : m_settings(settings), m_sppm(sppm) {}
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    /// Each pixel sums the photons' flux in photon order, and the photons do not depend
+    /// on the window: a crop window renders alone.
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities;
+        capabilities.crop_windows = true;
+        return capabilities;
+    }
 
 private:
     RenderSettings m_settings;

@@ -42,6 +42,12 @@ public:
 
     /// Meshes and solves (or loads the cache), builds the hybrid's caustic map, then renders.
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    /// A tile integrator's, less the crop window (never offered for radiosity).
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities = TileIntegrator::capabilities();
+        capabilities.crop_windows = false;
+        return capabilities;
+    }
     /// At the first surface that is not a mirror or glass (followed through them): meshed
     /// surfaces show the interpolated radiosity (plus, in the hybrid, direct light and
     /// caustics, and the radiosity only for the indirect part); surfaces that are not

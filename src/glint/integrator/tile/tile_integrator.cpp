@@ -351,4 +351,11 @@ TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Fi
     return moments;
 }
 
+IntegratorCapabilities TileIntegrator::capabilities() const {
+    return {.crop_windows = true,
+            .adaptive_sampling = true,
+            .film_halves = true,
+            .debug_views = {{"edges", "--adaptive sobel"}}};
+}
+
 }  // namespace glint

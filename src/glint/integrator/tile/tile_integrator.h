@@ -16,7 +16,9 @@ class TileIntegrator : public Integrator, public ProgressiveIntegrator {
 public:
     explicit TileIntegrator(const RenderSettings& settings);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
-    bool records_halves() const override { return true; }
+    /// Pixel by pixel: a crop window alone, adaptive sampling, the film's halves, and the
+    /// sobel edge mask.
+    IntegratorCapabilities capabilities() const override;
 
     /// Adds sample `pass` of every pixel of `film`'s window, drawn from the sampler
     /// render() uses (made for settings.spp samples per pixel, so passes 0 .. spp - 1 into

@@ -1,0 +1,18 @@
+#pragma once
+// The checks the pipeline makes before any work, each naming the setting (a flag or the
+// scene's line) that is wrong.
+#include <glint/scene/render_settings.h>
+
+namespace glint {
+
+/// Every `debug` view is one some integrator can write, the one chosen among them, with
+/// what the view needs (edges: adaptive sobel).
+void check_debug_views(const RenderSettings& settings);
+
+/// The film (with AOVs and halves when the render needs them) fits the memory budget.
+void check_film_memory(const RenderSettings& settings);
+
+/// Whether the film records AOVs: asked for, or needed by the denoiser.
+bool film_needs_aovs(const RenderSettings& settings);
+
+}  // namespace glint
