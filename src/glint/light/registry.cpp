@@ -1,3 +1,4 @@
+#include <glint/core/error.h>
 #include <glint/light/environment_light.h>
 #include <glint/light/point_light.h>
 #include <glint/light/registry.h>
@@ -9,18 +10,24 @@ namespace {
 
 using LightFactory = std::unique_ptr<Light> (*)(const Params&, const std::string& directory);
 
+struct LightRow {
+    LightFactory make;
+    LightEditing editing;
+};
+
 // Lights that read no files ignore the directory.
 template <std::unique_ptr<Light> (*make)(const Params&)>
 std::unique_ptr<Light> without_files(const Params& params, const std::string&) {
     return make(params);
 }
 
-const std::map<std::string, LightFactory>& factories() {
-    static const std::map<std::string, LightFactory> table = {
-        {"directional_light", without_files<make_directional_light>},
-        {"environment", make_environment_light},
-        {"point_light", without_files<make_point_light>},
-        {"spot_light", without_files<make_spot_light>},
+// Name -> factory, and what an editor may change. Adding a light is one row here.
+const std::map<std::string, LightRow>& factories() {
+    static const std::map<std::string, LightRow> table = {
+        {"directional_light", {without_files<make_directional_light>, {"irradiance", {}}}},
+        {"environment", {make_environment_light, {"intensity", {}}}},
+        {"point_light", {without_files<make_point_light>, {"intensity", {"position"}}}},
+        {"spot_light", {without_files<make_spot_light>, {"intensity", {"position", "look_at"}}}},
     };
     return table;
 }
@@ -36,9 +43,15 @@ std::vector<std::string> light_types() {
 std::unique_ptr<Light> make_light(const Params& params, const std::string& directory) {
     auto it = factories().find(params.type());
     if (it == factories().end()) params.fail("unknown light type");
-    auto light = it->second(params, directory);
+    auto light = it->second.make(params, directory);
     params.check_all_used();
     return light;
+}
+
+LightEditing light_editing(const std::string& type) {
+    auto it = factories().find(type);
+    if (it == factories().end()) throw Error("unknown light type '" + type + "'");
+    return it->second.editing;
 }
 
 }  // namespace glint

@@ -9,18 +9,23 @@ namespace {
 
 using MaterialFactory = std::unique_ptr<Material> (*)(const Params&, TextureTable&);
 
-const std::map<std::string, MaterialFactory>& factories() {
+struct MaterialRow {
+    MaterialFactory make;
+    const char* emission_key;  // the key of the light it emits; "" for none
+};
+
+const std::map<std::string, MaterialRow>& factories() {
     // One row per material, so that adding one is a one-line change.
     // clang-format off
-    static const std::map<std::string, MaterialFactory> table = {
-        {"diffuse", make_diffuse_material},
-        {"mirror", make_mirror_material},
-        {"dielectric", make_dielectric_material},
-        {"emissive", make_emissive_material},
-        {"phong", make_phong_material},
-        {"conductor", make_conductor_material},
-        {"plastic", make_plastic_material},
-        {"principled", make_principled_material},
+    static const std::map<std::string, MaterialRow> table = {
+        {"diffuse", {make_diffuse_material, ""}},
+        {"mirror", {make_mirror_material, ""}},
+        {"dielectric", {make_dielectric_material, ""}},
+        {"emissive", {make_emissive_material, "radiance"}},
+        {"phong", {make_phong_material, ""}},
+        {"conductor", {make_conductor_material, ""}},
+        {"plastic", {make_plastic_material, ""}},
+        {"principled", {make_principled_material, ""}},
     };
     // clang-format on
     return table;
@@ -50,11 +55,16 @@ std::unique_ptr<Material> make_material(const Params& params, TextureTable& text
     auto it = factories().find(params.type());
     if (it == factories().end()) params.fail("unknown material type");
     const size_t textures_before = textures.textures_handed_out();
-    auto material = it->second(params, textures);
+    auto material = it->second.make(params, textures);
     material->set_uses_textures(textures.textures_handed_out() != textures_before);
     read_perturbation(params, textures, *material);
     params.check_all_used();
     return material;
+}
+
+std::string material_emission_key(const std::string& type) {
+    auto it = factories().find(type);
+    return it == factories().end() ? "" : it->second.emission_key;
 }
 
 }  // namespace glint

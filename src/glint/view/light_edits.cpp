@@ -1,3 +1,5 @@
+#include <glint/light/registry.h>
+#include <glint/material/registry.h>
 #include <glint/math/transform.h>
 #include <glint/view/light_edits.h>
 
@@ -6,13 +8,6 @@
 namespace glint {
 namespace {
 
-// The key holding a light's strength, and its default when the scene left it out.
-const char* power_key(const std::string& type) {
-    if (type == "directional_light") return "irradiance";
-    if (type == "emissive") return "radiance";
-    return "intensity";
-}
-
 std::vector<double> numbers(const Spectrum& s) {
     return {s.r, s.g, s.b};
 }
@@ -20,21 +15,28 @@ std::vector<double> numbers(const Vec3& v) {
     return {v.x, v.y, v.z};
 }
 
-void scale_power(Params& params, float scale) {
+// Scales the spectrum under `key` (1 when the scene left it out).
+void scale_power(Params& params, const std::string& key, float scale) {
     if (scale == 1.0f) return;
-    const char* key = power_key(params.type());
     // A copy reads the value, so the original's record of used keys stays as it was.
     const Params read = params;
     params.set(key, numbers(read.get_spectrum(key, Spectrum(1.0f)) * scale), params.where_of(key));
 }
 
-// Whether a world shape emits: its material (always a handle after loading) is emissive.
-bool emissive_shape(const SceneDesc& desc, const Params& shape) {
-    if (shape.type() == "solid" || !shape.is_ref("material", "material")) return false;
+// The material of a world shape (always a handle after loading), or null: a solid's parts
+// carry their own materials, and those are not offered.
+const Params* shape_material(const SceneDesc& desc, const Params& shape) {
+    if (shape.is_ref("solid", "solid") || !shape.is_ref("material", "material")) return nullptr;
     const Params copy = shape;
     const ObjectRef ref = copy.get_ref("material", "material");
-    return ref.index >= 0 && static_cast<size_t>(ref.index) < desc.materials.size() &&
-           desc.materials[ref.index].type() == "emissive";
+    if (ref.index < 0 || static_cast<size_t>(ref.index) >= desc.materials.size()) return nullptr;
+    return &desc.materials[ref.index];
+}
+
+// Whether a world shape emits: its material says it emits light (material_emission_key).
+bool emissive_shape(const SceneDesc& desc, const Params& shape) {
+    const Params* material = shape_material(desc, shape);
+    return material && !material_emission_key(material->type()).empty();
 }
 
 // "file.lua:12" of a script location, without the directories: the panel is narrow.
@@ -50,7 +52,7 @@ LightEdits::LightEdits(const SceneDesc& desc) {
         const Params& p = desc.lights[i];
         EditableLight light;
         light.name = fmt::format("{} ({})", p.type(), short_where(p.where()));
-        light.movable = p.type() == "point_light" || p.type() == "spot_light";
+        light.movable = !light_editing(p.type()).position_keys.empty();
         m_lights.push_back(light);
         m_sources.push_back({false, i});
     }
@@ -74,10 +76,11 @@ SceneDesc LightEdits::apply(const SceneDesc& original) const {
         const bool moved = light.movable && light.offset != Vec3(0.0f);
         if (!source.shape) {
             Params& p = desc.lights[source.index];
-            scale_power(p, light.power_scale);
+            const LightEditing editing = light_editing(p.type());
+            scale_power(p, editing.power_key, light.power_scale);
             if (!moved) continue;
             const Params read = p;
-            for (const char* key : {"position", "look_at"}) {
+            for (const std::string& key : editing.position_keys) {
                 if (read.has(key))
                     p.set(key, numbers(read.get_vec3(key) + light.offset), p.where_of(key));
             }
@@ -87,7 +90,7 @@ SceneDesc LightEdits::apply(const SceneDesc& original) const {
         if (light.power_scale != 1.0f) {
             const Params read = shape;
             Params material = desc.materials[read.get_ref("material", "material").index];
-            scale_power(material, light.power_scale);
+            scale_power(material, material_emission_key(material.type()), light.power_scale);
             desc.materials.push_back(material);
             shape.set("material",
                       ObjectRef{"material", static_cast<int>(desc.materials.size() - 1)});
