@@ -1,8 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/geometry/mesh.h>
+#include <glint/geometry/shape_table.h>
 #include <glint/geometry/sphere.h>
-#include <glint/scene/import/import.h>
-#include <glint/scene/shapes.h>
 
 #include <fmt/format.h>
 
@@ -12,7 +11,7 @@
 namespace glint {
 namespace {
 
-using ShapeFactory = std::unique_ptr<Shape> (*)(const Params&, const SceneDesc&);
+using ShapeFactory = std::unique_ptr<Shape> (*)(const Params&, const ShapeSources&);
 
 std::unique_ptr<Shape> mesh_shape(const Params& params, std::string name, MeshData data) {
     transform_mesh(data, params.get_transform("transform"));
@@ -23,41 +22,36 @@ std::unique_ptr<Shape> mesh_shape(const Params& params, std::string name, MeshDa
     }
 }
 
-std::unique_ptr<Shape> make_sphere(const Params& params, const SceneDesc&) {
-    const Vec3 center = params.get_vec3("center", Vec3(0.0f));
-    const float radius = params.get_float("radius", 1.0f);
-    // The intersection squares the radius, in float: past 1e12 that is no longer finite.
-    if (!(radius > 0.0f && radius <= 1e12f)) params.fail("'radius' must be in (0, 1e12]");
-    return std::make_unique<Sphere>(center, radius, params.get_transform("transform"));
+std::unique_ptr<Shape> make_sphere(const Params& params, const ShapeSources&) {
+    const SphereParams sphere = read_sphere(params);
+    return std::make_unique<Sphere>(sphere.center, sphere.radius,
+                                    params.get_transform("transform"));
 }
 
-std::unique_ptr<Shape> make_box(const Params& params, const SceneDesc&) {
-    const Vec3 lo = params.get_vec3("min", Vec3(-1.0f));
-    const Vec3 hi = params.get_vec3("max", Vec3(1.0f));
-    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-        params.fail("'min' must be below 'max' on every axis");
-    return mesh_shape(params, "box", make_box_mesh(lo, hi));
+std::unique_ptr<Shape> make_box(const Params& params, const ShapeSources&) {
+    const BoxParams box = read_box(params);
+    return mesh_shape(params, "box", make_box_mesh(box.lo, box.hi));
 }
 
-std::unique_ptr<Shape> make_quad(const Params& params, const SceneDesc&) {
+std::unique_ptr<Shape> make_quad(const Params& params, const ShapeSources&) {
     const std::vector<Vec3> v = params.get_vec3_list("vertices");
     if (v.size() != 4) params.fail("'vertices' must list exactly 4 corners");
     return mesh_shape(params, "quad", make_quad_mesh(v[0], v[1], v[2], v[3]));
 }
 
-std::unique_ptr<Shape> make_mesh(const Params& params, const SceneDesc& desc) {
+std::unique_ptr<Shape> make_mesh(const Params& params, const ShapeSources& sources) {
     if (params.has("data")) {
         // Imported geometry (glint.import), shared with the description: copied once here,
         // where the transform is applied to it.
         const ObjectRef ref = params.get_ref("data", "mesh_data");
-        return mesh_shape(params, "mesh", *desc.meshes.at(static_cast<size_t>(ref.index)));
+        return mesh_shape(params, "mesh", *sources.meshes->at(static_cast<size_t>(ref.index)));
     }
     if (params.has("file")) {
         std::filesystem::path path = params.get_string("file");
-        if (path.is_relative()) path = std::filesystem::path(desc.directory) / path;
+        if (path.is_relative()) path = std::filesystem::path(sources.directory) / path;
         MeshData data;
         try {
-            data = load_mesh_file(path.string());
+            data = sources.load_mesh_file(path.string());
         } catch (const Error& e) {
             params.fail(e.what());
         }
@@ -100,12 +94,28 @@ std::vector<std::string> shape_types() {
     return names;
 }
 
-std::unique_ptr<Shape> make_shape(const Params& params, const SceneDesc& desc) {
+std::unique_ptr<Shape> make_shape(const Params& params, const ShapeSources& sources) {
     auto it = factories().find(params.type());
     if (it == factories().end()) params.fail("unknown shape type");
-    auto shape = it->second(params, desc);
+    auto shape = it->second(params, sources);
     params.check_all_used();
     return shape;
+}
+
+SphereParams read_sphere(const Params& params) {
+    const Vec3 center = params.get_vec3("center", Vec3(0.0f));
+    const float radius = params.get_float("radius", 1.0f);
+    // The intersection squares the radius, in float: past 1e12 that is no longer finite.
+    if (!(radius > 0.0f && radius <= 1e12f)) params.fail("'radius' must be in (0, 1e12]");
+    return {center, radius};
+}
+
+BoxParams read_box(const Params& params) {
+    const Vec3 lo = params.get_vec3("min", Vec3(-1.0f));
+    const Vec3 hi = params.get_vec3("max", Vec3(1.0f));
+    if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
+        params.fail("'min' must be below 'max' on every axis");
+    return {lo, hi};
 }
 
 }  // namespace glint

@@ -1,10 +1,11 @@
 #include <glint/core/error.h>
+#include <glint/geometry/shape_table.h>
 #include <glint/light/area_light.h>
 #include <glint/light/registry.h>
 #include <glint/material/registry.h>
 #include <glint/material/texture/registry.h>
 #include <glint/scene/build.h>
-#include <glint/scene/shapes.h>
+#include <glint/scene/import/import.h>
 #include <glint/scene/solids.h>
 
 #include <fmt/format.h>
@@ -99,7 +100,7 @@ private:
                     continue;
                 }
                 const ObjectRef ref = p.get_ref("material", "material");
-                auto shape = make_shape(p, m_desc);
+                auto shape = make_shape(p, {m_desc.directory, &m_desc.meshes, load_mesh_file});
                 m_group_shapes[g].push_back(
                     {shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
                 m_scene->m_shapes.push_back(std::move(shape));

@@ -1,6 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/geometry/csg/csg_node.h>
 #include <glint/geometry/csg/primitives.h>
+#include <glint/geometry/shape_table.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/solids.h>
 
@@ -169,17 +170,15 @@ private:
         if (type == "union" || type == "intersection" || type == "difference") {
             p.fail(fmt::format("a {} needs at least one solid, e.g. glint.{}{{a, b}}", type, type));
         }
+        // Read as the shapes read them (geometry/shape_table.h).
         if (type == "sphere") {
-            const Vec3 center = p.get_vec3("center", Vec3(0.0f));
-            const float radius = p.get_float("radius", 1.0f);
-            if (!(radius > 0.0f && radius <= 1e12f)) p.fail("'radius' must be in (0, 1e12]");
-            return std::make_shared<SphereSolid>(center, radius, new_part(p, material));
+            const SphereParams sphere = read_sphere(p);
+            return std::make_shared<SphereSolid>(sphere.center, sphere.radius,
+                                                 new_part(p, material));
         }
         if (type == "box") {
-            const Vec3 lo = p.get_vec3("min", Vec3(-1.0f)), hi = p.get_vec3("max", Vec3(1.0f));
-            if (!(lo.x < hi.x && lo.y < hi.y && lo.z < hi.z))
-                p.fail("'min' must be below 'max' on every axis");
-            return std::make_shared<BoxSolid>(lo, hi, new_part(p, material));
+            const BoxParams box = read_box(p);
+            return std::make_shared<BoxSolid>(box.lo, box.hi, new_part(p, material));
         }
         if (type == "cylinder" || type == "cone") return capped(p, material);
         if (type == "mesh") return mesh(p, material);

@@ -1,11 +1,11 @@
 #include <glint/core/error.h>
+#include <glint/geometry/shape_table.h>
 #include <glint/light/registry.h>
 #include <glint/material/registry.h>
 #include <glint/material/texture/registry.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/lua/lua_loader.h>
 #include <glint/scene/lua/lua_vm.h>
-#include <glint/scene/shapes.h>
 #include <glint/scene/solids.h>
 
 #include <fmt/format.h>
