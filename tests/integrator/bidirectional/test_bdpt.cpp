@@ -47,28 +47,6 @@ TEST(Bdpt, DiffuseSphereInsideAnEmittingSphere) {
     }
 }
 
-// The closed furnace of test_path: a point light of intensity pi at the centre of a closed
-// diffuse sphere of radius 1 and albedo 0.5 gives L = a I / (pi R^2 (1 - a)) = 1 everywhere,
-// half of it after the first bounce; every strategy but s = 0 (a point light cannot be hit)
-// and (1, 1) (nor seen) carries part of it, and roulette ends the paths.
-TEST(Bdpt, ClosedSphereAroundPointLightSumsEveryBounce) {
-    auto scene = [](int seed) {
-        return fmt::format(R"(
-            glint.camera{{ eye = {{0, 0, 0}}, look_at = {{0, 0, -1}}, fov = 70 }}
-            glint.render{{ width = 16, height = 16, spp = 16, seed = {}, integrator = 'bdpt' }}
-            glint.sphere{{ center = {{0, 0, 0}}, radius = 1, material = glint.diffuse{{ reflectance = 0.5 }} }}
-            glint.point_light{{ position = {{0, 0, 0}}, intensity = math.pi }}
-        )",
-                           seed);
-    };
-    for (int c = 0; c < 3; c += 2) {
-        const Estimate e = image_mean(scene, 6, c);
-        fmt::print("channel {}: {:.5f} +- {:.5f} (exact 1)\n", c, e.mean, e.se);
-        EXPECT_LT(4.0 * e.se, 0.01);
-        EXPECT_NEAR(e.mean, 1.0, 4.0 * e.se) << "channel " << c;
-    }
-}
-
 namespace {
 
 // bdpt and path agree on `scene(integrator, spp, seed)` over every pixel, and the same check
@@ -198,17 +176,6 @@ TEST(Bdpt, SeesThePointLightCausticBehindGlassLikeSppm) {
         EXPECT_NEAR(bdpt[c].mean, sppm[c].mean, noise + 0.08 * sppm[c].mean) << "channel " << c;
         EXPECT_GT(bdpt[c].mean, 100.0 * path[c].mean) << "channel " << c;
     }
-}
-
-// Camera samples render pixel by pixel and the splats reach the film in tile order: the
-// image is bit-identical for one and two threads, splats included (48 x 48 is 9 tiles).
-TEST(Bdpt, ImageIsIdenticalForAnyThreadCount) {
-    const std::string scene = example_with_settings(
-        "cornell-spheres.lua", "width = 48, height = 48, spp = 8, seed = 7, integrator = 'bdpt'");
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_TRUE(one.pixels == two.pixels);
 }
 
 // --debug strategies: the weighted images of every (s, t) (and of the longer paths) add up

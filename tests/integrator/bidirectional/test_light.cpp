@@ -155,14 +155,3 @@ TEST(LightTracer, SeesThePointLightCausticBehindGlassLikeSppm) {
     }
 }
 
-// Light paths are keyed by (seed, path index) and their splats reach the film in chunk
-// order: the image is bit-identical for one and two threads. 48 x 48 x 64 paths are 36
-// chunks of 4096, so two threads interleave many chunks.
-TEST(LightTracer, ImageIsIdenticalForAnyThreadCount) {
-    const std::string scene = example_with(
-        "cornell-spheres.lua", "width = 48, height = 48, spp = 64, seed = 7, integrator = 'light'");
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_TRUE(one.pixels == two.pixels);
-}

@@ -280,16 +280,3 @@ TEST(Mlt, ConvergesToPathOnTheCornellBox) {
     EXPECT_FALSE(biased.agrees()) << "a 3 % bias passes: " << biased.describe();
 }
 
-// Bootstrap samples and chains have RNGs keyed by their index, and the chains' splats reach
-// the film in chain order: the image is bit-identical for one and two threads (100 chains
-// are two batches).
-TEST(Mlt, ImageIsIdenticalForAnyThreadCount) {
-    const std::string scene =
-        example_with_settings("cornell-spheres.lua",
-                              "width = 48, height = 48, spp = 8, seed = 7, integrator = 'mlt', "
-                              "mlt_bootstrap = 5000, mlt_chains = 100");
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_TRUE(one.pixels == two.pixels);
-}

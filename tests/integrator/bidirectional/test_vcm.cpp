@@ -292,18 +292,6 @@ TEST(Vcm, SeesThePointLightCausticBehindGlassLikeSppm) {
     }
 }
 
-// Light subpaths in chunks whose splats reach the film in chunk order, camera subpaths in
-// tiles, merges in the grid's fixed order: the same bits for one and two threads (48 x 48:
-// 9 chunks of light subpaths and 9 tiles per iteration).
-TEST(Vcm, ImageIsIdenticalForAnyThreadCount) {
-    const std::string scene = example_with_settings(
-        "cornell-spheres.lua", "width = 48, height = 48, spp = 4, seed = 7, integrator = 'vcm'");
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_TRUE(one.pixels == two.pixels);
-}
-
 // The same with more light subpaths than pixels (9316 for 48 x 48 x 4: a last chunk partly
 // filled) and fewer (1000, shared by pixels).
 TEST(Vcm, ImageIsIdenticalForAnyThreadCountWithMoreOrFewerLightSubpaths) {

@@ -84,28 +84,6 @@ std::string closed_sphere(const std::string& integrator, int spp, int seed, doub
 
 }  // namespace
 
-// A closed furnace that needs every bounce: a point light of intensity I at the centre of a
-// closed diffuse sphere (radius R, albedo a) irradiates the wall uniformly with I / R^2, and
-// the wall, seeing only itself, adds a uniform pi L: L = a/pi (I/R^2 + pi L), so
-// L = a I / (pi R^2 (1 - a)) = 1 for a = 0.5, I = pi, R = 1. Half of it comes after the
-// first bounce and an eighth after the third, where Russian roulette has started (the
-// throughput is 0.5^k), so a path cut short or a roulette survivor not reweighted shows.
-// path_bsdf never reaches a point light, so it has no part here.
-TEST(PathIntegrator, ClosedSphereAroundPointLightSumsEveryBounce) {
-    for (const char* variant : {"path", "path_light"}) {
-        const Image image = render_lua(
-            closed_sphere(variant, 64, 5, 0.5, Vec3(0.0f),
-                          "glint.point_light{ position = {0, 0, 0}, intensity = math.pi }"));
-        for (int c = 0; c < 3; ++c) {
-            const double mean = mean_channel(image, c, 0, 0, image.width, image.height);
-            const double bound = 4.0 * glint::test::standard_error_of_uniform_mean(image, c);
-            // The bound is tight enough to see a 2 % bias.
-            EXPECT_LT(bound, 0.01) << variant;
-            EXPECT_NEAR(mean, 1.0, bound) << variant << " channel " << c;
-        }
-    }
-}
-
 // The closed furnace for the photon-mapping integrators, which store the light of every
 // bounce after the first. Their noise is shared between pixels through the photons, so the
 // pixels' spread does not bound it; the image mean's spread over seeds is below 0.2 % for
@@ -374,15 +352,6 @@ std::string cornell_box(int res, int spp) {
 }
 
 }  // namespace
-
-// Same seed, same bits, whatever the number of threads.
-TEST(PathIntegrator, ImageIsIdenticalForAnyThreadCount) {
-    const std::string scene = cornell_box(48, 4);
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_TRUE(one.pixels == two.pixels);
-}
 
 // The Cornell box: the light seen directly is exactly its radiance, and the image mean
 // matches the published look (shared/scenes/cornell-box.md) to within a few percent.

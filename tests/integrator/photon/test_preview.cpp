@@ -100,35 +100,6 @@ TEST(Preview, CausticConvergesToSppm) {
     EXPECT_LT(error, 2.0 * (noise + reference_noise) + 0.005);
 }
 
-// Same bits for one and two threads, through the command line.
-TEST(Preview, SameImageForOneAndTwoThreads) {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / fmt::format("glint-preview-{}", ::getpid());
-    std::filesystem::create_directories(dir);
-    const std::string scene = (dir / "scene.lua").string();
-    {
-        std::FILE* file = std::fopen(scene.c_str(), "w");
-        ASSERT_NE(file, nullptr);
-        const std::string code = caustic_scene("spp = 4");
-        std::fwrite(code.data(), 1, code.size(), file);
-        std::fclose(file);
-    }
-    std::vector<Image> images;
-    for (int threads : {1, 2}) {
-        const std::string out = (dir / fmt::format("t{}.exr", threads)).string();
-        const test::CommandResult r = test::run_glint(fmt::format(
-            "render {} --integrator preview --threads {} --quiet -o {}", scene, threads, out));
-        ASSERT_EQ(r.exit_code, 0) << r.output;
-        images.push_back(read_image(out));
-    }
-    std::filesystem::remove_all(dir);
-    ASSERT_EQ(images[0].pixels.size(), images[1].pixels.size());
-    size_t differing = 0;
-    for (size_t i = 0; i < images[0].pixels.size(); ++i)
-        differing += images[0].pixels[i] != images[1].pixels[i];
-    EXPECT_EQ(differing, 0u);
-}
-
 // A camera move keeps the photons and the shrinking radius; a light move drops them.
 TEST(Preview, CameraChangeKeepsPhotonsLightChangeDropsThem) {
     BuiltScene b = build(caustic_scene("integrator = 'preview', preview_photons = 5000"));

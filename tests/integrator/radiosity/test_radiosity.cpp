@@ -304,16 +304,6 @@ TEST(Radiosity, CornellBoxConvergesToPathAsTheMeshIsRefined) {
     EXPECT_LT(mean_errors[1], 0.015);
 }
 
-// The same image for 1 and 2 threads, bit for bit: the solve computes vertices in parallel
-// but each from its own random numbers, and sums in a fixed order.
-TEST(Radiosity, SameImageForOneAndTwoThreads) {
-    const std::string scene = cornell_radiosity(300.0f);
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_EQ(0, std::memcmp(one.pixels.data(), two.pixels.data(), one.pixels.size() * 4));
-}
-
 // The hybrid on the Cornell box with a mirror and a glass sphere, against the path tracer.
 // Radiosity gives the diffuse indirect light, the second pass the direct light, the
 // spheres and their caustics (photon map); what neither pass has is light that the spheres
