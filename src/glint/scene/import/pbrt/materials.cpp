@@ -298,7 +298,7 @@ std::optional<ObjectRef> PbrtTranslator::make_material(const PbrtEntity& e, int 
                              .value_or(PbrtValue{Vec3(0.5f), {}})
                              .as_param());
         p.set("ior", std::clamp(e.params.get_float("eta", 1.5), 1.0, 10.0));
-        p.set("roughness", roughness(e, nullptr, "").as_param());
+        p.set("roughness", roughness(e, nullptr, "").as_number());
     } else if (t == "conductor" || t == "coatedconductor") {
         conductor(e, p, t == "coatedconductor" ? "conductor." : "");
     } else if (t == "dielectric" || t == "thindielectric") {
@@ -317,7 +317,7 @@ std::optional<ObjectRef> PbrtTranslator::make_material(const PbrtEntity& e, int 
             }
         }
         p.set("ior", std::clamp(ior, 0.01, 100.0));
-        p.set("roughness", roughness(e, nullptr, "").as_param());
+        p.set("roughness", roughness(e, nullptr, "").as_number());
         if (t == "thindielectric") {
             warn(e.where, "Material", "thindielectric is rendered as a dielectric (refracting)");
             ++m_skipped["materials"];
@@ -366,7 +366,7 @@ void PbrtTranslator::conductor(const PbrtEntity& e, Params& p, const std::string
         p.set("k", numbers_of(glm::max(index("k", "metal-Cu-k"), Vec3(0.0f))));
     }
     double anisotropy = 0.0;
-    p.set("roughness", roughness(e, &anisotropy, prefix).as_param());
+    p.set("roughness", roughness(e, &anisotropy, prefix).as_number());
     if (anisotropy != 0.0) p.set("anisotropy", anisotropy);
     if (!prefix.empty())
         for (const PbrtParam& param : e.params.all())

@@ -129,7 +129,7 @@ private:
         for (size_t i = 0; i < count; ++i) {
             Tok t = next();
             if (t.token.kind != PbrtToken::Kind::Word)
-                fail(t, fmt::format("{}: expected {} numbers, got {} before {}",
+                fail(directive, fmt::format("{}: expected {} numbers, got {} before {}",
                                     directive.token.text, count, i, describe(t.token)));
             v.push_back(to_number(t));
         }
@@ -243,7 +243,7 @@ private:
                 fail(declaration, fmt::format("parameter \"{}\": {} values, expected {}",
                                               declaration.token.text, n, what));
         };
-        if (p.type == "point3" || p.type == "vector3" || p.type == "normal3" || p.type == "rgb")
+        if (p.type == "point3" || p.type == "vector3" || p.type == "normal3")
             need(n % 3 == 0, "a multiple of 3");
         if (p.type == "point2" || p.type == "vector2") need(n % 2 == 0, "a multiple of 2");
         if (p.type == "rgb") need(n == 3, "3");

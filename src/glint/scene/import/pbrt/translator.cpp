@@ -18,6 +18,11 @@ std::vector<double> numbers_of(const Vec3& v) {
 
 }  // namespace
 
+ParamValue PbrtValue::as_number() const {
+    if (texture) return *texture;
+    return static_cast<double>(constant.x);
+}
+
 ParamValue PbrtValue::as_param() const {
     if (texture) return *texture;
     return numbers_of(constant);

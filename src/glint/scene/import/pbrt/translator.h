@@ -26,6 +26,7 @@ struct PbrtValue {
     std::optional<ObjectRef> texture;
     bool is_texture() const { return texture.has_value(); }
     ParamValue as_param() const;  ///< the texture, or the constant as {r, g, b}
+    ParamValue as_number() const;  ///< the texture, or the constant's first channel
     double grey() const { return (constant.x + constant.y + constant.z) / 3.0; }
 };
 
