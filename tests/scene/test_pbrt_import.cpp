@@ -2,6 +2,7 @@
 // left-handed world rendered unmirrored, radiometric normalisations, and each supported
 // material, light and shape rendered like the same scene written in Lua.
 #include <glint/core/progress.h>
+#include <glint/film/image_io.h>
 #include <glint/integrator/integrator.h>
 #include <glint/scene/build.h>
 #include <glint/scene/import/import.h>
@@ -10,9 +11,9 @@
 #include <glint/scene/lua/lua_loader.h>
 
 #include <gtest/gtest.h>
-#include <glm/gtc/matrix_transform.hpp>
 #include <support/render_helpers.h>
 #include <support/test_util.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <fstream>
 
@@ -111,7 +112,8 @@ Vec2 centroid(const Image& image, int c) {
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {
             const float v = image.at(x, y, c);
-            if (v > 0.3f && v > 4.0f * (image.at(x, y, (c + 1) % 3) + image.at(x, y, (c + 2) % 3))) {
+            if (v > 0.3f &&
+                v > 4.0f * (image.at(x, y, (c + 1) % 3) + image.at(x, y, (c + 2) % 3))) {
                 sum += Vec2(x + 0.5f, y + 0.5f);
                 ++count;
             }
@@ -168,7 +170,8 @@ TEST(PbrtTransforms, LookAtAndNamedCoordinateSystems) {
 TEST(PbrtHandedness, WorldMirrorCancelsAMirroringCamera) {
     const Mat4 mirror = glm::scale(Mat4(1.0f), Vec3(-1, 1, 1));
     EXPECT_EQ(PbrtTranslator::world_mirror(std::nullopt), mirror);
-    const PbrtScene plain = parse_pbrt_text("LookAt 0 0 -5 0 0 0 0 1 0\nCamera \"perspective\"\n", "a.pbrt", ".");
+    const PbrtScene plain =
+        parse_pbrt_text("LookAt 0 0 -5 0 0 0 0 1 0\nCamera \"perspective\"\n", "a.pbrt", ".");
     EXPECT_EQ(PbrtTranslator::world_mirror(plain.camera), mirror);
     const PbrtScene flipped = parse_pbrt_text(
         "Scale -1 1 1\nLookAt 0 0 -5 0 0 0 0 1 0\nCamera \"perspective\"\n", "a.pbrt", ".");
@@ -194,14 +197,16 @@ TEST(PbrtHandedness, ThreeMarkersRenderUnmirroredAsTheLuaScene) {
         glint.sphere{ center = {-1.2, 0, 0}, radius = 0.3, material = glint.emissive{ radiance = {1, 0, 0} } }
         glint.sphere{ center = {0, 1, 0}, radius = 0.3, material = glint.emissive{ radiance = {0, 1, 0} } }
         glint.sphere{ center = {1.2, -0.8, 0}, radius = 0.3, material = glint.emissive{ radiance = {0, 0, 1} } }
-    )", "markers.lua"));
+    )",
+                                               "markers.lua"));
     for (int c = 0; c < 3; ++c) {
         const Vec2 a = centroid(pbrt, c), b = centroid(lua, c);
         EXPECT_NEAR(a.x, b.x, 0.25f) << c;
         EXPECT_NEAR(a.y, b.y, 0.25f) << c;
     }
     // "Scale -1 1 1" before the LookAt mirrors pbrt's own image: red goes to the left.
-    const Image flipped = render(import_text(dir, markers("Scale -1 1 1\nLookAt 0 0 -5  0 0 0  0 1 0\n"), "f.pbrt"));
+    const Image flipped =
+        render(import_text(dir, markers("Scale -1 1 1\nLookAt 0 0 -5  0 0 0  0 1 0\n"), "f.pbrt"));
     EXPECT_LT(centroid(flipped, 0).x, 14.0f);
     EXPECT_LT(centroid(flipped, 1).y, 8.0f);
     EXPECT_GT(centroid(flipped, 2).x, 34.0f);
@@ -209,43 +214,54 @@ TEST(PbrtHandedness, ThreeMarkersRenderUnmirroredAsTheLuaScene) {
 
 TEST(PbrtCamera, FieldOfViewIsOnTheShorterSide) {
     test::TempDir dir;
-    const std::string head = "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 40 "
-                             "\"float lensradius\" 0.1 \"float focaldistance\" 3\n";
-    const SceneDesc wide = import_text(dir, head + "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 32\n");
+    const std::string head =
+        "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 40 "
+        "\"float lensradius\" 0.1 \"float focaldistance\" 3\n";
+    const SceneDesc wide = import_text(
+        dir, head + "Film \"rgb\" \"integer xresolution\" 64 \"integer yresolution\" 32\n");
     EXPECT_NEAR(wide.camera->get_float("fov"), 40.0f, 1e-4f);
     EXPECT_NEAR(wide.camera->get_float("aperture"), 0.1f, 1e-6f);
     EXPECT_NEAR(wide.camera->get_float("focus_distance"), 3.0f, 1e-6f);
-    const SceneDesc tall = import_text(dir, head + "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 64\n");
+    const SceneDesc tall = import_text(
+        dir, head + "Film \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 64\n");
     // The 40 degrees span the width; the height is twice as tall: 2 atan(2 tan 20 deg) =
     // 2 atan(0.727940) = 72.1048 degrees.
     EXPECT_NEAR(tall.camera->get_float("fov"), 72.1048f, 1e-3f);
     EXPECT_EQ(tall.render->get_int("width", 0), 32);
     EXPECT_EQ(tall.render->get_int("height", 0), 64);
-    const SceneDesc ortho = import_text(dir, "Camera \"orthographic\"\nFilm \"rgb\" \"integer xresolution\" 32 \"integer yresolution\" 64\n");
+    const SceneDesc ortho = import_text(dir,
+                                        "Camera \"orthographic\"\nFilm \"rgb\" \"integer "
+                                        "xresolution\" 32 \"integer yresolution\" 64\n");
     EXPECT_EQ(ortho.camera->get_string("type"), "orthographic");
     EXPECT_NEAR(ortho.camera->get_float("scale"), 4.0f, 1e-6f);
 }
 
 TEST(PbrtRadiometry, ScalePowerIlluminanceBlackbodyAndIso) {
     test::TempDir dir;
-    const SceneDesc d = import_text(dir,
+    const SceneDesc d = import_text(
+        dir,
         "Film \"rgb\" \"float iso\" 200\nWorldBegin\n"
         "LightSource \"point\" \"rgb I\" [1 2 3] \"float power\" 100 \"point3 from\" [1 0 0]\n"
-        "LightSource \"spot\" \"float power\" 10 \"float coneangle\" 30 \"float conedeltaangle\" 10\n"
-        "LightSource \"distant\" \"blackbody L\" 6500 \"float illuminance\" 5 \"point3 to\" [0 -1 0]\n"
+        "LightSource \"spot\" \"float power\" 10 \"float coneangle\" 30 \"float conedeltaangle\" "
+        "10\n"
+        "LightSource \"distant\" \"blackbody L\" 6500 \"float illuminance\" 5 \"point3 to\" [0 -1 "
+        "0]\n"
         "LightSource \"infinite\" \"rgb L\" [1 1 1] \"float illuminance\" 3.14159265\n"
         "AttributeBegin\nAreaLightSource \"diffuse\" \"rgb L\" [2 2 2] \"float power\" 6.28318531\n"
-        "Shape \"trianglemesh\" \"point3 P\" [0 0 0  1 0 0  1 1 0  0 1 0] \"integer indices\" [0 1 2 0 2 3]\n"
+        "Shape \"trianglemesh\" \"point3 P\" [0 0 0  1 0 0  1 1 0  0 1 0] \"integer indices\" [0 1 "
+        "2 0 2 3]\n"
         "AttributeEnd\nAttributeBegin\nAreaLightSource \"diffuse\" \"float scale\" 3\n"
         "Shape \"sphere\" \"float radius\" 2\nAttributeEnd\n");
     ASSERT_EQ(d.lights.size(), 3u);
     const float iso = 2.0f;
     // Point: power / 4 pi, times the RGB (pbrt normalises only the illuminant), mirrored x.
-    expect_vec(numbers3(d.lights[0], "intensity"), iso * Vec3(1, 2, 3) * 100.0f / (4.0f * kPi), 1e-4f);
+    expect_vec(numbers3(d.lights[0], "intensity"), iso * Vec3(1, 2, 3) * 100.0f / (4.0f * kPi),
+               1e-4f);
     expect_vec(numbers3(d.lights[0], "position"), Vec3(-1, 0, 0));
     // Spot: power over 2 pi ((1 - cos 20) + (cos 20 - cos 30) / 2).
-    const float cone = 2.0f * kPi * ((1 - std::cos(glm::radians(20.0f))) +
-                                     (std::cos(glm::radians(20.0f)) - std::cos(glm::radians(30.0f))) / 2);
+    const float cone = 2.0f * kPi *
+                       ((1 - std::cos(glm::radians(20.0f))) +
+                        (std::cos(glm::radians(20.0f)) - std::cos(glm::radians(30.0f))) / 2);
     expect_vec(numbers3(d.lights[1], "intensity"), Vec3(iso * 10.0f / cone), 1e-3f);
     EXPECT_NEAR(d.lights[1].get_float("falloff_start"), 20.0f, 1e-5f);
     // Distant: illuminance on a patch facing it; a blackbody has luminance 1 per unit.
@@ -269,7 +285,8 @@ TEST(PbrtRadiometry, ScalePowerIlluminanceBlackbodyAndIso) {
 
 TEST(PbrtMaterials, RoughnessRemappingAndReflectance) {
     test::TempDir dir;
-    const SceneDesc d = import_text(dir,
+    const SceneDesc d = import_text(
+        dir,
         "WorldBegin\nMaterial \"conductor\" \"float roughness\" 0.01\nShape \"sphere\"\n"
         "Material \"conductor\" \"float roughness\" 0.04 \"bool remaproughness\" false "
         "\"rgb reflectance\" [0.5 0.5 0.5]\nShape \"sphere\"\n"
@@ -294,13 +311,18 @@ TEST(PbrtMaterials, RoughnessRemappingAndReflectance) {
 
 TEST(PbrtImport, UnsupportedIsWarnedWithFileAndLineAndNotesSumUp) {
     test::TempDir dir;
-    const SceneDesc d = import_text(dir,
+    const SceneDesc d = import_text(
+        dir,
         "WorldBegin\nMaterial \"measured\" \"string filename\" \"x.bsdf\"\nShape \"sphere\"\n"
-        "Material \"diffuse\" \"float sigma\" 3\nShape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 3 3]\n"
+        "Material \"diffuse\" \"float sigma\" 3\nShape \"curve\" \"point3 P\" [0 0 0 1 1 1 2 2 2 3 "
+        "3 3]\n"
         "Shape \"sphere\" \"float alpha\" 0.5 \"float radius\" 0.5\n"
         "LightSource \"goniometric\"\n");
-    EXPECT_TRUE(any_contains(d.warnings, "scene.pbrt:2: Material: material \"measured\" is not supported"));
-    EXPECT_TRUE(any_contains(d.warnings, "scene.pbrt:4: Material \"diffuse\": parameter \"float sigma\" is not supported"));
+    EXPECT_TRUE(
+        any_contains(d.warnings, "scene.pbrt:2: Material: material \"measured\" is not supported"));
+    EXPECT_TRUE(any_contains(
+        d.warnings,
+        "scene.pbrt:4: Material \"diffuse\": parameter \"float sigma\" is not supported"));
     EXPECT_TRUE(any_contains(d.warnings, "scene.pbrt:5: Shape: shape \"curve\" is not supported"));
     EXPECT_TRUE(any_contains(d.warnings, "scene.pbrt:6: Shape: \"alpha\" cut-outs"));
     EXPECT_TRUE(any_contains(d.warnings, "scene.pbrt:7: LightSource: light \"goniometric\""));
@@ -310,19 +332,33 @@ TEST(PbrtImport, UnsupportedIsWarnedWithFileAndLineAndNotesSumUp) {
 
 TEST(PbrtImport, ErrorsNameTheFileAndLine) {
     test::TempDir dir;
-    EXPECT_TRUE(contains(error_of([&] { import_text(dir, "WorldBegin\nNamedMaterial \"nope\"\nShape \"sphere\"\n"); }),
+    EXPECT_TRUE(contains(error_of([&] {
+                             import_text(dir,
+                                         "WorldBegin\nNamedMaterial \"nope\"\nShape \"sphere\"\n");
+                         }),
                          "scene.pbrt:3: NamedMaterial \"nope\" is not defined"));
-    EXPECT_TRUE(contains(error_of([&] { import_text(dir, "WorldBegin\n\nShape \"trianglemesh\" \"point3 P\" [0 0 0 1 0 0 0 1 0] \"integer indices\" [0 1 3]\n"); }),
+    EXPECT_TRUE(contains(error_of([&] {
+                             import_text(dir,
+                                         "WorldBegin\n\nShape \"trianglemesh\" \"point3 P\" [0 0 0 "
+                                         "1 0 0 0 1 0] \"integer indices\" [0 1 3]\n");
+                         }),
                          "scene.pbrt:3: parameter 'indices': index 3 is outside the 3 vertices"));
-    EXPECT_TRUE(contains(error_of([&] { import_text(dir, "WorldBegin\nObjectInstance \"ghost\"\n"); }),
-                         "scene.pbrt:2: ObjectInstance \"ghost\": no object of that name"));
-    EXPECT_TRUE(contains(error_of([&] { import_text(dir, "WorldBegin\nShape \"plymesh\" \"string filename\" \"none.ply\"\n"); }),
-                         "scene.pbrt:2: Shape \"plymesh\""));
+    EXPECT_TRUE(
+        contains(error_of([&] { import_text(dir, "WorldBegin\nObjectInstance \"ghost\"\n"); }),
+                 "scene.pbrt:2: ObjectInstance \"ghost\": no object of that name"));
+    EXPECT_TRUE(contains(
+        error_of([&] {
+            import_text(dir, "WorldBegin\nShape \"plymesh\" \"string filename\" \"none.ply\"\n");
+        }),
+        "scene.pbrt:2: Shape \"plymesh\""));
     // Through the command line: exit status 1, the message, and no output file.
     std::ofstream(dir.file("bad.pbrt")) << "WorldBegin\nShape \"sphere\" \"float radius\" [ 1\n";
-    const auto result = test::run_glint(fmt::format("render {} -o {} --res 8x8 --spp 1", dir.file("bad.pbrt"), dir.file("bad.exr")));
+    const auto result = test::run_glint(fmt::format("render {} -o {} --res 8x8 --spp 1",
+                                                    dir.file("bad.pbrt"), dir.file("bad.exr")));
     EXPECT_EQ(result.exit_code, 1);
-    EXPECT_TRUE(contains(result.output, "bad.pbrt:2: parameter \"float radius\": '[' is not closed")) << result.output;
+    EXPECT_TRUE(
+        contains(result.output, "bad.pbrt:2: parameter \"float radius\": '[' is not closed"))
+        << result.output;
     EXPECT_FALSE(std::filesystem::exists(dir.file("bad.exr")));
     std::ofstream(dir.file("ok.pbrt")) << "WorldBegin\nAccelerator \"bvh\"\nShape \"sphere\"\n";
     const auto info = test::run_glint("info " + dir.file("ok.pbrt"));
@@ -389,10 +425,11 @@ glint.sphere{ center = {-1.5, 0.5, 0}, radius = 0.5, material = glint.dielectric
 
 TEST(PbrtImages, PointSpotDistantLightsPlyAndInstancesAsInLua) {
     test::TempDir dir;
-    std::ofstream(dir.file("tet.ply")) << "ply\nformat ascii 1.0\nelement vertex 4\n"
-        "property float x\nproperty float y\nproperty float z\nelement face 4\n"
-        "property list uchar int vertex_indices\nend_header\n"
-        "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+    std::ofstream(dir.file("tet.ply"))
+        << "ply\nformat ascii 1.0\nelement vertex 4\n"
+           "property float x\nproperty float y\nproperty float z\nelement face 4\n"
+           "property list uchar int vertex_indices\nend_header\n"
+           "0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
     const std::string pbrt = R"(
 LookAt 1 2 -5  0 0.5 0  0 1 0
 Camera "perspective" "float fov" 45
@@ -437,8 +474,83 @@ glint.place(tet, mirror * glint.translate(1, 0, 0) * glint.rotate(30, {0, 1, 0})
     std::ofstream(dir.file("same.lua")) << lua;
     const Image a = render(import_text(dir, pbrt));
     std::string reseeded = pbrt;
-    reseeded.replace(reseeded.find("Sampler \"independent\""), 21, "Sampler \"independent\" \"integer seed\" 7");
+    reseeded.replace(reseeded.find("Sampler \"independent\""), 21,
+                     "Sampler \"independent\" \"integer seed\" 7");
     const Image noise = render(import_text(dir, reseeded, "reseeded.pbrt"));
     const Image b = render(load_scene_string(lua, "same.lua", dir.file("")));
     EXPECT_LT(relative_mse(a, b), 0.25 * relative_mse(a, noise));
+}
+
+namespace {
+
+// pbrt-v4's square-to-sphere map, written out from Clarberg's equal-area construction, as
+// the reference the importer's inverse must undo.
+Vec3 equal_area_sphere_of(const Vec2& p) {
+    const float u = 2 * p.x - 1, v = 2 * p.y - 1, up = std::abs(u), vp = std::abs(v);
+    const float signed_distance = 1 - (up + vp), r = 1 - std::abs(signed_distance);
+    const float phi = (r == 0 ? 1 : (vp - up) / r + 1) * kPi / 4;
+    const float z = std::copysign(1 - r * r, signed_distance);
+    const float s = r * std::sqrt(std::max(0.0f, 2 - r * r));
+    return Vec3(std::copysign(std::cos(phi), u) * s, std::copysign(std::sin(phi), v) * s, z);
+}
+
+}  // namespace
+
+TEST(PbrtEnvironment, EqualAreaSquareRoundTripsAndKeepsPbrtsOrientation) {
+    for (int i = 0; i <= 20; ++i)
+        for (int j = 0; j <= 20; ++j) {
+            const Vec2 uv(i / 20.0f, j / 20.0f);
+            const Vec2 back = pbrt_equal_area_square_of(equal_area_sphere_of(uv));
+            const Vec3 w = equal_area_sphere_of(uv);
+            // The square's edges fold onto each other (both are the -z pole's ring).
+            if (std::abs(w.z) > 0.999f) continue;
+            EXPECT_NEAR(back.x, uv.x, 1e-4f) << i << " " << j;
+            EXPECT_NEAR(back.y, uv.y, 1e-4f) << i << " " << j;
+        }
+    // A square bright only near its centre (+z of the light) and one pixel right of the
+    // middle of its right edge (+x). In glint's world (pbrt's mirrored in x) +z stays +z, at
+    // the lat-long image's left edge, middle row; pbrt's +x is glint's -x, a quarter across.
+    Image square = make_image(33, 33, {"R", "G", "B"});
+    square.at(16, 16, 0) = 1.0f;
+    square.at(32, 16, 1) = 1.0f;
+    const Mat3 light_from_world = Mat3(glm::scale(Mat4(1.0f), Vec3(-1, 1, 1)));
+    const Image latlong = latlong_from_equal_area(square, glm::inverse(light_from_world), "test");
+    auto brightest = [&](int c) {
+        Vec2 best(0.0f);
+        float value = -1.0f;
+        for (int y = 0; y < latlong.height; ++y)
+            for (int x = 0; x < latlong.width; ++x)
+                if (latlong.at(x, y, c) > value) {
+                    value = latlong.at(x, y, c);
+                    best = Vec2((x + 0.5f) / latlong.width, (y + 0.5f) / latlong.height);
+                }
+        return best;
+    };
+    const Vec2 z = brightest(0), x = brightest(1);
+    EXPECT_TRUE(z.x < 0.05f || z.x > 0.95f) << z.x;
+    EXPECT_NEAR(z.y, 0.5f, 0.05f);
+    EXPECT_NEAR(x.x, 0.25f, 0.05f);
+    EXPECT_NEAR(x.y, 0.5f, 0.05f);
+}
+
+TEST(PbrtEnvironment, ImageInfiniteLightBecomesAnEnvironment) {
+    test::TempDir dir;
+    Image square = make_image(8, 8, {"R", "G", "B"});
+    for (float& v : square.pixels) v = 0.5f;
+    write_image(dir.file("sky.exr"), square);
+    const SceneDesc d = import_text(
+        dir,
+        "WorldBegin\nLightSource \"infinite\" \"string filename\" \"sky.exr\" \"float scale\" 2\n");
+    ASSERT_EQ(d.lights.size(), 1u);
+    EXPECT_EQ(d.lights[0].type(), "environment");
+    EXPECT_NEAR(d.lights[0].get_float("intensity"), 2.0f, 1e-6f);
+    const Image latlong = read_image(d.lights[0].get_string("file"));
+    EXPECT_NEAR(latlong.at(3, 5, 1), 0.5f, 1e-6f);
+    write_image(dir.file("wide.exr"), make_image(8, 4, {"R", "G", "B"}));
+    EXPECT_TRUE(contains(
+        error_of([&] {
+            import_text(dir,
+                        "WorldBegin\nLightSource \"infinite\" \"string filename\" \"wide.exr\"\n");
+        }),
+        "scene.pbrt:2: LightSource \"infinite\": "));
 }

@@ -161,23 +161,33 @@ TEST(PbrtParser, IncludesResolveFromTheMainFileAndReportTheirOwnLines) {
 
 TEST(PbrtParser, MalformedInputIsAnErrorWithFileAndLine) {
     const std::pair<const char*, const char*> cases[] = {
-        {"WorldBegin\nShape \"sphere\" \"float radius\" [ 1\n", "scene.pbrt:2: parameter \"float radius\": '[' is not closed"},
-        {"WorldBegin\n\nShape \"x\" \"rgb L\" [ 1 2 ]\n", "scene.pbrt:3: parameter \"rgb L\": 2 values, expected 3"},
+        {"WorldBegin\nShape \"sphere\" \"float radius\" [ 1\n",
+         "scene.pbrt:2: parameter \"float radius\": '[' is not closed"},
+        {"WorldBegin\n\nShape \"x\" \"rgb L\" [ 1 2 ]\n",
+         "scene.pbrt:3: parameter \"rgb L\": 2 values, expected 3"},
         {"Translate 1 2\n", "scene.pbrt:1: Translate: expected 3 numbers"},
         {"\nFrobnicate 1\n", "scene.pbrt:2: unknown directive 'Frobnicate'"},
-        {"Shape \"x\" \"floaty r\" 1\n", "scene.pbrt:1: parameter \"floaty r\": unknown type 'floaty'"},
+        {"Shape \"x\" \"floaty r\" 1\n",
+         "scene.pbrt:1: parameter \"floaty r\": unknown type 'floaty'"},
         {"Shape \"x\" \"float\" 1\n", "scene.pbrt:1: parameter \"float\": expected \"TYPE NAME\""},
         {"Shape \"x\" \"float r\" abc\n", "scene.pbrt:1: 'abc' is not a finite number"},
-        {"Shape \"x\" \"bool b\" yes\n", "scene.pbrt:1: parameter \"bool b\": 'yes' is not true or false"},
-        {"Shape \"x\" \"integer n\" 1.5\n", "scene.pbrt:1: parameter \"integer n\": 1.5 is not an integer"},
-        {"AttributeBegin\nAttributeEnd\nAttributeEnd\n", "scene.pbrt:3: AttributeEnd without a matching AttributeBegin"},
-        {"ObjectBegin \"a\"\nAttributeEnd\n", "scene.pbrt:2: AttributeEnd closes the ObjectBegin at scene.pbrt:1"},
+        {"Shape \"x\" \"bool b\" yes\n",
+         "scene.pbrt:1: parameter \"bool b\": 'yes' is not true or false"},
+        {"Shape \"x\" \"integer n\" 1.5\n",
+         "scene.pbrt:1: parameter \"integer n\": 1.5 is not an integer"},
+        {"AttributeBegin\nAttributeEnd\nAttributeEnd\n",
+         "scene.pbrt:3: AttributeEnd without a matching AttributeBegin"},
+        {"ObjectBegin \"a\"\nAttributeEnd\n",
+         "scene.pbrt:2: AttributeEnd closes the ObjectBegin at scene.pbrt:1"},
         {"Transform [ 1 0 0 ]\n", "scene.pbrt:1: Transform: expected 16 numbers, got 3"},
         {"[ 1 ]\n", "scene.pbrt:1: expected a directive, got '['"},
         {"Rotate 30 0 0 0\n", "scene.pbrt:1: Rotate: the axis is zero"},
-        {"LookAt 0 0 0  0 0 1  0 0 1\n", "scene.pbrt:1: LookAt: the up vector and the viewing direction are parallel"},
-        {"Shape \"x\" \"spectrum s\" [ 400 ]\n", "scene.pbrt:1: parameter \"spectrum s\": 1 values, expected pairs"},
-        {"ObjectBegin \"a\"\nObjectInstance \"a\"\n", "scene.pbrt:2: ObjectInstance inside an object definition"},
+        {"LookAt 0 0 0  0 0 1  0 0 1\n",
+         "scene.pbrt:1: LookAt: the up vector and the viewing direction are parallel"},
+        {"Shape \"x\" \"spectrum s\" [ 400 ]\n",
+         "scene.pbrt:1: parameter \"spectrum s\": 1 values, expected pairs"},
+        {"ObjectBegin \"a\"\nObjectInstance \"a\"\n",
+         "scene.pbrt:2: ObjectInstance inside an object definition"},
     };
     for (const auto& [text, expected] : cases) {
         const std::string message = error_of([&] { parse(text); });
@@ -191,10 +201,12 @@ TEST(PbrtParser, UnsupportedDirectivesAreWarningsWithFileAndLine) {
         "MediumInterface \"fog\" \"\"\nAttribute \"shape\" \"float radius\" 2\n"
         "ActiveTransform EndTime\nTranslate 1 0 0\nActiveTransform All\nShape \"sphere\"\n"
         "AttributeBegin\n");
-    const std::vector<std::string> expected = {
-        "scene.pbrt:1: Accelerator:", "scene.pbrt:3: MakeNamedMedium: participating media",
-        "scene.pbrt:4: MediumInterface:", "scene.pbrt:5: Attribute:",
-        "scene.pbrt:6: ActiveTransform: motion blur", "scene.pbrt:10: AttributeBegin: not closed"};
+    const std::vector<std::string> expected = {"scene.pbrt:1: Accelerator:",
+                                               "scene.pbrt:3: MakeNamedMedium: participating media",
+                                               "scene.pbrt:4: MediumInterface:",
+                                               "scene.pbrt:5: Attribute:",
+                                               "scene.pbrt:6: ActiveTransform: motion blur",
+                                               "scene.pbrt:10: AttributeBegin: not closed"};
     for (const std::string& e : expected) {
         bool found = false;
         for (const std::string& w : s.warnings) found = found || contains(w, e);

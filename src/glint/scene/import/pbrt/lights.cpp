@@ -106,7 +106,7 @@ void PbrtTranslator::infinite_light(const PbrtEntity& e, const Mat4& to_world, d
     // A constant radiance L gives illuminance pi L on an upward-facing patch.
     const Vec3 radiance =
         emission(e, "L") * static_cast<float>(scale * (illuminance > 0 ? illuminance / kPi : 1.0));
-    if (m_desc.background) {
+    if (has_infinite_light()) {
         warn(e.where, "LightSource", "a second infinite light is not supported (ignored)");
         ++m_skipped["lights"];
         return;
@@ -114,6 +114,13 @@ void PbrtTranslator::infinite_light(const PbrtEntity& e, const Mat4& to_world, d
     Params p("background", where(e.where));
     p.set("radiance", numbers_of(radiance));
     m_desc.background = std::move(p);
+}
+
+bool PbrtTranslator::has_infinite_light() const {
+    if (m_desc.background) return true;
+    for (const Params& p : m_desc.lights)
+        if (p.type() == "environment") return true;
+    return false;
 }
 
 std::optional<ObjectRef> PbrtTranslator::area_light_material(const PbrtEntity& area,

@@ -130,7 +130,7 @@ private:
             Tok t = next();
             if (t.token.kind != PbrtToken::Kind::Word)
                 fail(directive, fmt::format("{}: expected {} numbers, got {} before {}",
-                                    directive.token.text, count, i, describe(t.token)));
+                                            directive.token.text, count, i, describe(t.token)));
             v.push_back(to_number(t));
         }
         return v;

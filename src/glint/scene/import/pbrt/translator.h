@@ -9,6 +9,7 @@
 // flips its normals with transformSwapsHandedness). When the file's camera transform is
 // itself a mirror (the "Scale -1 1 1" some exporters write before LookAt), the two
 // mirrors cancel and M is the identity. See docs/scene-language.md, "pbrt-v4 files".
+#include <glint/film/image.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/import/pbrt/scene.h>
 
@@ -25,7 +26,7 @@ struct PbrtValue {
     Vec3 constant{0.0f};
     std::optional<ObjectRef> texture;
     bool is_texture() const { return texture.has_value(); }
-    ParamValue as_param() const;  ///< the texture, or the constant as {r, g, b}
+    ParamValue as_param() const;   ///< the texture, or the constant as {r, g, b}
     ParamValue as_number() const;  ///< the texture, or the constant's first channel
     double grey() const { return (constant.x + constant.y + constant.z) / 3.0; }
 };
@@ -75,6 +76,7 @@ private:
     /// units) is what "power" divides by.
     std::optional<ObjectRef> area_light_material(const PbrtEntity& area, double area_of_shape);
     Vec3 emission(const PbrtEntity& e, const char* name);
+    bool has_infinite_light() const;
 
     // environment_map.cpp
     void environment_map(const PbrtEntity& e, const std::string& file, const Mat4& to_world,
@@ -105,6 +107,16 @@ private:
     Bounds3 m_bounds;
     std::map<std::string, int> m_skipped;  // what was not rendered, for the summary
 };
+
+/// pbrt-v4's equal-area octahedral square (EqualAreaSphereToSquare): a unit direction in
+/// the light's space to [0, 1]^2, (0, 0) the image's top-left corner.
+Vec2 pbrt_equal_area_square_of(const Vec3& w);
+
+/// A latitude-longitude image in glint's mapping (light/environment_light.cpp) resampled
+/// from pbrt-v4's equal-area square `square`; `light_from_world` turns glint's world
+/// directions into the light's. `file` names the source in messages.
+Image latlong_from_equal_area(const Image& square, const Mat3& light_from_world,
+                              const std::string& file);
 
 /// glint.import of a .pbrt file (import_file dispatches here): parses it and translates it.
 /// When the file is the scene itself (`glint render scene.pbrt`), its film, sampler,
