@@ -129,6 +129,8 @@ std::optional<MeshData> PbrtTranslator::mesh_of(const PbrtShape& s) {
             params.find("edgelength");
             ++m_skipped["displacements"];
         }
+        // The last shape to use a file takes its mesh; earlier ones copy it.
+        if (--m_ply_uses[file] == 0) return std::move(it->second);
         return it->second;
     }
     if (e.type == "disk") {
@@ -162,6 +164,7 @@ void PbrtTranslator::load_ply_files() {
         if (!p || p->strings.size() != 1) return;
         p->used = false;  // read again where the shape is placed
         const std::string file = resolve(p->strings[0]);
+        ++m_ply_uses[file];
         if (m_ply_meshes.emplace(file, MeshData{}).second) files.emplace_back(file, p->where);
     };
     for (const PbrtShape& s : m_scene.shapes) collect(s);

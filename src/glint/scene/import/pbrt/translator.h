@@ -104,6 +104,7 @@ private:
     std::map<std::string, std::optional<ObjectRef>> m_named_materials;
     std::set<std::string> m_textures_in_progress;
     std::map<std::string, MeshData> m_ply_meshes;  // by resolved path
+    std::map<std::string, int> m_ply_uses;         // shapes yet to take each
     Bounds3 m_bounds;
     std::map<std::string, int> m_skipped;  // what was not rendered, for the summary
 };
