@@ -242,9 +242,17 @@ Bounds3 PbrtTranslator::place_shape(const PbrtShape& s, int group, const Transfo
     }
     for (const Vec3& p : mesh->positions) bounds.expand(transform.point(p));
     if (emits) {
+        // pbrt-v4 gives "power" to each of its shapes: every triangle of a triangle mesh
+        // or PLY file, every patch (two triangles) of a bilinear mesh, a whole disk or
+        // cylinder.
         const bool by_power = s.area_light->params.has("power");
-        material = area_light_material(*s.area_light,
-                                       by_power ? mean_triangle_area(*mesh, transform, e) : 0.0);
+        const bool whole = e.type == "disk" || e.type == "cylinder";
+        const double per_element = e.type == "bilinearmesh" ? 2.0 : 1.0;
+        const double triangles = static_cast<double>(mesh->indices.size() / 3);
+        const double area = !by_power ? 0.0
+                            : whole   ? mean_triangle_area(*mesh, transform, e, false) * triangles
+                                      : per_element * mean_triangle_area(*mesh, transform, e, true);
+        material = area_light_material(*s.area_light, area);
         if (!material) material = this->material(s.material, e.where);
     }
     add_mesh_shape(m_desc, group, std::move(*mesh), *material, transform, where(e.where));
@@ -255,7 +263,7 @@ Bounds3 PbrtTranslator::place_shape(const PbrtShape& s, int group, const Transfo
 // power of every triangle; glint's emissive material is one radiance for the mesh, which is
 // right when the triangles are of equal area (a quad's two, a regular tessellation).
 double PbrtTranslator::mean_triangle_area(const MeshData& mesh, const Transform& transform,
-                                          const PbrtEntity& e) {
+                                          const PbrtEntity& e, bool warn_if_uneven) {
     double total = 0.0, smallest = INFINITY, largest = 0.0;
     const size_t count = mesh.indices.size() / 3;
     for (size_t t = 0; t < count; ++t) {
@@ -268,7 +276,7 @@ double PbrtTranslator::mean_triangle_area(const MeshData& mesh, const Transform&
         largest = std::max(largest, area);
     }
     if (count == 0) return 0.0;
-    if (largest > 1.01 * smallest)
+    if (warn_if_uneven && largest > 1.01 * smallest)
         warn(e.where, "AreaLightSource",
              "\"power\" on triangles of different areas: pbrt-v4 gives "
              "each triangle that power, glint their mean radiance");

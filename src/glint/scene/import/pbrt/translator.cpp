@@ -62,6 +62,7 @@ Transform PbrtTranslator::glint_transform(const Mat4& pbrt_to_world) const {
 }
 
 Bounds3 PbrtTranslator::run() {
+    const size_t warnings_before = m_desc.warnings.size();
     const bool is_scene = m_target.where == m_target.path;
     for (const std::string& w : m_scene.warnings)
         m_desc.warnings.push_back(is_scene ? w : fmt::format("{}: {}", m_target.where, w));
@@ -78,7 +79,7 @@ Bounds3 PbrtTranslator::run() {
     for (const auto& [what, count] : m_skipped)
         skipped += fmt::format("{}{} {}", skipped.empty() ? "" : ", ", count, what);
     m_desc.notes.push_back(fmt::format("{}: {} warnings; not rendered as pbrt-v4 would: {}",
-                                       m_target.path, m_scene.warnings.size() + m_skipped.size(),
+                                       m_target.path, m_desc.warnings.size() - warnings_before,
                                        skipped.empty() ? "nothing" : skipped));
     return m_bounds;
 }
