@@ -554,3 +554,65 @@ TEST(PbrtEnvironment, ImageInfiniteLightBecomesAnEnvironment) {
         }),
         "scene.pbrt:2: LightSource \"infinite\": "));
 }
+
+TEST(PbrtShapes, DiskCylinderOrientationAlphaAndInterface) {
+    test::TempDir dir;
+    const SceneDesc d =
+        import_text(dir,
+                    "LookAt 0 0 -5 0 0 0 0 1 0\nCamera \"perspective\"\nWorldBegin\n"
+                    "Shape \"disk\" \"float radius\" 2 \"float height\" 1\n"
+                    "ReverseOrientation\nShape \"cylinder\" \"float radius\" 1 \"float zmin\" 0 "
+                    "\"float zmax\" 3\n"
+                    "Shape \"sphere\" \"float alpha\" 0\n"
+                    "Material \"interface\"\nShape \"sphere\"\n");
+    ASSERT_EQ(d.groups[0].shapes.size(), 2u);  // alpha 0 and the interface are left out
+    auto mesh_area_and_normal = [&](const Params& shape, Vec3& normal_sum) {
+        const MeshData& m = *d.meshes.at(shape.get_ref("data", "mesh_data").index);
+        const Transform t = shape.get_transform("transform");
+        double area = 0.0;
+        normal_sum = Vec3(0.0f);
+        for (size_t i = 0; i < m.indices.size(); i += 3) {
+            const Vec3 a = m.positions[m.indices[i]], b = m.positions[m.indices[i + 1]],
+                       c = m.positions[m.indices[i + 2]];
+            area += 0.5 * glm::length(glm::cross(b - a, c - a));
+            // The side glint treats as the front, in the world (normals of the object-space
+            // winding transformed as normals).
+            normal_sum += t.normal(glm::cross(b - a, c - a));
+        }
+        return area;
+    };
+    Vec3 n;
+    // The disk: area pi r^2 (the polygon's radius is enlarged to match), front +z (pbrt's),
+    // which the mirror x -> -x keeps at +z.
+    EXPECT_NEAR(mesh_area_and_normal(d.groups[0].shapes[0], n), kPi * 4.0, 1e-3);
+    EXPECT_GT(n.z, 0.0f);
+    // The cylinder: lateral area 2 pi r h; reversed, so its triangles face inwards and its
+    // normals point in.
+    EXPECT_NEAR(mesh_area_and_normal(d.groups[0].shapes[1], n), 2.0 * kPi * 3.0, 1e-2);
+    const MeshData& cyl = *d.meshes.at(d.groups[0].shapes[1].get_ref("data", "mesh_data").index);
+    EXPECT_LT(glm::dot(cyl.normals[0], Vec3(cyl.positions[0].x, cyl.positions[0].y, 0)), 0.0f);
+}
+
+TEST(PbrtImport, IntoALuaSceneWithItsCameraButTheScriptsSettings) {
+    test::TempDir dir;
+    std::ofstream(dir.file("part.pbrt"))
+        << "LookAt 0 0 -5 0 0 0 0 1 0\nCamera \"perspective\" \"float fov\" 30\n"
+        << "Film \"rgb\" \"integer xresolution\" 99 \"integer yresolution\" 50\n"
+        << "WorldBegin\nShape \"sphere\"\n";
+    const SceneDesc d = load_scene_string(
+        "glint.import{ file = 'part.pbrt', transform = glint.translate(0, 2, 0) }\n"
+        "glint.render{ width = 16, height = 16 }\n",
+        "scene.lua", dir.file(""));
+    ASSERT_TRUE(d.camera);
+    EXPECT_NEAR(d.camera->get_float("fov"), 30.0f, 1e-4f);
+    expect_vec(numbers3(*d.camera, "eye"), Vec3(0, 2, -5));
+    EXPECT_EQ(d.render->get_int("width", 0), 16);
+    ASSERT_EQ(d.groups[0].shapes.size(), 1u);
+    expect_vec(d.groups[0].shapes[0].get_transform("transform").point(Vec3(0.0f)), Vec3(0, 2, 0));
+    EXPECT_TRUE(contains(error_of([&] {
+                             load_scene_string(
+                                 "glint.import{ file = 'part.pbrt', material = glint.diffuse{} }",
+                                 "scene.lua", dir.file(""));
+                         }),
+                         "scene.lua:1: import: "));
+}

@@ -88,8 +88,8 @@ private:
     /// Adds shape `s` to group `group` at `transform`; returns its bounds there.
     Bounds3 place_shape(const PbrtShape& s, int group, const Transform& transform);
     std::optional<MeshData> mesh_of(const PbrtShape& s);
-    double mean_triangle_area(const MeshData& mesh, const Transform& transform,
-                              const PbrtEntity& e, bool warn_if_uneven);
+    double mean_triangle_area(const MeshData& mesh, const Transform& transform, const PbrtEntity& e,
+                              bool warn_if_uneven);
     void instances();
     std::string resolve(const std::string& file) const;
 
