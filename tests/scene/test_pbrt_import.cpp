@@ -381,7 +381,12 @@ AttributeBegin
   AreaLightSource "diffuse" "rgb L" [4 4 4]
   Shape "trianglemesh" "point3 P" [-1 3 -1  1 3 -1  1 3 1  -1 3 1] "integer indices" [0 1 2 0 2 3]
 AttributeEnd
-Shape "bilinearmesh" "point3 P" [-4 0 4  4 0 4  -4 0 -4  4 0 -4]
+Texture "checks" "spectrum" "checkerboard" "float uscale" 4 "float vscale" 4
+    "rgb tex1" [0.8 0.8 0.8] "rgb tex2" [0.1 0.1 0.1]
+AttributeBegin
+  Material "diffuse" "texture reflectance" "checks"
+  Shape "bilinearmesh" "point3 P" [-4 0 4  4 0 4  -4 0 -4  4 0 -4]
+AttributeEnd
 AttributeBegin
   Material "diffuse" "rgb reflectance" [0.8 0.2 0.2]
   Translate -1.5 0.5 0
@@ -412,8 +417,10 @@ glint.render{ width = 32, height = 24, spp = 8, max_depth = 3, sampler = "indepe
 glint.background{ radiance = 0.3 }
 glint.mesh{ vertices = {{1, 3, -1}, {-1, 3, -1}, {-1, 3, 1}, {1, 3, 1}}, indices = {1, 3, 2, 1, 4, 3},
             material = glint.emissive{ radiance = 4 } }
-glint.mesh{ vertices = {{4, 0, 4}, {-4, 0, 4}, {4, 0, -4}, {-4, 0, -4}}, indices = {1, 4, 2, 1, 3, 4},
-            material = glint.diffuse{ reflectance = 0.5 } }
+-- A bilinear patch without uvs spans [0, 1]^2: corners p00, p10, p11, p01 in that order.
+local checks = glint.texture.checker{ even = 0.8, odd = 0.1, scale = {4, 4} }
+glint.mesh{ vertices = {{4, 0, 4}, {-4, 0, 4}, {-4, 0, -4}, {4, 0, -4}}, indices = {1, 3, 2, 1, 4, 3},
+            uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, material = glint.diffuse{ reflectance = checks } }
 glint.sphere{ center = {1.5, 0.5, 0}, radius = 0.5, material = glint.diffuse{ reflectance = {0.8, 0.2, 0.2} } }
 glint.sphere{ center = {0.5, 0.5, 0}, radius = 0.5,
               material = glint.plastic{ diffuse = {0.2, 0.6, 0.2}, ior = 1.5, roughness = 0.316227766 } }
@@ -463,8 +470,8 @@ glint.render{ width = 32, height = 24, spp = 8, max_depth = 2, sampler = "indepe
 glint.point_light{ position = {-2, 3, -1}, intensity = {200 / (4 * pi), 0.8 * 200 / (4 * pi), 0.6 * 200 / (4 * pi)} }
 glint.spot_light{ position = {2, 4, 0}, look_at = {1, 0, 0}, intensity = 5, cone_angle = 25, falloff_start = 20 }
 glint.directional_light{ direction = {1, -2, 1}, irradiance = {0.5, 0.5, 0.6} }
-glint.mesh{ vertices = {{4, 0, 4}, {-4, 0, 4}, {4, 0, -4}, {-4, 0, -4}}, indices = {1, 4, 2, 1, 3, 4},
-            material = glint.diffuse{ reflectance = 0.5 } }
+glint.mesh{ vertices = {{4, 0, 4}, {-4, 0, 4}, {-4, 0, -4}, {4, 0, -4}}, indices = {1, 3, 2, 1, 4, 3},
+            uvs = {{0, 0}, {1, 0}, {1, 1}, {0, 1}}, material = glint.diffuse{ reflectance = 0.5 } }
 local tet = glint.group()
 tet:mesh{ file = "tet.ply", material = glint.diffuse{ reflectance = {0.7, 0.7, 0.2} } }
 local mirror = glint.scale(-1, 1, 1)

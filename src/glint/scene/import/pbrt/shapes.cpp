@@ -69,6 +69,25 @@ MeshData cylinder_mesh(double radius, double z0, double z1, double phi_max) {
     return m;
 }
 
+// Without "uv" each pbrt bilinear patch runs over [0, 1]^2 by itself: its corners get
+// their own vertices with those uvs (the triangles come in pairs, as mesh_of makes them).
+MeshData with_patch_uvs(const MeshData& shared) {
+    MeshData m;
+    const Vec2 corner_uv[4] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};  // a, b, d and c of a patch
+    for (size_t t = 0; t + 5 < shared.indices.size(); t += 6) {
+        const uint32_t corners[4] = {shared.indices[t], shared.indices[t + 1],
+                                     shared.indices[t + 2], shared.indices[t + 5]};
+        const auto base = static_cast<uint32_t>(m.positions.size());
+        for (int k = 0; k < 4; ++k) {
+            m.positions.push_back(shared.positions[corners[k]]);
+            if (!shared.normals.empty()) m.normals.push_back(shared.normals[corners[k]]);
+            m.uvs.push_back(corner_uv[k]);
+        }
+        m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+    }
+    return m;
+}
+
 }  // namespace
 
 std::optional<MeshData> PbrtTranslator::mesh_of(const PbrtShape& s) {
@@ -117,6 +136,7 @@ std::optional<MeshData> PbrtTranslator::mesh_of(const PbrtShape& s) {
                                d = indices[i + 3];
                 m.indices.insert(m.indices.end(), {a, b, d, a, d, c});
             }
+            if (m.uvs.empty()) m = with_patch_uvs(m);
         }
         return m;
     }
@@ -226,7 +246,11 @@ Bounds3 PbrtTranslator::place_shape(const PbrtShape& s, int group, const Transfo
         Params p("sphere", where(e.where));
         p.set("radius", radius);
         p.set("material", *material);
-        if (!transform.is_identity()) p.set("transform", transform);
+        // pbrt's sphere runs u around its z axis (from +x towards +y) and v from -z to +z;
+        // glint's around y (from +x towards +z) and from -y to +y: glint's sphere is placed
+        // with y and z swapped so that textures land where pbrt puts them.
+        const Mat4 swap_yz(Vec4(1, 0, 0, 0), Vec4(0, 0, 1, 0), Vec4(0, 1, 0, 0), Vec4(0, 0, 0, 1));
+        p.set("transform", Transform(transform.matrix() * swap_yz));
         check_unused(e, "Shape");
         m_desc.groups.at(group).shapes.push_back(std::move(p));
         const Vec3 r(static_cast<float>(radius));
