@@ -607,15 +607,16 @@ TEST(PbrtImport, IntoALuaSceneWithItsCameraButTheScriptsSettings) {
         << "Film \"rgb\" \"integer xresolution\" 99 \"integer yresolution\" 50\n"
         << "WorldBegin\nShape \"sphere\"\n";
     const SceneDesc d = load_scene_string(
-        "glint.import{ file = 'part.pbrt', transform = glint.translate(0, 2, 0) }\n"
+        "glint.import{ file = 'part.pbrt', transform = glint.translate(1, 2, 0) }\n"
         "glint.render{ width = 16, height = 16 }\n",
         "scene.lua", dir.file(""));
     ASSERT_TRUE(d.camera);
     EXPECT_NEAR(d.camera->get_float("fov"), 30.0f, 1e-4f);
-    expect_vec(numbers3(*d.camera, "eye"), Vec3(0, 2, -5));
+    // The import's transform is in glint's world: +1 in x is +1 in x after the mirror.
+    expect_vec(numbers3(*d.camera, "eye"), Vec3(1, 2, -5));
     EXPECT_EQ(d.render->get_int("width", 0), 16);
     ASSERT_EQ(d.groups[0].shapes.size(), 1u);
-    expect_vec(d.groups[0].shapes[0].get_transform("transform").point(Vec3(0.0f)), Vec3(0, 2, 0));
+    expect_vec(d.groups[0].shapes[0].get_transform("transform").point(Vec3(0.0f)), Vec3(1, 2, 0));
     EXPECT_TRUE(contains(error_of([&] {
                              load_scene_string(
                                  "glint.import{ file = 'part.pbrt', material = glint.diffuse{} }",

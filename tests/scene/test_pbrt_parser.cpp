@@ -253,3 +253,21 @@ TEST(PbrtSpectra, BlackbodyChromaticityAndLuminance) {
     EXPECT_LT(blackbody_rgb(12000).x, blackbody_rgb(12000).z);
     EXPECT_FALSE(error_of([] { blackbody_rgb(0); }).empty());
 }
+
+TEST(PbrtParser, EveryTruncationOfTheExampleParsesOrFailsWithALocation) {
+    const std::string text = [] {
+        std::ifstream in(std::string(GLINT_SOURCE_DIR) + "/examples/still-life.pbrt");
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    }();
+    ASSERT_GT(text.size(), 1000u);
+    int errors = 0;
+    for (size_t n = 0; n <= text.size(); n += 3) {
+        try {
+            parse(text.substr(0, n));
+        } catch (const Error& e) {
+            ++errors;
+            EXPECT_TRUE(contains(e.what(), "scene.pbrt:")) << n << ": " << e.what();
+        }
+    }
+    EXPECT_GT(errors, 0);  // cut inside a string or a bracket
+}

@@ -32,7 +32,7 @@ Vec3 PbrtTranslator::emission(const PbrtEntity& e, const char* name) {
 
 void PbrtTranslator::light(const PbrtLight& l) {
     const PbrtEntity& e = l.entity;
-    const Mat4 to_world = m_mirror * m_target.transform.matrix() * l.to_world;
+    const Mat4 to_world = m_target.transform.matrix() * m_mirror * l.to_world;
     auto point = [&](const Vec3& p) { return Vec3(to_world * Vec4(p, 1.0f)); };
     const double scale = e.params.get_float("scale", 1.0) * m_imaging_ratio * m_target.light_scale;
     const double power = e.params.get_float("power", -1.0);

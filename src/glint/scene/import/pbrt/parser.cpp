@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <deque>
 #include <filesystem>
 #include <memory>
 
@@ -38,8 +39,7 @@ public:
         // Material 0 is the default material shapes get before any Material directive.
         m_scene.materials.push_back(
             PbrtEntity{"diffuse", PbrtParams(PbrtLocation{name, 0}), PbrtLocation{name, 0}});
-        m_files.push_back(std::make_unique<PbrtTokenizer>(std::move(text), name));
-        m_open.push_back(fs::weakly_canonical(name).string());
+        open_file(std::move(text), name, fs::weakly_canonical(name).string());
         while (true) {
             Tok t = next();
             if (t.token.kind == PbrtToken::Kind::End) break;
@@ -55,9 +55,12 @@ public:
     }
 
 private:
+    // A token and the file it came from (a name in m_names, which outlives every token:
+    // a directive's token is still used after an include it ends has been closed).
     struct Tok {
         PbrtToken token;
-        std::string file;
+        const std::string* name;
+        const std::string& file() const { return *name; }
     };
 
     static std::string describe(const PbrtToken& t) {
@@ -76,7 +79,7 @@ private:
     }
 
     [[noreturn]] void fail(const Tok& at, const std::string& what) const {
-        throw Error(fmt::format("{}:{}: {}", at.file, at.token.line, what));
+        throw Error(fmt::format("{}:{}: {}", at.file(), at.token.line, what));
     }
 
     void warn(const PbrtLocation& where, const std::string& directive, const std::string& what) {
@@ -93,9 +96,11 @@ private:
         while (true) {
             PbrtTokenizer& file = *m_files.back();
             PbrtToken t = file.next();
-            if (t.kind != PbrtToken::Kind::End || m_files.size() == 1) return Tok{t, file.file()};
+            if (t.kind != PbrtToken::Kind::End || m_files.size() == 1)
+                return Tok{t, m_file_names.back()};
             m_files.pop_back();
             m_open.pop_back();
+            m_file_names.pop_back();
         }
     }
 
@@ -187,7 +192,7 @@ private:
 
     PbrtParam parameter(const Tok& declaration) {
         PbrtParam p;
-        p.where = PbrtLocation{declaration.file, declaration.token.line};
+        p.where = PbrtLocation{declaration.file(), declaration.token.line};
         std::vector<std::string> words;
         std::string word;
         for (char c : declaration.token.text + " ") {
@@ -265,7 +270,7 @@ private:
     }
 
     PbrtParams parameters(const Tok& directive) {
-        PbrtParams params(PbrtLocation{directive.file, directive.token.line});
+        PbrtParams params(PbrtLocation{directive.file(), directive.token.line});
         while (peek().token.kind == PbrtToken::Kind::String)
             params.add(parameter(next()), m_scene.warnings);
         return params;
@@ -274,7 +279,7 @@ private:
     PbrtEntity entity(const Tok& directive, const std::string& type) {
         PbrtEntity e;
         e.type = type;
-        e.where = PbrtLocation{directive.file, directive.token.line};
+        e.where = PbrtLocation{directive.file(), directive.token.line};
         e.params = parameters(directive);
         return e;
     }
@@ -323,7 +328,13 @@ private:
             fail(name, fmt::format("{}: {}", directive.token.text, e.what()));
         }
         m_peeked.reset();  // nothing was peeked past the file name (it is the last argument)
-        m_files.push_back(std::make_unique<PbrtTokenizer>(std::move(text), path.string()));
+        open_file(std::move(text), path.string(), canonical);
+    }
+
+    void open_file(std::string text, const std::string& name, const std::string& canonical) {
+        m_names.push_back(name);
+        m_file_names.push_back(&m_names.back());
+        m_files.push_back(std::make_unique<PbrtTokenizer>(std::move(text), name));
         m_open.push_back(canonical);
     }
 
@@ -357,14 +368,14 @@ private:
 
     void attribute_begin(const Tok& directive, bool object) {
         GraphicsState saved = m_state;
-        saved.where = PbrtLocation{directive.file, directive.token.line};
+        saved.where = PbrtLocation{directive.file(), directive.token.line};
         saved.is_object = object;
         m_stack.push_back(std::move(saved));
     }
 
     void directive(const Tok& d) {
         const std::string& name = d.token.text;
-        const PbrtLocation where{d.file, d.token.line};
+        const PbrtLocation where{d.file(), d.token.line};
         ++m_scene.directive_counts[name];
         if (name == "Include" || name == "Import") {
             include(d);
@@ -526,7 +537,7 @@ private:
     }
 
     void other(const Tok& d, const std::string& name) {
-        const PbrtLocation where{d.file, d.token.line};
+        const PbrtLocation where{d.file(), d.token.line};
         if (name == "Option") {
             const Tok n = expect_string(d);
             values(n);
@@ -550,13 +561,15 @@ private:
         std::string outside = inside.token.text;
         if (peek().token.kind == PbrtToken::Kind::String) outside = next().token.text;
         if (!inside.token.text.empty() || !outside.empty())
-            warn(PbrtLocation{d.file, d.token.line}, "MediumInterface",
+            warn(PbrtLocation{d.file(), d.token.line}, "MediumInterface",
                  "participating media are not supported yet (ignored)");
     }
 
     PbrtScene m_scene;
     std::vector<std::unique_ptr<PbrtTokenizer>> m_files;  // the include stack
     std::vector<std::string> m_open;                      // their canonical paths
+    std::vector<const std::string*> m_file_names;         // their names, in m_names
+    std::deque<std::string> m_names;  // every file opened (stable addresses for tokens)
     std::optional<Tok> m_peeked;
     GraphicsState m_state;
     std::vector<GraphicsState> m_stack;

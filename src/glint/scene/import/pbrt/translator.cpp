@@ -58,7 +58,7 @@ void PbrtTranslator::check_unused(const PbrtEntity& e, const std::string& direct
 }
 
 Transform PbrtTranslator::glint_transform(const Mat4& pbrt_to_world) const {
-    return Transform(m_mirror * m_target.transform.matrix() * pbrt_to_world);
+    return Transform(m_target.transform.matrix() * m_mirror * pbrt_to_world);
 }
 
 Bounds3 PbrtTranslator::run() {
@@ -91,7 +91,7 @@ void PbrtTranslator::camera() {
         PbrtEntity{"perspective", PbrtParams(), PbrtLocation{m_target.path, 0}}, Mat4(1.0f)};
     const PbrtCamera& c = m_scene.camera ? *m_scene.camera : fallback;
     const PbrtEntity& e = c.entity;
-    const Mat4 to_world = m_mirror * m_target.transform.matrix() * c.camera_to_world;
+    const Mat4 to_world = m_target.transform.matrix() * m_mirror * c.camera_to_world;
     const Vec3 eye(to_world * Vec4(0, 0, 0, 1));
     const Vec3 forward = glm::normalize(Vec3(to_world * Vec4(0, 0, 1, 0)));
     const Vec3 up = glm::normalize(Vec3(to_world * Vec4(0, 1, 0, 0)));
