@@ -6,6 +6,7 @@
 #include <glint/integrator/integrator.h>
 #include <glint/scene/build.h>
 #include <glint/scene/import/import.h>
+#include <glint/scene/import/pbrt/loop_subdivision.h>
 #include <glint/scene/import/pbrt/parser.h>
 #include <glint/scene/import/pbrt/translator.h>
 #include <glint/scene/lua/lua_loader.h>
@@ -16,6 +17,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <fstream>
+#include <map>
 
 using namespace glint;
 using glint::test::error_of;
@@ -623,4 +625,38 @@ TEST(PbrtImport, IntoALuaSceneWithItsCameraButTheScriptsSettings) {
                                  "scene.lua", dir.file(""));
                          }),
                          "scene.lua:1: import: "));
+}
+
+TEST(PbrtShapes, LoopSubdivisionSplitsSmoothsAndStaysClosed) {
+    // A regular tetrahedron about the origin.
+    MeshData tet;
+    tet.positions = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
+    tet.indices = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};
+    const MeshData m = loop_subdivide(tet, 2);
+    EXPECT_EQ(m.indices.size(), 12u * 16u);
+    EXPECT_EQ(m.positions.size(), 4u + 6u + 24u);  // V - E + F = 2 at each level
+    // Closed: every edge is used once in each direction.
+    std::map<std::pair<uint32_t, uint32_t>, int> uses;
+    for (size_t i = 0; i < m.indices.size(); i += 3)
+        for (int k = 0; k < 3; ++k) ++uses[{m.indices[i + k], m.indices[i + (k + 1) % 3]}];
+    for (const auto& [edge, count] : uses) {
+        EXPECT_EQ(count, 1);
+        EXPECT_EQ(uses.count({edge.second, edge.first}), 1u);
+    }
+    // Smoothing shrinks the control polyhedron towards its centre, symmetrically.
+    Vec3 centroid(0.0f);
+    for (const Vec3& p : m.positions) {
+        EXPECT_LT(glm::length(p), std::sqrt(3.0f));
+        centroid += p / static_cast<float>(m.positions.size());
+    }
+    expect_vec(centroid, Vec3(0.0f), 1e-5f);
+    ASSERT_EQ(m.normals.size(), m.positions.size());
+    for (size_t v = 0; v < m.positions.size(); ++v)
+        EXPECT_GT(glm::dot(m.normals[v], m.positions[v]), 0.0f);  // outwards
+    // A flat open patch stays flat.
+    MeshData square;
+    square.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    square.indices = {0, 1, 2, 0, 2, 3};
+    for (const Vec3& p : loop_subdivide(square, 3).positions) EXPECT_EQ(p.z, 0.0f);
+    EXPECT_FALSE(error_of([&] { loop_subdivide(tet, 9); }).empty());
 }

@@ -2,6 +2,7 @@
 // (read in parallel), disks and cylinders (as fine polygon meshes of equal area) become
 // glint meshes; ObjectBegin/ObjectInstance become groups and their placements.
 #include <glint/core/error.h>
+#include <glint/scene/import/pbrt/loop_subdivision.h>
 #include <glint/scene/import/pbrt/translator.h>
 #include <glint/scene/import/ply.h>
 
@@ -121,10 +122,14 @@ std::optional<MeshData> PbrtTranslator::mesh_of(const PbrtShape& s) {
                                       m.positions.size()));
             if (!m.uvs.empty() && m.uvs.size() != m.positions.size())
                 fail("uv", fmt::format("{} uvs for {} vertices", m.uvs.size(), m.positions.size()));
-        } else {
-            warn(e.where, "Shape", "loopsubdiv is rendered as its control mesh (not subdivided)");
-            params.find("levels");
-            ++m_skipped["subdivision surfaces"];
+        }
+        if (e.type == "loopsubdiv") {
+            m.indices.assign(indices.begin(), indices.end());
+            try {
+                return loop_subdivide(m, params.get_int("levels", 3));
+            } catch (const Error& error) {
+                fail("levels", error.what());
+            }
         }
         if (corners == 3) {
             m.indices.assign(indices.begin(), indices.end());
