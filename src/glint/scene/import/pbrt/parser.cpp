@@ -169,24 +169,26 @@ private:
     }
 
     // A parameter's values: one token or a bracketed list.
-    std::vector<Tok> values(const Tok& declaration) {
-        std::vector<Tok> out;
+    // A parameter's values, one token or a bracketed list, each passed to `take` as it is
+    // read (a mesh's millions of numbers are never held as tokens). Returns their count.
+    template <typename Take>
+    size_t values(const Tok& declaration, Take&& take) {
         if (peek().token.kind != PbrtToken::Kind::Open) {
             Tok t = next();
             if (t.token.kind != PbrtToken::Kind::Word && t.token.kind != PbrtToken::Kind::String)
                 fail(t, fmt::format("parameter \"{}\": expected a value, got {}",
                                     declaration.token.text, describe(t.token)));
-            out.push_back(std::move(t));
-            return out;
+            take(t);
+            return 1;
         }
         const Tok open = next();
-        while (true) {
+        for (size_t count = 0;; ++count) {
             Tok t = next();
-            if (t.token.kind == PbrtToken::Kind::Close) return out;
+            if (t.token.kind == PbrtToken::Kind::Close) return count;
             if (t.token.kind == PbrtToken::Kind::End || t.token.kind == PbrtToken::Kind::Open)
                 fail(open, fmt::format("parameter \"{}\": '[' is not closed by ']' (found {})",
                                        declaration.token.text, describe(t.token)));
-            out.push_back(std::move(t));
+            take(t);
         }
     }
 
@@ -215,20 +217,18 @@ private:
         if (p.type == "vector") p.type = "vector3";
         if (p.type == "normal") p.type = "normal3";
         if (p.type == "color") p.type = "rgb";
-        const std::vector<Tok> vs = values(declaration);
-        if (vs.empty())
-            fail(declaration,
-                 fmt::format("parameter \"{}\" has no values", declaration.token.text));
-        const bool stringy = p.type == "string" || p.type == "texture" ||
-                             (p.type == "spectrum" && vs[0].token.kind == PbrtToken::Kind::String);
-        for (const Tok& v : vs) {
+        // A spectrum is named (a string) or given by numbers: its first value decides.
+        std::optional<bool> stringy;
+        if (p.type == "string" || p.type == "texture") stringy = true;
+        const size_t count = values(declaration, [&](const Tok& v) {
+            if (!stringy) stringy = p.type == "spectrum" && v.token.kind == PbrtToken::Kind::String;
             if (p.type == "bool") {
                 const std::string& s = v.token.text;
                 if (s != "true" && s != "false")
                     fail(v, fmt::format("parameter \"{}\": '{}' is not true or false",
                                         declaration.token.text, s));
                 p.bools.push_back(s == "true");
-            } else if (stringy) {
+            } else if (*stringy) {
                 if (v.token.kind != PbrtToken::Kind::String)
                     fail(v, fmt::format("parameter \"{}\": expected a quoted string, got {}",
                                         declaration.token.text, describe(v.token)));
@@ -236,7 +236,10 @@ private:
             } else {
                 p.numbers.push_back(to_number(v));
             }
-        }
+        });
+        if (count == 0)
+            fail(declaration,
+                 fmt::format("parameter \"{}\" has no values", declaration.token.text));
         check_count(declaration, p);
         return p;
     }
@@ -540,7 +543,7 @@ private:
         const PbrtLocation where{d.file(), d.token.line};
         if (name == "Option") {
             const Tok n = expect_string(d);
-            values(n);
+            values(n, [](const Tok&) {});
             warn(where, name, fmt::format("option \"{}\" is ignored", n.token.text));
             return;
         }
