@@ -660,3 +660,35 @@ TEST(PbrtShapes, LoopSubdivisionSplitsSmoothsAndStaysClosed) {
     for (const Vec3& p : loop_subdivide(square, 3).positions) EXPECT_EQ(p.z, 0.0f);
     EXPECT_FALSE(error_of([&] { loop_subdivide(tet, 9); }).empty());
 }
+
+TEST(PbrtEnvironment, AMapIsSeenWherePbrtPutsIt) {
+    // Red straight ahead of pbrt's light space (+z), green 45 degrees to its +x side: a camera
+    // looking along +z sees red in the middle and green to the right (pbrt's +x).
+    test::TempDir dir;
+    const int n = 128;
+    Image square = make_image(n, n, {"R", "G", "B"});
+    // Every texel whose direction (pbrt's map, above) lies within 8 degrees of `w`.
+    auto paint = [&](const Vec3& w, int c) {
+        for (int y = 0; y < n; ++y)
+            for (int x = 0; x < n; ++x) {
+                const Vec3 d = equal_area_sphere_of(Vec2((x + 0.5f) / n, (y + 0.5f) / n));
+                if (glm::dot(d, glm::normalize(w)) > std::cos(glm::radians(8.0f)))
+                    square.at(x, y, c) = 1.0f;
+            }
+    };
+    paint(Vec3(0, 0, 1), 0);
+    paint(Vec3(1, 0, 1), 1);
+    write_image(dir.file("map.exr"), square);
+    const Image image = render(
+        import_text(dir,
+                    "LookAt 0 0 0  0 0 1  0 1 0\nCamera \"perspective\" \"float fov\" 120\n"
+                    "Film \"rgb\" \"integer xresolution\" 48 \"integer yresolution\" 48\n"
+                    "Sampler \"independent\" \"integer pixelsamples\" 4\nPixelFilter \"box\"\n"
+                    "WorldBegin\nLightSource \"infinite\" \"string filename\" \"map.exr\"\n"));
+    const Vec2 red = centroid(image, 0), green = centroid(image, 1);
+    EXPECT_NEAR(red.x, 24.0f, 1.5f);
+    EXPECT_NEAR(red.y, 24.0f, 1.5f);
+    // 45 degrees right of the axis with a 120 degree view: tan 45 / tan 60 of the half width.
+    EXPECT_NEAR(green.x, 24.0f + 24.0f / std::sqrt(3.0f), 1.5f);
+    EXPECT_NEAR(green.y, 24.0f, 1.5f);
+}
