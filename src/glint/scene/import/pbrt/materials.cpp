@@ -177,11 +177,11 @@ PbrtValue PbrtTranslator::texture_value(const PbrtTexture& t) {
 }
 
 void PbrtTranslator::image_texture(const PbrtEntity& e, Params& p) {
-    std::filesystem::path file = e.params.get_string("filename", "");
-    if (file.empty())
+    const std::string name = e.params.get_string("filename", "");
+    if (name.empty())
         throw Error(fmt::format("{}: Texture \"imagemap\": no \"filename\"", e.where.str()));
-    if (file.is_relative()) file = std::filesystem::path(m_scene.directory) / file;
-    p.set("file", file.string());
+    const std::string file = resolve(name);
+    p.set("file", file);
     const std::string wrap = e.params.get_string("wrap", "repeat");
     if (wrap == "clamp" || wrap == "black")
         p.set("wrap", wrap);
