@@ -72,6 +72,7 @@ LoaderOptions loader_options(bool trusted_scene, const std::string& time_limit) 
 SceneDesc load_scene(const std::string& path, const LoaderOptions& options) {
     SceneDesc desc = is_model_file(path) ? load_model_scene(path) : load_scene_file(path, options);
     for (const std::string& warning : desc.warnings) fmt::print(stderr, "warning: {}\n", warning);
+    for (const std::string& note : desc.notes) fmt::print(stderr, "note: {}\n", note);
     return desc;
 }
 

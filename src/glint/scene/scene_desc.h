@@ -56,6 +56,9 @@ struct SceneDesc {
     // What importers read but could not map (e.g. an MTL statement), each naming the file
     // and line; the CLI prints them.
     std::vector<std::string> warnings;
+    // What an importer read and what it left out, in sum (a pbrt file's directives); the
+    // CLI prints them as notes.
+    std::vector<std::string> notes;
 };
 
 }  // namespace glint

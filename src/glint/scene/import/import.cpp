@@ -3,6 +3,7 @@
 #include <glint/scene/import/import.h>
 #include <glint/scene/import/mtl.h>
 #include <glint/scene/import/obj.h>
+#include <glint/scene/import/pbrt/translator.h>
 #include <glint/scene/import/ply.h>
 
 #include <fmt/format.h>
@@ -119,9 +120,10 @@ Bounds3 import_file(SceneDesc& desc, const ImportTarget& target) {
     if (ext == ".obj") return import_obj(desc, target);
     if (ext == ".ply") return import_ply(desc, target);
     if (ext == ".gltf" || ext == ".glb") return import_gltf(desc, target);
+    if (ext == ".pbrt") return import_pbrt(desc, target);
     throw Error(
         fmt::format("cannot import '{}': unknown file type '{}' (expected .obj, .ply, "
-                    ".gltf or .glb)",
+                    ".gltf, .glb or .pbrt)",
                     target.path, ext));
 }
 
@@ -155,7 +157,7 @@ MeshData load_mesh_file(const std::string& path) {
 
 bool is_model_file(const std::string& path) {
     const std::string ext = extension_of(path);
-    return ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb";
+    return ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb" || ext == ".pbrt";
 }
 
 SceneDesc load_model_scene(const std::string& path) {
@@ -180,7 +182,8 @@ SceneDesc load_model_scene(const std::string& path) {
         camera.set("fov", static_cast<double>(fov));
         desc.camera = std::move(camera);
     }
-    if (desc.lights.empty()) {
+    // A pbrt file is a whole scene: without lights it is dark, as pbrt renders it.
+    if (desc.lights.empty() && !desc.background && extension_of(path) != ".pbrt") {
         Params background("background", fmt::format("{} (default background)", path));
         background.set("radiance", 1.0);
         desc.background = std::move(background);
