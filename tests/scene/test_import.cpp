@@ -307,14 +307,14 @@ TEST(ImportGltf, HierarchyInstancingMaterialsCameraAndLights) {
     ASSERT_EQ(desc.lights.size(), 3u);
     EXPECT_EQ(desc.lights[0].type(), "point_light");
     expect_near(numbers(desc.lights[0], "position"), {0, 3, 0});
-    expect_near(numbers(desc.lights[0], "intensity"), {10, 10, 10});
+    expect_near(numbers(desc.lights[0], "intensity"), {10 / 683.0, 10 / 683.0, 10 / 683.0});
     EXPECT_EQ(desc.lights[1].type(), "spot_light");
     expect_near(numbers(desc.lights[1], "look_at"), {1, 2, 2});
     EXPECT_NEAR(desc.lights[1].get_float("cone_angle"), 0.4 * 180 / 3.14159265, 1e-4);
     EXPECT_NEAR(desc.lights[1].get_float("falloff_start"), 0.2 * 180 / 3.14159265, 1e-4);
     EXPECT_EQ(desc.lights[2].type(), "directional_light");
     expect_near(numbers(desc.lights[2], "direction"), {0, -1, 0});
-    expect_near(numbers(desc.lights[2], "irradiance"), {2, 1, 0.5});
+    expect_near(numbers(desc.lights[2], "irradiance"), {2 / 683.0, 1 / 683.0, 0.5 / 683.0});
 }
 
 // With a Lua material the geometry builds today: counts, instances and bounds.
