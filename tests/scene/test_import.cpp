@@ -393,3 +393,17 @@ TEST(ImportModelScene, DefaultCameraAndBackground) {
     EXPECT_TRUE(is_model_file("A.GLB"));
     EXPECT_FALSE(is_model_file("a.lua"));
 }
+
+// An MTL mirror (illum 3, as Blender writes a metal) becomes a mirror that builds: its tint
+// is Ks (the parameter was once named after diffuse's `reflectance`, an error at build).
+TEST(ImportObj, MtlMirrorBuilds) {
+    test::TempDir dir;
+    write(dir.file("m.obj"), "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl metal\nf 1 2 3\n");
+    write(dir.file("m.mtl"), "newmtl metal\nKd 1 0.77 0.34\nKs 0.5 0.5 0.5\nillum 3\n");
+    const SceneDesc desc = load("glint.import{ file = 'm.obj' }", dir);
+    ASSERT_EQ(desc.materials.size(), 1u);
+    EXPECT_EQ(desc.materials[0].type(), "mirror");
+    expect_near(numbers(desc.materials[0], "tint"), {0.5, 0.5, 0.5});
+    const auto scene = build_scene(desc, parse_render_settings(nullptr));
+    EXPECT_EQ(scene->stats().triangles, 1u);
+}
