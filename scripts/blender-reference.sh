@@ -6,6 +6,7 @@
 # and prints a table of relative MSE and channel means over the visible surfaces.
 #
 #   scripts/blender-reference.sh [OUTDIR] [SPP] [WIDTH] [HEIGHT]
+#   SCENES="point spot" scripts/blender-reference.sh ...      (a few of them)
 #
 # Needs Debian's `blender` (3.4) and `python3-numpy` (Blender's glTF exporter imports it):
 #   apt-get install blender python3-numpy
@@ -18,7 +19,7 @@ spp=${2:-256}
 width=${3:-160}
 height=${4:-120}
 glint=${GLINT:-build/glint}
-scenes=(principled lights texture transmission)
+scenes=(${SCENES:-point spot sun principled lights texture transmission})
 mkdir -p "$out"
 command -v blender >/dev/null || { echo "blender-reference: install Debian's blender" >&2; exit 1; }
 [ -x "$glint" ] || { echo "blender-reference: no glint at $glint (build it, or set GLINT)" >&2; exit 1; }

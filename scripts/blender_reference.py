@@ -2,7 +2,7 @@
 # scene that imports the OBJ with the camera and lights Blender has), and renders a Cycles
 # reference in linear EXR. Run by scripts/blender-reference.sh, inside Blender:
 #   blender -b --factory-startup --python scripts/blender_reference.py -- SCENE OUTDIR SPP W H
-# Scenes: principled, lights, texture, transmission (see build_* below).
+# Scenes: principled, lights, texture, transmission, point, spot, sun (see build_* below).
 import math
 import os
 import sys
@@ -154,6 +154,26 @@ def build_lights():
     camera((0, -7.5, 4), (0, 0.3, 0.3))
 
 
+def build_single_light(kind):
+    # One light over matte objects with specular 0 (no specular layer in either renderer):
+    # checks each light's units, falloff and cone alone.
+    matte = {"Specular": 0.0, "Roughness": 1.0}
+    floor(principled("grey", **{"Base Color": (0.6, 0.6, 0.6, 1)}, **matte))
+    mesh_object("box", new_mesh("cube", "box", size=1.0), principled(
+        "orange", **{"Base Color": (0.8, 0.4, 0.1, 1)}, **matte), location=(-1.2, 0.5, 0.5))
+    mesh_object("ball", new_mesh("uv_sphere", "ball", segments=48, ring_count=24, radius=0.7),
+                principled("teal", **{"Base Color": (0.1, 0.6, 0.6, 1)}, **matte),
+                location=(1.2, 0, 0.7))
+    if kind == "point":
+        light("POINT", (1, -2, 3), 1000.0)
+    elif kind == "spot":
+        light("SPOT", (0, -3, 4.5), 2500.0, target=(0, 0, 0), spot_size=math.radians(50),
+              spot_blend=0.3)
+    else:
+        light("SUN", (0, 0, 5), 2.0, target=(1, 2, -3))
+    camera((0, -7.5, 4), (0, 0.3, 0.3))
+
+
 def build_texture():
     image = checker_image(os.path.join(OUT, "checker.png"))
     floor(textured("checker_floor", image, Roughness=0.6), size=8)
@@ -210,12 +230,14 @@ def write_obj_scene(stem):
             lines.append("glint.point_light{ position = %s, intensity = %s }" % (
                 lua_list(to_glint(p)), lua_list([x / (4 * math.pi) for x in c])))
         elif d.type == "SPOT":
-            outer = math.degrees(d.spot_size / 2)
+            # Blender fades over cos(angle) in [cos(outer), cos(outer) + (1 - cos(outer)) blend].
+            cos_outer = math.cos(d.spot_size / 2)
+            start = math.acos(min(cos_outer + (1 - cos_outer) * d.spot_blend, 1.0))
             lines.append(
                 "glint.spot_light{ position = %s, look_at = %s, intensity = %s, cone_angle = %.6g, "
                 "falloff_start = %.6g }" % (lua_list(to_glint(p)), lua_list(to_glint(p + axis)),
-                                            lua_list([x / (4 * math.pi) for x in c]), outer,
-                                            outer * (1 - d.spot_blend)))
+                                            lua_list([x / (4 * math.pi) for x in c]),
+                                            math.degrees(d.spot_size / 2), math.degrees(start)))
         elif d.type == "SUN":
             lines.append("glint.directional_light{ direction = %s, irradiance = %s }" % (
                 lua_list(to_glint(axis)), lua_list(c)))
@@ -263,5 +285,6 @@ def export_and_render(stem):
 
 clear()
 {"principled": build_principled, "lights": build_lights, "texture": build_texture,
- "transmission": build_transmission}[SCENE]()
+ "transmission": build_transmission, "point": lambda: build_single_light("point"),
+ "spot": lambda: build_single_light("spot"), "sun": lambda: build_single_light("sun")}[SCENE]()
 export_and_render(SCENE)

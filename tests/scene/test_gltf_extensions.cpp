@@ -226,3 +226,22 @@ TEST(GltfExtensions, BadExtensionValuesAreErrors) {
     EXPECT_NE(bad_factor.find("'clearcoatFactor' must be a number in [0, 1]"), std::string::npos)
         << bad_factor;
 }
+
+// A spot's fade starts at innerConeAngle, as the specification says; in a file from
+// Blender's exporter, which writes inner = outer (1 - blend), it starts where Blender's
+// does: cos = cos(outer) + (1 - cos(outer)) blend.
+TEST(GltfExtensions, SpotFadeStartsAtInnerAngleOrWhereBlenderFades) {
+    test::TempDir dir;
+    const std::string json = gltf("{}", kLights, kLightNodes);
+    const SceneDesc plain = import(dir, json);
+    EXPECT_NEAR(plain.lights[1].get_float("falloff_start"), 0.3 * 180 / M_PI, 1e-4);
+    EXPECT_NEAR(plain.lights[1].get_float("cone_angle"), 0.5 * 180 / M_PI, 1e-4);
+    std::string blender = json;
+    blender.replace(blender.find("\"version\": \"2.0\""), 16,
+                    "\"version\": \"2.0\", \"generator\": \"Khronos glTF Blender I/O v3.4.50\"");
+    const SceneDesc from_blender = import(dir, blender);
+    const double blend = 1.0 - 0.3 / 0.5;
+    const double start = std::acos(std::cos(0.5) + (1.0 - std::cos(0.5)) * blend);
+    EXPECT_NEAR(from_blender.lights[1].get_float("falloff_start"), start * 180 / M_PI, 1e-4);
+    EXPECT_NEAR(from_blender.lights[1].get_float("cone_angle"), 0.5 * 180 / M_PI, 1e-4);
+}

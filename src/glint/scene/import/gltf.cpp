@@ -847,6 +847,19 @@ private:
         m_desc.camera_imported = true;
     }
 
+    // The angle (radians) where a spot's edge begins to fade: the file's innerConeAngle, as
+    // the specification says, except in a file from Blender's exporter. Blender fades a
+    // spot with blend b over cos(angle) from cos(outer) to cos(outer) + (1 - cos(outer)) b
+    // (smoothstep in the cosine, as glint's spot does), but its exporter writes inner =
+    // outer (1 - b), a wider fade; reading b back from that gives Blender's own cone.
+    double falloff_start(double inner, double outer) const {
+        if (m_model.asset.generator.rfind("Khronos glTF Blender I/O", 0) != 0 || !(outer > 0.0))
+            return inner;
+        const double blend = std::clamp(1.0 - inner / outer, 0.0, 1.0);
+        const double cos_outer = std::cos(outer);
+        return std::acos(std::min(cos_outer + (1.0 - cos_outer) * blend, 1.0));
+    }
+
     // KHR_lights_punctual. glTF states candela (point, spot) and lux (directional); glint's
     // lights take W/sr and W/m^2. light_scale is watts per lumen: 1/683 by default, the
     // luminous efficacy that defines the candela (what Blender's importer and exporter use),
@@ -869,10 +882,10 @@ private:
             params.set("position", numbers_of(position));
             params.set("look_at", numbers_of(position + direction));
             params.set("intensity", numbers_of(power));
-            const double outer = light.spot.outerConeAngle * 180.0 / 3.14159265358979323846;
-            const double inner = light.spot.innerConeAngle * 180.0 / 3.14159265358979323846;
-            params.set("cone_angle", outer);
-            params.set("falloff_start", std::min(inner, outer));
+            const double outer = light.spot.outerConeAngle;
+            const double inner = falloff_start(light.spot.innerConeAngle, outer);
+            params.set("cone_angle", glm::degrees(outer));
+            params.set("falloff_start", glm::degrees(std::min(inner, outer)));
         } else if (light.type == "directional") {
             params = Params("directional_light", where);
             params.set("direction", numbers_of(direction));
