@@ -245,3 +245,16 @@ TEST(GltfExtensions, SpotFadeStartsAtInnerAngleOrWhereBlenderFades) {
     EXPECT_NEAR(from_blender.lights[1].get_float("falloff_start"), start * 180 / M_PI, 1e-4);
     EXPECT_NEAR(from_blender.lights[1].get_float("cone_angle"), 0.5 * 180 / M_PI, 1e-4);
 }
+
+// Blender 3's clear coat is a quarter-weight lobe; its exporter writes the weight as it is.
+TEST(GltfExtensions, BlenderClearcoatIsAQuarterWeight) {
+    test::TempDir dir;
+    std::string json = gltf(
+        R"({"extensions": {"KHR_materials_clearcoat": {"clearcoatFactor": 0.8, "clearcoatRoughnessFactor": 0.1}}})");
+    EXPECT_NEAR(import(dir, json).materials[0].get_float("clearcoat"), 0.8, 1e-6);
+    json.replace(json.find("\"version\": \"2.0\""), 16,
+                 "\"version\": \"2.0\", \"generator\": \"Khronos glTF Blender I/O v3.4.50\"");
+    const SceneDesc desc = import(dir, json);
+    EXPECT_NEAR(desc.materials[0].get_float("clearcoat"), 0.2, 1e-6);
+    EXPECT_NEAR(desc.materials[0].get_float("clearcoat_roughness"), 0.1, 1e-6);
+}

@@ -718,7 +718,10 @@ private:
             warn_textures(
                 ext, "KHR_materials_clearcoat",
                 {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}, where);
-            const double coat = number(ext, "clearcoatFactor", 0.0, 0.0, 1.0, where);
+            // Blender 3's Principled BSDF weighs its clear coat by a quarter (Burley's
+            // clearcoat lobe), and its exporter writes the weight as it is.
+            const double coat = number(ext, "clearcoatFactor", 0.0, 0.0, 1.0, where) *
+                                (from_blender() ? 0.25 : 1.0);
             if (coat > 0.0) {
                 params.set("clearcoat", coat);
                 params.set("clearcoat_roughness",
@@ -847,14 +850,19 @@ private:
         m_desc.camera_imported = true;
     }
 
+    // Whether Blender's exporter wrote the file: where it writes what Blender does not
+    // render, glint reads what Blender renders (docs/scene-language.md, "glTF").
+    bool from_blender() const {
+        return m_model.asset.generator.rfind("Khronos glTF Blender I/O", 0) == 0;
+    }
+
     // The angle (radians) where a spot's edge begins to fade: the file's innerConeAngle, as
     // the specification says, except in a file from Blender's exporter. Blender fades a
     // spot with blend b over cos(angle) from cos(outer) to cos(outer) + (1 - cos(outer)) b
     // (smoothstep in the cosine, as glint's spot does), but its exporter writes inner =
     // outer (1 - b), a wider fade; reading b back from that gives Blender's own cone.
     double falloff_start(double inner, double outer) const {
-        if (m_model.asset.generator.rfind("Khronos glTF Blender I/O", 0) != 0 || !(outer > 0.0))
-            return inner;
+        if (!from_blender() || !(outer > 0.0)) return inner;
         const double blend = std::clamp(1.0 - inner / outer, 0.0, 1.0);
         const double cos_outer = std::cos(outer);
         return std::acos(std::min(cos_outer + (1.0 - cos_outer) * blend, 1.0));
