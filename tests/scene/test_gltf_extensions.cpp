@@ -5,6 +5,7 @@
 // a small glTF JSON written by the test, with its one quad embedded as a data URI.
 #include <glint/film/image_io.h>
 #include <glint/scene/build.h>
+#include <glint/scene/import/import.h>
 #include <glint/scene/lua/lua_loader.h>
 
 #include <fmt/format.h>
@@ -257,4 +258,22 @@ TEST(GltfExtensions, BlenderClearcoatIsAQuarterWeight) {
     const SceneDesc desc = import(dir, json);
     EXPECT_NEAR(desc.materials[0].get_float("clearcoat"), 0.2, 1e-6);
     EXPECT_NEAR(desc.materials[0].get_float("clearcoat_roughness"), 0.1, 1e-6);
+}
+
+// `glint render model.gltf` sizes its image by the camera's aspectRatio: the default height,
+// the width the ratio gives; a file without one keeps the default square image.
+TEST(GltfExtensions, CameraAspectRatioSizesAModelRender) {
+    test::TempDir dir;
+    std::string json = gltf("{}", R"(,
+  "cameras": [{"type": "perspective", "perspective": {"yfov": 0.5, "aspectRatio": 1.7777778, "znear": 0.1}}])",
+                            R"(, {"camera": 0, "translation": [0, 1, 5]})");
+    std::ofstream(dir.file("model.gltf")) << json;
+    write_image(dir.file("image.png"), make_image(2, 2, {"R", "G", "B"}));
+    const SceneDesc desc = load_model_scene(dir.file("model.gltf"));
+    ASSERT_TRUE(desc.render.has_value());
+    EXPECT_EQ(desc.render->get_int("width", 0), 910);
+    EXPECT_EQ(desc.render->get_int("height", 0), 512);
+    json.replace(json.find(", \"aspectRatio\": 1.7777778"), 26, "");
+    std::ofstream(dir.file("square.gltf")) << json;
+    EXPECT_FALSE(load_model_scene(dir.file("square.gltf")).render.has_value());
 }

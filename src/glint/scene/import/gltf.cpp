@@ -839,13 +839,19 @@ private:
         params.set("eye", numbers_of(eye));
         params.set("look_at", numbers_of(eye + forward));
         params.set("up", numbers_of(up));
+        double aspect = 0.0;
         if (camera.type == "orthographic") {
             params.set("type", std::string("orthographic"));
             // ymag is half the view's height; glint's scale is the whole height.
             params.set("scale", 2.0 * camera.orthographic.ymag);
+            if (camera.orthographic.ymag > 0.0)
+                aspect = camera.orthographic.xmag / camera.orthographic.ymag;
         } else {
             params.set("fov", camera.perspective.yfov * 180.0 / 3.14159265358979323846);
+            aspect = camera.perspective.aspectRatio;
         }
+        if (std::isfinite(aspect) && aspect > 0.0)
+            m_desc.camera_aspect = static_cast<float>(aspect);
         m_desc.camera = std::move(params);
         m_desc.camera_imported = true;
     }

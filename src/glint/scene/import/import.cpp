@@ -184,6 +184,15 @@ SceneDesc load_model_scene(const std::string& path) {
         camera.set("fov", static_cast<double>(fov));
         desc.camera = std::move(camera);
     }
+    if (desc.camera_aspect) {
+        // The file's camera says its aspect ratio: the image keeps the default height and
+        // takes the width that ratio gives (--res still decides, see the docs).
+        const double width = std::clamp(std::round(512.0 * *desc.camera_aspect), 1.0, 65536.0);
+        Params render("render", fmt::format("{} (camera aspect ratio)", path));
+        render.set("width", width);
+        render.set("height", 512.0);
+        desc.render = std::move(render);
+    }
     if (desc.lights.empty()) {
         Params background("background", fmt::format("{} (default background)", path));
         background.set("radiance", 1.0);
