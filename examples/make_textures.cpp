@@ -1,8 +1,10 @@
 // Writes the images examples/textures.lua uses into examples/textures/, so that nothing is
-// downloaded: a uv test grid, a checkerboard, a tile normal map, a lat-long sky and a
-// torus mesh with uvs. Run by scripts/make-example-textures.sh; the output is committed.
+// downloaded: a uv test grid, a checkerboard, a tile normal map, a lat-long sky, the same
+// sky as a mirror-ball light probe, and a torus mesh with uvs. Run by
+// scripts/make-example-textures.sh; the output is committed.
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
+#include <glint/light/environment_mapping.h>
 #include <glint/math/vector.h>
 
 #include <OpenImageIO/imageio.h>
@@ -95,8 +97,8 @@ void write_normal_map(const std::string& path, int n) {
 Image sky(int width, int height) {
     Image image = make_image(width, height, {"R", "G", "B"});
     const float sun_elevation = glm::radians(35.0f);
-    const Vec3 sun = glm::normalize(
-        Vec3(0.7f * std::cos(sun_elevation), std::sin(sun_elevation), 0.7f * std::cos(sun_elevation)));
+    const Vec3 sun = glm::normalize(Vec3(0.7f * std::cos(sun_elevation), std::sin(sun_elevation),
+                                         0.7f * std::cos(sun_elevation)));
     for (int y = 0; y < height; ++y) {
         const float theta = (y + 0.5f) / height * kPi;  // from the zenith
         for (int x = 0; x < width; ++x) {
@@ -109,7 +111,8 @@ Image sky(int width, int height) {
                 c = glm::mix(Vec3(0.25f, 0.45f, 0.9f), Vec3(1.0f, 0.95f, 0.9f), a) * 1.2f;
                 // A sun of 4 degrees radius: larger and dimmer than the real one (0.27
                 // degrees), for softer shadows and fewer fireflies at few samples.
-                if (glm::dot(w, sun) > std::cos(glm::radians(4.0f))) c = Vec3(800.0f, 750.0f, 680.0f);
+                if (glm::dot(w, sun) > std::cos(glm::radians(4.0f)))
+                    c = Vec3(800.0f, 750.0f, 680.0f);
             } else {
                 c = Vec3(0.25f, 0.2f, 0.15f) * (0.5f + 0.5f * std::exp(8.0f * w.y));
             }
@@ -117,6 +120,52 @@ Image sky(int width, int height) {
         }
     }
     return image;
+}
+
+// A lat-long map as a light probe of `size` x `size` pixels in `mapping`'s layout
+// (environment_mapping.h): each probe pixel reads the lat-long map bilinearly in its
+// direction; outside the ball's disc stays black, as in a photograph cropped to the ball.
+Image probe_of(const Image& latlong, EnvironmentMapping mapping, int size) {
+    Image image = make_image(size, size, {"R", "G", "B"});
+    auto texel = [&](int x, int y, int c) {
+        x = (x % latlong.width + latlong.width) % latlong.width;
+        y = std::clamp(y, 0, latlong.height - 1);
+        return latlong.at(x, y, c);
+    };
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const auto d =
+                environment_direction(mapping, Vec2((x + 0.5f) / size, (y + 0.5f) / size));
+            if (!d) continue;
+            const Vec2 p = environment_image_point(EnvironmentMapping::kLatLong, *d);
+            const float fx = p.x * latlong.width - 0.5f, fy = p.y * latlong.height - 0.5f;
+            const int ix = static_cast<int>(std::floor(fx)), iy = static_cast<int>(std::floor(fy));
+            const float tx = fx - ix, ty = fy - iy;
+            for (int c = 0; c < 3; ++c) {
+                image.at(x, y, c) =
+                    (1 - tx) * (1 - ty) * texel(ix, iy, c) + tx * (1 - ty) * texel(ix + 1, iy, c) +
+                    (1 - tx) * ty * texel(ix, iy + 1, c) + tx * ty * texel(ix + 1, iy + 1, c);
+            }
+        }
+    }
+    return image;
+}
+
+// An RGB image as a half-float EXR: a probe of a smooth sky needs no more, at a third of
+// the size.
+void write_half_exr(const std::string& path, const Image& image) {
+    std::vector<float> pixels(static_cast<size_t>(image.width) * image.height * 3);
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            for (int c = 0; c < 3; ++c)
+                pixels[(static_cast<size_t>(y) * image.width + x) * 3 + c] = image.at(x, y, c);
+    auto out = OIIO::ImageOutput::create(path);
+    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
+    spec.attribute("compression", "zip");
+    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
+        !out->close()) {
+        throw std::runtime_error("cannot write " + path);
+    }
 }
 
 // A torus around y with major radius R and minor radius r, uvs around both circles.
@@ -153,7 +202,10 @@ int main(int argc, char** argv) {
         write_image((dir / "uv-grid.png").string(), uv_grid(512));
         write_image((dir / "checker.png").string(), checker(256, 8));
         write_normal_map((dir / "tiles-normal.png").string(), 256);
-        write_image((dir / "sky.exr").string(), sky(512, 256));
+        const Image latlong_sky = sky(512, 256);
+        write_image((dir / "sky.exr").string(), latlong_sky);
+        write_half_exr((dir / "sky-mirror-ball.exr").string(),
+                       probe_of(latlong_sky, EnvironmentMapping::kMirrorBall, 128));
         write_torus((dir / "torus.obj").string(), 0.6f, 0.25f, 48, 24);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "make_textures: %s\n", e.what());

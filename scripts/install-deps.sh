@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Installs glint's build and test dependencies from Debian's packages.
-# Run as root (or with sudo). Idempotent: safe to run again.
+# Run it as root, or as a user who may use sudo: it calls sudo itself only when it is not
+# root, so it also works on a machine where sudo does not exist. Idempotent.
 set -euo pipefail
 
 packages=(
@@ -19,7 +20,13 @@ packages=(
 )
 
 SUDO=""
-if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+if [ "$(id -u)" -ne 0 ]; then
+  if ! command -v sudo >/dev/null 2>&1; then
+    echo "install-deps: not root and sudo is not installed; run this script as root" >&2
+    exit 1
+  fi
+  SUDO="sudo"
+fi
 
 export DEBIAN_FRONTEND=noninteractive
 # Skip the network round trip when every package is already present.

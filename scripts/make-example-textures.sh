@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# Regenerates examples/textures/ (uv grid, checkerboard, tile normal map, sky, torus) with
-# the glint_make_example_textures program. The images are committed; run this after
+# Regenerates examples/textures/ (uv grid, checkerboard, tile normal map, sky and its
+# mirror-ball probe, torus) with the glint_make_example_textures program. The images are committed; run this after
 # changing examples/make_textures.cpp.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."

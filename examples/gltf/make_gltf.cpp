@@ -238,8 +238,8 @@ void write_scene(const std::filesystem::path& dir) {
   ],
   "cameras": [{{"type": "perspective", "perspective": {{"yfov": 0.6, "znear": 0.05}}}}],
   "extensions": {{"KHR_lights_punctual": {{"lights": [
-    {{"type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 2.5}},
-    {{"type": "point", "color": [1.0, 0.85, 0.7], "intensity": 6}}]}}}},
+    {{"type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 1707.5}},
+    {{"type": "point", "color": [1.0, 0.85, 0.7], "intensity": 4098}}]}}}},
   "meshes": [
 {}
   ],

@@ -307,14 +307,14 @@ TEST(ImportGltf, HierarchyInstancingMaterialsCameraAndLights) {
     ASSERT_EQ(desc.lights.size(), 3u);
     EXPECT_EQ(desc.lights[0].type(), "point_light");
     expect_near(numbers(desc.lights[0], "position"), {0, 3, 0});
-    expect_near(numbers(desc.lights[0], "intensity"), {10, 10, 10});
+    expect_near(numbers(desc.lights[0], "intensity"), {10 / 683.0, 10 / 683.0, 10 / 683.0});
     EXPECT_EQ(desc.lights[1].type(), "spot_light");
     expect_near(numbers(desc.lights[1], "look_at"), {1, 2, 2});
     EXPECT_NEAR(desc.lights[1].get_float("cone_angle"), 0.4 * 180 / 3.14159265, 1e-4);
     EXPECT_NEAR(desc.lights[1].get_float("falloff_start"), 0.2 * 180 / 3.14159265, 1e-4);
     EXPECT_EQ(desc.lights[2].type(), "directional_light");
     expect_near(numbers(desc.lights[2], "direction"), {0, -1, 0});
-    expect_near(numbers(desc.lights[2], "irradiance"), {2, 1, 0.5});
+    expect_near(numbers(desc.lights[2], "irradiance"), {2 / 683.0, 1 / 683.0, 0.5 / 683.0});
 }
 
 // With a Lua material the geometry builds today: counts, instances and bounds.
@@ -392,4 +392,18 @@ TEST(ImportModelScene, DefaultCameraAndBackground) {
     EXPECT_TRUE(gltf.camera_imported);
     EXPECT_TRUE(is_model_file("A.GLB"));
     EXPECT_FALSE(is_model_file("a.lua"));
+}
+
+// An MTL mirror (illum 3, as Blender writes a metal) becomes a mirror that builds: its tint
+// is Ks (the parameter was once named after diffuse's `reflectance`, an error at build).
+TEST(ImportObj, MtlMirrorBuilds) {
+    test::TempDir dir;
+    write(dir.file("m.obj"), "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl metal\nf 1 2 3\n");
+    write(dir.file("m.mtl"), "newmtl metal\nKd 1 0.77 0.34\nKs 0.5 0.5 0.5\nillum 3\n");
+    const SceneDesc desc = load("glint.import{ file = 'm.obj' }", dir);
+    ASSERT_EQ(desc.materials.size(), 1u);
+    EXPECT_EQ(desc.materials[0].type(), "mirror");
+    expect_near(numbers(desc.materials[0], "tint"), {0.5, 0.5, 0.5});
+    const auto scene = build_scene(desc, parse_render_settings(nullptr));
+    EXPECT_EQ(scene->stats().triangles, 1u);
 }

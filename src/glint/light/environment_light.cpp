@@ -1,6 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/film/image_io.h>
 #include <glint/light/environment_light.h>
+#include <glint/light/environment_mapping.h>
 #include <glint/math/frame.h>
 #include <glint/math/warp.h>
 
@@ -257,9 +258,11 @@ Spectrum EnvironmentLight::power() const {
     return m_radiance_integral * (kPi * m_radius * m_radius);
 }
 
-// glint.environment{...}: image-based lighting from a lat-long image (mapping in the header).
+// glint.environment{...}: image-based lighting from a light probe (mappings in the header
+// and in environment_mapping.h; other layouts are resampled to lat-long once, at load).
 //   file       string     required  image OpenImageIO reads, relative to the script's folder;
 //                                    float files linear, 8-bit files sRGB-decoded
+//   mapping    string     "latlong" "latlong", "mirror_ball", "angular" or "cube_cross"
 //   rotation   float      0         degrees about +y (right-handed: 90 turns -z to -x)
 //   transform  transform  identity  a further rotation, after `rotation`; translation ignored
 //   intensity  spectrum   1         >= 0, multiplies the image
@@ -269,6 +272,14 @@ std::unique_ptr<Light> make_environment_light(const Params& params, const std::s
     const float rotation = std::fmod(params.get_float("rotation", 0.0f), 360.0f);
     const Mat3 placement = Mat3(params.get_transform("transform").matrix());
     const Spectrum intensity = params.get_spectrum("intensity", Spectrum(1.0f));
+    const std::string mapping_name = params.get_string("mapping", "latlong");
+    const std::optional<EnvironmentMapping> mapping = environment_mapping_named(mapping_name);
+    if (!mapping) {
+        params.fail(
+            fmt::format("'mapping' must be \"latlong\", \"mirror_ball\", \"angular\" "
+                        "or \"cube_cross\", not \"{}\"",
+                        mapping_name));
+    }
     if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
         params.fail("'intensity' must not be negative");
     if (!is_rotation(placement))
@@ -285,10 +296,16 @@ std::unique_ptr<Light> make_environment_light(const Params& params, const std::s
     }
     if (image.width <= 0 || image.height <= 0)
         params.fail(fmt::format("environment map '{}' holds no image", path.string()));
-    std::vector<Spectrum> pixels = radiance_pixels(image, params, path.string());
-    for (Spectrum& p : pixels) p *= intensity;
+    LatLongImage map;
+    try {
+        map = to_latlong(*mapping, radiance_pixels(image, params, path.string()), image.width,
+                         image.height);
+    } catch (const Error& e) {
+        params.fail(fmt::format("environment map '{}': {}", path.string(), e.what()));
+    }
+    for (Spectrum& p : map.pixels) p *= intensity;
     const Mat3 spin = Mat3(Transform::rotate(rotation, Vec3(0.0f, 1.0f, 0.0f)).matrix());
-    return std::make_unique<EnvironmentLight>(std::move(pixels), image.width, image.height,
+    return std::make_unique<EnvironmentLight>(std::move(map.pixels), map.width, map.height,
                                               placement * spin);
 }
 

@@ -28,6 +28,7 @@ struct PrincipledInputs {
     float clearcoat = 0.0f, clearcoat_roughness = 0.03f;
     float sheen = 0.0f, sheen_tint = 0.5f;
     Spectrum emission{0.0f};
+    Spectrum absorption{0.0f};
 };
 
 class PrincipledMaterial final : public Material {
@@ -59,6 +60,7 @@ public:
         return m_in.base_color.eval(si);
     }
     Spectrum emission() const override { return m_in.emission; }
+    Spectrum interior_absorption() const override { return m_in.absorption; }
 
 private:
     bool textured_roughness() const {
@@ -103,6 +105,8 @@ float number_in(const Params& params, const std::string& name, float fallback, f
 //   clearcoat_roughness  float                0.03  in [0, 1]
 //   sheen                float                0     in [0, 1], Burley's sheen at grazing angles
 //   sheen_tint           float                0.5   in [0, 1], white (0) to the base hue (1)
+//   absorption           spectrum             0     >= 0, Beer-Lambert coefficient of the inside
+//                                                   per scene unit (seen through transmission)
 //   emission             spectrum             0     emitted radiance (a light source when not
 //                                                   black), times
 //   emission_strength    float                1     >= 0
@@ -140,6 +144,10 @@ std::unique_ptr<Material> make_principled_material(const Params& params, Texture
     if (!(strength >= 0.0f) || !std::isfinite(strength))
         params.fail("'emission_strength' must be a finite number >= 0");
     in.emission = emission * strength;
+    in.absorption = params.get_spectrum("absorption", Spectrum(0.0f));
+    if (!(std::min({in.absorption.r, in.absorption.g, in.absorption.b}) >= 0.0f) ||
+        !std::isfinite(in.absorption.max_value()))
+        params.fail("'absorption' must be finite and not negative");
     return std::make_unique<PrincipledMaterial>(in);
 }
 

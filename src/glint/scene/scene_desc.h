@@ -53,6 +53,9 @@ struct SceneDesc {
     std::vector<std::shared_ptr<const MeshData>> meshes;
     // The camera came from an imported file: a later glint.camera replaces it.
     bool camera_imported = false;
+    // Width / height of the imported camera's view (glTF's aspectRatio), when it gives one:
+    // `glint render MODEL` sizes its image by it (import.cpp, load_model_scene).
+    std::optional<float> camera_aspect;
     // What importers read but could not map (e.g. an MTL statement), each naming the file
     // and line; the CLI prints them.
     std::vector<std::string> warnings;

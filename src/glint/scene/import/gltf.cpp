@@ -15,6 +15,7 @@
 #include <limits>
 #include <map>
 #include <set>
+#include <tuple>
 
 namespace glint {
 namespace {
@@ -68,6 +69,18 @@ Mat4 node_matrix(const tinygltf::Node& node) {
     if (node.scale.size() == 3)
         m = glm::scale(m, Vec3(node.scale[0], node.scale[1], node.scale[2]));
     return m;
+}
+
+// The extensions glint follows (docs/scene-language.md, "glTF"); a file that requires
+// another one is refused, as the specification asks.
+bool is_supported_extension(const std::string& name) {
+    static const std::set<std::string> supported = {
+        "KHR_lights_punctual",        "KHR_materials_emissive_strength",
+        "KHR_materials_specular",     "KHR_materials_ior",
+        "KHR_materials_transmission", "KHR_materials_volume",
+        "KHR_materials_clearcoat",    "KHR_materials_sheen",
+        "KHR_texture_transform"};
+    return supported.count(name) > 0;
 }
 
 class GltfImporter {
@@ -138,6 +151,21 @@ private:
         }
         while (!warning.empty() && warning.back() == '\n') warning.pop_back();
         if (!warning.empty()) warn(warning);
+        check_extensions();
+    }
+
+    // The specification: a loader must refuse a file that requires an extension it does not
+    // support; one that is only used may be ignored (glint says so).
+    void check_extensions() {
+        for (const std::string& name : m_model.extensionsRequired) {
+            if (!is_supported_extension(name))
+                fail(fmt::format("the file requires extension {}, which glint does not support",
+                                 name));
+        }
+        for (const std::string& name : m_model.extensionsUsed) {
+            if (!is_supported_extension(name) && m_warned_extensions.insert(name).second)
+                warn(fmt::format("extension {} is not supported (ignored)", name));
+        }
     }
 
     // The GLB container checked before tinygltf sees it: a header, a JSON chunk and an
@@ -485,15 +513,74 @@ private:
         return m_image_files.emplace(image_index, file).first->second;
     }
 
+    // KHR_texture_transform of a texture reference: glTF's uv' = T R S uv, in glTF's uv
+    // (v down). glint's uv has v up (t = 1 - v) and its image lookup too, so the same
+    // lookup is st = (su u + ou, sv t + 1 - sv - ov). Rotation has no glint counterpart.
+    struct UvTransform {
+        double su = 1.0, sv = 1.0, ou = 0.0, ov = 0.0;
+        auto key() const { return std::make_tuple(su, sv, ou, ov); }
+    };
+
+    template <typename Info>
+    UvTransform uv_transform(const Info& info, const std::string& where, const char* map) {
+        UvTransform t;
+        auto it = info.extensions.find("KHR_texture_transform");
+        if (it == info.extensions.end()) return t;
+        const tinygltf::Value& ext = it->second;
+        auto pair = [&](const char* key, double& a, double& b) {
+            if (!ext.Has(key)) return;
+            const tinygltf::Value& v = ext.Get(key);
+            if (!v.IsArray() || v.ArrayLen() != 2 || !v.Get(0).IsNumber() || !v.Get(1).IsNumber())
+                fail(fmt::format("{}: {}: KHR_texture_transform '{}' must be two numbers", where,
+                                 map, key));
+            a = v.Get(0).GetNumberAsDouble();
+            b = v.Get(1).GetNumberAsDouble();
+        };
+        double ou = 0.0, ov = 0.0;
+        pair("offset", ou, ov);
+        pair("scale", t.su, t.sv);
+        if (!std::isfinite(ou) || !std::isfinite(ov) || !std::isfinite(t.su) ||
+            !std::isfinite(t.sv) || t.su == 0.0 || t.sv == 0.0)
+            fail(
+                fmt::format("{}: {}: KHR_texture_transform needs finite values and a scale "
+                            "that is not zero",
+                            where, map));
+        t.ou = ou;
+        t.ov = 1.0 - t.sv - ov;
+        if (ext.Has("rotation") && ext.Get("rotation").IsNumber() &&
+            ext.Get("rotation").GetNumberAsDouble() != 0.0)
+            warn(fmt::format("{}: {}: KHR_texture_transform's rotation is ignored", where, map));
+        if (ext.Has("texCoord") && ext.Get("texCoord").IsNumber() &&
+            ext.Get("texCoord").GetNumberAsInt() != 0)
+            warn(fmt::format("{}: {}: uses TEXCOORD_{}; glint reads TEXCOORD_0", where, map,
+                             ext.Get("texCoord").GetNumberAsInt()));
+        return t;
+    }
+
+    // The texture a material's texture reference names (with its texture transform),
+    // made once per (texture, encoding, transform).
+    template <typename Info>
+    ObjectRef texture_of(const Info& info, bool colour, const std::string& where, const char* map) {
+        if (info.texCoord != 0)
+            warn(fmt::format("{}: {} uses TEXCOORD_{}; glint reads TEXCOORD_0", where, map,
+                             info.texCoord));
+        return texture(info.index, colour, uv_transform(info, where, map), where);
+    }
+
     // An image texture for a glTF texture: sRGB for colours, linear for data.
-    ObjectRef texture(int texture_index, bool colour, const std::string& where) {
-        const auto key = std::make_pair(texture_index, colour);
+    ObjectRef texture(int texture_index, bool colour, const UvTransform& uv,
+                      const std::string& where) {
+        const auto key = std::make_tuple(texture_index, colour, uv.key());
         auto it = m_textures.find(key);
         if (it != m_textures.end()) return it->second;
         const tinygltf::Texture& tex = at(m_model.textures, texture_index, "texture");
         Params params("image", where);
         params.set("file", image_file(tex.source));
         params.set("encoding", std::string(colour ? "srgb" : "linear"));
+        if (uv.key() != UvTransform().key()) {
+            params.set("scale", std::vector<double>{uv.su, uv.sv});
+            params.set("offset", std::vector<double>{uv.ou, uv.ov});
+        }
         if (tex.sampler >= 0) {
             const tinygltf::Sampler& s = at(m_model.samplers, tex.sampler, "sampler");
             if (s.wrapS != s.wrapT)
@@ -510,12 +597,202 @@ private:
         return ref;
     }
 
-    static double number_in(const tinygltf::ExtensionMap& extensions, const char* extension,
-                            const char* key, double fallback) {
-        auto it = extensions.find(extension);
-        if (it == extensions.end() || !it->second.Has(key) || !it->second.Get(key).IsNumber())
-            return fallback;
-        return it->second.Get(key).GetNumberAsDouble();
+    // An extension of a material, or nullptr.
+    static const tinygltf::Value* extension(const tinygltf::Material& m, const char* name) {
+        auto it = m.extensions.find(name);
+        return it == m.extensions.end() ? nullptr : &it->second;
+    }
+
+    double number(const tinygltf::Value* ext, const char* key, double fallback, double lo,
+                  double hi, const std::string& where) const {
+        if (ext == nullptr || !ext->Has(key)) return fallback;
+        const tinygltf::Value& v = ext->Get(key);
+        const double value = v.IsNumber() ? v.GetNumberAsDouble() : std::nan("");
+        if (!(value >= lo && value <= hi))
+            fail(fmt::format("{}: '{}' must be a number in [{}, {}]", where, key, lo, hi));
+        return value;
+    }
+
+    Vec3 colour(const tinygltf::Value* ext, const char* key, const Vec3& fallback,
+                const std::string& where) const {
+        if (ext == nullptr || !ext->Has(key)) return fallback;
+        const tinygltf::Value& v = ext->Get(key);
+        Vec3 c;
+        for (int i = 0; i < 3; ++i) {
+            const bool ok = v.IsArray() && v.ArrayLen() == 3 && v.Get(i).IsNumber();
+            c[i] = ok ? static_cast<float>(v.Get(i).GetNumberAsDouble()) : -1.0f;
+            if (!(c[i] >= 0.0f) || !std::isfinite(c[i]))
+                fail(fmt::format("{}: '{}' must be three finite numbers >= 0", where, key));
+        }
+        return c;
+    }
+
+    // Textures inside an extension that glint does not read, named in one warning each.
+    void warn_textures(const tinygltf::Value* ext, const char* name,
+                       std::initializer_list<const char*> keys, const std::string& where) {
+        for (const char* key : keys)
+            if (ext != nullptr && ext->Has(key))
+                warn(fmt::format("{}: {}.{} is ignored (its factor is used)", where, name, key));
+    }
+
+    // KHR_materials_specular and _ior: a dielectric's reflectance at normal incidence is
+    // F0 = min(((ior - 1) / (ior + 1))^2 specularColor, 1) specular. glint's `specular`
+    // gives F0 = 0.08 specular (a grey F0 up to 0.08); `ior` stays the transmission's.
+    void read_specular_and_ior(const tinygltf::Material& m, Params& params,
+                               const std::string& where) {
+        const tinygltf::Value* ior_ext = extension(m, "KHR_materials_ior");
+        // ior 0 is the specification's "no refraction, F0 = 1"; glint's glass needs >= 1.
+        double ior = number(ior_ext, "ior", 1.5, 0.0, 10.0, where);
+        if (ior < 1.0) {
+            warn(fmt::format("{}: KHR_materials_ior {} is read as 1", where, ior));
+            ior = 1.0;
+        }
+        if (ior_ext != nullptr) params.set("ior", ior);
+        const tinygltf::Value* ext = extension(m, "KHR_materials_specular");
+        if (ext == nullptr) return;
+        const double factor = number(ext, "specularFactor", 1.0, 0.0, 1.0, where);
+        const Vec3 tint = colour(ext, "specularColorFactor", Vec3(1.0f), where);
+        warn_textures(ext, "KHR_materials_specular", {"specularTexture", "specularColorTexture"},
+                      where);
+        if (tint.x != tint.y || tint.y != tint.z)
+            warn(
+                fmt::format("{}: KHR_materials_specular's colour is made grey (its mean): "
+                            "glint's specular reflection is not tinted",
+                            where));
+        const double f0_ior = std::pow((ior - 1.0) / (ior + 1.0), 2.0);
+        const double mean_tint = (tint.x + tint.y + tint.z) / 3.0;
+        const double f0 = std::min(f0_ior * mean_tint, 1.0) * factor;
+        const double specular = f0 / 0.08;
+        if (specular > 1.0)
+            warn(
+                fmt::format("{}: a specular reflectance of {:.3g} at normal incidence is "
+                            "limited to glint's 0.08",
+                            where, f0));
+        params.set("specular", std::min(specular, 1.0));
+    }
+
+    // KHR_materials_transmission and _volume. A path tracer has the real geometry, so the
+    // volume's thickness (a hint for rasterisers) is not needed; its attenuation becomes
+    // Beer-Lambert absorption sigma = -ln(attenuationColor) / attenuationDistance.
+    void read_transmission_and_volume(const tinygltf::Material& m, Params& params,
+                                      const std::string& where) {
+        if (const tinygltf::Value* ext = extension(m, "KHR_materials_transmission")) {
+            const double factor = number(ext, "transmissionFactor", 0.0, 0.0, 1.0, where);
+            if (ext->Has("transmissionTexture") && ext->Get("transmissionTexture").Has("index")) {
+                tinygltf::TextureInfo info;
+                info.index = ext->Get("transmissionTexture").Get("index").GetNumberAsInt();
+                if (factor != 1.0)
+                    warn(
+                        fmt::format("{}: transmissionFactor is ignored where the transmission "
+                                    "is a texture",
+                                    where));
+                params.set("transmission", texture(info.index, false, UvTransform(), where));
+            } else if (factor != 0.0) {
+                params.set("transmission", factor);
+            }
+        }
+        const tinygltf::Value* ext = extension(m, "KHR_materials_volume");
+        if (ext == nullptr) return;
+        warn_textures(ext, "KHR_materials_volume", {"thicknessTexture"}, where);
+        const double distance =
+            number(ext, "attenuationDistance", std::numeric_limits<double>::infinity(), 0.0,
+                   std::numeric_limits<double>::infinity(), where);
+        const Vec3 tint = colour(ext, "attenuationColor", Vec3(1.0f), where);
+        if (!std::isfinite(distance) || tint == Vec3(1.0f)) return;
+        if (!(distance > 0.0)) fail(fmt::format("{}: 'attenuationDistance' must be > 0", where));
+        std::vector<double> sigma(3);
+        for (int i = 0; i < 3; ++i) {
+            if (!(tint[i] > 0.0f && tint[i] <= 1.0f))
+                fail(fmt::format("{}: 'attenuationColor' must lie in (0, 1]", where));
+            sigma[static_cast<size_t>(i)] = -std::log(static_cast<double>(tint[i])) / distance;
+        }
+        params.set("absorption", sigma);
+    }
+
+    // KHR_materials_clearcoat and _sheen. glTF's sheen is a colour with its own roughness;
+    // glint's is Burley's, a weight tinted between white and the base hue: the weight is
+    // the colour's largest channel, white, and the roughness is not followed.
+    void read_coat_and_sheen(const tinygltf::Material& m, Params& params,
+                             const std::string& where) {
+        if (const tinygltf::Value* ext = extension(m, "KHR_materials_clearcoat")) {
+            warn_textures(
+                ext, "KHR_materials_clearcoat",
+                {"clearcoatTexture", "clearcoatRoughnessTexture", "clearcoatNormalTexture"}, where);
+            // Blender 3's Principled BSDF weighs its clear coat by a quarter (Burley's
+            // clearcoat lobe), and its exporter writes the weight as it is.
+            const double coat = number(ext, "clearcoatFactor", 0.0, 0.0, 1.0, where) *
+                                (from_blender() ? 0.25 : 1.0);
+            if (coat > 0.0) {
+                params.set("clearcoat", coat);
+                params.set("clearcoat_roughness",
+                           number(ext, "clearcoatRoughnessFactor", 0.0, 0.0, 1.0, where));
+            }
+        }
+        if (const tinygltf::Value* ext = extension(m, "KHR_materials_sheen")) {
+            warn_textures(ext, "KHR_materials_sheen",
+                          {"sheenColorTexture", "sheenRoughnessTexture"}, where);
+            const Vec3 sheen = colour(ext, "sheenColorFactor", Vec3(0.0f), where);
+            const float weight = std::min(std::max({sheen.x, sheen.y, sheen.z}), 1.0f);
+            if (weight > 0.0f) {
+                params.set("sheen", static_cast<double>(weight));
+                params.set("sheen_tint", 0.0);
+                warn(
+                    fmt::format("{}: KHR_materials_sheen is approximated by a white Burley "
+                                "sheen of weight {:.3g} (colour and roughness not followed)",
+                                where, weight));
+            }
+        }
+    }
+
+    // emissiveFactor x KHR_materials_emissive_strength, times the import's emission_scale.
+    void read_emission(const tinygltf::Material& m, Params& params, const std::string& where) {
+        Vec3 emission(0.0f);
+        if (m.emissiveFactor.size() == 3)
+            emission = Vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+        // glint's area lights emit one radiance over their surface, so an emissive
+        // texture cannot be followed: the factor alone is the emission.
+        if (m.emissiveTexture.index >= 0 && emission != Vec3(0.0f)) {
+            warn(
+                fmt::format("{}: emissiveTexture is ignored (an emitting surface emits its "
+                            "emissiveFactor evenly)",
+                            where));
+        }
+        if (emission == Vec3(0.0f)) return;
+        params.set("emission", numbers_of(emission));
+        const double strength =
+            number(extension(m, "KHR_materials_emissive_strength"), "emissiveStrength", 1.0, 0.0,
+                   std::numeric_limits<double>::max(), where) *
+            m_target.emission_scale;
+        if (strength != 1.0) params.set("emission_strength", strength);
+    }
+
+    void read_pbr(const tinygltf::Material& m, Params& params, const std::string& where) {
+        const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
+        Vec3 base(1.0f);
+        if (pbr.baseColorFactor.size() >= 3)
+            base = Vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
+        if (pbr.baseColorTexture.index >= 0) {
+            params.set("base_color",
+                       texture_of(pbr.baseColorTexture, true, where, "baseColorTexture"));
+            if (base != Vec3(1.0f))
+                warn(
+                    fmt::format("{}: baseColorFactor is ignored where the base colour is a "
+                                "texture",
+                                where));
+        } else {
+            params.set("base_color", numbers_of(base));
+        }
+        params.set("metallic", pbr.metallicFactor);
+        params.set("roughness", pbr.roughnessFactor);
+        if (pbr.metallicRoughnessTexture.index >= 0) {
+            params.set("metallic_roughness", texture_of(pbr.metallicRoughnessTexture, false, where,
+                                                        "metallicRoughnessTexture"));
+        }
+        if (m.normalTexture.index >= 0) {
+            params.set("normal_map", texture_of(m.normalTexture, false, where, "normalTexture"));
+            if (m.normalTexture.scale != 1.0)
+                warn(fmt::format("{}: normalTexture.scale is ignored", where));
+        }
     }
 
     // The principled material for a glTF material (see docs/scene-language.md, "glTF").
@@ -531,66 +808,18 @@ private:
             params.set("roughness", 1.0);
         } else {
             const tinygltf::Material& m = at(m_model.materials, material_index, "material");
-            const tinygltf::PbrMetallicRoughness& pbr = m.pbrMetallicRoughness;
-            auto check_uv = [&](int tex_coord, const char* map) {
-                if (tex_coord != 0)
-                    warn(fmt::format("material {}: {} uses TEXCOORD_{}; glint reads TEXCOORD_0",
-                                     material_index, map, tex_coord));
-            };
-            Vec3 base(1.0f);
-            if (pbr.baseColorFactor.size() >= 3)
-                base = Vec3(pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]);
-            if (pbr.baseColorTexture.index >= 0) {
-                check_uv(pbr.baseColorTexture.texCoord, "baseColorTexture");
-                params.set("base_color", texture(pbr.baseColorTexture.index, true, where));
-                if (base != Vec3(1.0f))
-                    warn(
-                        fmt::format("material {}: baseColorFactor is ignored where the base "
-                                    "colour is a texture",
-                                    material_index));
-            } else {
-                params.set("base_color", numbers_of(base));
-            }
-            params.set("metallic", pbr.metallicFactor);
-            params.set("roughness", pbr.roughnessFactor);
-            if (pbr.metallicRoughnessTexture.index >= 0) {
-                check_uv(pbr.metallicRoughnessTexture.texCoord, "metallicRoughnessTexture");
-                params.set("metallic_roughness",
-                           texture(pbr.metallicRoughnessTexture.index, false, where));
-            }
-            if (m.normalTexture.index >= 0) {
-                check_uv(m.normalTexture.texCoord, "normalTexture");
-                params.set("normal_map", texture(m.normalTexture.index, false, where));
-                if (m.normalTexture.scale != 1.0)
-                    warn(
-                        fmt::format("material {}: normalTexture.scale is ignored", material_index));
-            }
-            Vec3 emission(0.0f);
-            if (m.emissiveFactor.size() == 3)
-                emission = Vec3(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
-            // glint's area lights emit one radiance over their surface, so an emissive
-            // texture cannot be followed: the factor alone is the emission.
-            if (m.emissiveTexture.index >= 0 && emission != Vec3(0.0f)) {
-                warn(fmt::format("material {}: emissiveTexture is ignored (an emitting surface "
-                                 "emits its emissiveFactor evenly)",
-                                 material_index));
-            }
-            if (emission != Vec3(0.0f)) params.set("emission", numbers_of(emission));
-            const double strength =
-                number_in(m.extensions, "KHR_materials_emissive_strength", "emissiveStrength", 1.0);
-            if (strength != 1.0) params.set("emission_strength", strength);
-            const double transmission =
-                number_in(m.extensions, "KHR_materials_transmission", "transmissionFactor", 0.0);
-            if (transmission != 0.0) params.set("transmission", transmission);
-            if (m.extensions.count("KHR_materials_ior"))
-                params.set("ior", number_in(m.extensions, "KHR_materials_ior", "ior", 1.5));
+            const std::string what = fmt::format("material {}", material_index);
+            read_pbr(m, params, what);
+            read_emission(m, params, what);
+            read_specular_and_ior(m, params, what);
+            read_transmission_and_volume(m, params, what);
+            read_coat_and_sheen(m, params, what);
             if (m.alphaMode != "OPAQUE")
-                warn(fmt::format("material {}: alphaMode {} is not supported; rendered opaque",
-                                 material_index, m.alphaMode));
+                warn(fmt::format("{}: alphaMode {} is not supported; rendered opaque", what,
+                                 m.alphaMode));
             for (const auto& [name, value] : m.extensions) {
-                if (name != "KHR_materials_emissive_strength" &&
-                    name != "KHR_materials_transmission" && name != "KHR_materials_ior")
-                    warn(fmt::format("material {}: extension {} is ignored", material_index, name));
+                if (!is_supported_extension(name) && m_warned_extensions.insert(name).second)
+                    warn(fmt::format("{}: extension {} is not supported (ignored)", what, name));
             }
         }
         m_desc.materials.push_back(std::move(params));
@@ -610,19 +839,45 @@ private:
         params.set("eye", numbers_of(eye));
         params.set("look_at", numbers_of(eye + forward));
         params.set("up", numbers_of(up));
+        double aspect = 0.0;
         if (camera.type == "orthographic") {
             params.set("type", std::string("orthographic"));
             // ymag is half the view's height; glint's scale is the whole height.
             params.set("scale", 2.0 * camera.orthographic.ymag);
+            if (camera.orthographic.ymag > 0.0)
+                aspect = camera.orthographic.xmag / camera.orthographic.ymag;
         } else {
             params.set("fov", camera.perspective.yfov * 180.0 / 3.14159265358979323846);
+            aspect = camera.perspective.aspectRatio;
         }
+        if (std::isfinite(aspect) && aspect > 0.0)
+            m_desc.camera_aspect = static_cast<float>(aspect);
         m_desc.camera = std::move(params);
         m_desc.camera_imported = true;
     }
 
-    // KHR_lights_punctual. glTF states candela (point, spot) and lux (directional); glint
-    // takes them as W/sr and W/m^2 numerically, times light_scale (see the docs).
+    // Whether Blender's exporter wrote the file: where it writes what Blender does not
+    // render, glint reads what Blender renders (docs/scene-language.md, "glTF").
+    bool from_blender() const {
+        return m_model.asset.generator.rfind("Khronos glTF Blender I/O", 0) == 0;
+    }
+
+    // The angle (radians) where a spot's edge begins to fade: the file's innerConeAngle, as
+    // the specification says, except in a file from Blender's exporter. Blender fades a
+    // spot with blend b over cos(angle) from cos(outer) to cos(outer) + (1 - cos(outer)) b
+    // (smoothstep in the cosine, as glint's spot does), but its exporter writes inner =
+    // outer (1 - b), a wider fade; reading b back from that gives Blender's own cone.
+    double falloff_start(double inner, double outer) const {
+        if (!from_blender() || !(outer > 0.0)) return inner;
+        const double blend = std::clamp(1.0 - inner / outer, 0.0, 1.0);
+        const double cos_outer = std::cos(outer);
+        return std::acos(std::min(cos_outer + (1.0 - cos_outer) * blend, 1.0));
+    }
+
+    // KHR_lights_punctual. glTF states candela (point, spot) and lux (directional); glint's
+    // lights take W/sr and W/m^2. light_scale is watts per lumen: 1/683 by default, the
+    // luminous efficacy that defines the candela (what Blender's importer and exporter use),
+    // 1 for the unitless reading of real-time viewers (see the docs).
     void add_light(int light_index, const Mat4& world) {
         const tinygltf::Light& light = at(m_model.lights, light_index, "light");
         const std::string where = fmt::format("{}: light {}", origin(), light_index);
@@ -641,10 +896,10 @@ private:
             params.set("position", numbers_of(position));
             params.set("look_at", numbers_of(position + direction));
             params.set("intensity", numbers_of(power));
-            const double outer = light.spot.outerConeAngle * 180.0 / 3.14159265358979323846;
-            const double inner = light.spot.innerConeAngle * 180.0 / 3.14159265358979323846;
-            params.set("cone_angle", outer);
-            params.set("falloff_start", std::min(inner, outer));
+            const double outer = light.spot.outerConeAngle;
+            const double inner = falloff_start(light.spot.innerConeAngle, outer);
+            params.set("cone_angle", glm::degrees(outer));
+            params.set("falloff_start", glm::degrees(std::min(inner, outer)));
         } else if (light.type == "directional") {
             params = Params("directional_light", where);
             params.set("direction", numbers_of(direction));
@@ -665,7 +920,9 @@ private:
     std::map<int, int> m_group_of_mesh;  // repeated mesh -> its group
     std::map<int, std::vector<Primitive>> m_primitives;
     std::map<int, ObjectRef> m_materials;
-    std::map<std::pair<int, bool>, ObjectRef> m_textures;
+    std::map<std::tuple<int, bool, std::tuple<double, double, double, double>>, ObjectRef>
+        m_textures;
+    std::set<std::string> m_warned_extensions;
     std::map<int, std::string> m_image_files;
     Bounds3 m_bounds;
 };

@@ -134,8 +134,12 @@ void import_into(SceneDesc& desc, const Params& params) {
     target.path = path.string();
     target.transform = params.get_transform("transform");
     if (params.has("material")) target.material = params.get_ref("material", "material");
-    target.light_scale = params.get_float("light_scale", 1.0f);
-    if (!(target.light_scale >= 0.0f)) params.fail("'light_scale' must not be negative");
+    target.light_scale = params.get_float("light_scale", kWattsPerLumen);
+    if (!(target.light_scale >= 0.0f) || !std::isfinite(target.light_scale))
+        params.fail("'light_scale' must be a finite number >= 0");
+    target.emission_scale = params.get_float("emission_scale", 1.0f);
+    if (!(target.emission_scale >= 0.0f) || !std::isfinite(target.emission_scale))
+        params.fail("'emission_scale' must be a finite number >= 0");
     target.where = params.where();
     params.check_all_used();
     try {
@@ -181,6 +185,15 @@ SceneDesc load_model_scene(const std::string& path) {
         camera.set("look_at", std::vector<double>{center.x, center.y, center.z});
         camera.set("fov", static_cast<double>(fov));
         desc.camera = std::move(camera);
+    }
+    if (desc.camera_aspect) {
+        // The file's camera says its aspect ratio: the image keeps the default height and
+        // takes the width that ratio gives (--res still decides, see the docs).
+        const double width = std::clamp(std::round(512.0 * *desc.camera_aspect), 1.0, 65536.0);
+        Params render("render", fmt::format("{} (camera aspect ratio)", path));
+        render.set("width", width);
+        render.set("height", 512.0);
+        desc.render = std::move(render);
     }
     // A pbrt file is a whole scene: without lights it is dark, as pbrt renders it.
     if (desc.lights.empty() && !desc.background && extension_of(path) != ".pbrt") {

@@ -8,16 +8,22 @@
 
 namespace glint {
 
+/// The luminous efficacy that defines the candela: 683 lm/W (at 540 THz).
+inline constexpr float kWattsPerLumen = 1.0f / 683.0f;
+
 /// How one file is brought in.
 struct ImportTarget {
     std::string path;                   ///< the file, as found (relative to the cwd or absolute)
     Transform transform;                ///< placed at this transform in the world
     std::optional<ObjectRef> material;  ///< replaces every material of the file
-    float light_scale = 1.0f;           ///< multiplies glTF light intensities (see the docs)
-    std::string where;                  ///< the script location of the import, for messages
+    /// Watts per glTF light unit: candela -> W/sr, lux -> W/m^2 (see the docs).
+    float light_scale = kWattsPerLumen;
+    float emission_scale = 1.0f;  ///< multiplies glTF emission (see the docs)
+    std::string where;            ///< the script location of the import, for messages
 };
 
-/// glint.import{ file = ..., transform = ..., material = ..., light_scale = ... }: reads the
+/// glint.import{ file = ..., transform = ..., material = ..., light_scale = ...,
+/// emission_scale = ... }: reads the
 /// parameters (file names relative to desc.directory), imports the file into `desc` and
 /// checks that every parameter was used. Throws glint::Error naming the script line and
 /// the file (with its line or byte offset where the format has one).

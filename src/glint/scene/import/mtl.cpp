@@ -239,7 +239,7 @@ Params mtl_to_params(const MtlMaterial& m, const std::string& directory,
     } else if (illum == 3 || illum == 5) {
         // Ray-traced reflection: a mirror tinted by Ks (1 where Ks is not given).
         params = Params("mirror", m.where);
-        params.set("reflectance", as_numbers(m.ks ? glm::min(ks, Vec3(1.0f)) : Vec3(1.0f)));
+        params.set("tint", as_numbers(m.ks ? glm::min(ks, Vec3(1.0f)) : Vec3(1.0f)));
     } else if (illum != 0 && illum != 1 && max_of(ks) > 0.0f) {
         // Kd + Ks with exponent Ns: the Phong model OBJ itself describes. glint's Phong
         // keeps Kd + Ks <= 1 so that the surface creates no energy: both are scaled down

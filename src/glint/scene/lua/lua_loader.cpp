@@ -465,8 +465,8 @@ int transform_multiply(lua_State* L) {
     return 1;
 }
 
-// glint.import{ file = ..., transform = ..., material = ..., light_scale = ... }: the file's
-// content goes into the scene; nothing is returned.
+// glint.import{ file = ..., transform = ..., material = ..., light_scale = ...,
+// emission_scale = ... }: the file's content goes into the scene; nothing is returned.
 int import_model(lua_State* L) {
     SceneDesc& desc = desc_of(L);
     import_into(desc, to_params(L, 1, "import"));
