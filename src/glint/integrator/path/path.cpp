@@ -1,6 +1,7 @@
 #include <glint/core/sampler.h>
 #include <glint/core/sobol_sampler.h>
 #include <glint/integrator/path/path.h>
+#include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/material/material.h>
@@ -130,12 +131,12 @@ template <typename SamplerType>
 
     // Russian roulette on the throughput without the radiance scaling of refraction,
     // which would otherwise kill paths that are about to leave the glass.
-    const float rr_throughput = (path.beta * path.eta_scale).max_value();
-    if (depth >= 2 && rr_throughput < 1.0f) {
-        const float q = std::max(0.0f, 1.0f - rr_throughput);
-        if (sampler.get_1d() < q) return false;
-        path.beta /= 1.0f - q;
-    }
+    float survival;
+    if (!survives_throughput_roulette(
+            depth, (path.beta * path.eta_scale).max_value(), [&] { return sampler.get_1d(); },
+            survival))
+        return false;
+    if (survival < 1.0f) path.beta /= survival;
     return !path.beta.is_black();
 }
 

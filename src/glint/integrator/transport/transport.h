@@ -92,6 +92,25 @@ enum class LightWeighting {
     kMis,   ///< the power heuristic against the BSDF's density (delta lights: weight 1)
 };
 
+/// A point on a light as next-event estimation samples it: the light chosen in proportion
+/// to power, then Light::sample_li's point on it, with the densities of both (choice.pmf,
+/// sample->pdf). Next-event estimation and bdpt's s = 1 strategy both start from it.
+struct LightPoint {
+    LightSampler::Choice choice;
+    std::optional<LightSample> sample;  ///< empty when no light was chosen or it gave no point
+};
+
+/// Chooses a light with `u_light` and samples a point on it as seen from `p` with (u,
+/// u_select). Both members are built in place (no copy of the light's sample: a copy right
+/// after the light's stores stalls the CPU, see sample_scattering).
+[[gnu::always_inline]] inline LightPoint sample_light_point(const Scene& scene, const Vec3& p,
+                                                            const Vec2& u, float u_light,
+                                                            float u_select) {
+    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
+    if (!choice.light) return LightPoint{choice, std::nullopt};
+    return LightPoint{choice, choice.light->sample_li(p, u, u_select)};
+}
+
 /// A direct-light estimate at a surface point, valid if nothing blocks the way to `target`.
 struct DirectLight {
     Spectrum contribution;  ///< f L |cos| / (pmf pdf), times the MIS weight
@@ -115,12 +134,12 @@ template <typename SamplerType = Sampler>
     const Vec2 u = sampler.get_2d();
     const float u_light = sampler.get_1d();
     const float u_select = sampler.get_1d();
-    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
-    if (!choice.light) return std::nullopt;
     // The light's sample is read where the light wrote it, never copied as a whole: a copy
     // right after the light's stores stalls the CPU (see sample_scattering).
-    const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);
+    const LightPoint point = sample_light_point(scene, si.p, u, u_light, u_select);
+    const std::optional<LightSample>& ls = point.sample;
     if (!ls || ls->L.is_black()) return std::nullopt;
+    const LightSampler::Choice& choice = point.choice;
     Spectrum f_cos;
     float bsdf_pdf;
     if (!bsdf_towards_light(*ls, si, bsdf, wo_local, f_cos, bsdf_pdf)) return std::nullopt;
