@@ -113,6 +113,9 @@ public:
         return m_environment ? m_environment->le_escaped(direction) : m_background;
     }
     const SceneStats& stats() const { return m_stats; }
+    /// Whether a material only bounds media (Material::is_interface): shadow rays then
+    /// cross such surfaces (transport/visibility.h); otherwise any hit blocks them.
+    bool has_interfaces() const { return m_has_interfaces; }
     /// Every placed shape of the world, in world geometry id order (an instance's shapes in
     /// their local id order); built on each call.
     std::vector<ScenePlacement> placements() const;
@@ -177,6 +180,7 @@ private:
     Spectrum m_background;
     const Light* m_environment = nullptr;  // one of m_lights
     SceneStats m_stats;
+    bool m_has_interfaces = false;
 };
 
 }  // namespace glint

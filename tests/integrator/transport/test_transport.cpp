@@ -1,14 +1,20 @@
-// The transport layer's shared pieces: roulette's two rules, the start of a light path, and
-// photons that scatter through the same geometric-side check as every other walk.
+// The transport layer's shared pieces: roulette's two rules, the start of a light path,
+// photons that scatter through the same geometric-side check as every other walk, and
+// visibility as transmittance through surfaces that only bound media.
 #include <glint/core/rng.h>
 #include <glint/integrator/photon/photon_tracer.h>
 #include <glint/integrator/transport/light_path_start.h>
 #include <glint/integrator/transport/roulette.h>
+#include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/visibility.h>
+#include <glint/material/material.h>
 
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
 
 #include <cmath>
+#include <string>
+#include <utility>
 
 using namespace glint;
 
@@ -163,4 +169,87 @@ TEST(PhotonTracer, EndsAPhotonThatWouldLeaveThroughTheWrongSideOfItsShadingNorma
     }
     EXPECT_GT(above, 5000);  // the photons did reach the upper floor
     EXPECT_EQ(below, 0);
+}
+
+namespace {
+
+// A point light above three sheets at heights 1, 2 and 3 between y = 0 and y = 4; `middle`
+// is the material of the sheet at y = 2.
+std::string sheets(const std::string& middle) {
+    std::string code = R"(
+        glint.point_light{ position = {0, 5, 0}, intensity = 1 }
+    )";
+    for (const auto& [y, material] : {std::pair<int, std::string>{1, "glint.interface{}"},
+                                      {2, middle},
+                                      {3, "glint.interface{}"}}) {
+        const std::string h = std::to_string(y);
+        code += "glint.quad{ vertices = { {-1, " + h + ", 1}, {1, " + h + ", 1}, {1, " + h +
+                ", -1}, {-1, " + h + ", -1} }, material = " + material + " }\n";
+    }
+    return code;
+}
+
+}  // namespace
+
+// Surfaces that only bound media let a shadow ray through whole: transmittance 1 through
+// any number of them, 0 where an opaque surface stands among them.
+TEST(Visibility, TransmittanceThroughInterfaceOnlySurfacesIsOne) {
+    const test::BuiltScene open = test::build_lua(sheets("glint.interface{}"), "sheets.lua");
+    ASSERT_TRUE(open.scene->has_interfaces());
+    const Spectrum through = transmittance(*open.scene, Vec3(0.0f), Vec3(0.0f, 4.0f, 0.0f));
+    EXPECT_EQ(through.max_value(), 1.0f);
+    EXPECT_EQ(through.average(), 1.0f);
+    // Towards a target short of the sheets, and from above them, alike.
+    EXPECT_EQ(transmittance(*open.scene, Vec3(0.0f, 4.5f, 0.0f), Vec3(0.0f, 0.5f, 0.0f)).average(),
+              1.0f);
+
+    const test::BuiltScene blocked = test::build_lua(sheets("glint.diffuse{}"), "sheets.lua");
+    EXPECT_TRUE(transmittance(*blocked.scene, Vec3(0.0f), Vec3(0.0f, 4.0f, 0.0f)).is_black());
+    // Past the edge of the sheets nothing is in the way.
+    EXPECT_EQ(
+        transmittance(*blocked.scene, Vec3(3.0f, 0.0f, 0.0f), Vec3(3.0f, 4.0f, 0.0f)).average(),
+        1.0f);
+}
+
+// Without interfaces, visibility is Embree's occlusion query: 0 or 1.
+TEST(Visibility, WithoutInterfacesIsTheOcclusionQuery) {
+    const test::BuiltScene b = test::build_lua(R"(
+        glint.point_light{ position = {0, 5, 0}, intensity = 1 }
+        glint.quad{ vertices = { {-1, 2, 1}, {1, 2, 1}, {1, 2, -1}, {-1, 2, -1} },
+                    material = glint.diffuse{} }
+    )",
+                                               "sheet.lua");
+    ASSERT_FALSE(b.scene->has_interfaces());
+    for (const float x : {0.0f, 0.5f, 1.5f, 3.0f}) {
+        const Vec3 from(x, 0.0f, 0.0f), to(x, 4.0f, 0.0f);
+        const bool blocked = b.scene->accel().occluded(from, to - from, 0.0f, kShadowRayEnd);
+        EXPECT_EQ(transmittance(*b.scene, from, to).average(), blocked ? 0.0f : 1.0f) << x;
+    }
+}
+
+// A medium that only absorbs (an absorbing dielectric's inside) lets exp(-sigma_a d) through
+// a segment of length d, per channel, and the dielectric names it as its inside.
+TEST(Medium, AbsorbingMediumFollowsBeerLambert) {
+    const AbsorbingMedium medium(Spectrum(0.5f));
+    const Ray ray{Vec3(0.0f), Vec3(0.0f, 2.0f, 0.0f), 0.0f, kInfinity};
+    EXPECT_FLOAT_EQ(medium.transmittance(ray, 1.5f).average(), std::exp(-0.5f * 3.0f));
+    const test::BuiltScene b = test::build_lua(R"(
+        glint.sphere{ center = {0, 0, 0}, radius = 1,
+                      material = glint.dielectric{ ior = 1.5, absorption = 0.5 } }
+        glint.sphere{ center = {3, 0, 0}, radius = 1, material = glint.dielectric{ ior = 1.5 } }
+    )",
+                                               "glass.lua");
+    SurfaceInteraction si;
+    // From inside the absorbing sphere out through its back face: one unit of glass.
+    ASSERT_TRUE(b.scene->intersect(Ray{Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), 0.0f, kInfinity}, si));
+    EXPECT_FALSE(si.front_face);
+    const MediumInterface absorbing = si.material->medium_interface();
+    ASSERT_NE(absorbing.inside, nullptr);
+    EXPECT_EQ(absorbing.outside, nullptr);
+    EXPECT_FLOAT_EQ(segment_transmittance(Ray{Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f)}, si).average(),
+                    std::exp(-0.5f));
+    // Clear glass separates no media.
+    ASSERT_TRUE(b.scene->intersect(
+        Ray{Vec3(3.0f, 0.0f, 0.0f), Vec3(1.0f, 0.0f, 0.0f), 0.0f, kInfinity}, si));
+    EXPECT_FALSE(si.material->medium_interface().is_transition());
 }

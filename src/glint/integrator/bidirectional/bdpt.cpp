@@ -228,8 +228,9 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         const Spectrum f = pt.bsdf->eval(pt.si.to_local(pt.si.wo), wi_local);
         if (f.is_black()) return result;
         ++counter.rays;
-        if (scene.occluded(pt.si, ls->p)) return result;
-        L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf));
+        const Spectrum visible = transmittance(scene, pt.si, ls->p);
+        if (visible.is_black()) return result;
+        L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf)) * visible;
         sampled.kind = PathVertex::Kind::kLight;
         sampled.light = choice.light;
         sampled.infinite = choice.light->is_infinite() || choice.light->is_delta_direction();
@@ -255,8 +256,9 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         if (f_camera.is_black()) return result;
         const float g = abs_cos_theta(w_light) * abs_cos_theta(w_camera) / dist2;
         ++counter.rays;
-        if (scene.occluded(pt.si, qs.p)) return result;
-        L = qs.beta * f_light * f_camera * pt.beta * g;
+        const Spectrum visible = transmittance(scene, pt.si, qs.p);
+        if (visible.is_black()) return result;
+        L = qs.beta * f_light * f_camera * pt.beta * g * visible;
     }
     if (L.is_black()) return result;
     result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch,

@@ -29,6 +29,15 @@ void record_aov(AovSample* aov, const SurfaceInteraction& si, const Material* ma
     aov->depth = si.t;
 }
 
+// The direct light of a path whose shadow ray a surface blocked, in a scene where that
+// surface may only bound media: what the interfaces on the way let through.
+template <typename PathState>
+void add_direct_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
+                                   PathState& path) {
+    const Spectrum visible = transmittance_through_interfaces(scene, shadow);
+    if (!visible.is_black()) path.L += path.beta * path.direct * visible;
+}
+
 }  // namespace
 
 Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
@@ -44,7 +53,11 @@ Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler
         if (!scatter_at_hit(scene, path, depth, arena)) break;
         if (const std::optional<Vec3> target = sample_light<Sampler>(scene, path)) {
             ++counter.rays;
-            if (!scene.occluded(path.si, *target)) path.L += path.beta * path.direct;
+            if (!scene.has_interfaces()) {
+                if (!scene.occluded(path.si, *target)) path.L += path.beta * path.direct;
+            } else {
+                add_direct_through_interfaces(scene, Scene::shadow_ray(path.si, *target), path);
+            }
         }
         if (!continue_path<Sampler>(path, depth)) break;
     }
@@ -246,6 +259,14 @@ void PathIntegrator::trace_packet_with(const Scene& scene, PerLane<PathState>& p
             for_each_lane(shadowed & ~blocked, [&](int lane) {
                 paths[lane].L += paths[lane].beta * paths[lane].direct;
             });
+            // A lane blocked only by surfaces that bound media sees the light after all.
+            if (scene.has_interfaces()) {
+                for_each_lane(blocked, [&](int lane) {
+                    add_direct_through_interfaces(
+                        scene, Scene::ShadowRay{shadow_origins[lane], shadow_directions[lane]},
+                        paths[lane]);
+                });
+            }
         }
 
         for_each_lane(active, [&](int lane) GLINT_INLINE_LAMBDA {

@@ -1,4 +1,5 @@
 #include <glint/integrator/transport/camera_connection.h>
+#include <glint/integrator/transport/visibility.h>
 
 namespace glint {
 namespace {
@@ -24,8 +25,10 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
         bsdf.eval(si.to_local(si.wo), wi_local, TransportMode::kImportance, si.to_local(si.ng));
     if (f.is_black()) return std::nullopt;
     ++rays;
-    if (scene.occluded(si, lens->p_lens)) return std::nullopt;
-    return CameraConnection{*lens, beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We};
+    const Spectrum visible = transmittance(scene, si, lens->p_lens);
+    if (visible.is_black()) return std::nullopt;
+    return CameraConnection{*lens,
+                            beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We * visible};
 }
 
 std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
@@ -40,10 +43,12 @@ std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene
     if (Le.is_black()) return std::nullopt;
     const float side_pdf = light.emitted(p, n, -n).is_black() ? 1.0f : 0.5f;
     ++rays;
-    if (scene.occluded(Ray{p, lens->p_lens - p, 0.0f, kShadowRayEnd})) return std::nullopt;
+    const Spectrum visible = transmittance(scene, p, lens->p_lens);
+    if (visible.is_black()) return std::nullopt;
     // p was chosen with density pdf_origin per area and the lens point with lens->pdf per
     // solid angle at p: Le |cos| We / (pdf_origin side_pdf pdf).
-    return CameraConnection{*lens, Le * lens->We * (cosine / (pdf_origin * side_pdf * lens->pdf))};
+    return CameraConnection{
+        *lens, Le * lens->We * (cosine / (pdf_origin * side_pdf * lens->pdf)) * visible};
 }
 
 }  // namespace glint

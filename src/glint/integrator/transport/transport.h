@@ -5,6 +5,7 @@
 //
 //   segment_transmittance   what the medium a segment ran through lets pass (Beer-Lambert
 //                           inside an absorbing dielectric today; participating media here)
+//   transmittance           what a shadow ray lets pass (visibility.h)
 //   emitted_radiance        emission seen at a hit
 //   sample_light_arrival /  next-event estimation: one light sample, or one light chosen by
 //   sample_direct_light     power and sampled, in one documented order of sample draws
@@ -20,6 +21,7 @@
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/transport/shading.h>
+#include <glint/integrator/transport/visibility.h>
 #include <glint/material/bsdf.h>
 #include <glint/scene/scene.h>
 
@@ -35,15 +37,16 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
     return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
-/// The fraction of light that survives the segment `ray` travelled to reach `si`: Beer-
-/// Lambert absorption exp(-sigma_a t |d|) when the segment ran inside a dielectric with
-/// interior absorption (the hit is on the back of its surface), 1 otherwise. Every
-/// integrator multiplies its throughput by this at every hit, camera and light paths alike.
+/// The fraction of light that survives the segment `ray` travelled to reach `si`: the
+/// transmittance of the medium the segment ran through, which the hit's MediumInterface
+/// names (the side the ray arrived from); 1 in vacuum. Only the insides of closed shapes
+/// hold media today (an absorbing dielectric's Beer-Lambert interior), so a front-face hit
+/// arrived through vacuum and costs nothing. Every integrator multiplies its throughput by
+/// this at every hit, camera and light paths alike.
 inline Spectrum segment_transmittance(const Ray& ray, const SurfaceInteraction& si) {
     if (si.front_face) return Spectrum(1.0f);
-    const Spectrum sigma = si.material->interior_absorption();
-    if (sigma.is_black()) return Spectrum(1.0f);
-    return exp(sigma * (-si.t * glm::length(ray.direction)));
+    const Medium* medium = si.material->medium_interface().arriving(false);
+    return medium ? medium->transmittance(ray, si.t) : Spectrum(1.0f);
 }
 
 /// Radiance the surface at `si` emits back along the ray that found it (zero when it is not
@@ -114,7 +117,7 @@ struct LightPoint {
 /// A direct-light estimate at a surface point, valid if nothing blocks the way to `target`.
 struct DirectLight {
     Spectrum contribution;  ///< f L |cos| / (pmf pdf), times the MIS weight
-    Vec3 target;            ///< the point on the light; Scene::occluded(si, target) decides
+    Vec3 target;            ///< the point on the light; transmittance(scene, si, target) decides
 };
 
 /// Next-event estimation, the one estimator of direct light that every integrator uses: a
