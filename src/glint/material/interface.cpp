@@ -4,10 +4,11 @@
 namespace glint {
 namespace {
 
-// A surface that only bounds media: it neither reflects nor bends light. Walks cross it as
-// an index-matched smooth interface (eta = 1: Fresnel reflectance 0, the direction
-// unchanged), so every integrator passes straight through without knowing about it;
-// shadow rays pass through it too (transport/visibility.h).
+// A surface that only bounds media: it neither reflects nor bends light. Scene::intersect
+// passes through it, so walks never stop there, and so do shadow rays
+// (transport/visibility.h). Its BSDF, an index-matched smooth interface (eta = 1: Fresnel
+// reflectance 0, the direction unchanged), serves only code that meets it through the
+// acceleration structure directly.
 class InterfaceMaterial final : public Material {
 public:
     const Bsdf* bsdf(const SurfaceInteraction&, Arena& arena) const override {

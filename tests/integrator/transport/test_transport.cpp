@@ -9,6 +9,7 @@
 #include <glint/integrator/transport/visibility.h>
 #include <glint/material/material.h>
 
+#include <glint/film/image.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
 
@@ -252,4 +253,50 @@ TEST(Medium, AbsorbingMediumFollowsBeerLambert) {
     ASSERT_TRUE(b.scene->intersect(
         Ray{Vec3(3.0f, 0.0f, 0.0f), Vec3(1.0f, 0.0f, 0.0f), 0.0f, kInfinity}, si));
     EXPECT_FALSE(si.material->medium_interface().is_transition());
+}
+
+namespace {
+
+// A diffuse floor under a square light, seen from above; with `sheets`, interface-only
+// sheets stand between the camera and the floor and between the light and the floor.
+std::string floor_scene(const std::string& integrator, int seed, bool sheets) {
+    std::string code = R"(
+        glint.camera{ eye = {0, 3, 0.01}, look_at = {0, 0, 0}, fov = 50 }
+        glint.render{ width = 16, height = 16, spp = 64, max_depth = 6, integrator = ')" +
+                       integrator + "', seed = " + std::to_string(seed) + R"( }
+        glint.quad{ vertices = { {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2} },
+                    material = glint.diffuse{ reflectance = 0.6 } }
+        glint.quad{ vertices = { {0.5, 2, -1}, {1.5, 2, -1}, {1.5, 2, 1}, {0.5, 2, 1} },
+                    material = glint.emissive{ radiance = 4, two_sided = true } }
+    )";
+    if (sheets) {
+        code += R"(
+        glint.quad{ vertices = { {-3, 1, 3}, {3, 1, 3}, {3, 1, -3}, {-3, 1, -3} },
+                    material = glint.interface{} }
+        glint.quad{ vertices = { {-3, 2.5, 3}, {3, 2.5, 3}, {3, 2.5, -3}, {-3, 2.5, -3} },
+                    material = glint.interface{} }
+        )";
+    }
+    return code;
+}
+
+}  // namespace
+
+// Walks and shadow rays cross interface-only surfaces unchanged: the image with them agrees
+// with the image without them within the noise, for the path tracer (NEE, packets) and
+// bdpt (its connections and the camera's).
+TEST(Visibility, InterfaceSheetsLeaveTheImageUnchanged) {
+    for (const char* integrator : {"path", "bdpt"}) {
+        const Image a = test::render_lua(floor_scene(integrator, 1, false));
+        const Image b = test::render_lua(floor_scene(integrator, 2, false));
+        const Image with = test::render_lua(floor_scene(integrator, 3, true));
+        for (int c = 0; c < 3; ++c) {
+            const double se = test::standard_error_of_mean(a, b, c, 0, 0, 16, 16);
+            const double mean = test::mean_channel(a, c, 0, 0, 16, 16);
+            const double mean_with = test::mean_channel(with, c, 0, 0, 16, 16);
+            ASSERT_GT(mean, 0.01) << integrator;
+            // The difference of two independent means: sqrt(2) standard errors.
+            EXPECT_NEAR(mean_with, mean, 4.0 * std::sqrt(2.0) * se) << integrator << " " << c;
+        }
+    }
 }

@@ -9,9 +9,8 @@
 namespace glint {
 
 /// The transmittance along `shadow` (Scene::shadow_ray: reaching its target at t = 1,
-/// traced to kShadowRayEnd) through interface surfaces, starting in `medium` (null:
-/// vacuum) and carrying it across each interface that separates two; 0 at the first
-/// surface that is not an interface.
+/// traced to kShadowRayEnd) through interface surfaces, in `medium` (null: vacuum); 0 when
+/// a surface that is not an interface stands in the way.
 Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
                                           const Medium* medium = nullptr);
 
