@@ -9,7 +9,7 @@ class DielectricMaterial final : public Material {
 public:
     DielectricMaterial(const FloatInput& ior, const Spectrum& absorption,
                        const FloatInput& roughness)
-        : m_ior(ior), m_absorption(absorption), m_roughness(roughness) {}
+        : m_ior(ior), m_interior(absorption), m_roughness(roughness) {}
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
         const float ior = m_ior.eval(si);
         const GgxDistribution distribution(roughness_to_alpha(m_roughness.eval(si)));
@@ -20,11 +20,16 @@ public:
         return arena.make<RoughDielectricBsdf>(ior, distribution);
     }
     Spectrum albedo(const SurfaceInteraction&) const override { return Spectrum(1.0f); }
-    Spectrum interior_absorption() const override { return m_absorption; }
+    // Beer-Lambert absorption inside is a medium that only absorbs: the first user of the
+    // medium hook. Clear glass separates no media.
+    MediumInterface medium_interface() const override {
+        if (m_interior.sigma_a().is_black()) return {};
+        return MediumInterface{&m_interior, nullptr};
+    }
 
 private:
     FloatInput m_ior;
-    Spectrum m_absorption;
+    AbsorbingMedium m_interior;
     FloatInput m_roughness;
 };
 

@@ -1,9 +1,10 @@
 #pragma once
 // A Material turns a surface hit into a BSDF (built in the per-thread arena, or once for all
-// hits when it does not vary over the surface) and states what the surface emits and what
-// the medium behind it absorbs.
+// hits when it does not vary over the surface) and states what the surface emits and which
+// media it separates.
 #include <glint/core/arena.h>
 #include <glint/core/interaction.h>
+#include <glint/core/medium.h>
 #include <glint/material/bsdf.h>
 #include <glint/material/normal_perturbation.h>
 
@@ -32,9 +33,12 @@ public:
     virtual bool emits_two_sided() const { return false; }
     bool is_emissive() const { return !emission().is_black(); }
 
-    // Beer-Lambert absorption coefficient (per scene length unit) of the volume inside a
-    // closed shape with this material; zero for surfaces.
-    virtual Spectrum interior_absorption() const { return Spectrum(0.0f); }
+    // The media this surface separates (see core/medium.h): an absorbing dielectric's
+    // inside is an AbsorbingMedium; most surfaces separate none.
+    virtual MediumInterface medium_interface() const { return {}; }
+    // Whether the surface only bounds media and does not scatter (glint.interface): shadow
+    // rays pass through it (transport/visibility.h), and walks cross it straight on.
+    virtual bool is_interface() const { return false; }
 
     // Set by the registry after the factory ran: textures need the pixel footprint.
     void set_uses_textures(bool uses) { m_uses_textures = uses; }

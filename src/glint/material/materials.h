@@ -18,5 +18,6 @@ std::unique_ptr<Material> make_phong_material(const Params& params, TextureTable
 std::unique_ptr<Material> make_conductor_material(const Params& params, TextureTable& textures);
 std::unique_ptr<Material> make_plastic_material(const Params& params, TextureTable& textures);
 std::unique_ptr<Material> make_principled_material(const Params& params, TextureTable& textures);
+std::unique_ptr<Material> make_interface_material(const Params& params, TextureTable& textures);
 
 }  // namespace glint

@@ -26,6 +26,7 @@ const std::map<std::string, MaterialRow>& factories() {
         {"conductor", {make_conductor_material, ""}},
         {"plastic", {make_plastic_material, ""}},
         {"principled", {make_principled_material, ""}},
+        {"interface", {make_interface_material, ""}},
     };
     // clang-format on
     return table;

@@ -25,8 +25,10 @@ public:
             std::make_unique<TextureTable>(m_desc.directory, m_settings.mipmapping);
         for (const Params& p : m_desc.textures)
             m_scene->m_textures->add(make_texture(p, *m_scene->m_textures));
-        for (const Params& p : m_desc.materials)
+        for (const Params& p : m_desc.materials) {
             m_scene->m_materials.push_back(make_material(p, *m_scene->m_textures));
+            m_scene->m_has_interfaces |= m_scene->m_materials.back()->is_interface();
+        }
         build_lights();
         if (m_desc.background) {
             const Spectrum radiance = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));

@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/material/material.h>
 #include <glint/scene/scene.h>
 
 namespace glint {
@@ -24,6 +25,32 @@ void Scene::fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntr
                                             xf.vector(si.shading.s()));
     si.material = geometry.material(si.part);
     si.area_light = entry.lights[hit.local_geometry];
+}
+
+bool Scene::is_interface(const SurfaceInteraction& si) {
+    return si.material && si.material->is_interface();
+}
+
+bool Scene::intersect_past_interfaces(const Ray& ray, SurfaceInteraction& si,
+                                      HitRecord& hit) const {
+    // A bound against surfaces stacked without end (coincident copies): past it the ray is
+    // taken to end there, unseen.
+    constexpr int kMaxInterfaceCrossings = 256;
+    float t = si.t;  // along `ray`; each leg keeps its direction, so t adds up
+    Ray leg = ray;
+    for (int crossing = 0; crossing < kMaxInterfaceCrossings; ++crossing) {
+        leg.origin = offset_ray_origin(si.p, si.ng, ray.direction);
+        leg.t_min = 0.0f;
+        leg.t_max = ray.t_max - t;
+        if (!(leg.t_max > 0.0f) || !m_accel.intersect(leg, hit)) return false;
+        fill_interaction(leg, hit, si);
+        t += si.t;
+        if (!is_interface(si)) {
+            si.t = t;
+            return true;
+        }
+    }
+    return false;
 }
 
 std::vector<ScenePlacement> Scene::placements() const {

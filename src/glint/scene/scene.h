@@ -46,10 +46,15 @@ public:
     // unspecified). Every field of `si` is written, so one SurfaceInteraction can serve a
     // whole path, bounce after bounce: hot loops should use this form.
     // Inline: the path tracer calls it once per bounce.
+    // Surfaces that only bound media (Material::is_interface) are passed through: the hit
+    // is the first other surface, with `t` along `ray` (the walks cross interfaces straight
+    // on; media attach to them later).
     bool intersect(const Ray& ray, SurfaceInteraction& si) const {
         HitRecord hit;
         if (!m_accel.intersect(ray, hit)) return false;
         fill_interaction(ray, hit, si);
+        if (m_has_interfaces && is_interface(si)) [[unlikely]]
+            return intersect_past_interfaces(ray, si, hit);
         return true;
     }
     // intersect() for the rays in the lanes set in `active`, traced as one packet (see
@@ -57,9 +62,16 @@ public:
     uint32_t intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
                               const PerLane<SurfaceInteraction*>& si, bool coherent) const {
         PerLane<HitRecord> hits;
-        const uint32_t hit_lanes = m_accel.intersect_packet(rays, active, hits, coherent);
+        uint32_t hit_lanes = m_accel.intersect_packet(rays, active, hits, coherent);
         for_each_lane(hit_lanes,
                       [&](int lane) { fill_interaction(*rays[lane], hits[lane], *si[lane]); });
+        if (m_has_interfaces) [[unlikely]] {
+            for_each_lane(hit_lanes, [&](int lane) {
+                if (is_interface(*si[lane]) &&
+                    !intersect_past_interfaces(*rays[lane], *si[lane], hits[lane]))
+                    hit_lanes &= ~(1u << lane);
+            });
+        }
         return hit_lanes;
     }
     // intersect(), also handing back Embree's record of the hit (which geometry, which
@@ -67,6 +79,8 @@ public:
     bool intersect(const Ray& ray, SurfaceInteraction& si, HitRecord& hit) const {
         if (!m_accel.intersect(ray, hit)) return false;
         fill_interaction(ray, hit, si);
+        if (m_has_interfaces && is_interface(si)) [[unlikely]]
+            return intersect_past_interfaces(ray, si, hit);
         return true;
     }
     // The same, as a value: a fresh SurfaceInteraction (~200 bytes set up) per call.
@@ -113,6 +127,9 @@ public:
         return m_environment ? m_environment->le_escaped(direction) : m_background;
     }
     const SceneStats& stats() const { return m_stats; }
+    /// Whether a material only bounds media (Material::is_interface): shadow rays then
+    /// cross such surfaces (transport/visibility.h); otherwise any hit blocks them.
+    bool has_interfaces() const { return m_has_interfaces; }
     /// Every placed shape of the world, in world geometry id order (an instance's shapes in
     /// their local id order); built on each call.
     std::vector<ScenePlacement> placements() const;
@@ -160,6 +177,10 @@ private:
         si.wo = -glm::normalize(ray.direction);
         si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
     }
+    static bool is_interface(const SurfaceInteraction& si);
+    // From `si`, an interface hit of `ray`, on along the ray to the first surface that is
+    // not an interface, into `si` and `hit`; false when there is none before ray.t_max.
+    bool intersect_past_interfaces(const Ray& ray, SurfaceInteraction& si, HitRecord& hit) const;
     // Scene::intersect for a hit inside a group instance: the shape fills `si` in the
     // group's space, and the result is carried to the world.
     void fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
@@ -177,6 +198,7 @@ private:
     Spectrum m_background;
     const Light* m_environment = nullptr;  // one of m_lights
     SceneStats m_stats;
+    bool m_has_interfaces = false;
 };
 
 }  // namespace glint

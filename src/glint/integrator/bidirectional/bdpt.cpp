@@ -1,6 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/integrator/bidirectional/bdpt.h>
+#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/material/material.h>
 
@@ -202,29 +203,15 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         } else if (!qs.connectible()) {
             return result;
         }
-        const std::optional<CameraWiSample> lens = scene.camera().sample_wi(qs.p, u_lens);
-        if (!lens || lens->We.is_black() || !(lens->pdf > 0.0f)) return result;
-        if (s == 1) {
-            // Only the side sample_le chose (its normal ng) can see the lens without hitting
-            // the light itself; a two-sided light chooses each side half the time.
-            const float cosine = glm::dot(qs.ng, lens->wi);
-            if (!(cosine > 0.0f)) return result;
-            const Spectrum Le = qs.light->emitted(qs.p, qs.ng, lens->wi);
-            if (Le.is_black()) return result;
-            const bool two_sided = !qs.light->emitted(qs.p, qs.ng, -qs.ng).is_black();
-            ++counter.rays;
-            if (scene.occluded(Ray{qs.p, lens->p_lens - qs.p, 0.0f, kShadowRayEnd})) return result;
-            // qs.pdf_fwd is the light's choice times the point's area density.
-            L = Le * lens->We * (cosine / (qs.pdf_fwd * (two_sided ? 0.5f : 1.0f) * lens->pdf));
-        } else {
-            const Vec3 wi_local = qs.si.to_local(lens->wi);
-            const Spectrum f = qs.bsdf->eval(qs.si.to_local(qs.si.wo), wi_local,
-                                             TransportMode::kImportance, qs.si.to_local(qs.si.ng));
-            if (f.is_black()) return result;
-            ++counter.rays;
-            if (scene.occluded(qs.si, lens->p_lens)) return result;
-            L = qs.beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We;
-        }
+        // qs.pdf_fwd of the light's own point is the light's choice times its area density.
+        const std::optional<CameraConnection> connection =
+            s == 1
+                ? connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.pdf_fwd, u_lens,
+                                                counter.rays)
+                : connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens, counter.rays);
+        if (!connection) return result;
+        const CameraWiSample* const lens = &connection->lens;
+        L = connection->L;
         sampled.kind = PathVertex::Kind::kCamera;
         sampled.p = lens->p_lens;
         result.splat = true;
@@ -233,16 +220,17 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         // Next-event estimation from the camera vertex.
         const PathVertex& pt = camera[t - 1];
         if (!pt.connectible()) return result;
-        const LightSampler::Choice choice = scene.light_sampler().sample(u_choice);
-        if (!choice.light) return result;
-        const std::optional<LightSample> ls = choice.light->sample_li(pt.p, u_light, u_select);
+        const LightPoint point = sample_light_point(scene, pt.p, u_light, u_choice, u_select);
+        const LightSampler::Choice& choice = point.choice;
+        const std::optional<LightSample>& ls = point.sample;
         if (!ls || ls->L.is_black() || !(ls->pdf > 0.0f)) return result;
         const Vec3 wi_local = pt.si.to_local(ls->wi);
         const Spectrum f = pt.bsdf->eval(pt.si.to_local(pt.si.wo), wi_local);
         if (f.is_black()) return result;
         ++counter.rays;
-        if (scene.occluded(pt.si, ls->p)) return result;
-        L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf));
+        const Spectrum visible = transmittance(scene, pt.si, ls->p);
+        if (visible.is_black()) return result;
+        L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf)) * visible;
         sampled.kind = PathVertex::Kind::kLight;
         sampled.light = choice.light;
         sampled.infinite = choice.light->is_infinite() || choice.light->is_delta_direction();
@@ -268,8 +256,9 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         if (f_camera.is_black()) return result;
         const float g = abs_cos_theta(w_light) * abs_cos_theta(w_camera) / dist2;
         ++counter.rays;
-        if (scene.occluded(pt.si, qs.p)) return result;
-        L = qs.beta * f_light * f_camera * pt.beta * g;
+        const Spectrum visible = transmittance(scene, pt.si, qs.p);
+        if (visible.is_black()) return result;
+        L = qs.beta * f_light * f_camera * pt.beta * g * visible;
     }
     if (L.is_black()) return result;
     result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch,

@@ -1,6 +1,9 @@
 #include <glint/core/progress.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/bidirectional/light_tracer.h>
+#include <glint/integrator/transport/camera_connection.h>
+#include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/transport.h>
 
 #include <fmt/format.h>
@@ -81,20 +84,19 @@ RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progre
 void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const {
     chunk.rng.seed(hash_combine(mix_bits(m_settings.seed ^ 0x4c54u), index));
     chunk.arena.reset();
-    const LightSampler::Choice choice = scene.light_sampler().sample(chunk.rng.next_float());
-    const Vec2 u_position = chunk.next_2d();
-    const Vec2 u_direction = chunk.next_2d();
-    const float u_select = chunk.rng.next_float();
+    LightPathSamples u_start;
+    u_start.u_light = chunk.rng.next_float();
+    u_start.u_position = chunk.next_2d();
+    u_start.u_direction = chunk.next_2d();
+    u_start.u_select = chunk.rng.next_float();
     const Vec2 u_light_lens = chunk.next_2d();
-    if (!choice.light) return;
-    const std::optional<LightEmission> emission =
-        choice.light->sample_le(u_position, u_direction, u_select);
-    if (!emission) return;
-    connect_light_to_camera(scene, *emission, *choice.light, choice.pmf, u_light_lens, chunk);
+    const std::optional<LightPathStart> start = start_light_path(scene, u_start);
+    if (!start) return;
+    connect_light_to_camera(scene, start->emission, *start->light, start->pmf, u_light_lens, chunk);
 
-    Spectrum beta = emission->beta() / choice.pmf;
+    Spectrum beta = start->beta;
     if (beta.is_black()) return;
-    Ray ray = emission->ray;
+    Ray ray = start->emission.ray;
     const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : kMaxBounces;
     for (int bounce = 1; bounce <= max_bounces; ++bounce) {
         ++chunk.rays;
@@ -116,8 +118,10 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
         // Russian roulette keeps a particle's power roughly constant: it survives with the
         // probability its scattering keeps (at most 1 in importance mode, where refraction
         // carries no 1/eta^2).
-        const float survive = std::min(1.0f, scattering->weight.max_value());
-        if (!(survive > 0.0f) || chunk.rng.next_float() >= survive) return;
+        float survive;
+        if (!survives_power_roulette(
+                scattering->weight.max_value(), [&] { return chunk.rng.next_float(); }, survive))
+            return;
         beta *= scattering->weight / survive;
         continue_ray(ray, si, *scattering);
     }
@@ -128,17 +132,9 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
 void LightTracer::connect_to_camera(const Scene& scene, const SurfaceInteraction& si,
                                     const Bsdf& bsdf, const Spectrum& beta, const Vec2& u_lens,
                                     Chunk& chunk) const {
-    const std::optional<CameraWiSample> camera = scene.camera().sample_wi(si.p, u_lens);
-    if (!camera || camera->We.is_black() || !(camera->pdf > 0.0f)) return;
-    const Vec3 wi_local = si.to_local(camera->wi);
-    // Importance mode: wo is where the particle came from, wi where it goes (the camera).
-    const Spectrum f =
-        bsdf.eval(si.to_local(si.wo), wi_local, TransportMode::kImportance, si.to_local(si.ng));
-    if (f.is_black()) return;
-    ++chunk.rays;
-    if (scene.occluded(si, camera->p_lens)) return;
-    const Spectrum L = beta * f * (abs_cos_theta(wi_local) / camera->pdf) * camera->We;
-    chunk.splats.push_back({camera->film, L});
+    const std::optional<CameraConnection> connection =
+        connect_surface_to_camera(scene, si, bsdf, beta, u_lens, chunk.rays);
+    if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 
 // The strategy that sees an emitting surface directly: the light's own point connected to
@@ -149,26 +145,10 @@ void LightTracer::connect_light_to_camera(const Scene& scene, const LightEmissio
                                           Chunk& chunk) const {
     const bool has_surface = emission.n != Vec3(0.0f);
     if (!has_surface || light.is_infinite() || !(emission.pdf_pos > 0.0f)) return;
-    const Vec3& p = emission.ray.origin;
-    const std::optional<CameraWiSample> camera = scene.camera().sample_wi(p, u_lens);
-    if (!camera || camera->We.is_black() || !(camera->pdf > 0.0f)) return;
-    // The ray's origin is lifted off the side of the surface sample_le chose (its normal n):
-    // only that side can connect without hitting the light itself. A two-sided light
-    // chooses each side half the time, so the side facing the camera is counted double.
-    const float cosine = glm::dot(emission.n, camera->wi);
-    if (!(cosine > 0.0f)) return;
-    const Spectrum Le = light.emitted(p, emission.n, camera->wi);
-    if (Le.is_black()) return;
-    const bool two_sided = !light.emitted(p, emission.n, -emission.n).is_black();
-    const float side_pdf = two_sided ? 0.5f : 1.0f;
-    ++chunk.rays;
-    const Vec3 to_lens = camera->p_lens - p;
-    if (scene.occluded(Ray{p, to_lens, 0.0f, kShadowRayEnd})) return;
-    // The point was chosen with density pdf_pos per area and the lens point with `pdf` per
-    // solid angle at p: Le |cos| We / (pmf side pdf_pos pdf).
-    const Spectrum L =
-        Le * camera->We * (cosine / (light_pmf * side_pdf * emission.pdf_pos * camera->pdf));
-    chunk.splats.push_back({camera->film, L});
+    const std::optional<CameraConnection> connection =
+        connect_light_point_to_camera(scene, light, emission.ray.origin, emission.n,
+                                      light_pmf * emission.pdf_pos, u_lens, chunk.rays);
+    if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 
 }  // namespace glint

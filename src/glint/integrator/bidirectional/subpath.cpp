@@ -1,5 +1,7 @@
-#include <glint/integrator/transport/shading.h>
 #include <glint/integrator/bidirectional/subpath.h>
+#include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/roulette.h>
+#include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
 
 namespace glint {
@@ -76,12 +78,14 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         // The path tracer's roulette: from the third hit on (depth 2), survival in proportion
         // to the throughput, where it is below 1.
         const int depth = static_cast<int>(path.size()) - 2;
-        const float rr_throughput = (rr_beta * eta_scale).max_value();
-        if (limits.roulette && depth >= 2 && rr_throughput < 1.0f) {
-            const float q = std::max(0.0f, 1.0f - rr_throughput);
-            if (sampler.get_1d() < q) return;
-            beta /= 1.0f - q;
-            rr_beta /= 1.0f - q;
+        float survival = 1.0f;
+        if (limits.roulette && !survives_throughput_roulette(
+                                   depth, (rr_beta * eta_scale).max_value(),
+                                   [&] { return sampler.get_1d(); }, survival))
+            return;
+        if (survival < 1.0f) {
+            beta /= survival;
+            rr_beta /= survival;
         }
         if (beta.is_black()) return;
     }
@@ -118,16 +122,16 @@ void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sample
 void generate_light_subpath(const Scene& scene, Sampler& sampler, Arena& arena, RayCounter& counter,
                             const WalkLimits& limits, std::vector<PathVertex>& path) {
     path.clear();
-    const float u_light = sampler.get_1d();
-    const Vec2 u_position = sampler.get_2d();
-    const Vec2 u_direction = sampler.get_2d();
-    const float u_select = sampler.get_1d();
-    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
-    if (!choice.light) return;
-    const Light& light = *choice.light;
-    const std::optional<LightEmission> emission =
-        light.sample_le(u_position, u_direction, u_select);
-    if (!emission || !(emission->pdf_pos > 0.0f) || !(emission->pdf_dir > 0.0f)) return;
+    LightPathSamples u_start;
+    u_start.u_light = sampler.get_1d();
+    u_start.u_position = sampler.get_2d();
+    u_start.u_direction = sampler.get_2d();
+    u_start.u_select = sampler.get_1d();
+    const std::optional<LightPathStart> begun = start_light_path(scene, u_start);
+    if (!begun) return;
+    const Light& light = *begun->light;
+    const LightEmission* const emission = &begun->emission;
+    if (!(emission->pdf_pos > 0.0f) || !(emission->pdf_dir > 0.0f)) return;
     PathVertex start;
     start.kind = PathVertex::Kind::kLight;
     start.light = &light;
@@ -138,9 +142,9 @@ void generate_light_subpath(const Scene& scene, Sampler& sampler, Arena& arena, 
     start.beta = emission->Le;
     // A light at infinity starts with its direction (solid angle), then a point on the disc
     // its rays cross; every other light with its point, then a direction.
-    start.pdf_fwd = choice.pmf * (start.infinite ? emission->pdf_dir : emission->pdf_pos);
+    start.pdf_fwd = begun->pmf * (start.infinite ? emission->pdf_dir : emission->pdf_pos);
     path.push_back(std::move(start));
-    const Spectrum beta = emission->beta() / choice.pmf;
+    const Spectrum& beta = begun->beta;
     if (beta.is_black() || limits.max_vertices < 2) return;
     random_walk(scene, emission->ray, beta, emission->pdf_dir, TransportMode::kImportance, sampler,
                 arena, counter, limits, path);

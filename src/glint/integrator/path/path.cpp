@@ -1,6 +1,7 @@
 #include <glint/core/sampler.h>
 #include <glint/core/sobol_sampler.h>
 #include <glint/integrator/path/path.h>
+#include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/material/material.h>
@@ -28,6 +29,15 @@ void record_aov(AovSample* aov, const SurfaceInteraction& si, const Material* ma
     aov->depth = si.t;
 }
 
+// The direct light of a path whose shadow ray a surface blocked, in a scene where that
+// surface may only bound media: what the interfaces on the way let through.
+template <typename PathState>
+void add_direct_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
+                                   PathState& path) {
+    const Spectrum visible = transmittance_through_interfaces(scene, shadow);
+    if (!visible.is_black()) path.L += path.beta * path.direct * visible;
+}
+
 }  // namespace
 
 Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
@@ -43,7 +53,11 @@ Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler
         if (!scatter_at_hit(scene, path, depth, arena)) break;
         if (const std::optional<Vec3> target = sample_light<Sampler>(scene, path)) {
             ++counter.rays;
-            if (!scene.occluded(path.si, *target)) path.L += path.beta * path.direct;
+            if (!scene.has_interfaces()) {
+                if (!scene.occluded(path.si, *target)) path.L += path.beta * path.direct;
+            } else {
+                add_direct_through_interfaces(scene, Scene::shadow_ray(path.si, *target), path);
+            }
         }
         if (!continue_path<Sampler>(path, depth)) break;
     }
@@ -130,12 +144,12 @@ template <typename SamplerType>
 
     // Russian roulette on the throughput without the radiance scaling of refraction,
     // which would otherwise kill paths that are about to leave the glass.
-    const float rr_throughput = (path.beta * path.eta_scale).max_value();
-    if (depth >= 2 && rr_throughput < 1.0f) {
-        const float q = std::max(0.0f, 1.0f - rr_throughput);
-        if (sampler.get_1d() < q) return false;
-        path.beta /= 1.0f - q;
-    }
+    float survival;
+    if (!survives_throughput_roulette(
+            depth, (path.beta * path.eta_scale).max_value(), [&] { return sampler.get_1d(); },
+            survival))
+        return false;
+    if (survival < 1.0f) path.beta /= survival;
     return !path.beta.is_black();
 }
 
@@ -245,6 +259,14 @@ void PathIntegrator::trace_packet_with(const Scene& scene, PerLane<PathState>& p
             for_each_lane(shadowed & ~blocked, [&](int lane) {
                 paths[lane].L += paths[lane].beta * paths[lane].direct;
             });
+            // A lane blocked only by surfaces that bound media sees the light after all.
+            if (scene.has_interfaces()) {
+                for_each_lane(blocked, [&](int lane) {
+                    add_direct_through_interfaces(
+                        scene, Scene::ShadowRay{shadow_origins[lane], shadow_directions[lane]},
+                        paths[lane]);
+                });
+            }
         }
 
         for_each_lane(active, [&](int lane) GLINT_INLINE_LAMBDA {

@@ -1,10 +1,10 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
+#include <glint/integrator/path/whitted.h>
 #include <glint/integrator/photon/photon.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
-#include <glint/integrator/path/whitted.h>
 #include <glint/material/material.h>
 
 #include <fmt/format.h>
@@ -231,7 +231,8 @@ Spectrum WhittedIntegrator::direct(const Scene& scene, const SurfaceInteraction&
         if (!arrival) continue;
         const LightSample& ls = arrival->light;
         ++counter.rays;
-        if (!scene.occluded(si, ls.p)) L += arrival->f_cos * ls.L / ls.pdf;
+        const Spectrum visible = transmittance(scene, si, ls.p);
+        if (!visible.is_black()) L += arrival->f_cos * ls.L / ls.pdf * visible;
     }
     return L;
 }
@@ -257,7 +258,8 @@ Spectrum WhittedIntegrator::area_light_direct(const Scene& scene, const Light& l
     auto visible = [&](int k) {
         if (samples[k].visible < 0) {
             ++counter.rays;
-            samples[k].visible = scene.occluded(si, samples[k].target) ? 0 : 1;
+            // 0 or 1: interfaces carry no media yet (media would weight the sample instead).
+            samples[k].visible = transmittance(scene, si, samples[k].target).is_black() ? 0 : 1;
         }
         return samples[k].visible == 1;
     };

@@ -6,7 +6,10 @@
 #include <glint/core/arena.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/shading.h>
+#include <glint/integrator/transport/transport.h>
 #include <glint/material/material.h>
 
 #include <tbb/parallel_for.h>
@@ -69,18 +72,19 @@ private:
     template <typename Sink>
     void trace_one(uint64_t index, uint64_t seed, Arena& arena, Sink& sink, uint64_t& rays) const {
         Rng rng(hash_combine(mix_bits(seed ^ 0x5bd1e995u), index));
-        const LightSampler::Choice choice = m_scene.light_sampler().sample(rng.next_float());
-        if (!choice.light) return;
+        LightPathSamples u_start;
+        u_start.u_light = rng.next_float();
         const Vec2 u1(rng.next_float(), rng.next_float());
         const Vec2 u2(rng.next_float(), rng.next_float());
-        const float u3 = rng.next_float();
-        const std::optional<LightEmission> emission =
-            m_emitter ? m_emitter(*choice.light, u1, u2, u3) : choice.light->sample_le(u1, u2, u3);
-        if (!emission) return;
-        const Spectrum power = emission->beta();
-        if (power.is_black()) return;
-        Spectrum beta = power / choice.pmf;
-        Ray ray = emission->ray;
+        u_start.u_position = u1;
+        u_start.u_direction = u2;
+        u_start.u_select = rng.next_float();
+        const std::optional<LightPathStart> start =
+            m_emitter ? start_light_path(m_scene, u_start, m_emitter)
+                      : start_light_path(m_scene, u_start);
+        if (!start || start->beta.is_black()) return;
+        Spectrum beta = start->beta;
+        Ray ray = start->emission.ray;
         bool specular_only = true;
         for (int bounces = 0; bounces <= m_max_bounces; ++bounces) {
             arena.reset();
@@ -88,10 +92,7 @@ private:
             std::optional<SurfaceInteraction> hit = m_scene.intersect(ray);
             if (!hit) return;
             SurfaceInteraction& si = *hit;
-            if (!si.front_face) {
-                const Spectrum sigma = si.material->interior_absorption();
-                if (!sigma.is_black()) beta *= exp(sigma * (-si.t * glm::length(ray.direction)));
-            }
+            beta *= segment_transmittance(ray, si);
             const Bsdf* bsdf = shade(m_scene, ray, si, arena);
             if (!bsdf) return;
             const Vec3 wi = -glm::normalize(ray.direction);
@@ -103,18 +104,21 @@ private:
 
             // A photon carries power: the BSDF in importance mode is the adjoint (no 1/eta^2
             // through refraction) with the shading-normal correction, wo towards the light.
+            // A direction that disagrees with the geometric surface ends the photon, as it
+            // ends every other walk (see sample_scattering).
             const Vec2 u(rng.next_float(), rng.next_float());
-            const std::optional<BsdfSample> bs =
-                bsdf->sample(si.to_local(wi), u, rng.next_float(), TransportMode::kImportance,
-                             si.to_local(si.ng));
-            if (!bs || bs->pdf <= 0.0f) return;
-            const Spectrum next = beta * bs->f * (abs_cos_theta(bs->wi) / bs->pdf);
-            // Russian roulette keeps a photon's power roughly constant (Jensen 2001).
-            const float survive = std::min(1.0f, next.max_value() / beta.max_value());
-            if (!(survive > 0.0f) || rng.next_float() >= survive) return;
+            const std::optional<Scattering> scattering = sample_scattering(
+                si, *bsdf, si.to_local(wi), u, rng.next_float(), TransportMode::kImportance);
+            if (!scattering) return;
+            const BsdfSample& bs = scattering->sample;
+            const Spectrum next = beta * bs.f * (abs_cos_theta(bs.wi) / bs.pdf);
+            float survive;
+            if (!survives_power_roulette(
+                    next.max_value() / beta.max_value(), [&] { return rng.next_float(); }, survive))
+                return;
             beta = next / survive;
-            specular_only = specular_only && bs->is_delta();
-            ray = spawn_ray(si, si.to_world(bs->wi));
+            specular_only = specular_only && bs.is_delta();
+            continue_ray(ray, si, *scattering);
         }
     }
 

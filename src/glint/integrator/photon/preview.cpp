@@ -379,7 +379,15 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
     if (shadowed != 0) {
         const uint32_t blocked =
             scene.occluded_packet(shadow_origins, shadow_directions, shadowed, true);
-        for_each_lane(blocked, [&](int lane) { reflected[lane] = Spectrum(0.0f); });
+        for_each_lane(blocked, [&](int lane) {
+            // A surface that only bounds media may have blocked it: what it lets through.
+            reflected[lane] =
+                scene.has_interfaces()
+                    ? reflected[lane] * transmittance_through_interfaces(
+                                            scene, Scene::ShadowRay{shadow_origins[lane],
+                                                                    shadow_directions[lane]})
+                    : Spectrum(0.0f);
+        });
     }
     for_each_lane(shading, [&](int lane) {
         lanes.L[lane] =

@@ -1,5 +1,6 @@
 #include <glint/core/progress.h>
 #include <glint/integrator/radiosity/radiosity_solver.h>
+#include <glint/integrator/transport/visibility.h>
 #include <glint/scene/scene.h>
 
 #include <tbb/blocked_range.h>
@@ -50,8 +51,9 @@ public:
                     const int side = c > 0.0f ? 0 : 1;
                     const Vec3 from = offset_ray_origin(x.p, side ? -x.n : x.n, ls->wi);
                     ++rays;
-                    if (m_scene.accel().occluded(from, ls->p - from, 0.0f, kShadowRayEnd)) continue;
-                    irradiance[side] += ls->L * (std::abs(c) / ls->pdf);
+                    const Spectrum visible = transmittance(m_scene, from, ls->p);
+                    if (visible.is_black()) continue;
+                    irradiance[side] += ls->L * (std::abs(c) / ls->pdf) * visible;
                 }
                 for (int s = 0; s < 2; ++s) {
                     delta[s] = x.rho * irradiance[s] / static_cast<float>(samples);

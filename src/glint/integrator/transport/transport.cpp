@@ -10,7 +10,8 @@ Spectrum estimate_direct_light(const Scene& scene, const SurfaceInteraction& si,
         sample_direct_light(scene, si, bsdf, si.to_local(si.wo), sampler, weighting);
     if (!direct) return Spectrum(0.0f);
     ++counter.rays;
-    return scene.occluded(si, direct->target) ? Spectrum(0.0f) : direct->contribution;
+    const Spectrum visible = transmittance(scene, si, direct->target);
+    return visible.is_black() ? Spectrum(0.0f) : direct->contribution * visible;
 }
 
 SpecularChain follow_specular_chain(const Scene& scene, Ray ray, Spectrum beta, Sampler& sampler,

@@ -5,6 +5,7 @@
 //
 //   segment_transmittance   what the medium a segment ran through lets pass (Beer-Lambert
 //                           inside an absorbing dielectric today; participating media here)
+//   transmittance           what a shadow ray lets pass (visibility.h)
 //   emitted_radiance        emission seen at a hit
 //   sample_light_arrival /  next-event estimation: one light sample, or one light chosen by
 //   sample_direct_light     power and sampled, in one documented order of sample draws
@@ -20,6 +21,7 @@
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/transport/shading.h>
+#include <glint/integrator/transport/visibility.h>
 #include <glint/material/bsdf.h>
 #include <glint/scene/scene.h>
 
@@ -35,15 +37,16 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
     return a + b > 0.0f ? a / (a + b) : 0.0f;
 }
 
-/// The fraction of light that survives the segment `ray` travelled to reach `si`: Beer-
-/// Lambert absorption exp(-sigma_a t |d|) when the segment ran inside a dielectric with
-/// interior absorption (the hit is on the back of its surface), 1 otherwise. Every
-/// integrator multiplies its throughput by this at every hit, camera and light paths alike.
+/// The fraction of light that survives the segment `ray` travelled to reach `si`: the
+/// transmittance of the medium the segment ran through, which the hit's MediumInterface
+/// names (the side the ray arrived from); 1 in vacuum. Only the insides of closed shapes
+/// hold media today (an absorbing dielectric's Beer-Lambert interior), so a front-face hit
+/// arrived through vacuum and costs nothing. Every integrator multiplies its throughput by
+/// this at every hit, camera and light paths alike.
 inline Spectrum segment_transmittance(const Ray& ray, const SurfaceInteraction& si) {
     if (si.front_face) return Spectrum(1.0f);
-    const Spectrum sigma = si.material->interior_absorption();
-    if (sigma.is_black()) return Spectrum(1.0f);
-    return exp(sigma * (-si.t * glm::length(ray.direction)));
+    const Medium* medium = si.material->medium_interface().arriving(false);
+    return medium ? medium->transmittance(ray, si.t) : Spectrum(1.0f);
 }
 
 /// Radiance the surface at `si` emits back along the ray that found it (zero when it is not
@@ -92,10 +95,29 @@ enum class LightWeighting {
     kMis,   ///< the power heuristic against the BSDF's density (delta lights: weight 1)
 };
 
+/// A point on a light as next-event estimation samples it: the light chosen in proportion
+/// to power, then Light::sample_li's point on it, with the densities of both (choice.pmf,
+/// sample->pdf). Next-event estimation and bdpt's s = 1 strategy both start from it.
+struct LightPoint {
+    LightSampler::Choice choice;
+    std::optional<LightSample> sample;  ///< empty when no light was chosen or it gave no point
+};
+
+/// Chooses a light with `u_light` and samples a point on it as seen from `p` with (u,
+/// u_select). Both members are built in place (no copy of the light's sample: a copy right
+/// after the light's stores stalls the CPU, see sample_scattering).
+[[gnu::always_inline]] inline LightPoint sample_light_point(const Scene& scene, const Vec3& p,
+                                                            const Vec2& u, float u_light,
+                                                            float u_select) {
+    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
+    if (!choice.light) return LightPoint{choice, std::nullopt};
+    return LightPoint{choice, choice.light->sample_li(p, u, u_select)};
+}
+
 /// A direct-light estimate at a surface point, valid if nothing blocks the way to `target`.
 struct DirectLight {
     Spectrum contribution;  ///< f L |cos| / (pmf pdf), times the MIS weight
-    Vec3 target;            ///< the point on the light; Scene::occluded(si, target) decides
+    Vec3 target;            ///< the point on the light; transmittance(scene, si, target) decides
 };
 
 /// Next-event estimation, the one estimator of direct light that every integrator uses: a
@@ -115,12 +137,12 @@ template <typename SamplerType = Sampler>
     const Vec2 u = sampler.get_2d();
     const float u_light = sampler.get_1d();
     const float u_select = sampler.get_1d();
-    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
-    if (!choice.light) return std::nullopt;
     // The light's sample is read where the light wrote it, never copied as a whole: a copy
     // right after the light's stores stalls the CPU (see sample_scattering).
-    const std::optional<LightSample> ls = choice.light->sample_li(si.p, u, u_select);
+    const LightPoint point = sample_light_point(scene, si.p, u, u_light, u_select);
+    const std::optional<LightSample>& ls = point.sample;
     if (!ls || ls->L.is_black()) return std::nullopt;
+    const LightSampler::Choice& choice = point.choice;
     Spectrum f_cos;
     float bsdf_pdf;
     if (!bsdf_towards_light(*ls, si, bsdf, wo_local, f_cos, bsdf_pdf)) return std::nullopt;

@@ -1,0 +1,54 @@
+#include <glint/integrator/transport/camera_connection.h>
+#include <glint/integrator/transport/visibility.h>
+
+namespace glint {
+namespace {
+
+// A lens point seen from `p`, when the camera gives one that carries importance.
+std::optional<CameraWiSample> sample_lens(const Scene& scene, const Vec3& p, const Vec2& u_lens) {
+    std::optional<CameraWiSample> lens = scene.camera().sample_wi(p, u_lens);
+    if (!lens || lens->We.is_black() || !(lens->pdf > 0.0f)) return std::nullopt;
+    return lens;
+}
+
+}  // namespace
+
+std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
+                                                          const SurfaceInteraction& si,
+                                                          const Bsdf& bsdf, const Spectrum& beta,
+                                                          const Vec2& u_lens, uint64_t& rays) {
+    const std::optional<CameraWiSample> lens = sample_lens(scene, si.p, u_lens);
+    if (!lens) return std::nullopt;
+    const Vec3 wi_local = si.to_local(lens->wi);
+    // Importance mode: wo is where the particle came from, wi where it goes (the camera).
+    const Spectrum f =
+        bsdf.eval(si.to_local(si.wo), wi_local, TransportMode::kImportance, si.to_local(si.ng));
+    if (f.is_black()) return std::nullopt;
+    ++rays;
+    const Spectrum visible = transmittance(scene, si, lens->p_lens);
+    if (visible.is_black()) return std::nullopt;
+    return CameraConnection{*lens,
+                            beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We * visible};
+}
+
+std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
+                                                              const Light& light, const Vec3& p,
+                                                              const Vec3& n, float pdf_origin,
+                                                              const Vec2& u_lens, uint64_t& rays) {
+    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens);
+    if (!lens) return std::nullopt;
+    const float cosine = glm::dot(n, lens->wi);
+    if (!(cosine > 0.0f)) return std::nullopt;
+    const Spectrum Le = light.emitted(p, n, lens->wi);
+    if (Le.is_black()) return std::nullopt;
+    const float side_pdf = light.emitted(p, n, -n).is_black() ? 1.0f : 0.5f;
+    ++rays;
+    const Spectrum visible = transmittance(scene, p, lens->p_lens);
+    if (visible.is_black()) return std::nullopt;
+    // p was chosen with density pdf_origin per area and the lens point with lens->pdf per
+    // solid angle at p: Le |cos| We / (pdf_origin side_pdf pdf).
+    return CameraConnection{
+        *lens, Le * lens->We * (cosine / (pdf_origin * side_pdf * lens->pdf)) * visible};
+}
+
+}  // namespace glint

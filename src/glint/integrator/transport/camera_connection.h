@@ -1,0 +1,41 @@
+#pragma once
+// Connecting a light path to the camera (Veach's t = 1 strategies): a point on the lens
+// sampled from a vertex of the light path, a shadow ray, and the contribution splatted where
+// the connection lands on the film. Light tracing and the bidirectional methods join light
+// paths to the camera this way; they differ only in how they weight it (MIS, or not at all).
+#include <glint/integrator/integrator.h>
+#include <glint/scene/scene.h>
+
+#include <optional>
+
+namespace glint {
+
+/// A light path joined to the lens: the lens sample (film position, point, importance) and
+/// the unweighted contribution it carries to the film.
+struct CameraConnection {
+    CameraWiSample lens;
+    Spectrum L;
+};
+
+/// Connects a non-specular surface vertex of a light path to the lens with `u_lens`: `beta`
+/// is the power the path carries to `si`, `bsdf` its BSDF (evaluated in importance mode,
+/// from where the particle came, si.wo, to the lens). nullopt when the lens cannot see the
+/// point or the shadow ray is blocked; the shadow ray is counted in `rays`.
+std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
+                                                          const SurfaceInteraction& si,
+                                                          const Bsdf& bsdf, const Spectrum& beta,
+                                                          const Vec2& u_lens, uint64_t& rays);
+
+/// Connects the starting point `p` of a light path on an emitting surface (normal `n`, the
+/// side Light::sample_le chose) to the lens with `u_lens`. `pdf_origin` is the density the
+/// path chose p with: the light's pmf times its area density. Only the chosen side can see
+/// the lens without hitting the light itself; a two-sided light chooses each side half the
+/// time, so the side facing the camera counts double. Points without a surface (point,
+/// spot lights) and lights at infinity are for the caller to leave out: they are invisible
+/// to the camera in every glint integrator.
+std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
+                                                              const Light& light, const Vec3& p,
+                                                              const Vec3& n, float pdf_origin,
+                                                              const Vec2& u_lens, uint64_t& rays);
+
+}  // namespace glint

@@ -1,0 +1,45 @@
+#pragma once
+// Russian roulette, the two rules glint's walks end paths by. Each walk decides which rule
+// it follows; the rules themselves are written once here.
+//
+//   throughput roulette   camera walks (path, bdpt/vcm/mlt subpaths): from the third hit
+//                         on, a path whose throughput fell below 1 survives in proportion
+//                         to it, so that dim paths end and bright ones are never cut
+//   power roulette        particles (photons, light-tracing paths): a particle survives
+//                         with the fraction of power its scattering kept, so the power it
+//                         carries stays roughly constant (Jensen 2001)
+//
+// The random number is drawn only where roulette applies, so that walks that never meet it
+// draw nothing: `draw` is called at most once.
+#include <algorithm>
+
+namespace glint {
+
+/// The depth (0 at the first hit) from which throughput roulette applies.
+constexpr int kRouletteMinDepth = 2;
+
+/// Throughput roulette at `depth` for a path whose throughput (the radiance scaling of
+/// refraction taken out, so light about to leave glass survives) is `throughput`: false
+/// when the path ends; otherwise `survival` is the probability it survived with (1 where
+/// roulette does not apply), the factor its throughput is divided by.
+template <typename Draw>
+[[gnu::always_inline]] inline bool survives_throughput_roulette(int depth, float throughput,
+                                                                Draw&& draw, float& survival) {
+    survival = 1.0f;
+    if (depth < kRouletteMinDepth || !(throughput < 1.0f)) return true;
+    const float q = std::max(0.0f, 1.0f - throughput);
+    if (draw() < q) return false;
+    survival = 1.0f - q;
+    return true;
+}
+
+/// Power roulette for a particle whose scattering kept `kept` of its power (max channel):
+/// false when it ends; otherwise `survival` (at most 1) is the probability it survived with.
+template <typename Draw>
+[[gnu::always_inline]] inline bool survives_power_roulette(float kept, Draw&& draw,
+                                                           float& survival) {
+    survival = std::min(1.0f, kept);
+    return survival > 0.0f && draw() < survival;
+}
+
+}  // namespace glint

@@ -1,0 +1,17 @@
+#include <glint/integrator/transport/visibility.h>
+#include <glint/material/material.h>
+
+namespace glint {
+
+Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
+                                          const Medium* medium) {
+    const Ray ray{shadow.origin, shadow.direction, 0.0f, kShadowRayEnd};
+    // Scene::intersect passes through interfaces: what it finds blocks the way. The ray
+    // keeps the medium it started in, since no interface carries media yet; once they do,
+    // this walk stops at each one and takes on the medium beyond it.
+    SurfaceInteraction si;
+    if (scene.intersect(ray, si)) return Spectrum(0.0f);
+    return medium ? medium->transmittance(ray, kShadowRayEnd) : Spectrum(1.0f);
+}
+
+}  // namespace glint

@@ -1,0 +1,44 @@
+#pragma once
+// Visibility as transmittance: the fraction of light that gets from a point to a target,
+// a Spectrum (0 or 1 today). Shadow rays pass through surfaces that only bound media
+// (Material::is_interface), taking on the transmittance of the medium of each segment, and
+// stop at every other surface. A scene without such surfaces asks Embree's occlusion query
+// alone, as a boolean visibility did, so it loses no time (Scene::has_interfaces).
+#include <glint/scene/scene.h>
+
+namespace glint {
+
+/// The transmittance along `shadow` (Scene::shadow_ray: reaching its target at t = 1,
+/// traced to kShadowRayEnd) through interface surfaces, in `medium` (null: vacuum); 0 when
+/// a surface that is not an interface stands in the way.
+Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
+                                          const Medium* medium = nullptr);
+
+/// The transmittance of a shadow ray that starts in `medium`: Embree's occlusion query alone
+/// where neither an interface nor a medium can change the answer from 0 or 1.
+[[gnu::always_inline]] inline Spectrum transmittance(const Scene& scene,
+                                                     const Scene::ShadowRay& shadow,
+                                                     const Medium* medium = nullptr) {
+    if (!scene.has_interfaces() && !medium) {
+        const bool blocked =
+            scene.accel().occluded(shadow.origin, shadow.direction, 0.0f, kShadowRayEnd);
+        return Spectrum(blocked ? 0.0f : 1.0f);
+    }
+    return transmittance_through_interfaces(scene, shadow, medium);
+}
+
+/// The transmittance from `si` (its origin offset as spawn_ray's) to just short of `target`.
+[[gnu::always_inline]] inline Spectrum transmittance(const Scene& scene,
+                                                     const SurfaceInteraction& si,
+                                                     const Vec3& target,
+                                                     const Medium* medium = nullptr) {
+    return transmittance(scene, Scene::shadow_ray(si, target), medium);
+}
+
+/// The transmittance from `origin` (already off any surface) to just short of `target`.
+inline Spectrum transmittance(const Scene& scene, const Vec3& origin, const Vec3& target,
+                              const Medium* medium = nullptr) {
+    return transmittance(scene, Scene::ShadowRay{origin, target - origin}, medium);
+}
+
+}  // namespace glint

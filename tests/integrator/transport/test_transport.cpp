@@ -1,0 +1,302 @@
+// The transport layer's shared pieces: roulette's two rules, the start of a light path,
+// photons that scatter through the same geometric-side check as every other walk, and
+// visibility as transmittance through surfaces that only bound media.
+#include <glint/core/rng.h>
+#include <glint/integrator/photon/photon_tracer.h>
+#include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/roulette.h>
+#include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/visibility.h>
+#include <glint/material/material.h>
+
+#include <glint/film/image.h>
+#include <gtest/gtest.h>
+#include <support/render_helpers.h>
+
+#include <cmath>
+#include <string>
+#include <utility>
+
+using namespace glint;
+
+// Below the depth where it applies, and for a throughput of 1 or more, throughput roulette
+// draws nothing and keeps the path whole.
+TEST(Roulette, ThroughputRuleDrawsOnlyWhereItApplies) {
+    int draws = 0;
+    auto draw = [&] {
+        ++draws;
+        return 0.0f;
+    };
+    float survival = 0.0f;
+    EXPECT_TRUE(survives_throughput_roulette(kRouletteMinDepth - 1, 0.1f, draw, survival));
+    EXPECT_EQ(survival, 1.0f);
+    EXPECT_TRUE(survives_throughput_roulette(kRouletteMinDepth, 1.0f, draw, survival));
+    EXPECT_TRUE(survives_throughput_roulette(kRouletteMinDepth, 7.0f, draw, survival));
+    EXPECT_EQ(survival, 1.0f);
+    EXPECT_EQ(draws, 0);
+    // Where it applies: survival is the throughput, and a draw below 1 - throughput ends it.
+    EXPECT_TRUE(survives_throughput_roulette(
+        kRouletteMinDepth, 0.25f, [] { return 0.8f; }, survival));
+    EXPECT_FLOAT_EQ(survival, 0.25f);
+    EXPECT_FALSE(survives_throughput_roulette(
+        kRouletteMinDepth, 0.25f, [] { return 0.7f; }, survival));
+}
+
+// Both rules keep the estimate unbiased: the mean over many draws of (survived / survival)
+// is 1, within a few standard errors.
+TEST(Roulette, BothRulesAreUnbiased) {
+    for (const float kept : {0.05f, 0.3f, 0.9f}) {
+        Rng rng(static_cast<uint64_t>(kept * 1000.0f) + 1u);
+        const int n = 200000;
+        double sum_throughput = 0.0, sum_power = 0.0;
+        for (int i = 0; i < n; ++i) {
+            float survival = 0.0f;
+            if (survives_throughput_roulette(
+                    kRouletteMinDepth, kept, [&] { return rng.next_float(); }, survival))
+                sum_throughput += 1.0 / survival;
+            if (survives_power_roulette(
+                    kept, [&] { return rng.next_float(); }, survival))
+                sum_power += 1.0 / survival;
+        }
+        // The weight 1/kept with probability kept: variance (1 - kept) / kept per draw.
+        const double se = std::sqrt((1.0 - kept) / kept / n);
+        EXPECT_NEAR(sum_throughput / n, 1.0, 5.0 * se) << "kept " << kept;
+        EXPECT_NEAR(sum_power / n, 1.0, 5.0 * se) << "kept " << kept;
+    }
+    float survival = 1.0f;
+    EXPECT_FALSE(survives_power_roulette(
+        0.0f, [] { return 0.0f; }, survival));
+}
+
+namespace {
+
+// Two area lights of different power (the second four times brighter and the same size).
+const char* kTwoLights = R"(
+    glint.quad{ vertices = { {-1, 2, -1}, {1, 2, -1}, {1, 2, 1}, {-1, 2, 1} },
+                material = glint.emissive{ radiance = 1 } }
+    glint.quad{ vertices = { {3, 2, -1}, {5, 2, -1}, {5, 2, 1}, {3, 2, 1} },
+                material = glint.emissive{ radiance = 4 } }
+    glint.quad{ vertices = { {-9, 0, 9}, {9, 0, 9}, {9, 0, -9}, {-9, 0, -9} },
+                material = glint.diffuse{ reflectance = 0.5 } }
+)";
+
+}  // namespace
+
+// A light path starts at the light the light sampler chooses, with the light's own
+// emission sample, and carries power / pmf; the brighter light is chosen more often, in
+// proportion to power.
+TEST(LightPathStart, CarriesPowerOverPmfFromTheChosenLight) {
+    const test::BuiltScene b = test::build_lua(kTwoLights, "light-path-start.lua");
+    const Scene& scene = *b.scene;
+    Rng rng(11);
+    int bright = 0;
+    const int n = 4000;
+    for (int i = 0; i < n; ++i) {
+        LightPathSamples u;
+        u.u_light = rng.next_float();
+        u.u_position = Vec2(rng.next_float(), rng.next_float());
+        u.u_direction = Vec2(rng.next_float(), rng.next_float());
+        u.u_select = rng.next_float();
+        const std::optional<LightPathStart> start = start_light_path(scene, u);
+        ASSERT_TRUE(start);
+        const LightSampler::Choice choice = scene.light_sampler().sample(u.u_light);
+        ASSERT_EQ(start->light, choice.light);
+        EXPECT_EQ(start->pmf, choice.pmf);
+        EXPECT_EQ(start->pmf, scene.light_sampler().pmf(*start->light));
+        const std::optional<LightEmission> emission =
+            choice.light->sample_le(u.u_position, u.u_direction, u.u_select);
+        ASSERT_TRUE(emission);
+        EXPECT_EQ(start->emission.ray.origin, emission->ray.origin);
+        EXPECT_EQ(start->emission.pdf_pos, emission->pdf_pos);
+        EXPECT_EQ(start->emission.pdf_dir, emission->pdf_dir);
+        const Spectrum expected = emission->beta() / choice.pmf;
+        EXPECT_FLOAT_EQ(start->beta.max_value(), expected.max_value());
+        EXPECT_FLOAT_EQ(start->beta.luminance(), expected.luminance());
+        if (start->emission.ray.origin.x > 2.0f) ++bright;
+    }
+    // Power in proportion 1 : 4 (equal areas): the bright light's share is 0.8.
+    const double share = static_cast<double>(bright) / n;
+    EXPECT_NEAR(share, 0.8, 5.0 * std::sqrt(0.8 * 0.2 / n));
+}
+
+// An emitter the caller supplies (a projection map) is asked instead of sample_le.
+TEST(LightPathStart, UsesTheEmitterItIsGiven) {
+    const test::BuiltScene b = test::build_lua(kTwoLights, "light-path-start.lua");
+    int calls = 0;
+    auto none = [&](const Light&, const Vec2&, const Vec2&, float) {
+        ++calls;
+        return std::optional<LightEmission>();
+    };
+    const LightPathSamples u{0.5f, Vec2(0.5f), Vec2(0.5f), 0.5f};
+    EXPECT_FALSE(start_light_path(*b.scene, u, none));
+    EXPECT_EQ(calls, 1);
+}
+
+namespace {
+
+// A floor whose vertex normals lean far over (shading normal about 72 degrees from the
+// geometric one), lit from above, with a second floor under it that only a ray through
+// the first can reach. Diffuse scattering about the leaning shading normal picks many
+// directions below the geometric surface.
+const char* kLeaningNormals = R"(
+    glint.point_light{ position = {0, 2, 0}, intensity = 10 }
+    glint.mesh{ vertices = { {-20, 0, -20}, {20, 0, -20}, {20, 0, 20}, {-20, 0, 20} },
+                indices = { 1, 3, 2, 1, 4, 3 },
+                normals = { {0.95, 0.3, 0}, {0.95, 0.3, 0}, {0.95, 0.3, 0}, {0.95, 0.3, 0} },
+                material = glint.diffuse{ reflectance = 0.9 } }
+    glint.quad{ vertices = { {-4, -1, 4}, {4, -1, 4}, {4, -1, -4}, {-4, -1, -4} },
+                material = glint.diffuse{ reflectance = 0.9 } }
+)";
+
+struct CountBelow {
+    int above = 0, below = 0;
+    void store(const PhotonHit& hit) { (hit.si->p.y < -0.5f ? below : above) += 1; }
+};
+
+}  // namespace
+
+// A photon that would leave through the wrong side of a shading normal ends there, as a
+// camera path does (sample_scattering's geometric-side check): none reaches the lower floor.
+TEST(PhotonTracer, EndsAPhotonThatWouldLeaveThroughTheWrongSideOfItsShadingNormal) {
+    const test::BuiltScene b = test::build_lua(kLeaningNormals, "leaning-normals.lua");
+    const PhotonTracer tracer(*b.scene, 4);
+    uint64_t rays = 0;
+    const std::vector<CountBelow> sinks =
+        tracer.trace(0, 20000, 5, rays, [] { return CountBelow{}; });
+    int above = 0, below = 0;
+    for (const CountBelow& sink : sinks) {
+        above += sink.above;
+        below += sink.below;
+    }
+    EXPECT_GT(above, 5000);  // the photons did reach the upper floor
+    EXPECT_EQ(below, 0);
+}
+
+namespace {
+
+// A point light above three sheets at heights 1, 2 and 3 between y = 0 and y = 4; `middle`
+// is the material of the sheet at y = 2.
+std::string sheets(const std::string& middle) {
+    std::string code = R"(
+        glint.point_light{ position = {0, 5, 0}, intensity = 1 }
+    )";
+    for (const auto& [y, material] : {std::pair<int, std::string>{1, "glint.interface{}"},
+                                      {2, middle},
+                                      {3, "glint.interface{}"}}) {
+        const std::string h = std::to_string(y);
+        code += "glint.quad{ vertices = { {-1, " + h + ", 1}, {1, " + h + ", 1}, {1, " + h +
+                ", -1}, {-1, " + h + ", -1} }, material = " + material + " }\n";
+    }
+    return code;
+}
+
+}  // namespace
+
+// Surfaces that only bound media let a shadow ray through whole: transmittance 1 through
+// any number of them, 0 where an opaque surface stands among them.
+TEST(Visibility, TransmittanceThroughInterfaceOnlySurfacesIsOne) {
+    const test::BuiltScene open = test::build_lua(sheets("glint.interface{}"), "sheets.lua");
+    ASSERT_TRUE(open.scene->has_interfaces());
+    const Spectrum through = transmittance(*open.scene, Vec3(0.0f), Vec3(0.0f, 4.0f, 0.0f));
+    EXPECT_EQ(through.max_value(), 1.0f);
+    EXPECT_EQ(through.average(), 1.0f);
+    // Towards a target short of the sheets, and from above them, alike.
+    EXPECT_EQ(transmittance(*open.scene, Vec3(0.0f, 4.5f, 0.0f), Vec3(0.0f, 0.5f, 0.0f)).average(),
+              1.0f);
+
+    const test::BuiltScene blocked = test::build_lua(sheets("glint.diffuse{}"), "sheets.lua");
+    EXPECT_TRUE(transmittance(*blocked.scene, Vec3(0.0f), Vec3(0.0f, 4.0f, 0.0f)).is_black());
+    // Past the edge of the sheets nothing is in the way.
+    EXPECT_EQ(
+        transmittance(*blocked.scene, Vec3(3.0f, 0.0f, 0.0f), Vec3(3.0f, 4.0f, 0.0f)).average(),
+        1.0f);
+}
+
+// Without interfaces, visibility is Embree's occlusion query: 0 or 1.
+TEST(Visibility, WithoutInterfacesIsTheOcclusionQuery) {
+    const test::BuiltScene b = test::build_lua(R"(
+        glint.point_light{ position = {0, 5, 0}, intensity = 1 }
+        glint.quad{ vertices = { {-1, 2, 1}, {1, 2, 1}, {1, 2, -1}, {-1, 2, -1} },
+                    material = glint.diffuse{} }
+    )",
+                                               "sheet.lua");
+    ASSERT_FALSE(b.scene->has_interfaces());
+    for (const float x : {0.0f, 0.5f, 1.5f, 3.0f}) {
+        const Vec3 from(x, 0.0f, 0.0f), to(x, 4.0f, 0.0f);
+        const bool blocked = b.scene->accel().occluded(from, to - from, 0.0f, kShadowRayEnd);
+        EXPECT_EQ(transmittance(*b.scene, from, to).average(), blocked ? 0.0f : 1.0f) << x;
+    }
+}
+
+// A medium that only absorbs (an absorbing dielectric's inside) lets exp(-sigma_a d) through
+// a segment of length d, per channel, and the dielectric names it as its inside.
+TEST(Medium, AbsorbingMediumFollowsBeerLambert) {
+    const AbsorbingMedium medium(Spectrum(0.5f));
+    const Ray ray{Vec3(0.0f), Vec3(0.0f, 2.0f, 0.0f), 0.0f, kInfinity};
+    EXPECT_FLOAT_EQ(medium.transmittance(ray, 1.5f).average(), std::exp(-0.5f * 3.0f));
+    const test::BuiltScene b = test::build_lua(R"(
+        glint.sphere{ center = {0, 0, 0}, radius = 1,
+                      material = glint.dielectric{ ior = 1.5, absorption = 0.5 } }
+        glint.sphere{ center = {3, 0, 0}, radius = 1, material = glint.dielectric{ ior = 1.5 } }
+    )",
+                                               "glass.lua");
+    SurfaceInteraction si;
+    // From inside the absorbing sphere out through its back face: one unit of glass.
+    ASSERT_TRUE(b.scene->intersect(Ray{Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f), 0.0f, kInfinity}, si));
+    EXPECT_FALSE(si.front_face);
+    const MediumInterface absorbing = si.material->medium_interface();
+    ASSERT_NE(absorbing.inside, nullptr);
+    EXPECT_EQ(absorbing.outside, nullptr);
+    EXPECT_FLOAT_EQ(segment_transmittance(Ray{Vec3(0.0f), Vec3(1.0f, 0.0f, 0.0f)}, si).average(),
+                    std::exp(-0.5f));
+    // Clear glass separates no media.
+    ASSERT_TRUE(b.scene->intersect(
+        Ray{Vec3(3.0f, 0.0f, 0.0f), Vec3(1.0f, 0.0f, 0.0f), 0.0f, kInfinity}, si));
+    EXPECT_FALSE(si.material->medium_interface().is_transition());
+}
+
+namespace {
+
+// A diffuse floor under a square light, seen from above; with `sheets`, interface-only
+// sheets stand between the camera and the floor and between the light and the floor.
+std::string floor_scene(const std::string& integrator, int seed, bool sheets) {
+    std::string code = R"(
+        glint.camera{ eye = {0, 3, 0.01}, look_at = {0, 0, 0}, fov = 50 }
+        glint.render{ width = 16, height = 16, spp = 64, max_depth = 6, integrator = ')" +
+                       integrator + "', seed = " + std::to_string(seed) + R"( }
+        glint.quad{ vertices = { {-2, 0, 2}, {2, 0, 2}, {2, 0, -2}, {-2, 0, -2} },
+                    material = glint.diffuse{ reflectance = 0.6 } }
+        glint.quad{ vertices = { {0.5, 2, -1}, {1.5, 2, -1}, {1.5, 2, 1}, {0.5, 2, 1} },
+                    material = glint.emissive{ radiance = 4, two_sided = true } }
+    )";
+    if (sheets) {
+        code += R"(
+        glint.quad{ vertices = { {-3, 1, 3}, {3, 1, 3}, {3, 1, -3}, {-3, 1, -3} },
+                    material = glint.interface{} }
+        glint.quad{ vertices = { {-3, 2.5, 3}, {3, 2.5, 3}, {3, 2.5, -3}, {-3, 2.5, -3} },
+                    material = glint.interface{} }
+        )";
+    }
+    return code;
+}
+
+}  // namespace
+
+// Walks and shadow rays cross interface-only surfaces unchanged: the image with them agrees
+// with the image without them within the noise, for the path tracer (NEE, packets) and
+// bdpt (its connections and the camera's).
+TEST(Visibility, InterfaceSheetsLeaveTheImageUnchanged) {
+    for (const char* integrator : {"path", "bdpt"}) {
+        const Image a = test::render_lua(floor_scene(integrator, 1, false));
+        const Image b = test::render_lua(floor_scene(integrator, 2, false));
+        const Image with = test::render_lua(floor_scene(integrator, 3, true));
+        for (int c = 0; c < 3; ++c) {
+            const double se = test::standard_error_of_mean(a, b, c, 0, 0, 16, 16);
+            const double mean = test::mean_channel(a, c, 0, 0, 16, 16);
+            const double mean_with = test::mean_channel(with, c, 0, 0, 16, 16);
+            ASSERT_GT(mean, 0.01) << integrator;
+            // The difference of two independent means: sqrt(2) standard errors.
+            EXPECT_NEAR(mean_with, mean, 4.0 * std::sqrt(2.0) * se) << integrator << " " << c;
+        }
+    }
+}
