@@ -13,8 +13,8 @@ const char* power_key(const std::string& type) {
     return "intensity";
 }
 
-std::vector<double> numbers(const Spectrum& s) {
-    return {s.r, s.g, s.b};
+std::vector<double> numbers(const Rgb& c) {
+    return {c.r, c.g, c.b};
 }
 std::vector<double> numbers(const Vec3& v) {
     return {v.x, v.y, v.z};
@@ -25,7 +25,7 @@ void scale_power(Params& params, float scale) {
     const char* key = power_key(params.type());
     // A copy reads the value, so the original's record of used keys stays as it was.
     const Params read = params;
-    params.set(key, numbers(read.get_spectrum(key, Spectrum(1.0f)) * scale), params.where_of(key));
+    params.set(key, numbers(read.get_rgb(key, Rgb(1.0f)) * scale), params.where_of(key));
 }
 
 // Whether a world shape emits: its material (always a handle after loading) is emissive.
