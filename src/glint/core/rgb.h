@@ -15,8 +15,10 @@ struct Rgb {
     constexpr explicit Rgb(float v) : r(v), g(v), b(v) {}
     constexpr Rgb(float r_, float g_, float b_) : r(r_), g(g_), b(b_) {}
 
-    float operator[](int i) const { return i == 0 ? r : (i == 1 ? g : b); }
-    float& operator[](int i) { return i == 0 ? r : (i == 1 ? g : b); }
+    // Writable only on a named Rgb: a write into a temporary (say to_rgb(s)[c] = v) would be
+    // lost, so it does not compile.
+    float operator[](int i) const& { return i == 0 ? r : (i == 1 ? g : b); }
+    float& operator[](int i) & { return i == 0 ? r : (i == 1 ? g : b); }
 
     Rgb& operator+=(const Rgb& o) {
         r += o.r;
