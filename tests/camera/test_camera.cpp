@@ -67,7 +67,7 @@ void expect_round_trip(const PerspectiveCamera& camera, const Vec3& ref, const V
     EXPECT_GT(glm::dot(ray.direction, towards_ref), 1.0f - 1e-6f);
     EXPECT_GT(glm::dot(s->wi, -towards_ref), 1.0f - 1e-6f);
     Vec2 film(-1.0f);
-    EXPECT_NEAR(camera.we(ray, &film)[0], s->We[0], 1e-4f * s->We[0]);
+    EXPECT_NEAR(to_rgb(camera.we(ray, &film))[0], to_rgb(s->We)[0], 1e-4f * to_rgb(s->We)[0]);
     EXPECT_NEAR(film.x, s->film.x, 1e-3f);
     EXPECT_NEAR(film.y, s->film.y, 1e-3f);
 }
@@ -150,7 +150,7 @@ TEST(CameraImportance, WeIsZeroOutsideTheFrameAndMatchesTheFormula) {
             const Vec2 film(rng.next_float() * kResolution.x, rng.next_float() * kResolution.y);
             const Ray ray = camera.generate_ray(film, Vec2(rng.next_float(), rng.next_float()));
             Vec2 back(-1.0f);
-            const float we = camera.we(ray, &back)[0];
+            const float we = to_rgb(camera.we(ray, &back))[0];
             const double c = glm::dot(ray.direction, a.forward);
             const double expected = 1.0 / (lens_area * image_area() * c * c * c * c);
             EXPECT_NEAR(we, expected, 1e-4 * expected);
@@ -168,10 +168,10 @@ TEST(CameraImportance, WeIsZeroOutsideTheFrameAndMatchesTheFormula) {
         for (const Vec2& film : outside) {
             // A pinhole ray through the film point, beyond the frame, from the lens centre.
             const Ray ray{kEye, glm::normalize(point_through(film, 1.0f) - kEye)};
-            EXPECT_EQ(camera.we(ray)[0], 0.0f) << film.x << "," << film.y;
+            EXPECT_EQ(to_rgb(camera.we(ray))[0], 0.0f) << film.x << "," << film.y;
             EXPECT_EQ(camera.pdf_we(ray).dir, 0.0f);
         }
-        EXPECT_EQ(camera.we(Ray{kEye, -a.forward})[0], 0.0f);
+        EXPECT_EQ(to_rgb(camera.we(Ray{kEye, -a.forward}))[0], 0.0f);
     }
 }
 
@@ -198,7 +198,7 @@ TEST(CameraImportance, WeAndPdfWeIntegrateToTheirNormalisation) {
                     warp::square_to_uniform_hemisphere(Vec2(rng.next_float(), rng.next_float()));
                 const Ray ray{origin, frame.to_world(local)};
                 const double inv_pdf = 2.0 * M_PI;
-                const double we = camera.we(ray)[0] * local.z * inv_pdf;
+                const double we = to_rgb(camera.we(ray))[0] * local.z * inv_pdf;
                 const double pdf = camera.pdf_we(ray).dir * inv_pdf;
                 we_sum += we;
                 we_sum2 += we * we;

@@ -49,7 +49,7 @@ TEST(OrthographicCamera, SampleWiRoundTripsThroughGenerateRay) {
         EXPECT_LT(glm::length(s->p_lens - ray.origin), 1e-4f);
         EXPECT_GT(glm::dot(s->wi, -forward), 1.0f - 1e-6f);
         EXPECT_FLOAT_EQ(s->pdf, 1.0f);
-        EXPECT_FLOAT_EQ(s->We[0], 1.0f / camera.film_area());
+        EXPECT_FLOAT_EQ(to_rgb(s->We)[0], 1.0f / camera.film_area());
         // The footprint of a parallel ray on a plane facing the camera is one pixel.
         Vec3 dpdx, dpdy;
         camera.approximate_footprint(ref, -forward, dpdx, dpdy);
@@ -62,7 +62,7 @@ TEST(OrthographicCamera, SampleWiRoundTripsThroughGenerateRay) {
     const Vec3 right = glm::normalize(glm::cross(forward, kUp));
     EXPECT_FALSE(camera.sample_wi(corner.origin + 2.0f * forward - 0.01f * right, Vec2(0.5f)));
     // A delta in direction: no ray found by chance carries importance.
-    EXPECT_EQ(camera.we(corner)[0], 0.0f);
+    EXPECT_EQ(to_rgb(camera.we(corner))[0], 0.0f);
     EXPECT_EQ(camera.pdf_we(corner).dir, 0.0f);
 }
 

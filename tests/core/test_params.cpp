@@ -9,7 +9,7 @@ TEST(Params, ReadsValuesAndDefaults) {
     Params p("diffuse", "scene.lua:3");
     p.set("reflectance", std::vector<double>{0.1, 0.2, 0.3});
     p.set("ior", 1.5);
-    EXPECT_EQ(p.get_spectrum("reflectance"), Spectrum(0.1f, 0.2f, 0.3f));
+    EXPECT_EQ(p.get_rgb("reflectance"), Rgb(0.1f, 0.2f, 0.3f));
     EXPECT_FLOAT_EQ(p.get_float("ior", 1.0f), 1.5f);
     EXPECT_FLOAT_EQ(p.get_float("roughness", 0.25f), 0.25f);
     EXPECT_NO_THROW(p.check_all_used());

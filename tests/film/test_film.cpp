@@ -30,8 +30,8 @@ TEST(Film, ChannelsAndSize) {
 
 TEST(Film, WeightedMeanPerPixel) {
     Film film(3, 2, false);
-    film.add_sample({1, 0}, Spectrum(1.0f, 2.0f, 3.0f), 1.0f, nullptr);
-    film.add_sample({1, 0}, Spectrum(4.0f, 0.0f, 1.0f), 3.0f, nullptr);
+    film.add_sample({1, 0}, uplift(Rgb(1.0f, 2.0f, 3.0f), RgbRole::unbounded), 1.0f, nullptr);
+    film.add_sample({1, 0}, uplift(Rgb(4.0f, 0.0f, 1.0f), RgbRole::unbounded), 3.0f, nullptr);
     // Negative weights (Mitchell lobes) enter the same mean.
     film.add_sample({2, 1}, Spectrum(2.0f), 2.0f, nullptr);
     film.add_sample({2, 1}, Spectrum(5.0f), -0.5f, nullptr);
@@ -60,8 +60,8 @@ TEST(Film, NonFiniteSamplesAreSkippedAndCounted) {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
     film.add_sample({0, 0}, Spectrum(2.0f), 1.0f, nullptr);
-    film.add_sample({0, 0}, Spectrum(nan, 1.0f, 1.0f), 1.0f, nullptr);
-    film.add_sample({0, 0}, Spectrum(1.0f, inf, 1.0f), 1.0f, nullptr);
+    film.add_sample({0, 0}, uplift(Rgb(nan, 1.0f, 1.0f), RgbRole::unbounded), 1.0f, nullptr);
+    film.add_sample({0, 0}, uplift(Rgb(1.0f, inf, 1.0f), RgbRole::unbounded), 1.0f, nullptr);
     film.add_sample({0, 0}, Spectrum(1.0f), nan, nullptr);
     film.add_sample({1, 0}, Spectrum(-inf), 1.0f, nullptr);
     const Image img = film.resolve();
@@ -77,7 +77,8 @@ TEST(Film, NonFiniteSamplesAreSkippedAndCounted) {
 
 TEST(Film, AovsUseAbsoluteWeights) {
     Film film(1, 1, true);
-    const AovSample first{Spectrum(0.2f, 0.4f, 0.6f), Vec3(0.0f, 0.0f, 1.0f), 2.0f};
+    const AovSample first{uplift(Rgb(0.2f, 0.4f, 0.6f), RgbRole::unbounded), Vec3(0.0f, 0.0f, 1.0f),
+                          2.0f};
     const AovSample second{Spectrum(1.0f), Vec3(1.0f, 0.0f, 0.0f), 6.0f};
     film.add_sample({0, 0}, Spectrum(1.0f), 3.0f, &first);
     film.add_sample({0, 0}, Spectrum(1.0f), -1.0f, &second);
@@ -115,7 +116,8 @@ TEST(Film, OrderOfPixelsDoesNotMatter) {
     // filling them in another order (as other tile schedules would) gives the same bits.
     Film forward(8, 8, false), backward(8, 8, false);
     const auto value = [](int x, int y, int s) {
-        return Spectrum(0.1f * x + 0.37f * s, 0.01f * y * s, 1.0f / (1 + x + y + s));
+        return uplift(Rgb(0.1f * x + 0.37f * s, 0.01f * y * s, 1.0f / (1 + x + y + s)),
+                      RgbRole::unbounded);
     };
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x)
@@ -134,12 +136,13 @@ TEST(Film, OrderOfPixelsDoesNotMatter) {
 // the samples.
 TEST(Film, SplatsLandInTheirPixelAndAreScaled) {
     Film film(4, 3, false);
-    film.add_sample({2, 1}, Spectrum(1.0f, 2.0f, 3.0f), 1.0f, nullptr);
+    film.add_sample({2, 1}, uplift(Rgb(1.0f, 2.0f, 3.0f), RgbRole::unbounded), 1.0f, nullptr);
     const Splat splats[] = {
-        {Vec2(2.5f, 1.5f), Spectrum(0.5f, 1.0f, 1.5f)},
-        {Vec2(2.0f, 1.99f), Spectrum(0.25f, 0.0f, 0.0f)},  // the same pixel, at its edges
-        {Vec2(0.1f, 2.9f), Spectrum(4.0f, 5.0f, 6.0f)},    // bottom-left
-        {Vec2(3.99f, 0.0f), Spectrum(7.0f, 8.0f, 9.0f)},   // top-right
+        {Vec2(2.5f, 1.5f), uplift(Rgb(0.5f, 1.0f, 1.5f), RgbRole::unbounded)},
+        {Vec2(2.0f, 1.99f),
+         uplift(Rgb(0.25f, 0.0f, 0.0f), RgbRole::unbounded)},  // the same pixel, at its edges
+        {Vec2(0.1f, 2.9f), uplift(Rgb(4.0f, 5.0f, 6.0f), RgbRole::unbounded)},   // bottom-left
+        {Vec2(3.99f, 0.0f), uplift(Rgb(7.0f, 8.0f, 9.0f), RgbRole::unbounded)},  // top-right
     };
     film.add_splats(splats);
     film.set_splat_scale(2.0);
@@ -160,10 +163,14 @@ TEST(Film, SplatsOutsideAreIgnoredAndNonFiniteOnesCounted) {
     const float inf = std::numeric_limits<float>::infinity();
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const Splat splats[] = {
-        {Vec2(-0.01f, 1.0f), Spectrum(1.0f)}, {Vec2(3.0f, 1.0f), Spectrum(1.0f)},
-        {Vec2(1.0f, -0.5f), Spectrum(1.0f)},  {Vec2(1.0f, 2.0f), Spectrum(1.0f)},
-        {Vec2(1e30f, 1.0f), Spectrum(1.0f)},  {Vec2(1.0f, 1.0f), Spectrum(nan, 1.0f, 1.0f)},
-        {Vec2(1.0f, 1.0f), Spectrum(inf)},    {Vec2(nan, 1.0f), Spectrum(1.0f)},
+        {Vec2(-0.01f, 1.0f), Spectrum(1.0f)},
+        {Vec2(3.0f, 1.0f), Spectrum(1.0f)},
+        {Vec2(1.0f, -0.5f), Spectrum(1.0f)},
+        {Vec2(1.0f, 2.0f), Spectrum(1.0f)},
+        {Vec2(1e30f, 1.0f), Spectrum(1.0f)},
+        {Vec2(1.0f, 1.0f), uplift(Rgb(nan, 1.0f, 1.0f), RgbRole::unbounded)},
+        {Vec2(1.0f, 1.0f), Spectrum(inf)},
+        {Vec2(nan, 1.0f), Spectrum(1.0f)},
     };
     film.add_splats(splats);
     const Image image = film.resolve();
@@ -177,8 +184,8 @@ TEST(Film, SplatsOutsideAreIgnoredAndNonFiniteOnesCounted) {
 TEST(Film, ResolveWithoutSplatsIsTheWeightedMean) {
     Film film(2, 2, false);
     film.set_splat_scale(3.0);
-    film.add_sample({0, 0}, Spectrum(0.1f, 0.2f, 0.3f), 0.7f, nullptr);
-    film.add_sample({0, 0}, Spectrum(0.4f, 0.5f, 0.9f), 0.3f, nullptr);
+    film.add_sample({0, 0}, uplift(Rgb(0.1f, 0.2f, 0.3f), RgbRole::unbounded), 0.7f, nullptr);
+    film.add_sample({0, 0}, uplift(Rgb(0.4f, 0.5f, 0.9f), RgbRole::unbounded), 0.3f, nullptr);
     film.add_splats({});
     const Image image = film.resolve();
     // As the film accumulates: in double, the float weights, then times the inverse sum.

@@ -33,19 +33,20 @@ namespace fs = std::filesystem;
 
 constexpr int kSkyWidth = 64, kSkyHeight = 32;
 constexpr int kSunX = 20, kSunY = 9;  // centre of a 3 x 3 pixel sun, 53 degrees from the zenith
-const Spectrum kSunRadiance(60.0f, 50.0f, 40.0f);
+const Spectrum kSunRadiance = uplift(Rgb(60.0f, 50.0f, 40.0f), RgbRole::unbounded);
 
 // A blue-to-white sky, varying in azimuth too, with a bright sun.
 Spectrum sky_pixel(int x, int y) {
     if (std::abs(x - kSunX) <= 1 && std::abs(y - kSunY) <= 1) return kSunRadiance;
     const float v = (y + 0.5f) / kSkyHeight, u = (x + 0.5f) / kSkyWidth;
     const float azimuth = 1.0f + 0.3f * std::cos(2.0f * kPi * u);
-    return Spectrum(0.3f + 0.5f * v, 0.4f + 0.4f * v, 0.8f - 0.3f * v) * azimuth;
+    return uplift(Rgb(0.3f + 0.5f * v, 0.4f + 0.4f * v, 0.8f - 0.3f * v), RgbRole::unbounded) *
+           azimuth;
 }
 
 // Eight columns and four rows of different colours, to pin down the mapping.
 Spectrum compass_pixel(int x, int y) {
-    return Spectrum(0.1f + x, 0.2f + y, 0.05f * (x + 8 * y) + 0.1f);
+    return uplift(Rgb(0.1f + x, 0.2f + y, 0.05f * (x + 8 * y) + 0.1f), RgbRole::unbounded);
 }
 
 void write_map(const fs::path& path, int width, int height,
@@ -53,7 +54,7 @@ void write_map(const fs::path& path, int width, int height,
     Image image = make_image(width, height, {"R", "G", "B"});
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
-            for (int c = 0; c < 3; ++c) image.at(x, y, c) = pixel(x, y)[c];
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = to_rgb(pixel(x, y))[c];
         }
     }
     write_image(path.string(), image);
@@ -91,7 +92,8 @@ std::unique_ptr<Light> environment(const fs::path& file, float rotation = 0.0f,
     Params params("environment", "test.lua:1");
     params.set("file", file.filename().string());
     params.set("rotation", static_cast<double>(rotation));
-    params.set("intensity", std::vector<double>{intensity.r, intensity.g, intensity.b});
+    params.set("intensity",
+               std::vector<double>{to_rgb(intensity).r, to_rgb(intensity).g, to_rgb(intensity).b});
     auto light = make_light(params, file.parent_path().string());
     light->preprocess(Vec3(0.0f), 1.0f);
     return light;
@@ -116,7 +118,7 @@ Vec3 pixel_direction(int x, int y, int width, int height, double degrees = 0.0) 
 void expect_spectrum_near(const Spectrum& a, const Spectrum& b, float relative,
                           const std::string& label) {
     for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(a[c], b[c], relative * std::max(std::abs(b[c]), 1e-6f))
+        EXPECT_NEAR(to_rgb(a)[c], to_rgb(b)[c], relative * std::max(std::abs(to_rgb(b)[c]), 1e-6f))
             << label << " channel " << c;
     }
 }
@@ -163,7 +165,7 @@ TEST(EnvironmentLight, RotationMovesTheSunAndIntensityScales) {
     const auto rotated = environment(maps().sky, 90.0f);
     expect_spectrum_near(plain->le_escaped(sun), kSunRadiance, 1e-4f, "sun");
     expect_spectrum_near(rotated->le_escaped(turned), kSunRadiance, 1e-4f, "turned sun");
-    EXPECT_LT(rotated->le_escaped(sun).r, 2.0f);  // only sky where the sun was
+    EXPECT_LT(to_rgb(rotated->le_escaped(sun)).r, 2.0f);  // only sky where the sun was
     // The sun holds about a third of the sampling weight: light samples follow it.
     Rng rng(4);
     int near_turned_sun = 0, near_old_sun = 0;
@@ -177,7 +179,7 @@ TEST(EnvironmentLight, RotationMovesTheSunAndIntensityScales) {
     EXPECT_GT(near_turned_sun, 200);
     EXPECT_LT(near_old_sun, 20);
 
-    const Spectrum tint(2.5f, 1.0f, 0.5f);
+    const Spectrum tint = uplift(Rgb(2.5f, 1.0f, 0.5f), RgbRole::unbounded);
     const auto brighter = environment(maps().sky, 0.0f, tint);
     for (const Vec3& w : {sun, Vec3(0.3f, 0.8f, -0.2f), Vec3(0.0f, -1.0f, 0.1f)}) {
         expect_spectrum_near(brighter->le_escaped(w), plain->le_escaped(w) * tint, 1e-5f, "tinted");
@@ -247,7 +249,7 @@ TEST(EnvironmentLight, IrradianceEstimateIsUnbiased) {
             for (int i = 0; i < kU; ++i) {
                 const Spectrum L =
                     light->le_escaped(documented_direction((i + 0.5) / kU, v, degrees));
-                for (int c = 0; c < 3; ++c) expected[c] += L[c] * weight;
+                for (int c = 0; c < 3; ++c) expected[c] += to_rgb(L)[c] * weight;
             }
         }
         Rng rng(21);
@@ -257,7 +259,8 @@ TEST(EnvironmentLight, IrradianceEstimateIsUnbiased) {
             const auto s =
                 light->sample_li(Vec3(0.0f), Vec2(rng.next_float(), rng.next_float()), 0.5f);
             if (!s || s->wi.y <= 0.0f) continue;
-            for (int c = 0; c < 3; ++c) estimate[c] += s->L[c] * s->wi.y / s->pdf / kSamples;
+            for (int c = 0; c < 3; ++c)
+                estimate[c] += to_rgb(s->L)[c] * s->wi.y / s->pdf / kSamples;
         }
         for (int c = 0; c < 3; ++c) {
             EXPECT_NEAR(estimate[c], expected[c], 0.01 * expected[c])
@@ -293,7 +296,7 @@ TEST(EnvironmentLight, PhotonsCarryThePowerASphereIntercepts) {
     integrator.build_maps(*scene);
     double stored[3] = {0.0, 0.0, 0.0};
     for (size_t i = 0; i < integrator.global_map().size(); ++i) {
-        for (int c = 0; c < 3; ++c) stored[c] += integrator.global_map()[i].power[c];
+        for (int c = 0; c < 3; ++c) stored[c] += to_rgb(integrator.global_map()[i].power)[c];
     }
     // The radiance integral over the sphere of directions, numerically from the lookup.
     constexpr int kU = 512, kV = 256;
@@ -303,7 +306,7 @@ TEST(EnvironmentLight, PhotonsCarryThePowerASphereIntercepts) {
         const double weight = 2.0 * M_PI * M_PI * std::sin(M_PI * v) / (kU * kV);
         for (int i = 0; i < kU; ++i) {
             const Spectrum L = scene->escaped_radiance(documented_direction((i + 0.5) / kU, v));
-            for (int c = 0; c < 3; ++c) integral[c] += L[c] * weight;
+            for (int c = 0; c < 3; ++c) integral[c] += to_rgb(L)[c] * weight;
         }
     }
     for (int c = 0; c < 3; ++c) {

@@ -54,14 +54,14 @@ void expect_consistent(const Light& light, const std::string& label, double powe
             ++mismatches;
         }
         const Spectrum beta = e->beta();
-        for (int c = 0; c < 3; ++c) total[c] += beta[c];
+        for (int c = 0; c < 3; ++c) total[c] += to_rgb(beta)[c];
     }
     EXPECT_EQ(mismatches, 0) << label;
     EXPECT_GT(drawn, 0) << label;
     const Spectrum power = light.power();
     for (int c = 0; c < 3; ++c) {
         const double mean = total[c] / kSamples;
-        EXPECT_NEAR(mean, power[c], std::max(power_tolerance, 1e-5) * power[c])
+        EXPECT_NEAR(mean, to_rgb(power)[c], std::max(power_tolerance, 1e-5) * to_rgb(power)[c])
             << label << " channel " << c;
     }
 }
@@ -150,8 +150,8 @@ TEST(LightEmission, QuadAreaLightOneAndTwoSided) {
                                                    Vec3(corners[2], 0), Vec3(corners[3], 0)));
     const Vec3 front = mesh.make_sampler(Transform())->sample_area(Vec2(0.5f), 0.5f).n;
     for (const bool two_sided : {false, true}) {
-        const AreaLight light(mesh.make_sampler(Transform()), Spectrum(2.0f, 1.0f, 0.5f),
-                              two_sided);
+        const AreaLight light(mesh.make_sampler(Transform()),
+                              uplift(Rgb(2.0f, 1.0f, 0.5f), RgbRole::unbounded), two_sided);
         const std::string label = two_sided ? "two-sided quad" : "one-sided quad";
         expect_consistent(light, label, 1e-4);
         expect_surface_directions(
@@ -173,7 +173,7 @@ TEST(LightEmission, SphereAreaLightOneAndTwoSided) {
     auto front = [&](const Vec3& p) { return glm::normalize(p - centre); };
     for (const bool two_sided : {false, true}) {
         const AreaLight light(std::make_unique<SphereSampler>(centre, radius),
-                              Spectrum(1.0f, 3.0f, 2.0f), two_sided);
+                              uplift(Rgb(1.0f, 3.0f, 2.0f), RgbRole::unbounded), two_sided);
         const std::string label = two_sided ? "two-sided sphere" : "one-sided sphere";
         expect_consistent(light, label, 1e-4);
         expect_surface_directions(light, front, centre + Vec3(0.0f, radius, 0.0f), label);
@@ -190,7 +190,7 @@ TEST(LightEmission, SphereAreaLightOneAndTwoSided) {
 
 TEST(LightEmission, PointLightIsUniformFromItsPosition) {
     const Vec3 position(1.0f, 2.0f, -3.0f);
-    const PointLight light(position, Spectrum(3.0f, 2.0f, 1.0f));
+    const PointLight light(position, uplift(Rgb(3.0f, 2.0f, 1.0f), RgbRole::unbounded));
     expect_consistent(light, "point", 1e-4);
     expect_directions(
         light, [](const LightEmission& e) -> std::optional<Vec3> { return e.ray.direction; },
@@ -207,7 +207,8 @@ TEST(LightEmission, PointLightIsUniformFromItsPosition) {
 
 TEST(LightEmission, SpotLightIsUniformInItsCone) {
     const Vec3 position(0.0f, 1.0f, 0.0f), target(0.3f, -1.0f, 0.4f);
-    const SpotLight light(position, target - position, Spectrum(5.0f, 4.0f, 3.0f), 50.0f, 30.0f);
+    const SpotLight light(position, target - position,
+                          uplift(Rgb(5.0f, 4.0f, 3.0f), RgbRole::unbounded), 50.0f, 30.0f);
     const Frame frame = Frame::from_normal(glm::normalize(target - position));
     // The falloff makes photons' powers differ; the tolerance is several standard errors.
     expect_consistent(light, "spot", 0.01);
@@ -225,7 +226,7 @@ TEST(LightEmission, SpotLightIsUniformInItsCone) {
 
 TEST(LightEmission, DirectionalLightEntersThroughADiscCoveringTheScene) {
     const Vec3 direction = glm::normalize(Vec3(0.3f, -1.0f, 0.2f));
-    DirectionalLight light(direction, Spectrum(1.0f, 0.5f, 0.25f));
+    DirectionalLight light(direction, uplift(Rgb(1.0f, 0.5f, 0.25f), RgbRole::unbounded));
     const Vec3 centre(1.0f, 0.0f, -2.0f);
     const float radius = 3.0f;
     light.preprocess(centre, radius);
@@ -256,8 +257,9 @@ TEST(LightEmission, EnvironmentLightDirectionsAndDisc) {
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
             const float a = 1.0f + 0.5f * std::cos(2.0f * kPi * (x + 0.5f) / kWidth);
-            Spectrum p = Spectrum(1.0f - 0.1f * y, 0.8f, 0.2f + 0.1f * y) * a;
-            if (x == 5 && y == 2) p = Spectrum(30.0f, 25.0f, 20.0f);
+            Spectrum p =
+                uplift(Rgb(1.0f - 0.1f * y, 0.8f, 0.2f + 0.1f * y), RgbRole::unbounded) * a;
+            if (x == 5 && y == 2) p = uplift(Rgb(30.0f, 25.0f, 20.0f), RgbRole::unbounded);
             pixels.push_back(p);
         }
     }

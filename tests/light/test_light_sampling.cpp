@@ -307,7 +307,7 @@ TEST(SphereEmitter, SamplesLieOnTheVisibleSurface) {
 }
 
 TEST(PointLight, IrradianceFallsOffAsInverseSquare) {
-    const Spectrum intensity(3.0f, 2.0f, 1.0f);
+    const Spectrum intensity = uplift(Rgb(3.0f, 2.0f, 1.0f), RgbRole::unbounded);
     const PointLight light(Vec3(1, 2, 3), intensity);
     for (const Vec3& ref : {Vec3(1, 2, 0), Vec3(-4, 0, 1), Vec3(100, 2, 3)}) {
         const auto s = light.sample_li(ref, Vec2(0.5f), 0.5f);
@@ -315,13 +315,14 @@ TEST(PointLight, IrradianceFallsOffAsInverseSquare) {
         const Vec3 d = Vec3(1, 2, 3) - ref;
         const float r2 = glm::dot(d, d);
         for (int c = 0; c < 3; ++c)
-            EXPECT_NEAR(s->L[c], intensity[c] / r2, 1e-6f * intensity[c] / r2);
+            EXPECT_NEAR(to_rgb(s->L)[c], to_rgb(intensity)[c] / r2,
+                        1e-6f * to_rgb(intensity)[c] / r2);
         EXPECT_NEAR(glm::length(s->wi - glm::normalize(d)), 0.0f, 1e-6f);
         EXPECT_TRUE(s->is_delta);
         EXPECT_EQ(s->pdf, 1.0f);
         EXPECT_EQ(s->p, Vec3(1, 2, 3));
     }
-    EXPECT_NEAR(light.power().r, 4.0f * kPi * 3.0f, 1e-5f);
+    EXPECT_NEAR(to_rgb(light.power()).r, 4.0f * kPi * 3.0f, 1e-5f);
     EXPECT_FALSE(light.sample_li(Vec3(1, 2, 3), Vec2(0.5f), 0.5f).has_value());  // at the light
 }
 
@@ -354,7 +355,7 @@ TEST(SpotLight, FalloffProfile) {
         const auto s = light.sample_li(ref, Vec2(0.5f), 0.5f);
         if (f > 0.0f) {
             ASSERT_TRUE(s.has_value()) << degrees;
-            EXPECT_NEAR(s->L.r, 10.0f * f / 16.0f, 1e-5f) << degrees;
+            EXPECT_NEAR(to_rgb(s->L).r, 10.0f * f / 16.0f, 1e-5f) << degrees;
         } else {
             EXPECT_FALSE(s.has_value()) << degrees;
         }
@@ -367,7 +368,7 @@ TEST(SpotLight, FalloffProfile) {
         EXPECT_NEAR(light.falloff(w),
                     light.falloff(frame.to_world(Vec3(std::sin(t), 0.0f, std::cos(t)))), 1e-5f);
     }
-    EXPECT_NEAR(light.power().r, power, 1e-3 * power);
+    EXPECT_NEAR(to_rgb(light.power()).r, power, 1e-3 * power);
 }
 
 TEST(AreaLight, OneSidedEmitsOnlyFromTheFront) {
@@ -375,7 +376,7 @@ TEST(AreaLight, OneSidedEmitsOnlyFromTheFront) {
     const MeshData quad =
         make_quad_mesh(Vec3(-1, -1, 0), Vec3(1, -1, 0), Vec3(1, 1, 0), Vec3(-1, 1, 0));
     const TriangleMesh mesh("quad", quad);
-    const Spectrum radiance(2.0f, 1.0f, 0.5f);
+    const Spectrum radiance = uplift(Rgb(2.0f, 1.0f, 0.5f), RgbRole::unbounded);
     const AreaLight one_sided(mesh.make_sampler(Transform()), radiance, false);
     const AreaLight two_sided(mesh.make_sampler(Transform()), radiance, true);
     Rng rng(17);
@@ -415,15 +416,16 @@ TEST(AreaLight, OneSidedEmitsOnlyFromTheFront) {
     EXPECT_TRUE(one_sided.le(si, glm::normalize(Vec3(1.0f, 0.0f, 0.01f))) == radiance);
     EXPECT_TRUE(two_sided.le(si, glm::normalize(Vec3(0.2f, 0.1f, -1.0f))) == radiance);
     // Power: radiance times pi times area, per emitting side.
-    EXPECT_NEAR(one_sided.power().r, 2.0f * kPi * 4.0f, 1e-4f);
-    EXPECT_NEAR(two_sided.power().r, 2.0f * 2.0f * kPi * 4.0f, 1e-4f);
+    EXPECT_NEAR(to_rgb(one_sided.power()).r, 2.0f * kPi * 4.0f, 1e-4f);
+    EXPECT_NEAR(to_rgb(two_sided.power()).r, 2.0f * 2.0f * kPi * 4.0f, 1e-4f);
 }
 
 TEST(LightSampler, ChoosesInProportionToPower) {
     std::vector<std::unique_ptr<Light>> lights;
     lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(0.0f)));  // black
     lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(1.0f)));
-    lights.push_back(std::make_unique<PointLight>(Vec3(0.0f), Spectrum(3.0f, 0.5f, 2.0f)));
+    lights.push_back(std::make_unique<PointLight>(
+        Vec3(0.0f), uplift(Rgb(3.0f, 0.5f, 2.0f), RgbRole::unbounded)));
     const TriangleMesh mesh(
         "quad", make_quad_mesh(Vec3(0, 0, 0), Vec3(2, 0, 0), Vec3(2, 1, 0), Vec3(0, 1, 0)));
     lights.push_back(
@@ -501,7 +503,7 @@ TEST(SpotLight, IrradianceOnAPlaneFollowsTheDocumentedFalloff) {
         }
         const double expected = intensity * s * cos_theta / r2;
         const auto sample = light.sample_li(p, Vec2(0.5f), 0.5f);
-        const double measured = sample ? sample->L.r * sample->wi.z : 0.0;
+        const double measured = sample ? to_rgb(sample->L).r * sample->wi.z : 0.0;
         EXPECT_NEAR(measured, expected, 1e-4 * intensity / (height * height) + 1e-5 * expected)
             << "at " << glm::length(Vec2(p)) << " from the axis";
     }

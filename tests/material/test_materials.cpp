@@ -62,12 +62,13 @@ TEST(DiffuseMaterial, UntexturedHandsOutOneBsdfWithItsReflectance) {
     Params params("diffuse", "scene.lua:1");
     params.set("reflectance", std::vector<double>{0.2, 0.4, 0.6});
     expect_one_shared_bsdf(make_diffuse_material, params,
-                           LambertianBsdf(Spectrum(0.2f, 0.4f, 0.6f)));
+                           LambertianBsdf(uplift(Rgb(0.2f, 0.4f, 0.6f), RgbRole::unbounded)));
 }
 
 TEST(MirrorMaterial, UntexturedHandsOutOneBsdfWithItsTint) {
     Params params("mirror", "scene.lua:1");
     params.set("tint", std::vector<double>{0.9, 0.8, 0.7});
-    expect_one_shared_bsdf(make_mirror_material, params,
-                           SpecularReflectionBsdf(Spectrum(0.9f, 0.8f, 0.7f)));
+    expect_one_shared_bsdf(
+        make_mirror_material, params,
+        SpecularReflectionBsdf(uplift(Rgb(0.9f, 0.8f, 0.7f), RgbRole::unbounded)));
 }

@@ -18,11 +18,11 @@ namespace {
 // A texture given by a function of uv (heights for bumps, colours for normal maps).
 class FunctionTexture final : public Texture {
 public:
-    explicit FunctionTexture(std::function<Spectrum(Vec2)> f) : m_f(std::move(f)) {}
-    Spectrum eval(const TextureContext& ctx) const override { return m_f(ctx.uv); }
+    explicit FunctionTexture(std::function<Rgb(Vec2)> f) : m_f(std::move(f)) {}
+    Rgb eval(const TextureContext& ctx) const override { return m_f(ctx.uv); }
 
 private:
-    std::function<Spectrum(Vec2)> m_f;
+    std::function<Rgb(Vec2)> m_f;
 };
 
 // A point on the plane z = 0 facing +z, u along x and v along y (a wall).
@@ -47,7 +47,7 @@ float gaussian_bump(Vec2 uv) {
 // Above the bump's top (larger v, i.e. +y) the surface descends as y grows, so its normal
 // leans towards +y; below the top it leans towards -y; on the top it is unchanged.
 TEST(BumpMapping, NormalLeansAwayFromTheSlope) {
-    const FunctionTexture height([](Vec2 uv) { return Spectrum(gaussian_bump(uv)); });
+    const FunctionTexture height([](Vec2 uv) { return Rgb(gaussian_bump(uv)); });
     const NormalPerturbation bump = NormalPerturbation::bump(&height, 0.1f);
     SurfaceInteraction upper = wall_point(Vec2(0.5f, 0.6f));
     SurfaceInteraction lower = wall_point(Vec2(0.5f, 0.4f));
@@ -69,7 +69,7 @@ TEST(BumpMapping, NormalLeansAwayFromTheSlope) {
 
 // uv running the other way round the normal (dp/du x dp/dv = -n) must not flip bumps.
 TEST(BumpMapping, MirroredParameterisationKeepsTheSign) {
-    const FunctionTexture height([](Vec2 uv) { return Spectrum(gaussian_bump(uv)); });
+    const FunctionTexture height([](Vec2 uv) { return Rgb(gaussian_bump(uv)); });
     const NormalPerturbation bump = NormalPerturbation::bump(&height, 0.1f);
     SurfaceInteraction si = wall_point(Vec2(0.5f, 0.6f));
     si.dpdu = Vec3(-1, 0, 0);  // u now runs along -x
@@ -82,8 +82,8 @@ TEST(BumpMapping, MirroredParameterisationKeepsTheSign) {
 // Normal maps (OpenGL convention): red tilts towards +dp/du, green towards +dp/dv; the
 // flat colour (0.5, 0.5, 1) leaves the normal alone; flip_y reads DirectX maps.
 TEST(NormalMapping, TangentSpaceConventions) {
-    const FunctionTexture flat([](Vec2) { return Spectrum(0.5f, 0.5f, 1.0f); });
-    const FunctionTexture tilted([](Vec2) { return Spectrum(0.8f, 0.7f, 0.9f); });
+    const FunctionTexture flat([](Vec2) { return Rgb(0.5f, 0.5f, 1.0f); });
+    const FunctionTexture tilted([](Vec2) { return Rgb(0.8f, 0.7f, 0.9f); });
     SurfaceInteraction si = wall_point(Vec2(0.3f, 0.3f));
     NormalPerturbation::normal_map(&flat, false).apply(si);
     EXPECT_NEAR(si.shading.n().z, 1.0f, 1e-5f);

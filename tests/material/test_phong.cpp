@@ -27,9 +27,9 @@ double albedo(const Bsdf& bsdf, const Vec3& wo) {
         const double r = std::sqrt(1.0 - z * z);
         for (int j = 0; j < nphi; ++j) {
             const double phi = (j + 0.5) * 2.0 * M_PI / nphi;
-            const Vec3 wi(static_cast<float>(r * std::cos(phi)), static_cast<float>(r * std::sin(phi)),
-                          static_cast<float>(z));
-            sum += bsdf.eval(wo, wi).r * std::abs(z);
+            const Vec3 wi(static_cast<float>(r * std::cos(phi)),
+                          static_cast<float>(r * std::sin(phi)), static_cast<float>(z));
+            sum += to_rgb(bsdf.eval(wo, wi)).r * std::abs(z);
         }
     }
     return sum * (2.0 / nz) * (2.0 * M_PI / nphi);
@@ -51,14 +51,17 @@ TEST(PhongBsdf, SamplingMatchesPdf) {
             auto sample = [&](const Vec2& u, float u_lobe) -> std::optional<Vec3> {
                 const auto s = bsdf.sample(wo, u, u_lobe);
                 if (!s) return std::nullopt;
-                if (std::abs(s->pdf - bsdf.pdf(wo, s->wi)) > 1e-4f * s->pdf || !same_hemisphere(wo, s->wi)) {
+                if (std::abs(s->pdf - bsdf.pdf(wo, s->wi)) > 1e-4f * s->pdf ||
+                    !same_hemisphere(wo, s->wi)) {
                     ++inconsistent;
                 }
                 return s->wi;
             };
             auto pdf = [&](const Vec3& wi) { return static_cast<double>(bsdf.pdf(wo, wi)); };
-            const auto result = test::chi_square_directions(sample, pdf, 200000, 5, 20, 40, 0.01 / 12);
-            EXPECT_TRUE(result.passed) << "exponent " << c.exponent << ", wo.z " << wo.z << ": " << result.details;
+            const auto result =
+                test::chi_square_directions(sample, pdf, 200000, 5, 20, 40, 0.01 / 12);
+            EXPECT_TRUE(result.passed)
+                << "exponent " << c.exponent << ", wo.z " << wo.z << ": " << result.details;
             // Lobe samples that dip below the surface are dropped: the pdf integrates to
             // exactly the fraction of samples that survive.
             EXPECT_NEAR(result.integrated_pdf, result.sample_fraction, 5e-3) << result.details;
@@ -85,7 +88,8 @@ TEST(PhongBsdf, ReciprocalAndOneSidedPerHemisphere) {
     for (int i = 0; i < 1000; ++i) {
         const Vec3 a = direction(rng.next_float() * 89.0f, rng.next_float() * 6.28f);
         const Vec3 b = direction(rng.next_float() * 89.0f, rng.next_float() * 6.28f);
-        EXPECT_NEAR(bsdf.eval(a, b).r, bsdf.eval(b, a).r, 1e-4f * (1.0f + bsdf.eval(a, b).r));
-        EXPECT_EQ(bsdf.eval(a, Vec3(b.x, b.y, -b.z)).r, 0.0f);
+        EXPECT_NEAR(to_rgb(bsdf.eval(a, b)).r, to_rgb(bsdf.eval(b, a)).r,
+                    1e-4f * (1.0f + to_rgb(bsdf.eval(a, b)).r));
+        EXPECT_EQ(to_rgb(bsdf.eval(a, Vec3(b.x, b.y, -b.z))).r, 0.0f);
     }
 }

@@ -62,13 +62,16 @@ struct LobeCase {
 // Each lobe alone: the others are switched off by their weights (black base, no specular).
 std::vector<LobeCase> lobe_cases() {
     std::vector<LobeCase> cases;
-    cases.push_back({"diffuse", params(Spectrum(0.8f, 0.5f, 0.3f), 0.0f, 0.5f), 1.0f, 0.0f});
+    cases.push_back({"diffuse",
+                     params(uplift(Rgb(0.8f, 0.5f, 0.3f), RgbRole::unbounded), 0.0f, 0.5f), 1.0f,
+                     0.0f});
     for (float roughness : {0.05f, 0.3f, 0.8f}) {
         const float alpha = roughness_to_alpha(roughness);
         cases.push_back({fmt::format("specular {}", roughness),
                          params(Spectrum(0.0f), 0, roughness), 1.5f, alpha});
         cases.push_back({fmt::format("metal {}", roughness),
-                         params(Spectrum(0.9f, 0.6f, 0.3f), 1.0f, roughness), 1.5f, alpha});
+                         params(uplift(Rgb(0.9f, 0.6f, 0.3f), RgbRole::unbounded), 1.0f, roughness),
+                         1.5f, alpha});
     }
     // A black metal reflects only through Schlick's grazing term (its weight's floor).
     cases.push_back(
@@ -129,7 +132,8 @@ TEST(PrincipledBsdf, GlassLobeSamplingMatchesPdf) {
     const float roughnesses[] = {0.1f, 0.4f, 1.0f};
     const double significance = 0.01 / (std::size(directions) * std::size(roughnesses) * 2);
     for (float roughness : roughnesses) {
-        PrincipledParams p = params(Spectrum(0.9f, 0.7f, 0.5f), 0.0f, roughness);
+        PrincipledParams p =
+            params(uplift(Rgb(0.9f, 0.7f, 0.5f), RgbRole::unbounded), 0.0f, roughness);
         p.transmission = 1.0f;
         p.ior = eta;
         const Principled principled(p);
@@ -162,7 +166,8 @@ struct MixtureCase {
 void expect_mixtures_sample_their_pdf(const std::vector<MixtureCase>& cases) {
     const double significance = 0.01 / (cases.size() * outgoing().size());
     for (const MixtureCase& c : cases) {
-        PrincipledParams p = params(Spectrum(0.8f, 0.6f, 0.4f), c.metallic, c.roughness);
+        PrincipledParams p =
+            params(uplift(Rgb(0.8f, 0.6f, 0.4f), RgbRole::unbounded), c.metallic, c.roughness);
         p.transmission = c.transmission;
         p.clearcoat = c.clearcoat;
         p.clearcoat_alpha = roughness_to_alpha(0.3f);
@@ -266,7 +271,7 @@ TEST(PrincipledBsdf, PdfCoversEveryDirectionWithF) {
                 warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
             if (principled.bsdf.eval(wo, wi).max_value() > 0.0f) {
                 ASSERT_GT(principled.bsdf.pdf(wo, wi), 0.0f)
-                    << "metallic " << p.metallic << " base " << p.base_color.r << " "
+                    << "metallic " << p.metallic << " base " << to_rgb(p.base_color).r << " "
                     << describe(wo);
             }
         }
@@ -276,7 +281,7 @@ TEST(PrincipledBsdf, PdfCoversEveryDirectionWithF) {
 // Reflection is reciprocal, f(a, b) = f(b, a); refraction obeys generalised reciprocity,
 // f(a, b) / n_a^2 = f(b, a) / n_b^2 (n the index on each direction's side).
 TEST(PrincipledBsdf, Reciprocal) {
-    PrincipledParams p = params(Spectrum(0.8f, 0.5f, 0.2f), 0.4f, 0.5f);
+    PrincipledParams p = params(uplift(Rgb(0.8f, 0.5f, 0.2f), RgbRole::unbounded), 0.4f, 0.5f);
     p.transmission = 0.5f;
     p.clearcoat = 0.6f;
     p.clearcoat_alpha = 0.1f;
@@ -291,8 +296,9 @@ TEST(PrincipledBsdf, Reciprocal) {
         const float n_a = a.z > 0.0f ? 1.0f : p.ior, n_b = b.z > 0.0f ? 1.0f : p.ior;
         const Spectrum ab = bsdf.eval(a, b) / (n_a * n_a), ba = bsdf.eval(b, a) / (n_b * n_b);
         for (int ch = 0; ch < 3; ++ch)
-            EXPECT_TRUE(close(ab[ch], ba[ch], 2e-4f)) << ab[ch] << " against " << ba[ch];
-        if (!same_hemisphere(a, b) && ab.r > 0.0f) ++transmissions;
+            EXPECT_TRUE(close(to_rgb(ab)[ch], to_rgb(ba)[ch], 2e-4f))
+                << to_rgb(ab)[ch] << " against " << to_rgb(ba)[ch];
+        if (!same_hemisphere(a, b) && to_rgb(ab).r > 0.0f) ++transmissions;
     }
     EXPECT_GT(transmissions, 100);  // the refraction branch was exercised
 }
@@ -315,10 +321,12 @@ TEST(PrincipledBsdf, EqualsConductorAndRoughGlassWhereTheyCoincide) {
         for (int i = 0; i < 2000; ++i) {
             const Vec3 a = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
             const Vec3 b = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
-            EXPECT_TRUE(close(metal.bsdf.eval(a, b).r, conductor.eval(a, b).r, 1e-5f));
+            EXPECT_TRUE(
+                close(to_rgb(metal.bsdf.eval(a, b)).r, to_rgb(conductor.eval(a, b)).r, 1e-5f));
             EXPECT_TRUE(close(metal.bsdf.pdf(a, b), conductor.pdf(a, b), 1e-5f));
-            EXPECT_TRUE(close(glass.bsdf.eval(a, b).r, dielectric.eval(a, b).r, 1e-5f))
-                << glass.bsdf.eval(a, b).r << " " << dielectric.eval(a, b).r;
+            EXPECT_TRUE(
+                close(to_rgb(glass.bsdf.eval(a, b)).r, to_rgb(dielectric.eval(a, b)).r, 1e-5f))
+                << to_rgb(glass.bsdf.eval(a, b)).r << " " << to_rgb(dielectric.eval(a, b)).r;
             EXPECT_TRUE(close(glass.bsdf.pdf(a, b), dielectric.pdf(a, b), 1e-5f));
         }
     }
@@ -329,11 +337,11 @@ namespace {
 // A texture of one colour everywhere.
 class ConstantTexture final : public Texture {
 public:
-    explicit ConstantTexture(const Spectrum& value) : m_value(value) {}
-    Spectrum eval(const TextureContext&) const override { return m_value; }
+    explicit ConstantTexture(const Rgb& value) : m_value(value) {}
+    Rgb eval(const TextureContext&) const override { return m_value; }
 
 private:
-    Spectrum m_value;
+    Rgb m_value;
 };
 
 std::string scene_error(const std::string& code) {
@@ -351,7 +359,7 @@ std::string scene_error(const std::string& code) {
 
 // glTF packs roughness in green and metallic in blue; a channel input reads one of them.
 TEST(PrincipledMaterial, ChannelInputReadsOneChannel) {
-    const ConstantTexture texture(Spectrum(0.1f, 0.5f, 0.9f));
+    const ConstantTexture texture(Rgb(0.1f, 0.5f, 0.9f));
     const SurfaceInteraction si;
     EXPECT_EQ(FloatInput::channel(&texture, 0, 0.0f, 1.0f).eval(si), 0.1f);
     EXPECT_EQ(FloatInput::channel(&texture, 1, 0.0f, 1.0f).eval(si), 0.5f);
@@ -415,5 +423,5 @@ TEST(PrincipledMaterial, EmissionMakesAnAreaLight) {
                                              "scene.lua", GLINT_SOURCE_DIR "/tests/scenes");
     const auto scene = build_scene(desc, parse_render_settings(nullptr));
     ASSERT_EQ(scene->lights().size(), 1u);
-    EXPECT_NEAR(scene->lights()[0]->power().r, 2.0 * 4.0 * M_PI * M_PI, 1e-3);
+    EXPECT_NEAR(to_rgb(scene->lights()[0]->power()).r, 2.0 * 4.0 * M_PI * M_PI, 1e-3);
 }

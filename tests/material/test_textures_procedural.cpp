@@ -57,7 +57,7 @@ TextureContext at_uv(float u, float v) {
     return ctx;
 }
 
-void expect_spectrum_eq(const Spectrum& a, const Spectrum& b, float tolerance = 0.0f) {
+void expect_spectrum_eq(const Rgb& a, const Rgb& b, float tolerance = 0.0f) {
     EXPECT_NEAR(a.r, b.r, tolerance);
     EXPECT_NEAR(a.g, b.g, tolerance);
     EXPECT_NEAR(a.b, b.b, tolerance);
@@ -203,7 +203,7 @@ TEST(PerlinNoise, IsDeterministicAcrossCallsAndThreads) {
 
 TEST(CheckerTexture, ExactValuesIn2D) {
     TextureMaker maker;
-    const Spectrum even(0.9f, 0.5f, 0.1f), odd(0.1f, 0.2f, 0.3f);
+    const Rgb even(0.9f, 0.5f, 0.1f), odd(0.1f, 0.2f, 0.3f);
     auto checker =
         maker.make("checker", {{"even", rgb(0.9, 0.5, 0.1)}, {"odd", rgb(0.1, 0.2, 0.3)}});
     expect_spectrum_eq(checker->eval(at_uv(0.5f, 0.5f)), even);
@@ -214,15 +214,15 @@ TEST(CheckerTexture, ExactValuesIn2D) {
 
     // scale = squares per unit: (0.3, 0.1) * 4 = (1.2, 0.4) lies in square (1, 0).
     auto fine = maker.make("checker", {{"scale", 4.0}});
-    expect_spectrum_eq(fine->eval(at_uv(0.3f, 0.1f)), Spectrum(0.2f));
-    expect_spectrum_eq(fine->eval(at_uv(0.3f, 0.3f)), Spectrum(0.8f));
+    expect_spectrum_eq(fine->eval(at_uv(0.3f, 0.1f)), Rgb(0.2f));
+    expect_spectrum_eq(fine->eval(at_uv(0.3f, 0.3f)), Rgb(0.8f));
     EXPECT_EQ(fine->pattern(at_uv(0.3f, 0.1f)), 1.0f);
 }
 
 TEST(CheckerTexture, ExactValuesIn3DInObjectSpace) {
     TextureMaker maker;
     auto checker = maker.make("checker", {{"dimension", 3.0}});
-    const Spectrum even(0.8f), odd(0.2f);
+    const Rgb even(0.8f), odd(0.2f);
     expect_spectrum_eq(checker->eval(at_object_point(Vec3(0.5f, 0.5f, 0.5f))), even);
     expect_spectrum_eq(checker->eval(at_object_point(Vec3(1.5f, 0.5f, 0.5f))), odd);
     expect_spectrum_eq(checker->eval(at_object_point(Vec3(1.5f, 1.5f, 0.5f))), even);
@@ -256,7 +256,7 @@ TEST(CheckerTexture, OddFractionIsTheBoxAverageOfTheSquareWave) {
 TEST(CheckerTexture, LargeFootprintAveragesTheColours) {
     TextureMaker maker;
     auto checker = maker.make("checker", {{"even", 1.0}, {"odd", rgb(0.0, 0.5, 0.25)}});
-    const Spectrum mean(0.5f, 0.75f, 0.625f);
+    const Rgb mean(0.5f, 0.75f, 0.625f);
     std::mt19937 rng(9);
     std::uniform_real_distribution<float> uv(-10.0f, 10.0f);
     for (int i = 0; i < 100; ++i) {
@@ -279,8 +279,8 @@ TEST(CheckerTexture, ZeroFootprintEqualsTheUnfilteredChecker) {
     std::uniform_real_distribution<float> uv(-10.0f, 10.0f);
     for (int i = 0; i < 1000; ++i) {
         TextureContext ctx = at_uv(uv(rng), uv(rng));
-        const Spectrum point = filtered->eval(ctx);
-        EXPECT_TRUE(point == Spectrum(0.8f) || point == Spectrum(0.2f));
+        const Rgb point = filtered->eval(ctx);
+        EXPECT_TRUE(point == Rgb(0.8f) || point == Rgb(0.2f));
         ctx.dudx = ctx.dvdy = 3.0f;  // ignored without filtering
         EXPECT_EQ(point, unfiltered->eval(ctx));
     }
@@ -302,7 +302,7 @@ TEST(SolidTextures, FollowTheObjectNotTheWorld) {
     for (const auto& texture : solids) {
         for (int i = 0; i < 100; ++i) {
             TextureContext ctx = at_object_point(random_point(rng, 3.0f));
-            const Spectrum value = texture->eval(ctx);
+            const Rgb value = texture->eval(ctx);
             const float scalar = texture->pattern(ctx);
             ctx.p += random_point(rng, 100.0f);  // the object moved; its own point did not
             EXPECT_EQ(texture->eval(ctx), value);
@@ -370,7 +370,7 @@ TEST(NoiseTextures, ColourBetweenLowAndHighAndScalarIsThePattern) {
         const Vec3 p = random_point(rng, 10.0f);
         const TextureContext ctx = at_object_point(p);
         EXPECT_EQ(noise->pattern(ctx), perlin_noise(p));
-        const Spectrum c = noise->eval(ctx);
+        const Rgb c = noise->eval(ctx);
         EXPECT_GE(c.r, 0.1f - 1e-6f);
         EXPECT_LE(c.r, 0.9f + 1e-6f);
         EXPECT_NEAR(c.r, 0.5f + 0.4f * perlin_noise(p), 1e-5f);  // 0 maps half-way
@@ -382,7 +382,7 @@ TEST(NoiseTextures, ColourBetweenLowAndHighAndScalarIsThePattern) {
 
 TEST(WoodTexture, StaysBetweenItsColours) {
     TextureMaker maker;
-    const Spectrum light(1.5f, 0.6f, 0.2f), dark(0.1f, 0.6f, 0.4f);
+    const Rgb light(1.5f, 0.6f, 0.2f), dark(0.1f, 0.6f, 0.4f);
     auto wood = maker.make(
         "wood",
         {{"light", rgb(1.5, 0.6, 0.2)}, {"dark", rgb(0.1, 0.6, 0.4)}, {"noise_amount", 2.0}});
@@ -395,7 +395,7 @@ TEST(WoodTexture, StaysBetweenItsColours) {
         ASSERT_LE(t, 1.0f);
         darkest = std::max(darkest, t);
         lightest = std::min(lightest, t);
-        const Spectrum c = wood->eval(ctx);
+        const Rgb c = wood->eval(ctx);
         for (int k = 0; k < 3; ++k) {
             ASSERT_GE(c[k], std::min(light[k], dark[k]) - 1e-6f);
             ASSERT_LE(c[k], std::max(light[k], dark[k]) + 1e-6f);
@@ -437,7 +437,7 @@ TEST(MarbleTexture, StaysBetweenItsColoursAndVeinsFollowX) {
         ASSERT_LE(t, 1.0f);
         most_vein = std::max(most_vein, t);
         least_vein = std::min(least_vein, t);
-        const Spectrum c = marble->eval(ctx);
+        const Rgb c = marble->eval(ctx);
         ASSERT_GE(c.r, 0.1f - 1e-6f);
         ASSERT_LE(c.r, 0.9f + 1e-6f);
         ASSERT_GE(c.g, 0.3f - 1e-6f);
@@ -486,7 +486,7 @@ TEST(ProceduralTexturesInLua, LoadAndBuild) {
     // The Lua parameters reach the texture: the wood's rings, turned to run along z.
     TextureTable table(".", true);
     auto wood = make_texture(desc.textures[0], table);
-    const Spectrum light(0.8f, 0.6f, 0.4f);
+    const Rgb light(0.8f, 0.6f, 0.4f);
     TextureMaker maker;
     auto reference = maker.make("wood", {{"rings", 4.0},
                                          {"noise_amount", 0.3},

@@ -62,9 +62,10 @@ void expect_all_pixels(const Image& image, const Spectrum& expected, double tole
         for (int x = 0; x < image.width; ++x) {
             for (int c = 0; c < 3; ++c) {
                 const double v = image.at(x, y, c);
-                if (std::abs(v - expected[c]) > tolerance * expected[c] && failures++ < 5) {
+                if (std::abs(v - to_rgb(expected)[c]) > tolerance * to_rgb(expected)[c] &&
+                    failures++ < 5) {
                     ADD_FAILURE() << fmt::format("pixel ({}, {}) channel {}: {} expected {}", x, y,
-                                                 c, v, expected[c]);
+                                                 c, v, to_rgb(expected)[c]);
                 }
             }
         }

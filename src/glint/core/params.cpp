@@ -119,23 +119,24 @@ std::string Params::get_string(const std::string& name) const {
     return get_string(name, "");
 }
 
-Spectrum Params::get_spectrum(const std::string& name, const Spectrum& fallback) const {
+Rgb Params::get_rgb(const std::string& name, const Rgb& fallback) const {
     const ParamValue* v = lookup(name);
     if (!v) return fallback;
     if (auto d = std::get_if<double>(v)) {
         if (!std::isfinite(*d)) fail_at(name, fmt::format("parameter '{}' must be finite", name));
-        return Spectrum(static_cast<float>(*d));
+        return Rgb(static_cast<float>(*d));
     }
     auto list = std::get_if<std::vector<double>>(v);
     if (!list || list->size() != 3) wrong_type(name, "a number or a list of 3 numbers");
-    Spectrum s((*list)[0], (*list)[1], (*list)[2]);
-    if (!s.is_finite()) fail_at(name, fmt::format("parameter '{}' must be finite", name));
-    return s;
+    const Rgb rgb(static_cast<float>((*list)[0]), static_cast<float>((*list)[1]),
+                  static_cast<float>((*list)[2]));
+    if (!rgb.is_finite()) fail_at(name, fmt::format("parameter '{}' must be finite", name));
+    return rgb;
 }
 
-Spectrum Params::get_spectrum(const std::string& name) const {
+Rgb Params::get_rgb(const std::string& name) const {
     if (!has(name)) fail(fmt::format("missing required parameter '{}' (a colour)", name));
-    return get_spectrum(name, Spectrum());
+    return get_rgb(name, Rgb());
 }
 
 Vec3 Params::get_vec3(const std::string& name, const Vec3& fallback) const {

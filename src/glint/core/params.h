@@ -2,7 +2,7 @@
 // Named parameters of one scene object (a material, shape, light, ...), with the script
 // location they came from. Every read is recorded so that a misspelt or unknown name is
 // reported as an error instead of being silently ignored.
-#include <glint/core/spectrum.h>
+#include <glint/core/rgb.h>
 #include <glint/math/transform.h>
 
 #include <map>
@@ -49,9 +49,9 @@ public:
     bool get_bool(const std::string& name, bool fallback) const;
     std::string get_string(const std::string& name, const std::string& fallback) const;
     std::string get_string(const std::string& name) const;
-    // A spectrum is a number (grey) or a list of three numbers.
-    Spectrum get_spectrum(const std::string& name, const Spectrum& fallback) const;
-    Spectrum get_spectrum(const std::string& name) const;
+    // A colour is a number (grey) or a list of three numbers (linear RGB).
+    Rgb get_rgb(const std::string& name, const Rgb& fallback) const;
+    Rgb get_rgb(const std::string& name) const;
     Vec3 get_vec3(const std::string& name, const Vec3& fallback) const;
     Vec3 get_vec3(const std::string& name) const;
     std::vector<double> get_numbers(const std::string& name) const;

@@ -27,7 +27,7 @@ constexpr float kMinAlbedo = 0.02f;
 constexpr float kFireflyRatio = 1.5f;
 
 float luminance(const Vec3& c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+    return Rgb(c.x, c.y, c.z).luminance();
 }
 
 // The channels the denoiser reads from one image.

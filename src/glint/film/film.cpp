@@ -93,12 +93,13 @@ void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSam
     if (L.is_finite() && std::isfinite(weight)) {
         // Dropping the weight too, not only the radiance, keeps one NaN path from
         // darkening the pixel: the mean is over the samples that could be measured.
+        const Rgb rgb = to_rgb(L);
         p.weight_sum += weight;
-        for (int c = 0; c < 3; ++c) p.rgb[c] += static_cast<double>(weight) * L[c];
+        for (int c = 0; c < 3; ++c) p.rgb[c] += static_cast<double>(weight) * rgb[c];
         if (m_with_halves) {
             Pixel& h = m_half_pixels[half];
             h.weight_sum += weight;
-            for (int c = 0; c < 3; ++c) h.rgb[c] += static_cast<double>(weight) * L[c];
+            for (int c = 0; c < 3; ++c) h.rgb[c] += static_cast<double>(weight) * rgb[c];
         }
     } else {
         ++p.non_finite;
@@ -116,8 +117,9 @@ void Film::accumulate_aov(AovPixel& a, float weight, const AovSample& aov) {
         return;
     }
     a.weight_sum += w;
+    const Rgb albedo = to_rgb(aov.albedo);
     for (int c = 0; c < 3; ++c) {
-        a.albedo[c] += static_cast<double>(w) * aov.albedo[c];
+        a.albedo[c] += static_cast<double>(w) * albedo[c];
         a.normal[c] += static_cast<double>(w) * aov.normal[c];
     }
     a.depth += static_cast<double>(w) * aov.depth;
@@ -139,7 +141,8 @@ void Film::add_splats(std::span<const Splat> splats) {
         if (m_splats.empty()) m_splats.assign(3 * m_pixels.size(), 0.0);
         const std::size_t i = static_cast<std::size_t>(fy) * static_cast<std::size_t>(m_width) +
                               static_cast<std::size_t>(fx);
-        for (int c = 0; c < 3; ++c) m_splats[3 * i + c] += static_cast<double>(splat.L[c]);
+        const Rgb rgb = to_rgb(splat.L);
+        for (int c = 0; c < 3; ++c) m_splats[3 * i + c] += static_cast<double>(rgb[c]);
     }
 }
 

@@ -59,15 +59,15 @@ std::vector<Spectrum> radiance_pixels(const Image& image, const Params& params,
     pixels.reserve(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
-            const Spectrum value(image.at(x, y, rgb[0]), image.at(x, y, rgb[1]),
-                                 image.at(x, y, rgb[2]));
+            const Rgb value(image.at(x, y, rgb[0]), image.at(x, y, rgb[1]), image.at(x, y, rgb[2]));
             if (!value.is_finite()) {
                 params.fail(
                     fmt::format("environment map '{}': pixel ({}, {}) is not finite", path, x, y));
             }
             // Negative values (ringing from resampling) would be negative light.
-            pixels.push_back(
-                {std::max(value.r, 0.0f), std::max(value.g, 0.0f), std::max(value.b, 0.0f)});
+            const Rgb clipped(std::max(value.r, 0.0f), std::max(value.g, 0.0f),
+                              std::max(value.b, 0.0f));
+            pixels.push_back(uplift(clipped, RgbRole::illuminant));
         }
     }
     return pixels;
@@ -271,7 +271,7 @@ std::unique_ptr<Light> make_environment_light(const Params& params, const std::s
     // One turn at most: the sine of a float far from zero has no correct digits left.
     const float rotation = std::fmod(params.get_float("rotation", 0.0f), 360.0f);
     const Mat3 placement = Mat3(params.get_transform("transform").matrix());
-    const Spectrum intensity = params.get_spectrum("intensity", Spectrum(1.0f));
+    const Rgb intensity_rgb = params.get_rgb("intensity", Rgb(1.0f));
     const std::string mapping_name = params.get_string("mapping", "latlong");
     const std::optional<EnvironmentMapping> mapping = environment_mapping_named(mapping_name);
     if (!mapping) {
@@ -280,8 +280,8 @@ std::unique_ptr<Light> make_environment_light(const Params& params, const std::s
                         "or \"cube_cross\", not \"{}\"",
                         mapping_name));
     }
-    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
-        params.fail("'intensity' must not be negative");
+    if (intensity_rgb.min_value() < 0.0f) params.fail("'intensity' must not be negative");
+    const Spectrum intensity = uplift(intensity_rgb, RgbRole::unbounded);
     if (!is_rotation(placement))
         params.fail("'transform' must be a rotation (no scale, shear or mirroring)");
 

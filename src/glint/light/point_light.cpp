@@ -124,29 +124,34 @@ Spectrum SpotLight::power() const {
            ((1.0f - m_cos_falloff_start) + 0.5f * (m_cos_falloff_start - m_cos_cone));
 }
 
+namespace {
+
+// A light's colour parameter `name` (intensity or irradiance), checked and uplifted.
+Spectrum read_emission(const Params& params, const char* name) {
+    const Rgb rgb = params.get_rgb(name);
+    if (rgb.min_value() < 0.0f) params.fail(std::string("'") + name + "' must not be negative");
+    return uplift(rgb, RgbRole::illuminant);
+}
+
+}  // namespace
+
 std::unique_ptr<Light> make_point_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
-    const Spectrum intensity = params.get_spectrum("intensity");
-    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
-        params.fail("'intensity' must not be negative");
+    const Spectrum intensity = read_emission(params, "intensity");
     return std::make_unique<PointLight>(position, intensity);
 }
 
 std::unique_ptr<Light> make_directional_light(const Params& params) {
     const Vec3 direction = params.get_vec3("direction");
-    const Spectrum irradiance = params.get_spectrum("irradiance");
     if (!(glm::length(direction) > 0.0f)) params.fail("'direction' must not be zero");
-    if (std::min({irradiance.r, irradiance.g, irradiance.b}) < 0.0f)
-        params.fail("'irradiance' must not be negative");
+    const Spectrum irradiance = read_emission(params, "irradiance");
     return std::make_unique<DirectionalLight>(direction, irradiance);
 }
 
 std::unique_ptr<Light> make_spot_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
     const Vec3 target = params.get_vec3("look_at");
-    const Spectrum intensity = params.get_spectrum("intensity");
-    if (std::min({intensity.r, intensity.g, intensity.b}) < 0.0f)
-        params.fail("'intensity' must not be negative");
+    const Spectrum intensity = read_emission(params, "intensity");
     const float cone = params.get_float("cone_angle", 30.0f);
     const float falloff_start = params.get_float("falloff_start", cone * 0.8f);
     if (!(cone > 0.0f && cone <= 90.0f)) params.fail("'cone_angle' must be in (0, 90] degrees");

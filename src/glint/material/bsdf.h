@@ -204,10 +204,10 @@ private:
     // that small is grazing in the geometric or shading plane, and the ratio meaningless.
     static constexpr float kMinCorrectionDenominator = 1e-12f;
 
-    // Per channel, as a division: the dielectrics divided f by eta^2 this way before the
-    // factor moved here, so radiance values keep their bits.
+    // Each value divided (not multiplied by 1 / eta^2): the dielectrics divided f by eta^2
+    // this way before the factor moved here, so radiance values keep their bits.
     static Spectrum divide(const Spectrum& f, float eta2) {
-        return Spectrum(f.r / eta2, f.g / eta2, f.b / eta2);
+        return f.map([eta2](float v) { return v / eta2; });
     }
 
     Spectrum scale(const Spectrum& f, const Vec3& wo, const Vec3& wi, TransportMode mode,

@@ -58,10 +58,11 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
     if (has_eta != has_k) params.fail("give both 'eta' and 'k' (the complex index eta + i k)");
     Spectrum eta, k;
     if (has_eta) {
-        eta = params.get_spectrum("eta");
-        k = params.get_spectrum("k");
-        if (std::min({eta.r, eta.g, eta.b}) <= 0.0f) params.fail("'eta' must be positive");
-        if (std::min({k.r, k.g, k.b}) < 0.0f) params.fail("'k' must not be negative");
+        const Rgb eta_rgb = params.get_rgb("eta"), k_rgb = params.get_rgb("k");
+        if (eta_rgb.min_value() <= 0.0f) params.fail("'eta' must be positive");
+        if (k_rgb.min_value() < 0.0f) params.fail("'k' must not be negative");
+        eta = uplift(eta_rgb, RgbRole::unbounded);
+        k = uplift(k_rgb, RgbRole::unbounded);
     } else {
         const std::string name = params.get_string("preset", "aluminium");
         const ConductorPreset* preset = find_conductor_preset(name);
@@ -69,15 +70,15 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
             params.fail(
                 fmt::format("unknown 'preset' '{}'; known presets: {}", name, preset_names()));
         }
-        eta = preset->eta;
-        k = preset->k;
+        eta = uplift(preset->eta, RgbRole::unbounded);
+        k = uplift(preset->k, RgbRole::unbounded);
     }
     const FloatInput roughness = textures.scalar(params, "roughness", 0.1f, 0.0f, 1.0f);
     const float anisotropy = params.get_float("anisotropy", 0.0f);
     if (!(anisotropy >= -1.0f && anisotropy <= 1.0f)) {
         params.fail("'anisotropy' must lie in [-1, 1]");
     }
-    const SpectrumInput tint = textures.spectrum(params, "tint", Spectrum(1.0f), 0.0f, 1.0f);
+    const SpectrumInput tint = textures.spectrum(params, "tint", Rgb(1.0f), 0.0f, 1.0f);
     return std::make_unique<ConductorMaterial>(eta, k, roughness, anisotropy, tint);
 }
 

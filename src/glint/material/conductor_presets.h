@@ -8,7 +8,7 @@
 // the colour matching functions: close enough for RGB rendering, and easy to check. The
 // resulting reflectance at normal incidence is gold (0.94, 0.85, 0.39), silver (0.97,
 // 0.96, 0.92), copper (0.94, 0.63, 0.55), aluminium (0.91, 0.92, 0.92).
-#include <glint/core/spectrum.h>
+#include <glint/core/rgb.h>
 
 #include <array>
 #include <string_view>
@@ -17,8 +17,8 @@ namespace glint {
 
 struct ConductorPreset {
     std::string_view name;
-    Spectrum eta;
-    Spectrum k;
+    Rgb eta;
+    Rgb k;
 };
 
 inline constexpr std::array<ConductorPreset, 4> kConductorPresets = {{

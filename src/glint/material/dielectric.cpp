@@ -43,12 +43,13 @@ private:
 std::unique_ptr<Material> make_dielectric_material(const Params& params, TextureTable& textures) {
     // A texture (say a noise between 1.45 and 1.55) makes the index vary over the surface.
     const FloatInput ior = textures.scalar(params, "ior", 1.5f, 0.01f, 100.0f);
-    const Spectrum absorption = params.get_spectrum("absorption", Spectrum(0.0f));
-    if (std::min({absorption.r, absorption.g, absorption.b}) < 0.0f) {
+    const Rgb absorption = params.get_rgb("absorption", Rgb(0.0f));
+    if (absorption.min_value() < 0.0f) {
         params.fail("'absorption' must not be negative");
     }
     const FloatInput roughness = textures.scalar(params, "roughness", 0.0f, 0.0f, 1.0f);
-    return std::make_unique<DielectricMaterial>(ior, absorption, roughness);
+    return std::make_unique<DielectricMaterial>(ior, uplift(absorption, RgbRole::unbounded),
+                                                roughness);
 }
 
 }  // namespace glint

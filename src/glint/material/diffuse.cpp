@@ -29,7 +29,7 @@ private:
 std::unique_ptr<Material> make_diffuse_material(const Params& params, TextureTable& textures) {
     // In [0, 1] so the surface does not create energy.
     const SpectrumInput reflectance =
-        textures.spectrum(params, "reflectance", Spectrum(0.5f), 0.0f, 1.0f);
+        textures.spectrum(params, "reflectance", Rgb(0.5f), 0.0f, 1.0f);
     return std::make_unique<DiffuseMaterial>(reflectance);
 }
 

@@ -20,10 +20,10 @@ private:
 }  // namespace
 
 std::unique_ptr<Material> make_emissive_material(const Params& params, TextureTable&) {
-    const Spectrum radiance = params.get_spectrum("radiance");
-    if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f)
-        params.fail("'radiance' must not be negative");
-    return std::make_unique<EmissiveMaterial>(radiance, params.get_bool("two_sided", false));
+    const Rgb radiance = params.get_rgb("radiance");
+    if (radiance.min_value() < 0.0f) params.fail("'radiance' must not be negative");
+    return std::make_unique<EmissiveMaterial>(uplift(radiance, RgbRole::illuminant),
+                                              params.get_bool("two_sided", false));
 }
 
 }  // namespace glint

@@ -39,10 +39,12 @@ inline float fresnel_conductor(float cos_theta_i, float eta, float k) {
     return 0.5f * (std::norm(r_parallel) + std::norm(r_perpendicular));
 }
 
-// Per colour channel, with eta and k given per channel.
+// With a complex index that varies with wavelength: the formula above at each of the
+// Spectrum's values (its channels today, its wavelengths in a spectral mode).
 inline Spectrum fresnel_conductor(float cos_theta_i, const Spectrum& eta, const Spectrum& k) {
-    return {fresnel_conductor(cos_theta_i, eta.r, k.r), fresnel_conductor(cos_theta_i, eta.g, k.g),
-            fresnel_conductor(cos_theta_i, eta.b, k.b)};
+    return map(eta, k, [cos_theta_i](float eta_v, float k_v) {
+        return fresnel_conductor(cos_theta_i, eta_v, k_v);
+    });
 }
 
 // Refracts `wi` (pointing away from the surface) about normal `n` on its side, with

@@ -25,7 +25,7 @@ private:
 }  // namespace
 
 std::unique_ptr<Material> make_mirror_material(const Params& params, TextureTable& textures) {
-    const SpectrumInput tint = textures.spectrum(params, "tint", Spectrum(1.0f), 0.0f, 1.0f);
+    const SpectrumInput tint = textures.spectrum(params, "tint", Rgb(1.0f), 0.0f, 1.0f);
     return std::make_unique<MirrorMaterial>(tint);
 }
 

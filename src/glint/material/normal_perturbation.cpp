@@ -53,7 +53,7 @@ void NormalPerturbation::apply_bump(SurfaceInteraction& si) const {
 
 void NormalPerturbation::apply_normal_map(SurfaceInteraction& si) const {
     const Vec3 n = si.shading.n();
-    const Spectrum encoded = m_texture->eval(TextureContext(si));
+    const Rgb encoded = m_texture->eval(TextureContext(si));
     Vec3 local(2.0f * encoded.r - 1.0f, 2.0f * encoded.g - 1.0f, 2.0f * encoded.b - 1.0f);
     if (m_flip_y) local.y = -local.y;
     // Tangent along dp/du, bitangent towards growing v.

@@ -14,7 +14,7 @@ public:
         // A textured diffuse colour is cut where kd + ks would exceed 1.
         Spectrum kd = m_diffuse.eval(si);
         const Spectrum ks = m_specular.eval(si);
-        for (int c = 0; c < 3; ++c) kd[c] = std::min(kd[c], 1.0f - ks[c]);
+        kd = min(kd, Spectrum(1.0f) - ks);
         if (m_blinn) return arena.make<BlinnPhongBsdf>(kd, ks, m_exponent);
         return arena.make<PhongBsdf>(kd, ks, m_exponent);
     }
@@ -43,15 +43,16 @@ std::unique_ptr<Material> make_phong_material(const Params& params, TextureTable
     if (model != "phong" && model != "blinn") {
         params.fail("unknown 'model' '" + model + "'; known models: 'phong', 'blinn'");
     }
-    const SpectrumInput diffuse = textures.spectrum(params, "diffuse", Spectrum(0.5f), 0.0f, 1.0f);
-    const SpectrumInput specular =
-        textures.spectrum(params, "specular", Spectrum(0.2f), 0.0f, 1.0f);
+    const SpectrumInput diffuse = textures.spectrum(params, "diffuse", Rgb(0.5f), 0.0f, 1.0f);
+    const SpectrumInput specular = textures.spectrum(params, "specular", Rgb(0.2f), 0.0f, 1.0f);
     const float exponent = params.get_float("exponent", 50.0f);
     if (specular.is_textured()) params.fail("'specular' cannot be a texture; 'diffuse' can");
     const Spectrum total = diffuse.representative() * (diffuse.is_textured() ? 0.0f : 1.0f) +
                            specular.representative();
     if (total.max_value() > 1.0f) {
-        params.fail("'diffuse' + 'specular' must not exceed 1 in any channel, or the surface would create energy");
+        params.fail(
+            "'diffuse' + 'specular' must not exceed 1 in any channel, or the surface would create "
+            "energy");
     }
     if (!(exponent >= 0.0f && exponent <= 1e5f)) params.fail("'exponent' must be in [0, 100000]");
     return std::make_unique<PhongMaterial>(diffuse, specular, exponent, model == "blinn");

@@ -36,7 +36,7 @@ private:
 //   roughness  float or texture     0.1  in [0, 1], of the coat; alpha = roughness^2, 0 is
 //                                         a smooth (delta) coat
 std::unique_ptr<Material> make_plastic_material(const Params& params, TextureTable& textures) {
-    const SpectrumInput diffuse = textures.spectrum(params, "diffuse", Spectrum(0.5f), 0.0f, 1.0f);
+    const SpectrumInput diffuse = textures.spectrum(params, "diffuse", Rgb(0.5f), 0.0f, 1.0f);
     const float ior = params.get_float("ior", 1.5f);
     if (!(ior >= 1.0f && ior <= 10.0f)) params.fail("'ior' must lie in [1, 10]");
     const FloatInput roughness = textures.scalar(params, "roughness", 0.1f, 0.0f, 1.0f);

@@ -39,13 +39,15 @@ public:
           m_eta(coat_albedo.eta()) {
         const float internal_reflectance =
             1.0f - (1.0f - coat_albedo.average_albedo(coat.alpha_x())) / (m_eta * m_eta);
-        float albedo_sum = 0.0f;
-        for (int c = 0; c < 3; ++c) {
-            const float bounces = 1.0f / (1.0f - diffuse[c] * internal_reflectance);
-            m_diffuse_scale[c] = diffuse[c] * bounces * kInvPi / (m_eta * m_eta);
-            albedo_sum += diffuse[c] * (1.0f - internal_reflectance) * bounces;
-        }
-        m_base_albedo = albedo_sum / 3.0f;
+        // 1 / (1 - rho r_i): the geometric series of bounces between the base and the coat.
+        const Spectrum bounces =
+            diffuse.map([&](float rho) { return 1.0f / (1.0f - rho * internal_reflectance); });
+        const float eta2 = m_eta * m_eta;
+        m_diffuse_scale =
+            map(diffuse, bounces, [&](float rho, float b) { return rho * b * kInvPi / eta2; });
+        m_base_albedo = map(diffuse, bounces, [&](float rho, float b) {
+                            return rho * (1.0f - internal_reflectance) * b;
+                        }).average();
     }
 
 protected:

@@ -112,7 +112,7 @@ float number_in(const Params& params, const std::string& name, float fallback, f
 //   emission_strength    float                1     >= 0
 std::unique_ptr<Material> make_principled_material(const Params& params, TextureTable& textures) {
     PrincipledInputs in;
-    in.base_color = textures.spectrum(params, "base_color", Spectrum(0.8f), 0.0f, 1.0f);
+    in.base_color = textures.spectrum(params, "base_color", Rgb(0.8f), 0.0f, 1.0f);
     in.metallic = textures.scalar(params, "metallic", 0.0f, 0.0f, 1.0f);
     in.roughness = textures.scalar(params, "roughness", 0.5f, 0.0f, 1.0f);
     if (const Texture* packed = textures.texture_or_file(params, "metallic_roughness")) {
@@ -136,18 +136,17 @@ std::unique_ptr<Material> make_principled_material(const Params& params, Texture
             "'emission' must be a colour: textured emission is not supported yet (area lights "
             "emit a constant radiance)");
     }
-    const Spectrum emission = params.get_spectrum("emission", Spectrum(0.0f));
-    if (!(std::min({emission.r, emission.g, emission.b}) >= 0.0f) ||
-        !std::isfinite(emission.max_value()))
+    const Rgb emission = params.get_rgb("emission", Rgb(0.0f));
+    if (!(emission.min_value() >= 0.0f) || !std::isfinite(emission.max_value()))
         params.fail("'emission' must be finite and not negative");
     const float strength = params.get_float("emission_strength", 1.0f);
     if (!(strength >= 0.0f) || !std::isfinite(strength))
         params.fail("'emission_strength' must be a finite number >= 0");
-    in.emission = emission * strength;
-    in.absorption = params.get_spectrum("absorption", Spectrum(0.0f));
-    if (!(std::min({in.absorption.r, in.absorption.g, in.absorption.b}) >= 0.0f) ||
-        !std::isfinite(in.absorption.max_value()))
+    in.emission = uplift(emission, RgbRole::illuminant) * strength;
+    const Rgb absorption = params.get_rgb("absorption", Rgb(0.0f));
+    if (!(absorption.min_value() >= 0.0f) || !absorption.is_finite())
         params.fail("'absorption' must be finite and not negative");
+    in.absorption = uplift(absorption, RgbRole::unbounded);
     return std::make_unique<PrincipledMaterial>(in);
 }
 

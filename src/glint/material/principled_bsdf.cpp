@@ -130,7 +130,8 @@ Spectrum PrincipledBsdf::eval_unscaled(const Vec3& wo, const Vec3& wi) const {
     const float coat_through = coat_transmittance(o) * coat_transmittance(i);
     if (!same_hemisphere(wo, wi)) {
         if (glass == 0.0f) return Spectrum(0.0f);
-        const float f = m_glass.eval(wo, wi, TransportMode::kImportance).r;
+        // The glass lobe is grey (its Fresnel term is a scalar): any of its values.
+        const float f = m_glass.eval(wo, wi, TransportMode::kImportance).max_value();
         return m_p.base_color * (coat_through * glass * f);
     }
     const Vec3 wm = glm::normalize(o + i);

@@ -31,11 +31,11 @@ public:
         }
         build_lights();
         if (m_desc.background) {
-            const Spectrum radiance = m_desc.background->get_spectrum("radiance", Spectrum(0.0f));
-            if (std::min({radiance.r, radiance.g, radiance.b}) < 0.0f) {
+            const Rgb radiance = m_desc.background->get_rgb("radiance", Rgb(0.0f));
+            if (radiance.min_value() < 0.0f) {
                 m_desc.background->fail("'radiance' must not be negative");
             }
-            m_scene->m_background = radiance;
+            m_scene->m_background = uplift(radiance, RgbRole::illuminant);
             m_desc.background->check_all_used();
         }
         build_groups();

@@ -8,8 +8,8 @@
 namespace glint {
 namespace {
 
-std::vector<double> numbers(const Spectrum& s) {
-    return {s.r, s.g, s.b};
+std::vector<double> numbers(const Rgb& c) {
+    return {c.r, c.g, c.b};
 }
 std::vector<double> numbers(const Vec3& v) {
     return {v.x, v.y, v.z};
@@ -20,7 +20,7 @@ void scale_power(Params& params, const std::string& key, float scale) {
     if (scale == 1.0f) return;
     // A copy reads the value, so the original's record of used keys stays as it was.
     const Params read = params;
-    params.set(key, numbers(read.get_spectrum(key, Spectrum(1.0f)) * scale), params.where_of(key));
+    params.set(key, numbers(read.get_rgb(key, Rgb(1.0f)) * scale), params.where_of(key));
 }
 
 // The material of a world shape (always a handle after loading), or null: a solid's parts

@@ -596,10 +596,10 @@ TEST(PathIntegrator, PacketsGiveWhatEachPathGivesAlone) {
                 const Spectrum L = path.li(ray, *scene, *sampler, arena, lone_rays, &aov);
                 const std::string where =
                     fmt::format("pixel ({}, {}), lane {} of {}", pixel.x, pixel.y, lane, count);
-                EXPECT_EQ(radiance[lane].r, L.r) << where;
-                EXPECT_EQ(radiance[lane].g, L.g) << where;
-                EXPECT_EQ(radiance[lane].b, L.b) << where;
-                EXPECT_EQ(aovs[lane].albedo.r, aov.albedo.r) << where;
+                EXPECT_EQ(to_rgb(radiance[lane]).r, to_rgb(L).r) << where;
+                EXPECT_EQ(to_rgb(radiance[lane]).g, to_rgb(L).g) << where;
+                EXPECT_EQ(to_rgb(radiance[lane]).b, to_rgb(L).b) << where;
+                EXPECT_EQ(to_rgb(aovs[lane].albedo).r, to_rgb(aov.albedo).r) << where;
                 EXPECT_EQ(aovs[lane].normal, aov.normal) << where;
                 EXPECT_EQ(aovs[lane].depth, aov.depth) << where;
                 lit += !L.is_black();

@@ -35,7 +35,7 @@ BuiltScene build(const std::string& code) {
 
 double total_power(const PhotonMap& map) {
     double sum = 0.0;
-    for (size_t i = 0; i < map.size(); ++i) sum += map[i].power.g;
+    for (size_t i = 0; i < map.size(); ++i) sum += to_rgb(map[i].power).g;
     return sum;
 }
 
@@ -213,7 +213,7 @@ TEST(PhotonMapping, GlassSphereCausticMatchesRayTracedProfile) {
         const Photon& photon = caustics[i];
         if (std::abs(photon.p.y + 1.5f) > 1e-3f) continue;  // only the receiver
         const int bin = static_cast<int>(std::hypot(photon.p.x, photon.p.z) / bin_width);
-        if (bin < bins) measured[bin] += photon.power.g;
+        if (bin < bins) measured[bin] += to_rgb(photon.power).g;
     }
     for (int i = 0; i < bins; ++i) {
         measured[i] /= M_PI * (sqr((i + 1) * bin_width) - sqr(i * bin_width));
@@ -254,8 +254,8 @@ TEST(PhotonMapping, AreaLightProjectionMapKeepsTheCausticsPower) {
         double total = 0.0, centre = 0.0;
         for (size_t i = 0; i < map.size(); ++i) {
             if (std::abs(map[i].p.y) > 1e-3f) continue;  // on the floor only
-            total += map[i].power.g;
-            if (std::hypot(map[i].p.x, map[i].p.z) < 0.3f) centre += map[i].power.g;
+            total += to_rgb(map[i].power).g;
+            if (std::hypot(map[i].p.x, map[i].p.z) < 0.3f) centre += to_rgb(map[i].power).g;
         }
         return std::array<double, 3>{static_cast<double>(map.size()), total, centre};
     };

@@ -128,7 +128,7 @@ TEST(PhotonMap, UniformlyLitPlaneGivesTheIrradiance) {
             si.ng = Vec3(0, 1, 0);
             si.shading = Frame::from_normal(si.ng);
             si.wo = glm::normalize(Vec3(0.3f, 1.0f, -0.2f));
-            const double L = radiance_estimate(map, si, bsdf, kNeighbours, 0.25f).g;
+            const double L = to_rgb(radiance_estimate(map, si, bsdf, kNeighbours, 0.25f)).g;
             sum += L;
             sum2 += L * L;
             ++m;

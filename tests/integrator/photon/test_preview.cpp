@@ -229,12 +229,15 @@ TEST(Preview, PhotonGridFindsThePhotonsWithinTheRadius) {
         for (size_t i = 0; i < photons.size(); ++i)
             if (length_squared(photons[i].p - p) < radius * radius)
                 expected.push_back(static_cast<int>(i));
-        grid.for_each_near(p, [&](const Photon& ph) { visited.push_back(int(ph.power[0])); });
-        rebuilt.for_each_near(p, [&](const Photon& ph) { again.push_back(int(ph.power[0])); });
+        grid.for_each_near(p,
+                           [&](const Photon& ph) { visited.push_back(int(to_rgb(ph.power)[0])); });
+        rebuilt.for_each_near(p,
+                              [&](const Photon& ph) { again.push_back(int(to_rgb(ph.power)[0])); });
         EXPECT_EQ(visited, again) << "query " << q;
         // One cache across all queries (as a thread keeps it) changes nothing.
         std::vector<int> cached;
-        grid.for_each_near(p, cache, [&](const Photon& ph) { cached.push_back(int(ph.power[0])); });
+        grid.for_each_near(p, cache,
+                           [&](const Photon& ph) { cached.push_back(int(to_rgb(ph.power)[0])); });
         EXPECT_EQ(cached, visited) << "query " << q;
         std::sort(visited.begin(), visited.end());
         EXPECT_EQ(visited, expected) << "query " << q;

@@ -244,8 +244,8 @@ TEST(Radiosity, FurnaceEnergyBalance) {
             for (uint32_t v : e.v) {
                 const RadiosityVertex& x = mesh.vertices[v];
                 const Spectrum shown = x.b[0] + x.b[1] + x.rho * mesh.ambient;
-                total += e.area / 3.0 * shown.g;
-                direct += e.area / 3.0 * (x.b_direct[0] + x.b_direct[1]).g;
+                total += e.area / 3.0 * to_rgb(shown).g;
+                direct += e.area / 3.0 * to_rgb((x.b_direct[0] + x.b_direct[1])).g;
             }
             area += e.area;
         }

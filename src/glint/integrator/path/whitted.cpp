@@ -66,13 +66,13 @@ std::array<int, 4> extreme_samples(const std::vector<ShadowSample>& samples, con
 
 WhittedSettings WhittedSettings::read(const Params& p) {
     WhittedSettings s;
-    s.ambient = p.get_spectrum("ambient", s.ambient);
+    const Rgb ambient = p.get_rgb("ambient", to_rgb(s.ambient));
     s.shadow_samples = p.get_int("shadow_samples", s.shadow_samples);
     s.penumbra_shortcut = p.get_bool("penumbra_shortcut", s.penumbra_shortcut);
     s.caustics = p.get_bool("caustics", s.caustics);
     s.caustic = CausticSettings::read(p);
-    if (std::min({s.ambient.r, s.ambient.g, s.ambient.b}) < 0.0f)
-        p.fail_at("ambient", "'ambient' must not be negative");
+    if (ambient.min_value() < 0.0f) p.fail_at("ambient", "'ambient' must not be negative");
+    s.ambient = uplift(ambient, RgbRole::illuminant);
     if (s.shadow_samples < 1 || s.shadow_samples > 64)
         p.fail_at("shadow_samples", "'shadow_samples' must be in [1, 64]");
     return s;
@@ -130,8 +130,8 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
         ExtraChannel channel{"photons.Y", {}};
         for (int y = 0; y < image.height; ++y) {
             for (int x = 0; x < image.width; ++x) {
-                channel.values.push_back(0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) +
-                                         0.0722f * image.at(x, y, 2));
+                channel.values.push_back(
+                    Rgb(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)).luminance());
             }
         }
         stats.channels.push_back(std::move(channel));

@@ -156,8 +156,8 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
         ExtraChannel channel{"photons.Y", {}};
         for (int y = 0; y < image.height; ++y) {
             for (int x = 0; x < image.width; ++x) {
-                channel.values.push_back(0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) +
-                                         0.0722f * image.at(x, y, 2));
+                channel.values.push_back(
+                    Rgb(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)).luminance());
             }
         }
         stats.channels.push_back(std::move(channel));

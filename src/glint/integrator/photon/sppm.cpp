@@ -3,8 +3,8 @@
 #include <glint/core/sampler.h>
 #include <glint/film/image_io.h>
 #include <glint/integrator/photon/photon_tracer.h>
-#include <glint/integrator/transport/shading.h>
 #include <glint/integrator/photon/sppm.h>
+#include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
 
 #include <fmt/format.h>
@@ -115,7 +115,8 @@ void write_intermediate(const std::vector<PixelState>& pixels, int width, int he
         for (int x = 0; x < width; ++x) {
             const Spectrum L = pixel_estimate(pixels[static_cast<size_t>(y) * width + x], passes,
                                               photons_per_pass);
-            for (int c = 0; c < 3; ++c) image.at(x, y, c) = L[c];
+            const Rgb rgb = to_rgb(L);
+            for (int c = 0; c < 3; ++c) image.at(x, y, c) = rgb[c];
         }
     }
     for (const std::string& output : settings.outputs) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstring>
@@ -51,9 +52,7 @@ public:
         put(v.y);
     }
     void put(const Spectrum& s) {
-        put(s.r);
-        put(s.g);
-        put(s.b);
+        for (const float v : s.stored()) put(v);
     }
     std::vector<char> bytes;
 };
@@ -82,8 +81,9 @@ public:
         return Vec2(x, y);
     }
     Spectrum spectrum() {
-        const float r = get<float>(), g = get<float>(), b = get<float>();
-        return Spectrum(r, g, b);
+        std::array<float, Spectrum::kStoredValues> values;
+        for (float& v : values) v = get<float>();
+        return Spectrum::from_stored(values);
     }
     [[noreturn]] void fail(const std::string& why) const {
         throw Error(fmt::format("{}: not a usable radiosity cache: {}", m_path, why));

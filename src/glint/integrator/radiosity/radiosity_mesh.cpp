@@ -66,7 +66,8 @@ uint64_t hash_vec(uint64_t h, const Vec3& v) {
     return hash_float(hash_float(hash_float(h, v.x), v.y), v.z);
 }
 uint64_t hash_spectrum(uint64_t h, const Spectrum& s) {
-    return hash_float(hash_float(hash_float(h, s.r), s.g), s.b);
+    for (const float v : s.stored()) h = hash_float(h, v);
+    return h;
 }
 
 }  // namespace
@@ -138,10 +139,7 @@ RadiosityMesh RadiosityMesh::build(const Scene& scene, float patch_size, size_t 
                         SurfaceInteraction si;
                         triangle_mesh->fill_interaction(Ray{}, hit, si);
                         si.material = &material;
-                        const Spectrum albedo = material.albedo(si);
-                        v.rho = Spectrum(std::clamp(albedo.r, 0.0f, 1.0f),
-                                         std::clamp(albedo.g, 0.0f, 1.0f),
-                                         std::clamp(albedo.b, 0.0f, 1.0f));
+                        v.rho = material.albedo(si).clamped(0.0f, 1.0f);
                     } else {
                         v.rho = Spectrum(0.0f);
                     }

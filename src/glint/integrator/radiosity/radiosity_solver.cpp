@@ -121,12 +121,10 @@ public:
             unshot_area += (p.unshot[0] + p.unshot[1]) * p.triangle.area;
         }
         if (!(area > 0.0)) return Spectrum(0.0f);
-        Spectrum result;
-        for (int c = 0; c < 3; ++c) {
-            const double rho = std::min(0.999, rho_area[c] / area);
-            result[c] = static_cast<float>(unshot_area[c] / area / (1.0 - rho));
-        }
-        return result;
+        return map(rho_area, unshot_area, [area](float rho_a, float unshot_a) {
+            const double rho = std::min(0.999, rho_a / area);
+            return static_cast<float>(unshot_a / area / (1.0 - rho));
+        });
     }
 
     uint64_t rays() const { return m_rays.load(); }

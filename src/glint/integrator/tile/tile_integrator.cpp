@@ -19,8 +19,7 @@ constexpr int kTileSize = 16;
 // Luminance compressed to [0, 1) so that edge thresholds mean the same in dark and bright
 // images.
 float tone(const Image& image, int x, int y) {
-    const float l =
-        0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) + 0.0722f * image.at(x, y, 2);
+    const float l = Rgb(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)).luminance();
     return l / (1.0f + std::max(0.0f, l));
 }
 

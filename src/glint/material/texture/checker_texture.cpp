@@ -18,16 +18,16 @@ float odd_cells_integral(float x) {
     return periods + std::max(rest - 1.0f, 0.0f);
 }
 
-Spectrum mix(const Spectrum& a, const Spectrum& b, float t) {
+Rgb mix(const Rgb& a, const Rgb& b, float t) {
     return a * (1.0f - t) + b * t;
 }
 
 class Checker2DTexture final : public Texture {
 public:
-    Checker2DTexture(TextureMapping2D mapping, Spectrum even, Spectrum odd, bool filtered)
+    Checker2DTexture(TextureMapping2D mapping, Rgb even, Rgb odd, bool filtered)
         : m_mapping(mapping), m_even(even), m_odd(odd), m_filtered(filtered) {}
 
-    Spectrum eval(const TextureContext& ctx) const override {
+    Rgb eval(const TextureContext& ctx) const override {
         return mix(m_even, m_odd, odd_fraction(ctx));
     }
     float pattern(const TextureContext& ctx) const override { return odd_fraction(ctx); }
@@ -49,16 +49,16 @@ private:
     }
 
     TextureMapping2D m_mapping;
-    Spectrum m_even, m_odd;
+    Rgb m_even, m_odd;
     bool m_filtered;
 };
 
 class Checker3DTexture final : public Texture {
 public:
-    Checker3DTexture(SolidMapping mapping, Spectrum even, Spectrum odd)
+    Checker3DTexture(SolidMapping mapping, Rgb even, Rgb odd)
         : m_mapping(mapping), m_even(even), m_odd(odd) {}
 
-    Spectrum eval(const TextureContext& ctx) const override { return is_odd(ctx) ? m_odd : m_even; }
+    Rgb eval(const TextureContext& ctx) const override { return is_odd(ctx) ? m_odd : m_even; }
     float pattern(const TextureContext& ctx) const override { return is_odd(ctx) ? 1.0f : 0.0f; }
 
 private:
@@ -68,7 +68,7 @@ private:
     }
 
     SolidMapping m_mapping;
-    Spectrum m_even, m_odd;
+    Rgb m_even, m_odd;
 };
 
 }  // namespace
@@ -90,8 +90,8 @@ float checker_odd_fraction(float x, float half_width) {
 //       filter "box" (average over the pixel footprint) or "none"       default "box"
 //   3D: transform, scale (cubes per unit) as read_solid_mapping; not filtered.
 std::unique_ptr<Texture> make_checker_texture(const Params& params, TextureTable&) {
-    const Spectrum even = read_colour(params, "even", Spectrum(0.8f));
-    const Spectrum odd = read_colour(params, "odd", Spectrum(0.2f));
+    const Rgb even = read_colour(params, "even", Rgb(0.8f));
+    const Rgb odd = read_colour(params, "odd", Rgb(0.2f));
     const int dimension = params.get_int("dimension", 2);
     if (dimension == 3)
         return std::make_unique<Checker3DTexture>(read_solid_mapping(params), even, odd);

@@ -33,15 +33,14 @@ public:
           m_srgb(srgb),
           m_mapping(mapping) {}
 
-    Spectrum eval(const TextureContext& ctx) const override {
+    Rgb eval(const TextureContext& ctx) const override {
         const TexCoord2D tc = m_mapping.map(ctx);
         // OpenImageIO puts t = 0 at the top row; uv has v = 0 at the bottom.
         float result[3] = {0.0f, 0.0f, 0.0f};
         OIIO::TextureOpt options = m_options;  // the lookup may write into it
         m_system->texture(m_handle, nullptr, options, tc.st.x, 1.0f - tc.st.y, tc.dsdx, -tc.dtdx,
                           tc.dsdy, -tc.dtdy, std::min(m_channels, 3), result);
-        Spectrum value =
-            m_channels >= 3 ? Spectrum(result[0], result[1], result[2]) : Spectrum(result[0]);
+        Rgb value = m_channels >= 3 ? Rgb(result[0], result[1], result[2]) : Rgb(result[0]);
         if (m_srgb) {
             value = {srgb_to_linear(value.r), srgb_to_linear(value.g), srgb_to_linear(value.b)};
         }

@@ -12,8 +12,8 @@ struct MarbleSettings {
     float noise_scale = 1.5f;        // frequency of the turbulence
     float sharpness = 12.0f;         // larger: thinner veins
     FractalSettings fractal{6, 2.0f, 0.5f};
-    Spectrum base{0.88f, 0.86f, 0.82f};
-    Spectrum vein{0.22f, 0.22f, 0.26f};
+    Rgb base{0.88f, 0.86f, 0.82f};
+    Rgb vein{0.22f, 0.22f, 0.26f};
 };
 
 class MarbleTexture final : public Texture {
@@ -21,7 +21,7 @@ public:
     MarbleTexture(SolidMapping mapping, MarbleSettings settings)
         : m_mapping(mapping), m_settings(settings) {}
 
-    Spectrum eval(const TextureContext& ctx) const override {
+    Rgb eval(const TextureContext& ctx) const override {
         const float t = pattern(ctx);
         return m_settings.base * (1.0f - t) + m_settings.vein * t;
     }

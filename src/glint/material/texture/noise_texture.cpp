@@ -10,11 +10,11 @@ enum class NoisePattern { kNoise, kFbm, kTurbulence };
 
 class NoiseTexture final : public Texture {
 public:
-    NoiseTexture(NoisePattern pattern, SolidMapping mapping, FractalSettings fractal, Spectrum low,
-                 Spectrum high)
+    NoiseTexture(NoisePattern pattern, SolidMapping mapping, FractalSettings fractal, Rgb low,
+                 Rgb high)
         : m_pattern(pattern), m_mapping(mapping), m_fractal(fractal), m_low(low), m_high(high) {}
 
-    Spectrum eval(const TextureContext& ctx) const override {
+    Rgb eval(const TextureContext& ctx) const override {
         const float t = std::clamp(colour_position(pattern(ctx)), 0.0f, 1.0f);
         return m_low * (1.0f - t) + m_high * t;
     }
@@ -43,12 +43,12 @@ private:
     NoisePattern m_pattern;
     SolidMapping m_mapping;
     FractalSettings m_fractal;
-    Spectrum m_low, m_high;
+    Rgb m_low, m_high;
 };
 
 std::unique_ptr<Texture> make(NoisePattern pattern, const Params& params) {
-    const Spectrum low = read_colour(params, "low", Spectrum(0.0f));
-    const Spectrum high = read_colour(params, "high", Spectrum(1.0f));
+    const Rgb low = read_colour(params, "low", Rgb(0.0f));
+    const Rgb high = read_colour(params, "high", Rgb(1.0f));
     const FractalSettings fractal = pattern == NoisePattern::kNoise
                                         ? FractalSettings{1, 2.0f, 0.5f}
                                         : read_fractal_settings(params, 6);

@@ -4,10 +4,9 @@
 
 namespace glint {
 
-Spectrum read_colour(const Params& params, const std::string& name, const Spectrum& fallback) {
-    const Spectrum colour = params.get_spectrum(name, fallback);
-    if (std::min({colour.r, colour.g, colour.b}) < 0.0f)
-        params.fail(fmt::format("'{}' must not be negative", name));
+Rgb read_colour(const Params& params, const std::string& name, const Rgb& fallback) {
+    const Rgb colour = params.get_rgb(name, fallback);
+    if (colour.min_value() < 0.0f) params.fail(fmt::format("'{}' must not be negative", name));
     return colour;
 }
 

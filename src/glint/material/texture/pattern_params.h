@@ -7,7 +7,7 @@ namespace glint {
 
 // A colour: a number (grey) or {r, g, b}, every channel >= 0 (values above 1 are allowed,
 // e.g. for an emitter's radiance).
-Spectrum read_colour(const Params& params, const std::string& name, const Spectrum& fallback);
+Rgb read_colour(const Params& params, const std::string& name, const Rgb& fallback);
 // A number > 0.
 float read_positive(const Params& params, const std::string& name, float fallback);
 // A number >= 0.

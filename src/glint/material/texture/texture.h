@@ -10,7 +10,7 @@
 // Textures are built once with the scene and are read-only and thread-safe while
 // rendering; evaluation allocates nothing.
 #include <glint/core/interaction.h>
-#include <glint/core/spectrum.h>
+#include <glint/core/rgb.h>
 
 namespace glint {
 
@@ -39,8 +39,8 @@ struct TextureContext {
 class Texture {
 public:
     virtual ~Texture() = default;
-    // Linear RGB value.
-    virtual Spectrum eval(const TextureContext& ctx) const = 0;
+    // Linear RGB value: a colour, which a material makes into a Spectrum (texture_input.h).
+    virtual Rgb eval(const TextureContext& ctx) const = 0;
     // Scalar value (roughness, index of refraction, bump height, ...): the average of the
     // colour's channels, for every texture, so that a scalar parameter reads what the
     // texture's colours say (a noise between low = 0.1 and high = 0.4 gives 0.1 .. 0.4).

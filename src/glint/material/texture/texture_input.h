@@ -1,6 +1,7 @@
 #pragma once
 // A material parameter that is either a constant or a texture: what every colour,
 // roughness or weight of a material is, so that any of them can vary over a surface.
+#include <glint/core/spectrum.h>
 #include <glint/material/texture/texture.h>
 
 namespace glint {
@@ -8,26 +9,32 @@ namespace glint {
 class SpectrumInput {
 public:
     SpectrumInput() = default;
-    explicit SpectrumInput(const Spectrum& constant) : m_constant(constant) {}
+    // A constant colour; `hi` is the bound it was checked against: at most 1 makes it a
+    // reflectance, anything else an unbounded quantity (what `uplift` needs to know).
+    explicit SpectrumInput(const Rgb& constant, float hi = 1.0f)
+        : m_constant(constant), m_role(role_for(hi)) {}
     // Texture values are clamped to [lo, hi], so a texture cannot break a limit that a
     // constant is checked against (a reflectance above 1 would create energy).
     SpectrumInput(const Texture* texture, float lo, float hi)
-        : m_texture(texture), m_lo(lo), m_hi(hi) {}
+        : m_texture(texture), m_lo(lo), m_hi(hi), m_role(role_for(hi)) {}
 
     Spectrum eval(const SurfaceInteraction& si) const {
-        if (!m_texture) return m_constant;
-        const Spectrum v = m_texture->eval(TextureContext(si));
-        return {std::clamp(v.r, m_lo, m_hi), std::clamp(v.g, m_lo, m_hi),
-                std::clamp(v.b, m_lo, m_hi)};
+        if (!m_texture) return uplift(m_constant, m_role);
+        return uplift(m_texture->eval(TextureContext(si)).clamped(m_lo, m_hi), m_role);
     }
     bool is_textured() const { return m_texture != nullptr; }
     // The constant value, or a representative one (0.5) for a texture.
-    Spectrum representative() const { return m_texture ? Spectrum(0.5f) : m_constant; }
+    Spectrum representative() const { return uplift(m_texture ? Rgb(0.5f) : m_constant, m_role); }
 
 private:
-    Spectrum m_constant{0.0f};
+    static RgbRole role_for(float hi) {
+        return hi <= 1.0f ? RgbRole::reflectance : RgbRole::unbounded;
+    }
+
+    Rgb m_constant{0.0f};
     const Texture* m_texture = nullptr;
     float m_lo = 0.0f, m_hi = 0.0f;
+    RgbRole m_role = RgbRole::reflectance;
 };
 
 class FloatInput {

@@ -28,7 +28,7 @@ const Texture* TextureTable::declared(const Params& params, const std::string& n
 }
 
 SpectrumInput TextureTable::spectrum(const Params& params, const std::string& name,
-                                     const Spectrum& fallback, float lo, float hi) const {
+                                     const Rgb& fallback, float lo, float hi) const {
     if (const Texture* texture = declared(params, name)) return SpectrumInput(texture, lo, hi);
     if (params.has(name) && !params.is_number_or_numbers(name)) {
         params.fail(
@@ -36,11 +36,11 @@ SpectrumInput TextureTable::spectrum(const Params& params, const std::string& na
                         "(glint.texture.*)",
                         name));
     }
-    const Spectrum value = params.get_spectrum(name, fallback);
-    if (std::min({value.r, value.g, value.b}) < lo || value.max_value() > hi) {
+    const Rgb value = params.get_rgb(name, fallback);
+    if (value.min_value() < lo || value.max_value() > hi) {
         params.fail(fmt::format("'{}' must lie in [{}, {}]", name, lo, hi));
     }
-    return SpectrumInput(value);
+    return SpectrumInput(value, hi);
 }
 
 FloatInput TextureTable::scalar(const Params& params, const std::string& name, float fallback,

@@ -30,7 +30,7 @@ public:
 
     // A constant (number or {r, g, b}) or a texture handle; texture values are clamped to
     // [lo, hi] where a constant would have been rejected outside it.
-    SpectrumInput spectrum(const Params& params, const std::string& name, const Spectrum& fallback,
+    SpectrumInput spectrum(const Params& params, const std::string& name, const Rgb& fallback,
                            float lo, float hi) const;
     FloatInput scalar(const Params& params, const std::string& name, float fallback, float lo,
                       float hi) const;

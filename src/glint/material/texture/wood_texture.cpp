@@ -12,8 +12,8 @@ struct WoodSettings {
     float noise_scale = 1.5f;   // frequency of that displacement
     float grain = 4.0f;         // how much slower the displacement varies along the axis
     FractalSettings fractal{4, 2.0f, 0.5f};
-    Spectrum light{0.70f, 0.50f, 0.30f};
-    Spectrum dark{0.40f, 0.23f, 0.11f};
+    Rgb light{0.70f, 0.50f, 0.30f};
+    Rgb dark{0.40f, 0.23f, 0.11f};
 };
 
 class WoodTexture final : public Texture {
@@ -21,7 +21,7 @@ public:
     WoodTexture(SolidMapping mapping, WoodSettings settings)
         : m_mapping(mapping), m_settings(settings) {}
 
-    Spectrum eval(const TextureContext& ctx) const override {
+    Rgb eval(const TextureContext& ctx) const override {
         const float t = pattern(ctx);
         return m_settings.light * (1.0f - t) + m_settings.dark * t;
     }
