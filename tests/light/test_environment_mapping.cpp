@@ -42,12 +42,12 @@ const char* name_of(EnvironmentMapping m) {
 
 // A sky with a colour gradient from the zenith, a lighter side towards +x and a broad, bright
 // patch (no sharp edges, so that every layout's resampling keeps it).
-Spectrum sky(const Vec3& d) {
+Rgb sky(const Vec3& d) {
     const float up = 0.5f * (d.y + 1.0f);
     const Vec3 sun = glm::normalize(Vec3(0.5f, 0.6f, -0.6f));
     const float glow = std::exp(8.0f * (glm::dot(d, sun) - 1.0f));
-    return Spectrum(0.3f + 0.4f * up + 0.2f * d.x, 0.35f + 0.3f * up, 0.7f - 0.3f * up) +
-           Spectrum(12.0f, 10.0f, 7.0f) * glow;
+    return Rgb(0.3f + 0.4f * up + 0.2f * d.x, 0.35f + 0.3f * up, 0.7f - 0.3f * up) +
+           Rgb(12.0f, 10.0f, 7.0f) * glow;
 }
 
 // The sky written in `mapping`'s layout, `size` pixels high; cells with nothing are black.
@@ -60,7 +60,7 @@ std::string write_probe(const test::TempDir& dir, EnvironmentMapping mapping, in
         for (int x = 0; x < width; ++x) {
             const Vec2 p((x + 0.5f) / width, (y + 0.5f) / size);
             const std::optional<Vec3> d = environment_direction(mapping, p);
-            const Spectrum value = d ? sky(*d) : Spectrum(0.0f);
+            const Rgb value = d ? sky(*d) : Rgb(0.0f);
             for (int c = 0; c < 3; ++c) image.at(x, y, c) = value[c];
         }
     }

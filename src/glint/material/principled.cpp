@@ -37,6 +37,7 @@ public:
     // for a constant, the whole range for a textured one.
     explicit PrincipledMaterial(const PrincipledInputs& in)
         : m_in(in),
+          m_interior(in.absorption),
           m_specular_albedo(in.specular_eta,
                             textured_roughness() ? PrincipledBsdf::kMinAlpha : constant_alpha(),
                             textured_roughness() ? 1.0f : constant_alpha()),
@@ -60,7 +61,11 @@ public:
         return m_in.base_color.eval(si);
     }
     Spectrum emission() const override { return m_in.emission; }
-    Spectrum interior_absorption() const override { return m_in.absorption; }
+    // Absorption inside (KHR_materials_volume) is a medium that only absorbs, as for glass.
+    MediumInterface medium_interface() const override {
+        if (m_interior.sigma_a().is_black()) return {};
+        return MediumInterface{&m_interior, nullptr};
+    }
 
 private:
     bool textured_roughness() const {
@@ -69,6 +74,7 @@ private:
     float constant_alpha() const { return clamped_alpha(m_in.roughness.representative()); }
 
     PrincipledInputs m_in;
+    AbsorbingMedium m_interior;
     CoatAlbedoTable m_specular_albedo;
     CoatAlbedoTable m_coat_albedo;
 };

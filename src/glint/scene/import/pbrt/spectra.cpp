@@ -131,8 +131,8 @@ std::optional<NamedSpectrum> named_spectrum(const std::string& name) {
         const std::string stem = fmt::format("metal-{}-", symbol);
         if (name == stem + "eta" || name == stem + "k") {
             const ConductorPreset* p = find_conductor_preset(preset);
-            const Spectrum& s = name == stem + "eta" ? p->eta : p->k;
-            return NamedSpectrum{NamedSpectrum::Kind::Index, Vec3(s[0], s[1], s[2])};
+            const Rgb& s = name == stem + "eta" ? p->eta : p->k;
+            return NamedSpectrum{NamedSpectrum::Kind::Index, Vec3(s.r, s.g, s.b)};
         }
     }
     for (const Glass& g : kGlasses) {
