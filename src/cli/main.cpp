@@ -4,7 +4,7 @@
 #include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/core/strict_number.h>
-#include <glint/film/denoise.h>
+#include <glint/denoise/film_denoiser.h>
 #include <glint/film/image_io.h>
 #include <glint/film/output_batch.h>
 #include <glint/geometry/accel.h>
@@ -98,6 +98,8 @@ struct RenderOptions {
     std::string exposure;
     std::string tonemap;
     bool denoise = false;
+    std::string denoiser;  // --denoise's value: "network" (the default) or "nlm"
+    std::string denoise_quality;
     std::string adaptive;
     std::string photons;
     bool no_mipmap = false;
@@ -201,6 +203,9 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     if (!options.tonemap.empty()) table.set("tonemap", options.tonemap, "--tonemap");
     if (options.aovs) table.set("aovs", true, "--aovs");
     if (options.denoise) table.set("denoise", true, "--denoise");
+    if (!options.denoiser.empty()) table.set("denoiser", options.denoiser, "--denoise");
+    if (!options.denoise_quality.empty())
+        table.set("denoise_quality", options.denoise_quality, "--denoise-quality");
     if (options.no_mipmap) table.set("mipmapping", false, "--no-mipmap");
     if (const auto every = int_flag("--intermediate", options.intermediate, 0, INT_MAX))
         table.set("intermediate", static_cast<double>(*every), "--intermediate");
@@ -290,6 +295,7 @@ void check_denoise(const RenderSettings& settings, const Integrator& integrator)
             "photon); '{}' adds light paths to the image, which it cannot split into halves",
             where, settings.integrator));
     }
+    if (settings.denoiser != "nlm") return;
     if (settings.adaptive == "sobel") {
         throw Error(
             fmt::format("{}: the denoiser cannot use --adaptive sobel (its flat pixels "
@@ -339,14 +345,17 @@ int run_render(const RenderOptions& options) {
     // The denoiser reads the AOVs and the film's two halves; the outputs get the AOVs
     // only when asked for.
     const bool film_aovs = settings.aovs || settings.denoise;
-    check_memory(Film::memory_bytes(settings.width, settings.height, film_aovs, settings.denoise),
+    const bool film_halves = settings.denoise && settings.denoiser == "nlm";
+    check_memory(Film::memory_bytes(settings.width, settings.height, film_aovs, film_halves),
                  fmt::format("the film ({}x{}{})", settings.width, settings.height,
-                             settings.denoise ? " with AOVs and halves for the denoiser"
+                             film_halves        ? " with AOVs and halves for the denoiser"
+                             : settings.denoise ? " with AOVs for the denoiser"
                              : settings.aovs  ? " with AOVs"
                                               : ""));
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
     check_denoise(settings, *integrator);
+    check_denoiser_ready(settings);
     for (const std::string& warning : warnings) fmt::print(stderr, "warning: {}\n", warning);
     const auto scene = build_scene(desc, settings);
     for (const std::string& warning : scene->stats().warnings)
@@ -357,7 +366,7 @@ int run_render(const RenderOptions& options) {
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
     Film film(settings.output_width(), settings.output_height(), film_aovs,
-              settings.output_origin(), settings.denoise);
+              settings.output_origin(), film_halves);
     Progress progress("rendering", expected_samples(settings), options.quiet);
     progress.set_cancel_flag(&g_signal);
     // Processor time of the render (all threads), besides its wall-clock time: a benchmark on
@@ -383,7 +392,12 @@ int run_render(const RenderOptions& options) {
     double denoise_seconds = 0.0;
     if (settings.denoise) {
         const auto start = std::chrono::steady_clock::now();
-        const Image denoised = denoise(film);
+        Progress denoising("denoising",
+                           static_cast<uint64_t>(denoise_steps(film.width(), film.height(), settings)),
+                           options.quiet, "tiles");
+        denoising.set_cancel_flag(&g_signal);
+        const Image denoised = denoise_film(film, settings, threads, denoising);
+        denoising.finish();
         denoise_seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         throw_if_interrupted();
@@ -589,9 +603,19 @@ int main(int argc, char** argv) {
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
     render_cmd->add_option("--tonemap", render.tonemap,
                            "Tone curve of PNG output: clip (default), reinhard, filmic (ACES fit)");
-    render_cmd->add_flag("--denoise", render.denoise,
+    CLI::Option* denoise_option =
+        render_cmd
+            ->add_option("--denoise", render.denoiser,
                          "Also write each output denoised, as NAME.denoised.EXT (path, whitted "
-                         "and photon integrators)");
+                         "and photon integrators): by Open Image Denoise's trained network "
+                         "(default; weights from scripts/install-deps.sh), or 'nlm' for glint's "
+                         "own non-local means filter")
+            ->expected(0, 1)
+            ->check(CLI::IsMember({"network", "nlm"}));
+    render_cmd
+        ->add_option("--denoise-quality", render.denoise_quality,
+                     "The network's size: fast, balanced (default), high")
+        ->check(CLI::IsMember({"fast", "balanced", "high"}));
     render_cmd->add_flag("--aovs", render.aovs,
                          "Add albedo, normal and depth channels to EXR output");
     render_cmd->add_option(
@@ -678,7 +702,10 @@ int main(int argc, char** argv) {
 
     install_signal_handlers();
     try {
-        if (render_cmd->parsed()) return run_render(render);
+        if (render_cmd->parsed()) {
+            render.denoise = denoise_option->count() > 0;
+            return run_render(render);
+        }
         if (info_cmd->parsed())
             return run_info(info_scene, loader_options(info_trusted, info_time_limit));
         if (compare_cmd->parsed()) return run_compare(test_image, reference_image, threshold);
