@@ -25,6 +25,7 @@ REF_SPP=${REF_SPP:-1024}
 SCENES=${SCENES:-cornell-box:256x256 textures:320x180 cornell-spheres:256x256}
 SPEED=${SPEED-1024 1024 3}
 OUT=${OUT:-$(mktemp -d)}
+mkdir -p "$OUT"
 ninja -C "$BUILD_DIR" glint_cli glint_bench_denoise_network >/dev/null
 glint=$(realpath "$BUILD_DIR/glint")
 

@@ -350,8 +350,8 @@ int run_render(const RenderOptions& options) {
                  fmt::format("the film ({}x{}{})", settings.width, settings.height,
                              film_halves        ? " with AOVs and halves for the denoiser"
                              : settings.denoise ? " with AOVs for the denoiser"
-                             : settings.aovs  ? " with AOVs"
-                                              : ""));
+                             : settings.aovs    ? " with AOVs"
+                                                : ""));
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
     check_denoise(settings, *integrator);
@@ -392,9 +392,10 @@ int run_render(const RenderOptions& options) {
     double denoise_seconds = 0.0;
     if (settings.denoise) {
         const auto start = std::chrono::steady_clock::now();
-        Progress denoising("denoising",
-                           static_cast<uint64_t>(denoise_steps(film.width(), film.height(), settings)),
-                           options.quiet, "tiles");
+        Progress denoising(
+            "denoising",
+            static_cast<uint64_t>(denoise_steps(film.width(), film.height(), settings)),
+            options.quiet, "tiles");
         denoising.set_cancel_flag(&g_signal);
         const Image denoised = denoise_film(film, settings, threads, denoising);
         denoising.finish();

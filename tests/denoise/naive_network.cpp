@@ -28,7 +28,8 @@ PlanarTensor convolve(const Layer& layer, const PlanarTensor& in) {
                         for (int dx = 0; dx < 3; ++dx) {
                             const int sy = y + dy - 1, sx = x + dx - 1;
                             if (sy < 0 || sy >= in.height || sx < 0 || sx >= in.width) continue;
-                            const std::size_t w = ((static_cast<std::size_t>(o) * in.channels + i) * 3 + dy) * 3 + dx;
+                            const std::size_t w =
+                                ((static_cast<std::size_t>(o) * in.channels + i) * 3 + dy) * 3 + dx;
                             sum += static_cast<double>(layer.weights[w]) * in.at(i, sy, sx);
                         }
                     }
@@ -46,8 +47,9 @@ PlanarTensor max_pool(const PlanarTensor& in) {
     for (int c = 0; c < in.channels; ++c)
         for (int y = 0; y < out.height; ++y)
             for (int x = 0; x < out.width; ++x)
-                at(out, c, y, x) = std::max({in.at(c, 2 * y, 2 * x), in.at(c, 2 * y, 2 * x + 1),
-                                             in.at(c, 2 * y + 1, 2 * x), in.at(c, 2 * y + 1, 2 * x + 1)});
+                at(out, c, y, x) =
+                    std::max({in.at(c, 2 * y, 2 * x), in.at(c, 2 * y, 2 * x + 1),
+                              in.at(c, 2 * y + 1, 2 * x), in.at(c, 2 * y + 1, 2 * x + 1)});
     return out;
 }
 
@@ -75,11 +77,21 @@ std::vector<PlanarTensor> naive_forward(const NetworkGraph& graph, const PlanarT
             return outputs[static_cast<std::size_t>(layer.inputs[static_cast<std::size_t>(k)])];
         };
         switch (layer.kind) {
-        case LayerKind::Input: outputs.push_back(input); break;
-        case LayerKind::Conv: outputs.push_back(convolve(layer, in(0))); break;
-        case LayerKind::Pool: outputs.push_back(max_pool(in(0))); break;
-        case LayerKind::Upsample: outputs.push_back(upsample(in(0))); break;
-        case LayerKind::Concat: outputs.push_back(concatenate(in(0), in(1))); break;
+            case LayerKind::Input:
+                outputs.push_back(input);
+                break;
+            case LayerKind::Conv:
+                outputs.push_back(convolve(layer, in(0)));
+                break;
+            case LayerKind::Pool:
+                outputs.push_back(max_pool(in(0)));
+                break;
+            case LayerKind::Upsample:
+                outputs.push_back(upsample(in(0)));
+                break;
+            case LayerKind::Concat:
+                outputs.push_back(concatenate(in(0), in(1)));
+                break;
         }
     }
     return outputs;

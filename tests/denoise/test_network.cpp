@@ -28,7 +28,8 @@ std::vector<float> random_values(std::size_t count, std::mt19937& rng, float sca
 }
 
 PlanarTensor random_tensor(int channels, int height, int width, std::mt19937& rng) {
-    return {channels, height, width, random_values(static_cast<std::size_t>(channels) * height * width, rng)};
+    return {channels, height, width,
+            random_values(static_cast<std::size_t>(channels) * height * width, rng)};
 }
 
 // Adds a convolution with random weights scaled so that outputs stay of order 1.
@@ -63,7 +64,8 @@ TEST(NetworkLayers, ConvolutionWithAndWithoutReluMatchesReference) {
                                         std::tuple{3, 3, false}, std::tuple{41, 17, true}}) {
         NetworkGraph graph;
         add_random_conv(graph, graph.add_input(in), out, relu, rng);
-        EXPECT_LT(run_and_compare(graph, random_tensor(in, 16, 32, rng)), 1e-4) << in << " -> " << out;
+        EXPECT_LT(run_and_compare(graph, random_tensor(in, 16, 32, rng)), 1e-4)
+            << in << " -> " << out;
     }
 }
 
@@ -121,8 +123,9 @@ PlanarTensor network_input(int channels, int height, int width, std::mt19937& rn
 // The whole published network, every layer of it, equals the scalar forward pass.
 TEST(NetworkWhole, PublishedNetworksMatchScalarForwardPass) {
     std::mt19937 rng(5);
-    for (const auto& [name, channels] : {std::pair{"rt_hdr_alb_nrm", 9}, std::pair{"rt_hdr_alb_nrm_small", 9},
-                                         std::pair{"rt_nrm_large", 3}}) {
+    for (const auto& [name, channels] :
+         {std::pair{"rt_hdr_alb_nrm", 9}, std::pair{"rt_hdr_alb_nrm_small", 9},
+          std::pair{"rt_nrm_large", 3}}) {
         const std::string path = test::installed_weights(name);
         const NetworkGraph graph = make_unet(read_tza(path), channels, path);
         EXPECT_LT(run_and_compare(graph, network_input(channels, 32, 48, rng)), 1e-4) << name;

@@ -39,20 +39,24 @@ struct Scene {
 
 // Measured gain over non-local means / geometry / texture contrast: 2.88 / 0.92 at 4 spp,
 // 1.35 / 0.94 at 16.
-const Scene cornell{"cornell-box.lua", "width = 64, height = 64, integrator = 'path'",
+const Scene cornell{"cornell-box.lua",
+                    "width = 64, height = 64, integrator = 'path'",
                     {{4, 2.0, 0.9, 0.0}, {16, 1.15, 0.9, 0.0}}};
 // Textures under an environment light: the IBL scene too. Measured 1.21 / 0.67 / 0.93 at 4
 // spp, 1.39 / 0.81 / 0.96 at 16; its geometry edges include the glass and metal spheres'
 // silhouettes against a reference that is itself noisy there.
-const Scene textures{"textures.lua", "width = 160, height = 90, crop = {16, 24, 144, 84}, max_depth = 8",
+const Scene textures{"textures.lua",
+                     "width = 160, height = 90, crop = {16, 24, 144, 84}, max_depth = 8",
                      {{4, 1.1, 0.6, 0.9}, {16, 1.2, 0.75, 0.9}}};
 // A glass and a mirror sphere: measured 2.40 / 0.49 at 4 spp, 1.28 / 0.91 at 16 (the caustic
 // and the refracted room are what the network smooths at 4 spp).
-const Scene spheres{"cornell-spheres.lua", "width = 64, height = 64, integrator = 'path'",
+const Scene spheres{"cornell-spheres.lua",
+                    "width = 64, height = 64, integrator = 'path'",
                     {{4, 2.0, 0.4, 0.0}, {16, 1.1, 0.85, 0.0}}};
 
 std::string code(const Scene& scene, int spp, int seed) {
-    return example_with_settings(scene.file, fmt::format("{}, spp = {}, seed = {}", scene.settings, spp, seed));
+    return example_with_settings(scene.file,
+                                 fmt::format("{}, spp = {}, seed = {}", scene.settings, spp, seed));
 }
 
 struct Errors {
@@ -70,8 +74,10 @@ Errors measure(const Scene& scene, const Halves& ref, const Expectation& e) {
     const Image nlm = denoise(noisy.full, noisy.a, noisy.b);
     const Errors errors{test::error_against(noisy.full, ref), test::error_against(nlm, ref),
                         test::error_against(network, ref)};
-    fmt::print("{} at {} spp: relative MSE noisy {:.5f}, non-local means {:.5f}, network {:.5f} ({:.2f} x lower)\n",
-               scene.file, spp, errors.noisy, errors.nlm, errors.network, errors.nlm / errors.network);
+    fmt::print(
+        "{} at {} spp: relative MSE noisy {:.5f}, non-local means {:.5f}, network {:.5f} ({:.2f} x "
+        "lower)\n",
+        scene.file, spp, errors.noisy, errors.nlm, errors.network, errors.nlm / errors.network);
     const test::EdgeBands bands = test::edge_bands(ref.full);
     std::vector<std::tuple<const char*, const std::vector<uint8_t>*, double>> checks = {
         {"geometry", &bands.geometry, e.geometry_contrast}};
@@ -80,8 +86,10 @@ Errors measure(const Scene& scene, const Halves& ref, const Expectation& e) {
         EXPECT_GT(test::band_size(*band), 50) << name;
         const double ref_contrast = test::edge_contrast(ref.full, *band);
         const double contrast = test::edge_contrast(network, *band);
-        fmt::print("  {} edges: contrast {:.1f} % of the reference's\n", name, 100.0 * contrast / ref_contrast);
-        EXPECT_GE(contrast, min_contrast * ref_contrast) << scene.file << " " << name << " edges at " << spp;
+        fmt::print("  {} edges: contrast {:.1f} % of the reference's\n", name,
+                   100.0 * contrast / ref_contrast);
+        EXPECT_GE(contrast, min_contrast * ref_contrast)
+            << scene.file << " " << name << " edges at " << spp;
     }
     return errors;
 }
@@ -92,13 +100,20 @@ void check_scene(const Scene& scene) {
     for (const Expectation& expectation : scene.expectations) {
         const Errors e = measure(scene, ref, expectation);
         EXPECT_LT(5.0 * e.network, e.noisy) << scene.file << " at " << expectation.spp;
-        EXPECT_LT(expectation.gain_over_nlm * e.network, e.nlm) << scene.file << " at " << expectation.spp;
+        EXPECT_LT(expectation.gain_over_nlm * e.network, e.nlm)
+            << scene.file << " at " << expectation.spp;
     }
 }
 
-TEST(NetworkDenoiserQuality, CornellBox) { check_scene(cornell); }
-TEST(NetworkDenoiserQuality, TexturesUnderEnvironmentLight) { check_scene(textures); }
-TEST(NetworkDenoiserQuality, GlassAndMirrorSpheres) { check_scene(spheres); }
+TEST(NetworkDenoiserQuality, CornellBox) {
+    check_scene(cornell);
+}
+TEST(NetworkDenoiserQuality, TexturesUnderEnvironmentLight) {
+    check_scene(textures);
+}
+TEST(NetworkDenoiserQuality, GlassAndMirrorSpheres) {
+    check_scene(spheres);
+}
 
 // A checkerboard albedo under a smooth light, with matching features and no noise: the
 // network must give it back within 1 % on average, and all but a few per cent of the values
@@ -107,8 +122,9 @@ TEST(NetworkDenoiserQuality, GlassAndMirrorSpheres) { check_scene(spheres); }
 // in a corner of this image).
 TEST(NetworkDenoiserQuality, NoiseFreeImageComesBackWithinOnePercent) {
     const int w = 96, h = 64;
-    Image image = make_image(w, h, {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y",
-                                    "normal.Z"});
+    Image image = make_image(
+        w, h,
+        {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z"});
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             const float albedo = ((x / 8 + y / 8) % 2) ? 0.8f : 0.2f;
@@ -129,21 +145,28 @@ TEST(NetworkDenoiserQuality, NoiseFreeImageComesBackWithinOnePercent) {
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             for (int c = 0; c < 3; ++c) {
-                const double relative = std::abs(result.at(x, y, c) - image.at(x, y, c)) / image.at(x, y, c);
+                const double relative =
+                    std::abs(result.at(x, y, c) - image.at(x, y, c)) / image.at(x, y, c);
                 sum += relative;
                 if (x >= 8 && y >= 8 && x < w - 8 && y < h - 8) {
                     ++interior;
                     far += relative > 0.01;
                 }
-                if (relative > worst) { worst = relative; wx = x; wy = y; }
+                if (relative > worst) {
+                    worst = relative;
+                    wx = x;
+                    wy = y;
+                }
             }
         }
     }
     const double mean = sum / (3.0 * w * h);
     const double far_share = static_cast<double>(far) / interior;
-    fmt::print("noise-free image: mean relative change {:.4f}, largest {:.4f} at ({}, {}); {:.1f} % of the "
-               "values 8 pixels or more inside changed by more than 1 %\n",
-               mean, worst, wx, wy, 100.0 * far_share);
+    fmt::print(
+        "noise-free image: mean relative change {:.4f}, largest {:.4f} at ({}, {}); {:.1f} % of "
+        "the "
+        "values 8 pixels or more inside changed by more than 1 %\n",
+        mean, worst, wx, wy, 100.0 * far_share);
     EXPECT_LT(mean, 0.01);
     EXPECT_LT(far_share, 0.05);
 }

@@ -34,9 +34,11 @@ void expect_valid_plan(int width, int height, int max_tile) {
         EXPECT_TRUE(t.keep_x1 == width || t.keep_x1 <= t.x + plan.width - ov) << width;
         EXPECT_TRUE(t.keep_y1 == height || t.keep_y1 <= t.y + plan.height - ov) << height;
         for (int y = t.keep_y0; y < t.keep_y1; ++y)
-            for (int x = t.keep_x0; x < t.keep_x1; ++x) ++kept[static_cast<std::size_t>(y) * width + x];
+            for (int x = t.keep_x0; x < t.keep_x1; ++x)
+                ++kept[static_cast<std::size_t>(y) * width + x];
     }
-    for (int count : kept) ASSERT_EQ(count, 1) << width << " x " << height << " in tiles of " << max_tile;
+    for (int count : kept)
+        ASSERT_EQ(count, 1) << width << " x " << height << " in tiles of " << max_tile;
 }
 
 TEST(DenoiseTiles, CoverEveryPixelOnceWithTheOverlapInside) {

@@ -29,7 +29,8 @@ struct FakeTensor {
 };
 
 // An archive of the given tensors, float data i * 0.5 (or the half-float 1.0 for 'h').
-std::vector<std::uint8_t> make_archive(const std::vector<FakeTensor>& tensors, std::uint8_t major = 2) {
+std::vector<std::uint8_t> make_archive(const std::vector<FakeTensor>& tensors,
+                                       std::uint8_t major = 2) {
     std::vector<std::uint8_t> bytes;
     put<std::uint16_t>(bytes, 0x41D7);
     put<std::uint8_t>(bytes, major);
@@ -41,8 +42,10 @@ std::vector<std::uint8_t> make_archive(const std::vector<FakeTensor>& tensors, s
         std::size_t count = 1;
         for (auto d : t.dims) count *= d;
         for (std::size_t i = 0; i < count; ++i) {
-            if (t.type == 'f') put<float>(bytes, 0.5f * static_cast<float>(i));
-            else put<std::uint16_t>(bytes, 0x3C00);
+            if (t.type == 'f')
+                put<float>(bytes, 0.5f * static_cast<float>(i));
+            else
+                put<std::uint16_t>(bytes, 0x3C00);
         }
     }
     const std::uint64_t table = bytes.size();
@@ -98,7 +101,8 @@ TEST(Tza, HalfFloatsConvertExactly) {
 TEST(Tza, EveryTruncationIsAClearError) {
     const std::vector<std::uint8_t> whole = make_archive(conv_tensors);
     for (std::size_t size = 0; size < whole.size(); ++size) {
-        const std::vector<std::uint8_t> cut(whole.begin(), whole.begin() + static_cast<std::ptrdiff_t>(size));
+        const std::vector<std::uint8_t> cut(whole.begin(),
+                                            whole.begin() + static_cast<std::ptrdiff_t>(size));
         const std::string message = error_of(cut);
         ASSERT_NE(message.find("fake.tza"), std::string::npos) << size;
         const bool says_why = message.find("truncated") != std::string::npos ||
@@ -117,8 +121,10 @@ TEST(Tza, CorruptOrOtherVersionIsAClearError) {
     bytes = make_archive(conv_tensors);
     bytes[4] = 0xff;  // the table offset points past the end
     EXPECT_NE(error_of(bytes).find("past its end"), std::string::npos) << error_of(bytes);
-    EXPECT_NE(error_of(make_archive({{"w", {2, 2}, "ab", 'f'}})).find("layout 'ab'"), std::string::npos);
-    EXPECT_NE(error_of(make_archive({{"w", {2}, "x", 'd'}})).find("element type 'd'"), std::string::npos);
+    EXPECT_NE(error_of(make_archive({{"w", {2, 2}, "ab", 'f'}})).find("layout 'ab'"),
+              std::string::npos);
+    EXPECT_NE(error_of(make_archive({{"w", {2}, "x", 'd'}})).find("element type 'd'"),
+              std::string::npos);
     // A tensor whose data offset points beyond the file.
     bytes = make_archive({{"w", {4}, "x", 'f'}});
     const std::size_t offset_at = bytes.size() - 8;
@@ -138,7 +144,8 @@ TEST(Tza, MissingFileIsAClearError) {
 TEST(Tza, InstalledWeightsFileTruncatedIsAClearError) {
     const std::string path = test::installed_weights("rt_hdr_alb_nrm_small");
     std::ifstream file(path, std::ios::binary);
-    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
+    std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(file)),
+                                    std::istreambuf_iterator<char>());
     bytes.resize(bytes.size() - 100);  // loses the end of the table
     EXPECT_NE(error_of(bytes).find("truncated"), std::string::npos) << error_of(bytes);
 }
@@ -152,9 +159,10 @@ TEST(UNet, InstalledNetworksHaveTheExpectedShapes) {
         std::size_t convolutions;
         int first_channels;
     };
-    for (const Expected& e : {Expected{"rt_hdr_alb_nrm", 9, 16, 32}, Expected{"rt_hdr_alb_nrm_small", 9, 16, 32},
-                              Expected{"rt_hdr_calb_cnrm_large", 9, 19, 64}, Expected{"rt_alb_large", 3, 19, 64},
-                              Expected{"rt_nrm", 3, 16, 32}}) {
+    for (const Expected& e :
+         {Expected{"rt_hdr_alb_nrm", 9, 16, 32}, Expected{"rt_hdr_alb_nrm_small", 9, 16, 32},
+          Expected{"rt_hdr_calb_cnrm_large", 9, 19, 64}, Expected{"rt_alb_large", 3, 19, 64},
+          Expected{"rt_nrm", 3, 16, 32}}) {
         const std::string path = test::installed_weights(e.name);
         const NetworkGraph graph = make_unet(read_tza(path), e.inputs, path);
         std::size_t convolutions = 0;
@@ -173,7 +181,8 @@ TEST(UNet, WrongInputChannelsOrMissingTensorIsAClearError) {
         make_unet(archive, 6, path);  // trained on 9 channels
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("enc_conv0.weight' has shape [32, 9, 3, 3]"), std::string::npos)
+        EXPECT_NE(std::string(e.what()).find("enc_conv0.weight' has shape [32, 9, 3, 3]"),
+                  std::string::npos)
             << e.what();
     }
     TensorArchive partial = archive;
@@ -182,7 +191,8 @@ TEST(UNet, WrongInputChannelsOrMissingTensorIsAClearError) {
         make_unet(partial, 9, path);
         FAIL() << "no error";
     } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("no tensor 'dec_conv2b.bias'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("no tensor 'dec_conv2b.bias'"), std::string::npos)
+            << e.what();
     }
 }
 

@@ -12,7 +12,8 @@ namespace glint::test {
 /// The path of `name`.tza in denoise_weights_dir(); throws std::runtime_error (a failed test)
 /// when it is not there.
 inline std::string installed_weights(const std::string& name) {
-    const std::string path = (std::filesystem::path(denoise_weights_dir()) / (name + ".tza")).string();
+    const std::string path =
+        (std::filesystem::path(denoise_weights_dir()) / (name + ".tza")).string();
     if (!std::filesystem::is_regular_file(path))
         throw std::runtime_error(path + " is missing: run scripts/install-deps.sh");
     return path;

@@ -282,16 +282,16 @@ TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
     EXPECT_NE(bdpt.output.find("--denoise"), std::string::npos) << bdpt.output;
     EXPECT_NE(bdpt.output.find("'bdpt'"), std::string::npos) << bdpt.output;
     // The non-local means filter needs two halves of at least one sample; the network not.
-    const auto one = run_glint(fmt::format("render {} --res 16x16 --spp 1 --denoise nlm -o {} --quiet",
-                                           kCornell, out("x.exr")));
+    const auto one = run_glint(fmt::format(
+        "render {} --res 16x16 --spp 1 --denoise nlm -o {} --quiet", kCornell, out("x.exr")));
     EXPECT_EQ(one.exit_code, 1);
     EXPECT_NE(one.output.find("at least 2 samples"), std::string::npos) << one.output;
     EXPECT_FALSE(std::filesystem::exists(out("x.exr")));
-    const auto network = run_glint(fmt::format("render {} --res 16x16 --spp 1 --denoise -o {} --quiet",
-                                               kCornell, out("x.exr")));
+    const auto network = run_glint(fmt::format(
+        "render {} --res 16x16 --spp 1 --denoise -o {} --quiet", kCornell, out("x.exr")));
     EXPECT_EQ(network.exit_code, 0) << network.output;
-    const auto unknown = run_glint(fmt::format("render {} --res 16x16 --spp 1 --denoise median -o {} --quiet",
-                                               kCornell, out("y.exr")));
+    const auto unknown = run_glint(fmt::format(
+        "render {} --res 16x16 --spp 1 --denoise median -o {} --quiet", kCornell, out("y.exr")));
     EXPECT_NE(unknown.exit_code, 0);
     EXPECT_NE(unknown.output.find("median"), std::string::npos) << unknown.output;
 }
@@ -300,26 +300,29 @@ TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
 // nothing; --denoise nlm still works.
 TEST_F(DenoiseCli, MissingWeightsNameTheInstallStep) {
     const std::string env = "GLINT_DENOISE_WEIGHTS=" + out("no-weights") + " ";
-    const auto missing = test::run_command(fmt::format("{}{} render {} --res 16x16 --spp 2 --denoise -o {} --quiet",
-                                                       env, test::glint_binary(), kCornell, out("x.exr")));
+    const auto missing =
+        test::run_command(fmt::format("{}{} render {} --res 16x16 --spp 2 --denoise -o {} --quiet",
+                                      env, test::glint_binary(), kCornell, out("x.exr")));
     EXPECT_EQ(missing.exit_code, 1);
     EXPECT_NE(missing.output.find("scripts/install-deps.sh"), std::string::npos) << missing.output;
     EXPECT_NE(missing.output.find("--denoise"), std::string::npos) << missing.output;
     EXPECT_FALSE(std::filesystem::exists(out("x.exr")));
-    const auto nlm = test::run_command(fmt::format("{}{} render {} --res 16x16 --spp 2 --denoise nlm -o {} --quiet",
-                                                   env, test::glint_binary(), kCornell, out("x.exr")));
+    const auto nlm = test::run_command(
+        fmt::format("{}{} render {} --res 16x16 --spp 2 --denoise nlm -o {} --quiet", env,
+                    test::glint_binary(), kCornell, out("x.exr")));
     EXPECT_EQ(nlm.exit_code, 0) << nlm.output;
 }
 
 // The scene's settings choose the network's size; a bad one names the scene's line.
 TEST_F(DenoiseCli, SceneChoosesQualityAndBadValuesNameTheLine) {
     const std::string scene = out("scene.lua");
-    std::ofstream(scene) << "glint.render{ width = 16, height = 16, spp = 2, denoise = true,\n"
-                            "               denoise_quality = 'fast', output = '"
-                         << out("s.exr") << "' }\n"
-                         << "glint.camera{ eye = {0, 0, 3}, look_at = {0, 0, 0}, fov = 40 }\n"
-                         << "glint.sphere{ radius = 1, material = glint.diffuse{ reflectance = {0.5, 0.5, 0.5} } }\n"
-                         << "glint.point_light{ position = {0, 2, 2}, intensity = 5 }\n";
+    std::ofstream(scene)
+        << "glint.render{ width = 16, height = 16, spp = 2, denoise = true,\n"
+           "               denoise_quality = 'fast', output = '"
+        << out("s.exr") << "' }\n"
+        << "glint.camera{ eye = {0, 0, 3}, look_at = {0, 0, 0}, fov = 40 }\n"
+        << "glint.sphere{ radius = 1, material = glint.diffuse{ reflectance = {0.5, 0.5, 0.5} } }\n"
+        << "glint.point_light{ position = {0, 2, 2}, intensity = 5 }\n";
     const auto fast = run_glint(fmt::format("render {} --quiet", scene));
     EXPECT_EQ(fast.exit_code, 0) << fast.output;
     EXPECT_TRUE(std::filesystem::exists(out("s.denoised.exr")));

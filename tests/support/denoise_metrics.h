@@ -26,7 +26,8 @@ float luminance(const Image& image, int x, int y);
 // converged image, over the pixels of `mask` (all when null). The reference is a render
 // too: its own noise, estimated per pixel from its halves as (a - b)^2 / 4, is taken off,
 // so that the figure is the test image's error, not the reference's.
-double error_against(const Image& test, const Halves& ref, const std::vector<uint8_t>* mask = nullptr);
+double error_against(const Image& test, const Halves& ref,
+                     const std::vector<uint8_t>* mask = nullptr);
 
 // Edge bands from the reference's features: geometry edges where the shading normal turns
 // by more than 30 degrees or the depth jumps by more than 10 % between 4-neighbours;

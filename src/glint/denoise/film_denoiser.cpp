@@ -11,7 +11,8 @@ namespace glint {
 
 NetworkDenoiseSettings network_denoise_settings(const RenderSettings& settings, int threads) {
     NetworkDenoiseSettings network;
-    network.quality = parse_denoise_quality(settings.denoise_quality).value_or(DenoiseQuality::Balanced);
+    network.quality =
+        parse_denoise_quality(settings.denoise_quality).value_or(DenoiseQuality::Balanced);
     network.clean_aux = settings.denoise_clean_aux;
     network.threads = std::max(threads, 1);
     return network;
@@ -30,10 +31,12 @@ int denoise_steps(int width, int height, const RenderSettings& settings) {
     if (settings.denoiser != "network") return 1;
     const NetworkDenoiseSettings network = network_denoise_settings(settings, 1);
     const int passes = network.clean_aux || network.quality == DenoiseQuality::High ? 3 : 1;
-    return passes * static_cast<int>(plan_denoise_tiles(width, height, network.max_tile).tiles.size());
+    return passes *
+           static_cast<int>(plan_denoise_tiles(width, height, network.max_tile).tiles.size());
 }
 
-Image denoise_film(const Film& film, const RenderSettings& settings, int threads, Progress& progress) {
+Image denoise_film(const Film& film, const RenderSettings& settings, int threads,
+                   Progress& progress) {
     if (settings.denoiser != "network") {
         Image image = denoise(film);
         progress.advance(1);

@@ -24,6 +24,7 @@ int denoise_steps(int width, int height, const RenderSettings& settings);
 
 /// The film's image denoised (R, G, B); the network needs a film with AOVs, the non-local
 /// means filter one with AOVs and halves. Advances `progress` by denoise_steps() in all.
-Image denoise_film(const Film& film, const RenderSettings& settings, int threads, Progress& progress);
+Image denoise_film(const Film& film, const RenderSettings& settings, int threads,
+                   Progress& progress);
 
 }  // namespace glint

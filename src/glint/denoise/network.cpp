@@ -35,8 +35,9 @@ struct Arena {
 
 Tag blocked_tag() {
     const dnnl::cpu_isa isa = dnnl::get_effective_cpu_isa();
-    const bool avx512 = isa == dnnl::cpu_isa::avx512_core || isa == dnnl::cpu_isa::avx512_core_vnni ||
-                        isa == dnnl::cpu_isa::avx512_core_bf16 || isa == dnnl::cpu_isa::avx512_core_amx;
+    const bool avx512 =
+        isa == dnnl::cpu_isa::avx512_core || isa == dnnl::cpu_isa::avx512_core_vnni ||
+        isa == dnnl::cpu_isa::avx512_core_bf16 || isa == dnnl::cpu_isa::avx512_core_amx;
     return avx512 ? Tag::nChw16c : Tag::nChw8c;
 }
 
@@ -45,7 +46,8 @@ std::vector<float> weight_slice(const Layer& layer, int in_channels, int first, 
     std::vector<float> slice(static_cast<std::size_t>(layer.channels) * count * 9);
     for (int o = 0; o < layer.channels; ++o)
         for (int i = 0; i < count; ++i)
-            std::copy_n(layer.weights.begin() + (static_cast<std::ptrdiff_t>(o) * in_channels + first + i) * 9,
+            std::copy_n(layer.weights.begin() +
+                            (static_cast<std::ptrdiff_t>(o) * in_channels + first + i) * 9,
                         9, slice.begin() + (static_cast<std::ptrdiff_t>(o) * count + i) * 9);
     return slice;
 }
@@ -58,10 +60,10 @@ struct NetworkExecutor::Impl {
     int threads = 1;
     int height = 0, width = 0;
     Tag tag = Tag::nChw8c;
-    std::vector<memory::desc> descs;     // per layer (Concat: unused)
-    std::vector<memory> tensors;         // per layer, in an arena (Concat: none)
+    std::vector<memory::desc> descs;  // per layer (Concat: unused)
+    std::vector<memory> tensors;      // per layer, in an arena (Concat: none)
     std::vector<Arena> arenas;
-    std::vector<memory> owned;           // weights, biases, reorder targets, scratchpads
+    std::vector<memory> owned;  // weights, biases, reorder targets, scratchpads
     std::vector<Step> steps;
     std::size_t owned_bytes = 0;
     memory::desc output_desc;
@@ -74,7 +76,8 @@ struct NetworkExecutor::Impl {
         owned_bytes += desc.get_size();
         return owned.back();
     }
-    memory own_copy(const memory::desc& plain, const memory::desc& wanted, const std::vector<float>& data) {
+    memory own_copy(const memory::desc& plain, const memory::desc& wanted,
+                    const std::vector<float>& data) {
         memory source(plain, engine, const_cast<float*>(data.data()));
         memory target = own(wanted);
         dnnl::reorder(source, target).execute(stream, source, target);
@@ -105,7 +108,8 @@ void NetworkExecutor::Impl::plan_tensors(const NetworkGraph& graph) {
     }
     for (std::size_t i = 0; i < count; ++i) {
         if (graph.layers[i].kind == LayerKind::Concat) {
-            for (int part : graph.layers[i].inputs) last_use[static_cast<std::size_t>(part)] = last_use[i];
+            for (int part : graph.layers[i].inputs)
+                last_use[static_cast<std::size_t>(part)] = last_use[i];
         }
     }
     last_use[count - 1] = std::numeric_limits<std::size_t>::max();
@@ -122,8 +126,9 @@ void NetworkExecutor::Impl::plan_tensors(const NetworkGraph& graph) {
         for (std::size_t a = 0; a < holder.size(); ++a) {
             if (holder[a] >= 0) continue;
             const bool fits = arenas[a].bytes >= bytes;
-            if (best < 0 || (fits && (arenas[static_cast<std::size_t>(best)].bytes < bytes ||
-                                      arenas[a].bytes < arenas[static_cast<std::size_t>(best)].bytes)) ||
+            if (best < 0 ||
+                (fits && (arenas[static_cast<std::size_t>(best)].bytes < bytes ||
+                          arenas[a].bytes < arenas[static_cast<std::size_t>(best)].bytes)) ||
                 (!fits && arenas[static_cast<std::size_t>(best)].bytes < bytes &&
                  arenas[a].bytes > arenas[static_cast<std::size_t>(best)].bytes))
                 best = static_cast<int>(a);
@@ -142,7 +147,8 @@ void NetworkExecutor::Impl::plan_tensors(const NetworkGraph& graph) {
     tensors.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         if (arena_of[i] >= 0)
-            tensors[i] = memory(descs[i], engine, arenas[static_cast<std::size_t>(arena_of[i])].data());
+            tensors[i] =
+                memory(descs[i], engine, arenas[static_cast<std::size_t>(arena_of[i])].data());
     }
 }
 
@@ -168,23 +174,26 @@ void NetworkExecutor::Impl::add_conv(std::size_t index, const Layer& layer, int 
         first_part ? dnnl::convolution_forward::desc(
                          dnnl::prop_kind::forward_inference, dnnl::algorithm::convolution_direct,
                          src_any, weights_any, bias_desc, descs[index], one, pad, pad)
-                   : dnnl::convolution_forward::desc(
-                         dnnl::prop_kind::forward_inference, dnnl::algorithm::convolution_direct,
-                         src_any, weights_any, descs[index], one, pad, pad);
+                   : dnnl::convolution_forward::desc(dnnl::prop_kind::forward_inference,
+                                                     dnnl::algorithm::convolution_direct, src_any,
+                                                     weights_any, descs[index], one, pad, pad);
     const dnnl::convolution_forward::primitive_desc pd(desc, attr, engine);
     memory src = tensors[static_cast<std::size_t>(source)];
     if (pd.src_desc() != source_desc) {
         // A layout the kernel prefers for this tensor (e.g. the input's few channels).
         memory converted = own(pd.src_desc());
-        steps.push_back({dnnl::reorder(src, converted), {{DNNL_ARG_FROM, src}, {DNNL_ARG_TO, converted}}});
+        steps.push_back(
+            {dnnl::reorder(src, converted), {{DNNL_ARG_FROM, src}, {DNNL_ARG_TO, converted}}});
         src = converted;
     }
-    const int all_inputs = static_cast<int>(layer.weights.size() / 9 / static_cast<std::size_t>(layer.channels));
+    const int all_inputs =
+        static_cast<int>(layer.weights.size() / 9 / static_cast<std::size_t>(layer.channels));
     const std::vector<float> slice = weight_slice(layer, all_inputs, first, in_channels);
     Step step{dnnl::convolution_forward(pd), {}};
     step.args[DNNL_ARG_SRC] = src;
     step.args[DNNL_ARG_WEIGHTS] =
-        own_copy(memory::desc({layer.channels, in_channels, 3, 3}, f32, Tag::oihw), pd.weights_desc(), slice);
+        own_copy(memory::desc({layer.channels, in_channels, 3, 3}, f32, Tag::oihw),
+                 pd.weights_desc(), slice);
     if (first_part) step.args[DNNL_ARG_BIAS] = own_copy(bias_desc, pd.bias_desc(), layer.bias);
     step.args[DNNL_ARG_DST] = tensors[index];
     scratch.emplace_back(steps.size(), pd.scratchpad_desc());
@@ -195,61 +204,65 @@ void NetworkExecutor::Impl::add_layer(const NetworkGraph& graph, std::size_t ind
     const Layer& layer = graph.layers[index];
     const memory::dims two{2, 2}, zero{0, 0};
     switch (layer.kind) {
-    case LayerKind::Input:
-        if (index != 0) throw Error("a network's input must be its first layer");
-        break;
-    case LayerKind::Conv: {
-        const int source = layer.inputs[0];
-        const Layer& input = graph.layers[static_cast<std::size_t>(source)];
-        if (input.kind != LayerKind::Concat) {
-            add_conv(index, layer, source, input.channels, 0, true, layer.relu);
+        case LayerKind::Input:
+            if (index != 0) throw Error("a network's input must be its first layer");
+            break;
+        case LayerKind::Conv: {
+            const int source = layer.inputs[0];
+            const Layer& input = graph.layers[static_cast<std::size_t>(source)];
+            if (input.kind != LayerKind::Concat) {
+                add_conv(index, layer, source, input.channels, 0, true, layer.relu);
+                break;
+            }
+            const int a = input.inputs[0], b = input.inputs[1];
+            const int a_channels = graph.layers[static_cast<std::size_t>(a)].channels;
+            add_conv(index, layer, a, a_channels, 0, true, false);
+            add_conv(index, layer, b, graph.layers[static_cast<std::size_t>(b)].channels,
+                     a_channels, false, layer.relu);
             break;
         }
-        const int a = input.inputs[0], b = input.inputs[1];
-        const int a_channels = graph.layers[static_cast<std::size_t>(a)].channels;
-        add_conv(index, layer, a, a_channels, 0, true, false);
-        add_conv(index, layer, b, graph.layers[static_cast<std::size_t>(b)].channels, a_channels, false,
-                 layer.relu);
-        break;
-    }
-    case LayerKind::Pool: {
-        const std::size_t source = static_cast<std::size_t>(layer.inputs[0]);
-        dnnl::primitive_attr attr;
-        attr.set_scratchpad_mode(dnnl::scratchpad_mode::user);
-        const dnnl::pooling_forward::primitive_desc pd(
-            dnnl::pooling_forward::desc(dnnl::prop_kind::forward_inference, dnnl::algorithm::pooling_max,
-                                        descs[source], descs[index], two, two, zero, zero),
-            attr, engine);
-        scratch.emplace_back(steps.size(), pd.scratchpad_desc());
-        steps.push_back({dnnl::pooling_forward(pd),
-                         {{DNNL_ARG_SRC, tensors[source]}, {DNNL_ARG_DST, tensors[index]}}});
-        break;
-    }
-    case LayerKind::Upsample: {
-        const std::size_t source = static_cast<std::size_t>(layer.inputs[0]);
-        dnnl::primitive_attr attr;
-        attr.set_scratchpad_mode(dnnl::scratchpad_mode::user);
-        const dnnl::resampling_forward::primitive_desc pd(
-            dnnl::resampling_forward::desc(dnnl::prop_kind::forward_inference,
-                                           dnnl::algorithm::resampling_nearest, descs[source], descs[index]),
-            attr, engine);
-        scratch.emplace_back(steps.size(), pd.scratchpad_desc());
-        steps.push_back({dnnl::resampling_forward(pd),
-                         {{DNNL_ARG_SRC, tensors[source]}, {DNNL_ARG_DST, tensors[index]}}});
-        break;
-    }
-    case LayerKind::Concat:
-        // Read by the convolution after it, part by part; nothing else may read it.
-        if (index + 1 >= graph.layers.size())
-            throw Error(fmt::format("'{}': a concatenation cannot be the network's output", layer.name));
-        for (std::size_t j = index + 1; j < graph.layers.size(); ++j) {
-            const Layer& reader = graph.layers[j];
-            const bool reads = std::find(reader.inputs.begin(), reader.inputs.end(),
-                                         static_cast<int>(index)) != reader.inputs.end();
-            if (reads && reader.kind != LayerKind::Conv)
-                throw Error(fmt::format("'{}': only a convolution may read a concatenation", layer.name));
+        case LayerKind::Pool: {
+            const std::size_t source = static_cast<std::size_t>(layer.inputs[0]);
+            dnnl::primitive_attr attr;
+            attr.set_scratchpad_mode(dnnl::scratchpad_mode::user);
+            const dnnl::pooling_forward::primitive_desc pd(
+                dnnl::pooling_forward::desc(dnnl::prop_kind::forward_inference,
+                                            dnnl::algorithm::pooling_max, descs[source],
+                                            descs[index], two, two, zero, zero),
+                attr, engine);
+            scratch.emplace_back(steps.size(), pd.scratchpad_desc());
+            steps.push_back({dnnl::pooling_forward(pd),
+                             {{DNNL_ARG_SRC, tensors[source]}, {DNNL_ARG_DST, tensors[index]}}});
+            break;
         }
-        break;
+        case LayerKind::Upsample: {
+            const std::size_t source = static_cast<std::size_t>(layer.inputs[0]);
+            dnnl::primitive_attr attr;
+            attr.set_scratchpad_mode(dnnl::scratchpad_mode::user);
+            const dnnl::resampling_forward::primitive_desc pd(
+                dnnl::resampling_forward::desc(dnnl::prop_kind::forward_inference,
+                                               dnnl::algorithm::resampling_nearest, descs[source],
+                                               descs[index]),
+                attr, engine);
+            scratch.emplace_back(steps.size(), pd.scratchpad_desc());
+            steps.push_back({dnnl::resampling_forward(pd),
+                             {{DNNL_ARG_SRC, tensors[source]}, {DNNL_ARG_DST, tensors[index]}}});
+            break;
+        }
+        case LayerKind::Concat:
+            // Read by the convolution after it, part by part; nothing else may read it.
+            if (index + 1 >= graph.layers.size())
+                throw Error(fmt::format("'{}': a concatenation cannot be the network's output",
+                                        layer.name));
+            for (std::size_t j = index + 1; j < graph.layers.size(); ++j) {
+                const Layer& reader = graph.layers[j];
+                const bool reads = std::find(reader.inputs.begin(), reader.inputs.end(),
+                                             static_cast<int>(index)) != reader.inputs.end();
+                if (reads && reader.kind != LayerKind::Conv)
+                    throw Error(fmt::format("'{}': only a convolution may read a concatenation",
+                                            layer.name));
+            }
+            break;
     }
 }
 
@@ -269,11 +282,14 @@ void NetworkExecutor::Impl::share_scratchpad() {
 NetworkExecutor::NetworkExecutor(const NetworkGraph& graph, int height, int width, int threads)
     : m_impl(std::make_unique<Impl>()) {
     const int step = 1 << graph.max_level();
-    if (graph.layers.empty() || height <= 0 || width <= 0 || height % step != 0 || width % step != 0)
-        throw Error(fmt::format("the network needs an input of sides that are positive multiples of {} "
-                                "(got {} x {})",
-                                step, width, height));
-    if (threads < 1) throw Error(fmt::format("the network needs at least 1 thread (got {})", threads));
+    if (graph.layers.empty() || height <= 0 || width <= 0 || height % step != 0 ||
+        width % step != 0)
+        throw Error(
+            fmt::format("the network needs an input of sides that are positive multiples of {} "
+                        "(got {} x {})",
+                        step, width, height));
+    if (threads < 1)
+        throw Error(fmt::format("the network needs at least 1 thread (got {})", threads));
     Impl& impl = *m_impl;
     impl.threads = threads;
     impl.height = height;
@@ -287,7 +303,8 @@ NetworkExecutor::NetworkExecutor(const NetworkGraph& graph, int height, int widt
         impl.share_scratchpad();
         const Layer& first = graph.layers.front();
         impl.input_desc = memory::desc(impl.dims_of(first), memory::data_type::f32, Tag::nchw);
-        impl.output_desc = memory::desc(impl.dims_of(graph.output()), memory::data_type::f32, Tag::nchw);
+        impl.output_desc =
+            memory::desc(impl.dims_of(graph.output()), memory::data_type::f32, Tag::nchw);
         impl.output_layer = graph.layers.size() - 1;
         impl.output_channels = graph.output().channels;
         impl.output_level = graph.output().level;
@@ -306,16 +323,23 @@ void NetworkExecutor::run(const float* input, float* output) {
         dnnl::reorder(in, impl.tensors[0]).execute(impl.stream, in, impl.tensors[0]);
         for (Step& step : impl.steps) step.primitive.execute(impl.stream, step.args);
         memory out(impl.output_desc, impl.engine, output);
-        dnnl::reorder(impl.tensors[impl.output_layer], out).execute(impl.stream, impl.tensors[impl.output_layer], out);
+        dnnl::reorder(impl.tensors[impl.output_layer], out)
+            .execute(impl.stream, impl.tensors[impl.output_layer], out);
         impl.stream.wait();
     } catch (const dnnl::error& e) {
         throw Error(fmt::format("oneDNN failed while running the denoiser network: {}", e.what()));
     }
 }
 
-int NetworkExecutor::output_channels() const { return m_impl->output_channels; }
-int NetworkExecutor::output_height() const { return m_impl->height >> m_impl->output_level; }
-int NetworkExecutor::output_width() const { return m_impl->width >> m_impl->output_level; }
+int NetworkExecutor::output_channels() const {
+    return m_impl->output_channels;
+}
+int NetworkExecutor::output_height() const {
+    return m_impl->height >> m_impl->output_level;
+}
+int NetworkExecutor::output_width() const {
+    return m_impl->width >> m_impl->output_level;
+}
 
 std::size_t NetworkExecutor::memory_bytes() const {
     std::size_t bytes = m_impl->owned_bytes + m_impl->scratch_arena.bytes;

@@ -34,15 +34,15 @@ WeightNames weight_names(const NetworkDenoiseSettings& settings) {
     const bool clean = cleans_aux(settings);
     WeightNames names;
     switch (settings.quality) {
-    case DenoiseQuality::Fast:
-        names.color = clean ? "rt_hdr_calb_cnrm_small" : "rt_hdr_alb_nrm_small";
-        break;
-    case DenoiseQuality::Balanced:
-        names.color = clean ? "rt_hdr_calb_cnrm" : "rt_hdr_alb_nrm";
-        break;
-    case DenoiseQuality::High:
-        names.color = "rt_hdr_calb_cnrm_large";
-        break;
+        case DenoiseQuality::Fast:
+            names.color = clean ? "rt_hdr_calb_cnrm_small" : "rt_hdr_alb_nrm_small";
+            break;
+        case DenoiseQuality::Balanced:
+            names.color = clean ? "rt_hdr_calb_cnrm" : "rt_hdr_alb_nrm";
+            break;
+        case DenoiseQuality::High:
+            names.color = "rt_hdr_calb_cnrm_large";
+            break;
     }
     if (clean) {
         const bool large = settings.quality == DenoiseQuality::High;
@@ -53,11 +53,13 @@ WeightNames weight_names(const NetworkDenoiseSettings& settings) {
 }
 
 std::string weight_path(const NetworkDenoiseSettings& settings, const std::string& name) {
-    const std::string dir = settings.weights_dir.empty() ? denoise_weights_dir() : settings.weights_dir;
+    const std::string dir =
+        settings.weights_dir.empty() ? denoise_weights_dir() : settings.weights_dir;
     return (std::filesystem::path(dir) / (name + ".tza")).string();
 }
 
-NetworkGraph load_network(const NetworkDenoiseSettings& settings, const std::string& name, int channels) {
+NetworkGraph load_network(const NetworkDenoiseSettings& settings, const std::string& name,
+                          int channels) {
     const std::string path = weight_path(settings, name);
     return make_unet(read_tza(path), channels, path);
 }
@@ -66,7 +68,8 @@ NetworkGraph load_network(const NetworkDenoiseSettings& settings, const std::str
 int channel_or_throw(const Image& image, const std::string& name) {
     const int index = image.channel_index(name);
     if (index < 0)
-        throw Error(fmt::format("the network denoiser needs channel '{}' (a film with AOVs)", name));
+        throw Error(
+            fmt::format("the network denoiser needs channel '{}' (a film with AOVs)", name));
     return index;
 }
 
@@ -75,7 +78,9 @@ int channel_or_throw(const Image& image, const std::string& name) {
 class TiledPass {
 public:
     TiledPass(int width, int height, const NetworkDenoiseSettings& settings)
-        : m_width(width), m_height(height), m_settings(settings),
+        : m_width(width),
+          m_height(height),
+          m_settings(settings),
           m_plan(plan_denoise_tiles(width, height, settings.max_tile)) {}
 
     int tiles() const { return static_cast<int>(m_plan.tiles.size()); }
@@ -101,8 +106,11 @@ public:
             network.run(input.data(), output.data());
             for (int y = tile.keep_y0; y < tile.keep_y1; ++y) {
                 for (int x = tile.keep_x0; x < tile.keep_x1; ++x) {
-                    const std::size_t at = static_cast<std::size_t>(y - tile.y) * m_plan.width + (x - tile.x);
-                    store(x, y, std::array<float, 3>{output[at], output[plane + at], output[2 * plane + at]});
+                    const std::size_t at =
+                        static_cast<std::size_t>(y - tile.y) * m_plan.width + (x - tile.x);
+                    store(x, y,
+                          std::array<float, 3>{output[at], output[plane + at],
+                                               output[2 * plane + at]});
                 }
             }
             ++done;
@@ -116,7 +124,9 @@ private:
     TilePlan m_plan;
 };
 
-float finite_or_zero(float v) { return std::isfinite(v) ? v : 0.f; }
+float finite_or_zero(float v) {
+    return std::isfinite(v) ? v : 0.f;
+}
 
 }  // namespace
 
@@ -153,11 +163,16 @@ void check_denoise_weights(const NetworkDenoiseSettings& settings) {
 }
 
 Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings) {
-    const int r = channel_or_throw(image, "R"), g = channel_or_throw(image, "G"), b = channel_or_throw(image, "B");
-    const int albedo = channel_or_throw(image, "albedo.R"), normal = channel_or_throw(image, "normal.X");
-    if (image.channel_index("albedo.G") != albedo + 1 || image.channel_index("albedo.B") != albedo + 2 ||
-        image.channel_index("normal.Y") != normal + 1 || image.channel_index("normal.Z") != normal + 2)
-        throw Error("the network denoiser needs albedo.R/G/B and normal.X/Y/Z as consecutive channels");
+    const int r = channel_or_throw(image, "R"), g = channel_or_throw(image, "G"),
+              b = channel_or_throw(image, "B");
+    const int albedo = channel_or_throw(image, "albedo.R"),
+              normal = channel_or_throw(image, "normal.X");
+    if (image.channel_index("albedo.G") != albedo + 1 ||
+        image.channel_index("albedo.B") != albedo + 2 ||
+        image.channel_index("normal.Y") != normal + 1 ||
+        image.channel_index("normal.Z") != normal + 2)
+        throw Error(
+            "the network denoiser needs albedo.R/G/B and normal.X/Y/Z as consecutive channels");
     check_denoise_weights(settings);
     const WeightNames names = weight_names(settings);
     const NetworkGraph color_net = load_network(settings, names.color, 9);
@@ -168,13 +183,16 @@ Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings
     int done = 0;
 
     // The features the colour network reads, prefiltered or as rendered.
-    Image features = make_image(image.width, image.height,
-                                {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z"});
+    Image features =
+        make_image(image.width, image.height,
+                   {"albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z"});
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
             for (int c = 0; c < 3; ++c) {
-                features.at(x, y, c) = std::clamp(finite_or_zero(image.at(x, y, albedo + c)), 0.f, 1.f);
-                features.at(x, y, 3 + c) = std::clamp(finite_or_zero(image.at(x, y, normal + c)), -1.f, 1.f);
+                features.at(x, y, c) =
+                    std::clamp(finite_or_zero(image.at(x, y, albedo + c)), 0.f, 1.f);
+                features.at(x, y, 3 + c) =
+                    std::clamp(finite_or_zero(image.at(x, y, normal + c)), -1.f, 1.f);
             }
         }
     }
@@ -190,7 +208,8 @@ Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings
             },
             [&](int x, int y, const std::array<float, 3>& v) {
                 for (int c = 0; c < 3; ++c)
-                    filtered.at(x, y, c) = std::min(srgb_inverse(std::max(finite_or_zero(v[c]), 0.f)), 1.f);
+                    filtered.at(x, y, c) =
+                        std::min(srgb_inverse(std::max(finite_or_zero(v[c]), 0.f)), 1.f);
             },
             done, total);
         pass.run(
@@ -200,7 +219,8 @@ Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings
             },
             [&](int x, int y, const std::array<float, 3>& v) {
                 for (int c = 0; c < 3; ++c)
-                    filtered.at(x, y, 3 + c) = std::clamp(std::max(finite_or_zero(v[c]), 0.f) * 2.f - 1.f, -1.f, 1.f);
+                    filtered.at(x, y, 3 + c) =
+                        std::clamp(std::max(finite_or_zero(v[c]), 0.f) * 2.f - 1.f, -1.f, 1.f);
             },
             done, total);
         features = std::move(filtered);
@@ -231,7 +251,11 @@ std::size_t denoise_network_memory(int width, int height, const NetworkDenoiseSe
     const NetworkGraph net = load_network(settings, weight_names(settings).color, 9);
     const NetworkExecutor executor(net, plan.height, plan.width, settings.threads);
     const std::size_t plane = static_cast<std::size_t>(plan.width) * plan.height;
-    return executor.memory_bytes() + plane * 12 * sizeof(float);
+    const std::size_t pixels = static_cast<std::size_t>(width) * height;
+    // The tile's planar input (9) and output (3); the whole image's features (6, twice while
+    // they are prefiltered) and result (3).
+    const std::size_t image_floats = (cleans_aux(settings) ? 12 : 6) + 3;
+    return executor.memory_bytes() + (plane * 12 + pixels * image_floats) * sizeof(float);
 }
 
 }  // namespace glint

@@ -28,9 +28,9 @@ std::optional<DenoiseQuality> parse_denoise_quality(const std::string& name);
 
 struct NetworkDenoiseSettings {
     DenoiseQuality quality = DenoiseQuality::Balanced;
-    bool clean_aux = false;  ///< prefilter albedo and normal (implied by High)
-    int threads = 1;         ///< OpenMP threads of the network; the result is the same for any
-    int max_tile = 1024;     ///< tile side in pixels (a multiple of 16 above 192): memory bound
+    bool clean_aux = false;   ///< prefilter albedo and normal (implied by High)
+    int threads = 1;          ///< OpenMP threads of the network; the result is the same for any
+    int max_tile = 1024;      ///< tile side in pixels (a multiple of 16 above 192): memory bound
     std::string weights_dir;  ///< empty: denoise_weights_dir()
     /// Called after each tile of each network pass with (done, total) passes.
     std::function<void(int, int)> on_progress;
@@ -52,8 +52,9 @@ void check_denoise_weights(const NetworkDenoiseSettings& settings);
 /// missing or a weight file is not valid.
 Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings);
 
-/// Bytes the network of `settings` holds for one tile of an image of this size (activations,
-/// weights, scratch), for reporting the peak.
+/// Bytes denoise_network() holds at its peak for an image of this size, besides the image
+/// itself: the colour network for one tile (activations, weights, scratch), the tile's
+/// planar input and output, and the whole image's features and result.
 std::size_t denoise_network_memory(int width, int height, const NetworkDenoiseSettings& settings);
 
 }  // namespace glint

@@ -37,21 +37,25 @@ std::vector<Span> plan_axis(int size, int tile) {
     return spans;
 }
 
-int round_up(int value, int step) { return (value + step - 1) / step * step; }
+int round_up(int value, int step) {
+    return (value + step - 1) / step * step;
+}
 
 }  // namespace
 
 TilePlan plan_denoise_tiles(int width, int height, int max_tile) {
-    if (width <= 0 || height <= 0) throw Error(fmt::format("cannot denoise a {} x {} image", width, height));
+    if (width <= 0 || height <= 0)
+        throw Error(fmt::format("cannot denoise a {} x {} image", width, height));
     if (max_tile % denoise_tile_alignment != 0 || max_tile <= 2 * denoise_tile_overlap)
-        throw Error(fmt::format("denoiser tiles of {} pixels: expected a multiple of {} above {}", max_tile,
-                                denoise_tile_alignment, 2 * denoise_tile_overlap));
+        throw Error(fmt::format("denoiser tiles of {} pixels: expected a multiple of {} above {}",
+                                max_tile, denoise_tile_alignment, 2 * denoise_tile_overlap));
     TilePlan plan;
     plan.width = std::min(max_tile, round_up(width, denoise_tile_alignment));
     plan.height = std::min(max_tile, round_up(height, denoise_tile_alignment));
     for (const Span& row : plan_axis(height, max_tile)) {
         for (const Span& column : plan_axis(width, max_tile)) {
-            plan.tiles.push_back({column.start, row.start, column.keep0, row.keep0, column.keep1, row.keep1});
+            plan.tiles.push_back(
+                {column.start, row.start, column.keep0, row.keep0, column.keep1, row.keep1});
         }
     }
     return plan;

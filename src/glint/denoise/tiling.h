@@ -11,8 +11,9 @@
 namespace glint {
 
 struct DenoiseTile {
-    int x = 0, y = 0;              ///< the tile's top-left pixel in the image
-    int keep_x0 = 0, keep_y0 = 0;  ///< the pixels it writes: [keep_x0, keep_x1) x [keep_y0, keep_y1)
+    int x = 0, y = 0;  ///< the tile's top-left pixel in the image
+    int keep_x0 = 0,
+        keep_y0 = 0;  ///< the pixels it writes: [keep_x0, keep_x1) x [keep_y0, keep_y1)
     int keep_x1 = 0, keep_y1 = 0;
 };
 

@@ -36,14 +36,22 @@ float pu_raw_inverse(float x) {
 
 const float pu_norm = pu_raw(largest_half);
 
-float luminance(float r, float g, float b) { return 0.212671f * r + 0.715160f * g + 0.072169f * b; }
+float luminance(float r, float g, float b) {
+    return 0.212671f * r + 0.715160f * g + 0.072169f * b;
+}
 
-float sanitized(float v) { return std::isfinite(v) ? std::max(v, 0.f) : 0.f; }
+float sanitized(float v) {
+    return std::isfinite(v) ? std::max(v, 0.f) : 0.f;
+}
 
 }  // namespace
 
-float pu_forward(float y) { return pu_raw(y) / pu_norm; }
-float pu_inverse(float x) { return pu_raw_inverse(x * pu_norm); }
+float pu_forward(float y) {
+    return pu_raw(y) / pu_norm;
+}
+float pu_inverse(float x) {
+    return pu_raw_inverse(x * pu_norm);
+}
 
 float srgb_forward(float y) {
     return y <= 0.0031308f ? 12.92f * y : 1.055f * std::pow(y, 1.f / 2.4f) - 0.055f;

@@ -38,8 +38,8 @@ public:
         m_pos = static_cast<std::size_t>(position);
     }
     [[noreturn]] void fail(const std::string& message) const {
-        throw Error(fmt::format("{}: not a valid denoiser weights archive (.tza): {}", m_origin,
-                                message));
+        throw Error(
+            fmt::format("{}: not a valid denoiser weights archive (.tza): {}", m_origin, message));
     }
 
 private:
@@ -65,13 +65,15 @@ Tensor read_tensor_entry(Cursor& cursor, const std::vector<std::uint8_t>& bytes,
     std::uint64_t count = 1;
     for (int i = 0; i < rank; ++i) {
         const auto dim = cursor.read<std::uint32_t>("a tensor's shape");
-        if (dim == 0 || dim > (1u << 24)) cursor.fail(fmt::format("tensor '{}' has a dimension of {}", name, dim));
+        if (dim == 0 || dim > (1u << 24))
+            cursor.fail(fmt::format("tensor '{}' has a dimension of {}", name, dim));
         tensor.dims.push_back(static_cast<int>(dim));
         count *= dim;
     }
     tensor.layout = cursor.read_string(rank, "a tensor's layout");
     if (tensor.layout != "oihw" && tensor.layout != "x")
-        cursor.fail(fmt::format("tensor '{}' has layout '{}' (expected oihw or x)", name, tensor.layout));
+        cursor.fail(
+            fmt::format("tensor '{}' has layout '{}' (expected oihw or x)", name, tensor.layout));
     const char type = cursor.read<char>("a tensor's element type");
     if (type != 'f' && type != 'h')
         cursor.fail(fmt::format("tensor '{}' has element type '{}' (expected f or h)", name, type));
@@ -119,8 +121,7 @@ TensorArchive parse_tza(const std::vector<std::uint8_t>& bytes, const std::strin
         cursor.fail("it does not start with the magic number 0x41D7");
     const int major = cursor.read<std::uint8_t>("the header");
     cursor.read<std::uint8_t>("the header");  // the minor version changes nothing we read
-    if (major != 2)
-        cursor.fail(fmt::format("format version {} (glint reads version 2)", major));
+    if (major != 2) cursor.fail(fmt::format("format version {} (glint reads version 2)", major));
     cursor.seek(cursor.read<std::uint64_t>("the header"), "the table offset");
     const auto count = cursor.read<std::uint32_t>("the tensor table");
     TensorArchive archive;

@@ -15,8 +15,8 @@ namespace glint {
 
 /// One tensor of an archive, widened to float.
 struct Tensor {
-    std::vector<int> dims;     ///< e.g. {out, in, 3, 3} for "oihw", {out} for "x"
-    std::string layout;        ///< "oihw" or "x"
+    std::vector<int> dims;      ///< e.g. {out, in, 3, 3} for "oihw", {out} for "x"
+    std::string layout;         ///< "oihw" or "x"
     std::vector<float> values;  ///< row-major in the order of `dims`
     std::size_t size() const { return values.size(); }
 };

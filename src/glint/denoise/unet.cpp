@@ -106,7 +106,8 @@ int add_archive_conv(NetworkGraph& graph, const TensorArchive& archive, const st
 
 }  // namespace
 
-NetworkGraph make_unet(const TensorArchive& archive, int input_channels, const std::string& origin) {
+NetworkGraph make_unet(const TensorArchive& archive, int input_channels,
+                       const std::string& origin) {
     NetworkGraph graph;
     const bool large = archive.count("enc_conv1a.weight") > 0;
     auto conv = [&](const std::string& name, int input) {
@@ -114,7 +115,8 @@ NetworkGraph make_unet(const TensorArchive& archive, int input_channels, const s
     };
     const int input = graph.add_input(input_channels);
     // Encoder: the skip tensors are the pooled outputs of levels 1 to 3.
-    int x = large ? conv("enc_conv1b", conv("enc_conv1a", input)) : conv("enc_conv1", conv("enc_conv0", input));
+    int x = large ? conv("enc_conv1b", conv("enc_conv1a", input))
+                  : conv("enc_conv1", conv("enc_conv0", input));
     const int pool1 = graph.add_pool(x);
     x = large ? conv("enc_conv2b", conv("enc_conv2a", pool1)) : conv("enc_conv2", pool1);
     const int pool2 = graph.add_pool(x);
@@ -130,7 +132,8 @@ NetworkGraph make_unet(const TensorArchive& archive, int input_channels, const s
     x = conv("dec_conv1b", conv("dec_conv1a", graph.add_concat(graph.add_upsample(x), input)));
     // The output convolution: OIDN clamps its result to >= 0 afterwards, so a ReLU here or
     // not gives the same image; leaving it out keeps the raw output visible to tests.
-    const int out = add_archive_conv(graph, archive, origin, large ? "dec_conv1c" : "dec_conv0", x, false);
+    const int out =
+        add_archive_conv(graph, archive, origin, large ? "dec_conv1c" : "dec_conv0", x, false);
     if (graph.layers[static_cast<std::size_t>(out)].channels != 3)
         throw Error(fmt::format("{}: the network's output has {} channels (expected 3)", origin,
                                 graph.layers[static_cast<std::size_t>(out)].channels));

@@ -24,11 +24,11 @@ enum class LayerKind { Input, Conv, Pool, Upsample, Concat };
 /// One node of the graph; its inputs are earlier nodes, by index.
 struct Layer {
     LayerKind kind = LayerKind::Input;
-    std::string name;         ///< Conv: the tensors' prefix ("enc_conv0")
-    std::vector<int> inputs;  ///< Conv, Pool, Upsample: one; Concat: two (concatenated in order)
-    int channels = 0;         ///< output channels
-    int level = 0;            ///< resolution: the input's size divided by 2^level
-    bool relu = false;        ///< Conv: a ReLU after the bias
+    std::string name;            ///< Conv: the tensors' prefix ("enc_conv0")
+    std::vector<int> inputs;     ///< Conv, Pool, Upsample: one; Concat: two (concatenated in order)
+    int channels = 0;            ///< output channels
+    int level = 0;               ///< resolution: the input's size divided by 2^level
+    bool relu = false;           ///< Conv: a ReLU after the bias
     std::vector<float> weights;  ///< Conv: [channels][input channels][3][3]
     std::vector<float> bias;     ///< Conv: [channels]
 };
