@@ -292,7 +292,8 @@ void check_denoise(const RenderSettings& settings, const Integrator& integrator)
     if (!integrator.records_halves()) {
         throw Error(fmt::format(
             "{}: the denoiser needs an integrator that renders pixel by pixel (path, whitted, "
-            "photon); '{}' adds light paths to the image, which it cannot split into halves",
+            "photon); '{}' adds light paths to the image, which carry no first-hit features "
+            "and cannot be split into halves",
             where, settings.integrator));
     }
     if (settings.denoiser != "nlm") return;
@@ -342,8 +343,8 @@ int run_render(const RenderOptions& options) {
         // Name where the paths came from: a flag, or the scene's line.
         throw Error(fmt::format("{}: {}", settings.where_of("output"), e.what()));
     }
-    // The denoiser reads the AOVs and the film's two halves; the outputs get the AOVs
-    // only when asked for.
+    // The denoisers read the AOVs, the non-local means filter also the film's two halves;
+    // the outputs get the AOVs only when asked for.
     const bool film_aovs = settings.aovs || settings.denoise;
     const bool film_halves = settings.denoise && settings.denoiser == "nlm";
     check_memory(Film::memory_bytes(settings.width, settings.height, film_aovs, film_halves),
