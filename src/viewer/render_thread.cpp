@@ -136,7 +136,7 @@ void RenderThread::run() {
             m_lights.reset();
             m_integrator.reset();
             m_cancel.store(0);
-            if (m_republish && !changes() && idle) {
+            if (m_republish && !changes()) {
                 m_republish = false;
                 lock.unlock();
                 publish_still();
