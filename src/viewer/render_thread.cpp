@@ -131,13 +131,17 @@ void RenderThread::run() {
             }
             if (m_camera) m_session.set_camera(*m_camera);
             if (m_lights) m_session.set_lights(*m_lights);
-            if (changes()) idle = false;
+            const bool changed = changes();
+            if (changed) idle = false;
             m_camera.reset();
             m_lights.reset();
             m_integrator.reset();
             m_cancel.store(0);
-            if (m_republish && !changes()) {
+            // The denoise toggle changed: show the still image again, denoised or not
+            // (nothing to show before the first pass; a change renders anew anyway).
+            if (m_republish && !changed) {
                 m_republish = false;
+                if (m_session.passes() == 0) continue;
                 lock.unlock();
                 publish_still();
                 continue;
