@@ -33,9 +33,19 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& render) {
     render_cmd->add_option("--exposure", render.exposure, "Exposure in stops for PNG output");
     render_cmd->add_option("--tonemap", render.tonemap,
                            "Tone curve of PNG output: clip (default), reinhard, filmic (ACES fit)");
-    render_cmd->add_flag("--denoise", render.denoise,
+    CLI::Option* denoise_option =
+        render_cmd
+            ->add_option("--denoise", render.denoiser,
                          "Also write each output denoised, as NAME.denoised.EXT (path, whitted "
-                         "and photon integrators)");
+                         "and photon integrators): by Open Image Denoise's trained network "
+                         "(default; weights from scripts/install-deps.sh), or 'nlm' for glint's "
+                         "own non-local means filter")
+            ->expected(0, 1)
+            ->check(CLI::IsMember({"network", "nlm"}));
+    render_cmd
+        ->add_option("--denoise-quality", render.denoise_quality,
+                     "The network's size: fast, balanced (default), high")
+        ->check(CLI::IsMember({"fast", "balanced", "high"}));
     render_cmd->add_flag("--aovs", render.aovs,
                          "Add albedo, normal and depth channels to EXR output");
     render_cmd->add_option(
@@ -58,6 +68,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& render) {
     render_cmd->add_option("--script-time-limit", render.script_time_limit,
                            script_time_limit_help());
 
+    // `--denoise` alone asks for the default denoiser; its value, when given, names one.
+    render_cmd->callback(
+        [&render, denoise_option] { render.denoise = denoise_option->count() > 0; });
     return render_cmd;
 }
 

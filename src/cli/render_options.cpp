@@ -31,6 +31,9 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     if (!options.tonemap.empty()) table.set("tonemap", options.tonemap, "--tonemap");
     if (options.aovs) table.set("aovs", true, "--aovs");
     if (options.denoise) table.set("denoise", true, "--denoise");
+    if (!options.denoiser.empty()) table.set("denoiser", options.denoiser, "--denoise");
+    if (!options.denoise_quality.empty())
+        table.set("denoise_quality", options.denoise_quality, "--denoise-quality");
     if (options.no_mipmap) table.set("mipmapping", false, "--no-mipmap");
     if (const auto every = int_flag("--intermediate", options.intermediate, 0, INT_MAX))
         table.set("intermediate", static_cast<double>(*every), "--intermediate");

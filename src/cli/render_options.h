@@ -21,6 +21,8 @@ struct RenderOptions {
     std::string exposure;
     std::string tonemap;
     bool denoise = false;
+    std::string denoiser;  // --denoise's value: "network" (the default) or "nlm"
+    std::string denoise_quality;
     std::string adaptive;
     std::string photons;
     bool no_mipmap = false;

@@ -2,6 +2,8 @@
 #include <glint/core/progress.h>
 #include <viewer/render_thread.h>
 
+#include <tbb/task_arena.h>
+
 namespace glint::viewer {
 
 RenderThread::RenderThread(ProgressiveSession session, int full_pass_budget)
@@ -48,6 +50,55 @@ void RenderThread::allow_passes(int count) {
     m_wake.notify_all();
 }
 
+void RenderThread::set_denoise(bool on) {
+    const std::lock_guard lock(m_mutex);
+    m_denoise = on;
+    m_republish = true;
+    m_wake.notify_all();
+}
+
+namespace {
+
+// Denoise after 4, 16, 64, ... passes (powers of 4) and at the target.
+bool denoise_due(int passes, int target) {
+    const bool power_of_four =
+        passes >= 4 && (passes & (passes - 1)) == 0 && (passes & 0x55555555) != 0;
+    return passes == target || power_of_four;
+}
+
+}  // namespace
+
+bool RenderThread::publish_still() {
+    bool denoise = false;
+    {
+        const std::lock_guard lock(m_mutex);
+        denoise = m_denoise;
+    }
+    Image image;
+    if (denoise && m_session.passes() > 0) {
+        Progress progress("denoise", 1, true);
+        progress.set_cancel_flag(&m_cancel);
+        try {
+            image = m_session.denoised_image(progress, tbb::this_task_arena::max_concurrency());
+        } catch (const Interrupted&) {
+            return false;
+        } catch (const Error& e) {
+            const std::lock_guard lock(m_mutex);
+            m_frame.error = e.what();
+            ++m_frame.version;
+            return true;
+        }
+    } else {
+        image = m_session.image();
+    }
+    const std::lock_guard lock(m_mutex);
+    m_frame.image = std::move(image);
+    m_frame.denoised = denoise && m_session.passes() > 0;
+    m_frame.passes = m_session.passes();
+    ++m_frame.version;
+    return true;
+}
+
 bool RenderThread::latest(Frame& frame) const {
     const std::lock_guard lock(m_mutex);
     if (m_frame.version == frame.version) return false;
@@ -68,7 +119,9 @@ void RenderThread::run() {
             auto changes = [&] { return m_camera || m_lights || m_integrator; };
             // Nothing to do until a change, more budget, or the end. A change may always
             // render its reduced pass: the budget counts full passes only.
-            m_wake.wait(lock, [&] { return m_stop || changes() || (!idle && m_budget != 0); });
+            m_wake.wait(lock, [&] {
+                return m_stop || changes() || m_republish || (!idle && m_budget != 0);
+            });
             if (m_stop) return;
             try {
                 if (m_integrator) m_session.set_integrator(*m_integrator);
@@ -78,11 +131,22 @@ void RenderThread::run() {
             }
             if (m_camera) m_session.set_camera(*m_camera);
             if (m_lights) m_session.set_lights(*m_lights);
-            if (changes()) idle = false;
+            const bool changed = changes();
+            if (changed) idle = false;
             m_camera.reset();
             m_lights.reset();
             m_integrator.reset();
             m_cancel.store(0);
+            // The denoise toggle changed: show the still image again, denoised or not
+            // (nothing to show before the first pass; a change renders anew anyway).
+            if (m_republish && !changed) {
+                m_republish = false;
+                if (m_session.passes() == 0) continue;
+                lock.unlock();
+                publish_still();
+                continue;
+            }
+            m_republish = false;
         }
         Progress progress("view", 1, true);
         // The reduced pass is short and runs to its end: while the user drags, changes
@@ -105,15 +169,22 @@ void RenderThread::run() {
             continue;
         }
         Image image = m_session.image();
-        const std::lock_guard lock(m_mutex);
-        if (kind == PassKind::full && m_budget > 0) --m_budget;
-        m_frame.image = std::move(image);
-        m_frame.passes = m_session.passes();
-        m_frame.reduced = kind == PassKind::reduced;
-        m_frame.pass_seconds = m_session.last_stats().seconds;
-        m_frame.pass_samples = m_session.last_stats().samples;
-        m_frame.integrator = m_session.integrator();
-        ++m_frame.version;
+        bool denoise_now = false;
+        {
+            const std::lock_guard lock(m_mutex);
+            if (kind == PassKind::full && m_budget > 0) --m_budget;
+            m_frame.image = std::move(image);
+            m_frame.passes = m_session.passes();
+            m_frame.reduced = kind == PassKind::reduced;
+            m_frame.pass_seconds = m_session.last_stats().seconds;
+            m_frame.pass_samples = m_session.last_stats().samples;
+            m_frame.integrator = m_session.integrator();
+            m_frame.denoised = false;
+            ++m_frame.version;
+            denoise_now = kind == PassKind::full && m_denoise &&
+                          denoise_due(m_session.passes(), m_session.target());
+        }
+        if (denoise_now) publish_still();
     }
 }
 

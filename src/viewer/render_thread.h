@@ -20,9 +20,10 @@ namespace glint::viewer {
 /// What the window shows: the session's image after a pass, and what it counts.
 struct Frame {
     Image image;
-    int passes = 0;        ///< full passes in the image (samples per pixel)
-    bool reduced = false;  ///< the reduced-resolution pass after a change
-    uint64_t version = 0;  ///< grows with every frame published
+    int passes = 0;         ///< full passes in the image (samples per pixel)
+    bool reduced = false;   ///< the reduced-resolution pass after a change
+    bool denoised = false;  ///< denoised by the network (the camera had stopped)
+    uint64_t version = 0;   ///< grows with every frame published
     double pass_seconds = 0.0;
     uint64_t pass_samples = 0;
     std::string integrator;
@@ -46,6 +47,10 @@ public:
     void request_integrator(const std::string& name);
     /// Lets the thread render `count` more full passes (with a budget).
     void allow_passes(int count);
+    /// Turns on or off denoising by the network while the camera stands still: after 4, 16,
+    /// 64, ... passes and at the target (not every frame, as each takes seconds). Needs a
+    /// session made with SessionOptions::aovs. The current image is republished at once.
+    void set_denoise(bool on);
 
     /// Copies the latest frame into `frame` when it is newer than frame.version.
     bool latest(Frame& frame) const;
@@ -55,6 +60,9 @@ public:
 private:
     void run();
     void cancel_locked();
+    // Publishes the session's image, denoised when denoising is on; false when a change
+    // cancelled the denoiser.
+    bool publish_still();
 
     ProgressiveSession m_session;
     mutable std::mutex m_mutex;
@@ -65,6 +73,8 @@ private:
     std::optional<Params> m_camera;
     std::optional<LightEdits> m_lights;
     std::optional<std::string> m_integrator;
+    bool m_denoise = false;
+    bool m_republish = false;  // set_denoise() asks for the still image again
     Frame m_frame;
     std::thread m_thread;  // last: starts once everything above exists
 };

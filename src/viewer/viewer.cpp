@@ -124,6 +124,7 @@ struct UiState {
     bool show_panel = true;
     int integrator = 0;
     int light = 0;
+    bool denoise = false;  // the network denoises the image while the camera stands still
     std::array<char, 512> save_path{};
     std::string message;  // the last save, camera line or error, shown in the panel
 };
@@ -148,10 +149,13 @@ public:
 
         SessionOptions session_options;
         session_options.reduced_scale = options.reduced_scale;
+        session_options.aovs = true;  // for the denoiser
         ProgressiveSession session(desc, settings, session_options);
         const Bounds3 bounds = session.scene().stats().bounds;
         m_scene_size = bounds.is_empty() ? 1.0f : glm::length(bounds.max - bounds.min);
         m_thread = std::make_unique<RenderThread>(std::move(session), options.frames > 0 ? 0 : -1);
+        m_ui.denoise = settings.denoise;
+        if (m_ui.denoise) m_thread->set_denoise(true);
     }
 
     int run() {
@@ -356,8 +360,12 @@ private:
         }
         restyle |= ImGui::SliderFloat("exposure", &m_ui.exposure, -8.0f, 8.0f, "%.2f stops");
         restyle |= ImGui::Combo("tone mapping", &m_ui.tone_map, kToneMaps, 3);
+        if (ImGui::Checkbox("denoise when still", &m_ui.denoise))
+            m_thread->set_denoise(m_ui.denoise);
         ImGui::Text("%d / %d spp%s", m_frame.passes, m_settings.spp,
-                    m_frame.reduced ? " (reduced preview)" : "");
+                    m_frame.reduced    ? " (reduced preview)"
+                    : m_frame.denoised ? " (denoised)"
+                                       : "");
         const double rate =
             m_frame.pass_seconds > 0.0 ? m_frame.pass_samples / m_frame.pass_seconds : 0.0;
         ImGui::Text("%.2f M samples/s, pass %.1f ms", rate * 1e-6, m_frame.pass_seconds * 1e3);

@@ -11,6 +11,7 @@
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <support/denoise_metrics.h>
 #include <support/render_helpers.h>
 #include <tbb/global_control.h>
 #include <unistd.h>
@@ -23,120 +24,16 @@
 namespace glint {
 namespace {
 
+using test::band_size;
+using test::edge_bands;
+using test::edge_contrast;
+using test::EdgeBands;
+using test::error_against;
 using test::example_with_settings;
+using test::Halves;
+using test::luminance;
+using test::render_halves;
 using test::run_glint;
-
-// A render's whole image (with AOVs) and its two halves.
-struct Halves {
-    Image full, a, b;
-};
-
-Halves render_halves(const std::string& code, int threads = 0) {
-    const SceneDesc desc =
-        load_scene_string(code, "denoise_test.lua", GLINT_SOURCE_DIR "/examples");
-    const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
-    const auto scene = build_scene(desc, settings);
-    auto integrator = make_integrator(settings);
-    Film film(settings.output_width(), settings.output_height(), true, settings.output_origin(),
-              true);
-    Progress progress("test", 1, true);
-    if (threads > 0) {
-        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
-        integrator->render(*scene, film, progress);
-    } else {
-        integrator->render(*scene, film, progress);
-    }
-    return {film.resolve(), film.resolve_half(0), film.resolve_half(1)};
-}
-
-float luminance(const Image& image, int x, int y) {
-    return 0.2126f * image.at(x, y, 0) + 0.7152f * image.at(x, y, 1) + 0.0722f * image.at(x, y, 2);
-}
-
-// The relative MSE of `test` (glint compare's: (t - r)^2 / (r^2 + 0.01)) against the
-// converged image, over the pixels of `mask` (all when null). The reference is a render
-// too: its own noise, estimated per pixel from its halves as (a - b)^2 / 4, is taken off,
-// so that the figure is the test image's error, not the reference's.
-double error_against(const Image& test, const Halves& ref,
-                     const std::vector<uint8_t>* mask = nullptr) {
-    double sum = 0.0;
-    int count = 0;
-    for (int y = 0; y < test.height; ++y) {
-        for (int x = 0; x < test.width; ++x) {
-            if (mask && !(*mask)[static_cast<size_t>(y) * test.width + x]) continue;
-            ++count;
-            for (int c = 0; c < 3; ++c) {
-                const double r = ref.full.at(x, y, c), t = test.at(x, y, c);
-                const double d = ref.a.at(x, y, c) - ref.b.at(x, y, c);
-                sum += ((t - r) * (t - r) - 0.25 * d * d) / (r * r + 1e-2);
-            }
-        }
-    }
-    return sum / (3.0 * std::max(count, 1));
-}
-
-// Edge bands from the reference's features: geometry edges where the shading normal turns
-// by more than 30 degrees or the depth jumps by more than 10 % between 4-neighbours;
-// texture edges where only the albedo changes (by more than 0.15 in RGB length).
-struct EdgeBands {
-    std::vector<uint8_t> geometry, texture;
-};
-EdgeBands edge_bands(const Image& ref) {
-    const int w = ref.width, h = ref.height;
-    const int al = ref.channel_index("albedo.R"), no = ref.channel_index("normal.X"),
-              de = ref.channel_index("depth.Z");
-    EdgeBands bands{std::vector<uint8_t>(static_cast<size_t>(w) * h, 0),
-                    std::vector<uint8_t>(static_cast<size_t>(w) * h, 0)};
-    auto vec = [&](int x, int y, int c) {
-        return Vec3(ref.at(x, y, c), ref.at(x, y, c + 1), ref.at(x, y, c + 2));
-    };
-    for (int y = 0; y + 1 < h; ++y) {
-        for (int x = 0; x + 1 < w; ++x) {
-            for (const Vec2i q : {Vec2i(x + 1, y), Vec2i(x, y + 1)}) {
-                const float zp = ref.at(x, y, de), zq = ref.at(q.x, q.y, de);
-                const bool geometry = glm::length(vec(x, y, no) - vec(q.x, q.y, no)) > 0.52f ||
-                                      std::abs(zp - zq) > 0.1f * std::max(zp, zq);
-                const bool texture = glm::length(vec(x, y, al) - vec(q.x, q.y, al)) > 0.15f;
-                const size_t i = static_cast<size_t>(y) * w + x,
-                             j = static_cast<size_t>(q.y) * w + q.x;
-                if (geometry)
-                    bands.geometry[i] = bands.geometry[j] = 1;
-                else if (texture)
-                    bands.texture[i] = bands.texture[j] = 1;
-            }
-        }
-    }
-    // A texture edge next to a geometry edge is a geometry edge.
-    for (size_t i = 0; i < bands.texture.size(); ++i)
-        if (bands.geometry[i]) bands.texture[i] = 0;
-    return bands;
-}
-
-// Mean over the band of the largest luminance step from a pixel to a 4-neighbour: the
-// edge's contrast, which blurring lowers.
-double edge_contrast(const Image& image, const std::vector<uint8_t>& band) {
-    double sum = 0.0;
-    int count = 0;
-    for (int y = 1; y + 1 < image.height; ++y) {
-        for (int x = 1; x + 1 < image.width; ++x) {
-            if (!band[static_cast<size_t>(y) * image.width + x]) continue;
-            const float l = luminance(image, x, y);
-            float step = 0.0f;
-            for (const Vec2i q :
-                 {Vec2i(x + 1, y), Vec2i(x - 1, y), Vec2i(x, y + 1), Vec2i(x, y - 1)})
-                step = std::max(step, std::abs(l - luminance(image, q.x, q.y)));
-            sum += step;
-            ++count;
-        }
-    }
-    return count > 0 ? sum / count : 0.0;
-}
-
-int band_size(const std::vector<uint8_t>& band) {
-    int n = 0;
-    for (uint8_t b : band) n += b;
-    return n;
-}
 
 // The issue's criteria on one scene at 16 spp: the denoised image's error at least 4 x
 // lower than the noisy one's; in the edge bands no worse than the noisy one's, and the
@@ -359,17 +256,21 @@ TEST_F(DenoiseCli, WritesDenoisedOutputsBesideUnchangedNoisyOnes) {
     const auto plain = run_glint(fmt::format("render {} --res 32x32 --spp 4 -o {} -o {} --quiet",
                                              kCornell, out("plain.exr"), out("plain.png")));
     ASSERT_EQ(plain.exit_code, 0) << plain.output;
-    const auto with =
-        run_glint(fmt::format("render {} --res 32x32 --spp 4 --denoise -o {} -o {} --quiet",
-                              kCornell, out("noisy.exr"), out("noisy.png")));
-    ASSERT_EQ(with.exit_code, 0) << with.output;
-    // The noisy outputs are the same files a render without --denoise writes.
-    EXPECT_EQ(read_bytes(out("noisy.exr")), read_bytes(out("plain.exr")));
-    EXPECT_EQ(read_bytes(out("noisy.png")), read_bytes(out("plain.png")));
-    const Image denoised = read_image(out("noisy.denoised.exr"));
-    EXPECT_EQ(denoised.width, 32);
-    EXPECT_GE(denoised.channel_index("R"), 0);
-    EXPECT_TRUE(std::filesystem::exists(out("noisy.denoised.png")));
+    // The network (the default) and the non-local means filter.
+    for (const std::string method : {"", "nlm"}) {
+        SCOPED_TRACE(method);
+        const auto with =
+            run_glint(fmt::format("render {} --res 32x32 --spp 4 --denoise {} -o {} -o {} --quiet",
+                                  kCornell, method, out("noisy.exr"), out("noisy.png")));
+        ASSERT_EQ(with.exit_code, 0) << with.output;
+        // The noisy outputs are the same files a render without --denoise writes.
+        EXPECT_EQ(read_bytes(out("noisy.exr")), read_bytes(out("plain.exr")));
+        EXPECT_EQ(read_bytes(out("noisy.png")), read_bytes(out("plain.png")));
+        const Image denoised = read_image(out("noisy.denoised.exr"));
+        EXPECT_EQ(denoised.width, 32);
+        EXPECT_GE(denoised.channel_index("R"), 0);
+        EXPECT_TRUE(std::filesystem::exists(out("noisy.denoised.png")));
+    }
 }
 
 TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
@@ -380,11 +281,61 @@ TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
     EXPECT_EQ(bdpt.exit_code, 1);
     EXPECT_NE(bdpt.output.find("--denoise"), std::string::npos) << bdpt.output;
     EXPECT_NE(bdpt.output.find("'bdpt'"), std::string::npos) << bdpt.output;
-    const auto one = run_glint(fmt::format("render {} --res 16x16 --spp 1 --denoise -o {} --quiet",
-                                           kCornell, out("x.exr")));
+    // The non-local means filter needs two halves of at least one sample; the network not.
+    const auto one = run_glint(fmt::format(
+        "render {} --res 16x16 --spp 1 --denoise nlm -o {} --quiet", kCornell, out("x.exr")));
     EXPECT_EQ(one.exit_code, 1);
     EXPECT_NE(one.output.find("at least 2 samples"), std::string::npos) << one.output;
     EXPECT_FALSE(std::filesystem::exists(out("x.exr")));
+    const auto network = run_glint(fmt::format(
+        "render {} --res 16x16 --spp 1 --denoise -o {} --quiet", kCornell, out("x.exr")));
+    EXPECT_EQ(network.exit_code, 0) << network.output;
+    const auto unknown = run_glint(fmt::format(
+        "render {} --res 16x16 --spp 1 --denoise median -o {} --quiet", kCornell, out("y.exr")));
+    EXPECT_NE(unknown.exit_code, 0);
+    EXPECT_NE(unknown.output.find("median"), std::string::npos) << unknown.output;
+}
+
+// Without the weights, --denoise fails before rendering, names the install step, and writes
+// nothing; --denoise nlm still works.
+TEST_F(DenoiseCli, MissingWeightsNameTheInstallStep) {
+    const std::string env = "GLINT_DENOISE_WEIGHTS=" + out("no-weights") + " ";
+    const auto missing =
+        test::run_command(fmt::format("{}{} render {} --res 16x16 --spp 2 --denoise -o {} --quiet",
+                                      env, test::glint_binary(), kCornell, out("x.exr")));
+    EXPECT_EQ(missing.exit_code, 1);
+    EXPECT_NE(missing.output.find("scripts/install-deps.sh"), std::string::npos) << missing.output;
+    EXPECT_NE(missing.output.find("--denoise"), std::string::npos) << missing.output;
+    EXPECT_FALSE(std::filesystem::exists(out("x.exr")));
+    const auto nlm = test::run_command(
+        fmt::format("{}{} render {} --res 16x16 --spp 2 --denoise nlm -o {} --quiet", env,
+                    test::glint_binary(), kCornell, out("x.exr")));
+    EXPECT_EQ(nlm.exit_code, 0) << nlm.output;
+}
+
+// The scene's settings choose the network's size; a bad one names the scene's line.
+TEST_F(DenoiseCli, SceneChoosesQualityAndBadValuesNameTheLine) {
+    const std::string scene = out("scene.lua");
+    std::ofstream(scene)
+        << "glint.render{ width = 16, height = 16, spp = 2, denoise = true,\n"
+           "               denoise_quality = 'fast', output = '"
+        << out("s.exr") << "' }\n"
+        << "glint.camera{ eye = {0, 0, 3}, look_at = {0, 0, 0}, fov = 40 }\n"
+        << "glint.sphere{ radius = 1, material = glint.diffuse{ reflectance = {0.5, 0.5, 0.5} } }\n"
+        << "glint.point_light{ position = {0, 2, 2}, intensity = 5 }\n";
+    const auto fast = run_glint(fmt::format("render {} --quiet", scene));
+    EXPECT_EQ(fast.exit_code, 0) << fast.output;
+    EXPECT_TRUE(std::filesystem::exists(out("s.denoised.exr")));
+    const auto bad = run_glint(fmt::format("render {} --denoise-quality ultra --quiet", scene));
+    EXPECT_NE(bad.exit_code, 0);
+    EXPECT_NE(bad.output.find("ultra"), std::string::npos) << bad.output;
+    std::string text = read_bytes(scene);
+    text.replace(text.find("'fast'"), 6, "'ultra'");
+    std::ofstream(scene) << text;
+    const auto bad_scene = run_glint(fmt::format("render {} --quiet", scene));
+    EXPECT_EQ(bad_scene.exit_code, 1);
+    EXPECT_NE(bad_scene.output.find("scene.lua:1"), std::string::npos) << bad_scene.output;
+    EXPECT_NE(bad_scene.output.find("denoise_quality"), std::string::npos) << bad_scene.output;
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 // for bit, changes restart accumulation, and a cancelled pass leaves nothing behind.
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
+#include <glint/denoise/network_denoiser.h>
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 #include <glint/view/camera_controller.h>
@@ -242,6 +243,35 @@ TEST(ProgressiveSession, IntegratorChoice) {
     session.set_integrator("whitted");
     EXPECT_EQ(session.render_next(progress), PassKind::reduced);
     EXPECT_EQ(session.passes(), 0);
+}
+
+}  // namespace
+}  // namespace glint
+
+namespace glint {
+namespace {
+
+// The viewer's "denoise when still": the network on the accumulated film equals the network
+// on `glint render`'s image of the same passes, and the film's own image is unchanged by
+// recording AOVs.
+TEST(ProgressiveSession, DenoisedImageIsTheNetworkOnTheFilm) {
+    const std::string code = cornell("");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    const RenderSettings settings = parse_render_settings(&*desc.render);
+    SessionOptions options;
+    options.aovs = true;
+    ProgressiveSession session(desc, settings, options);
+    ProgressiveSession plain = make_session(code);
+    const Image plain_image = render_all(plain);
+    const Image film = render_all(session);
+    const Image rgb = without_channels(film, {"albedo.", "normal.", "depth."});
+    EXPECT_EQ(rgb.pixels, plain_image.pixels);
+    Progress progress("test", 1, true);
+    const Image denoised = session.denoised_image(progress, 2);
+    NetworkDenoiseSettings network;
+    network.threads = 2;
+    EXPECT_EQ(denoised.pixels, denoise_network(film, network).pixels);
+    EXPECT_THROW(plain.denoised_image(progress, 2), Error);  // no AOVs
 }
 
 }  // namespace

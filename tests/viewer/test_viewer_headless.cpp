@@ -80,6 +80,31 @@ TEST(ViewerHeadless, ScreenshotShowsTheRender) {
     fs::remove(reference);
 }
 
+// With the scene's denoise = true, the window shows the network's image once the camera has
+// stood still for the target's passes: the frame after the last pass is `glint render
+// --denoise`'s denoised image.
+TEST(ViewerHeadless, StillCameraShowsTheDenoisedImage) {
+    std::string why_not;
+    const std::string xvfb = xvfb_prefix(why_not);
+    if (xvfb.empty()) GTEST_SKIP() << why_not;
+    const std::string scene = GLINT_SOURCE_DIR "/examples/denoise.lua";
+    const fs::path shot = temp("viewer_denoised.png"), reference = temp("viewer_denoised_ref.png");
+    const test::CommandResult view = test::run_command(
+        xvfb + test::glint_binary() + " view " + scene +
+        " --res 64x48 --spp 4 --frames 5 --threads 2 --hide-panel --screenshot " + shot.string());
+    ASSERT_EQ(view.exit_code, 0) << view.output;
+    const test::CommandResult render = test::run_glint(
+        "render " + scene + " --res 64x48 --spp 4 --threads 2 --quiet -o " + reference.string());
+    ASSERT_EQ(render.exit_code, 0) << render.output;
+    const fs::path denoised = temp("viewer_denoised_ref.denoised.png");
+    const Image shown = read_image(shot.string()), rendered = read_image(denoised.string());
+    const CompareResult r = compare_images(shown, rendered);
+    EXPECT_LT(r.rel_mse, 1e-5) << view.output;
+    // And it is not the noisy image.
+    EXPECT_GT(compare_images(read_image(reference.string()), rendered).rel_mse, 1e-3);
+    for (const fs::path& p : {shot, reference, denoised}) fs::remove(p);
+}
+
 TEST(ViewerHeadless, ScriptedOrbitRestartsAccumulation) {
     std::string why_not;
     const std::string xvfb = xvfb_prefix(why_not);

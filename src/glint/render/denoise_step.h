@@ -10,13 +10,16 @@
 namespace glint {
 
 /// Throws glint::Error (naming the `denoise` setting) when `settings.denoise` asks for
-/// more than the integrator and the settings give: the film's halves, two samples in each.
+/// more than the integrator and the settings give (first-hit features; for the non-local
+/// means filter also the film's halves, two samples in each), or when the network's weights
+/// are not installed.
 void check_denoise(const RenderSettings& settings, const IntegratorCapabilities& capabilities);
 
 /// Whether the film must keep its two halves of each pixel's samples.
 bool film_needs_halves(const RenderSettings& settings);
 
-/// The denoised image of a rendered film.
+/// The denoised image of a rendered film, by the denoiser the settings choose, with a
+/// "denoising" progress line.
 Image denoise_film(const Film& film, const RenderSettings& settings, const RenderControl& control);
 
 }  // namespace glint

@@ -67,9 +67,10 @@ void check_film_memory(const RenderSettings& settings) {
     const bool halves = film_needs_halves(settings);
     check_memory(Film::memory_bytes(settings.width, settings.height, aovs, halves),
                  fmt::format("the film ({}x{}{})", settings.width, settings.height,
-                             halves ? " with AOVs and halves for the denoiser"
-                             : aovs ? " with AOVs"
-                                    : ""));
+                             halves             ? " with AOVs and halves for the denoiser"
+                             : settings.denoise ? " with AOVs for the denoiser"
+                             : aovs             ? " with AOVs"
+                                                : ""));
 }
 
 }  // namespace glint

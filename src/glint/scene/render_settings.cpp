@@ -31,6 +31,18 @@ RenderSettings parse_render_settings(const Params* params) {
     }
     s.aovs = p.get_bool("aovs", false);
     s.denoise = p.get_bool("denoise", false);
+    s.denoiser = p.get_string("denoiser", s.denoiser);
+    if (s.denoiser != "network" && s.denoiser != "nlm")
+        p.fail_at("denoiser",
+                  fmt::format("'denoiser' must be \"network\" or \"nlm\", got \"{}\"", s.denoiser));
+    s.denoise_quality = p.get_string("denoise_quality", s.denoise_quality);
+    if (s.denoise_quality != "fast" && s.denoise_quality != "balanced" &&
+        s.denoise_quality != "high")
+        p.fail_at(
+            "denoise_quality",
+            fmt::format("'denoise_quality' must be \"fast\", \"balanced\" or \"high\", got \"{}\"",
+                        s.denoise_quality));
+    s.denoise_clean_aux = p.get_bool("denoise_clean_aux", false);
     s.outputs = p.get_strings("output");
     s.csg_shortcuts = p.get_bool("csg_shortcuts", true);
     s.mipmapping = p.get_bool("mipmapping", true);

@@ -33,7 +33,12 @@ struct RenderSettings {
     float exposure = 0.0f;            // stops, applied to PNG output
     Tonemap tonemap = Tonemap::clip;  // display curve of PNG output (film/tonemap.h)
     bool aovs = false;                // albedo/normal/depth channels in EXR output
-    bool denoise = false;             // also write NAME.denoised.EXT (film/denoise.h)
+    bool denoise = false;             // also write NAME.denoised.EXT
+    // Which denoiser: "network" (OIDN's trained U-Net, denoise/network_denoiser.h) or "nlm"
+    // (glint's non-local means filter, film/denoise.h).
+    std::string denoiser = "network";
+    std::string denoise_quality = "balanced";  // network: "fast", "balanced" or "high"
+    bool denoise_clean_aux = false;            // network: prefilter albedo and normal first
     std::vector<std::string> outputs;
     int threads = 0;            // 0 = all cores
     bool csg_shortcuts = true;  // bounding-box pruning inside CSG trees

@@ -1,6 +1,7 @@
 #include <glint/camera/camera.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
+#include <glint/denoise/film_denoiser.h>
 #include <glint/scene/build.h>
 #include <glint/view/progressive_session.h>
 
@@ -31,7 +32,7 @@ ProgressiveSession::ProgressiveSession(SceneDesc desc, RenderSettings settings,
       m_settings(std::move(settings)),
       m_options(options),
       m_camera(m_desc.camera ? *m_desc.camera : Params("camera", "default camera")),
-      m_film(m_settings.width, m_settings.height, false) {
+      m_film(m_settings.width, m_settings.height, options.aovs) {
     if (m_options.reduced_scale < 1) throw Error("the reduced scale must be at least 1");
     std::tie(m_integrator, m_progressive) = make_progressive(m_settings);
     m_scene = build_scene(m_desc, m_settings);
@@ -145,6 +146,14 @@ std::vector<std::string> ProgressiveSession::progressive_integrators(
         }
     }
     return names;
+}
+
+Image ProgressiveSession::denoised_image(Progress& progress, int threads) const {
+    if (!m_film.has_aovs()) throw Error("the viewer's film has no AOVs to denoise with");
+    RenderSettings settings = m_settings;
+    settings.denoise = true;
+    settings.denoiser = "network";
+    return denoise_film(m_film, settings, threads, progress);
 }
 
 }  // namespace glint

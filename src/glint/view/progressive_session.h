@@ -27,6 +27,8 @@ struct SessionOptions {
     /// The first pass after a change renders an image 1/reduced_scale the size on each
     /// side (rounded up), shown enlarged; 1 renders full passes only.
     int reduced_scale = 4;
+    /// Whether the film records the first-hit features (AOVs), which denoised_image() needs.
+    bool aovs = false;
 };
 
 /// What render_next() did.
@@ -73,6 +75,11 @@ public:
     Image image() const;
     /// The film's own image (what `glint render` would write after passes() samples).
     Image film_image() const { return m_film.resolve(); }
+    /// The film's image denoised by the network (denoise/network_denoiser.h, the render
+    /// settings' denoise_quality) on `threads` threads, R, G, B; for a camera that has
+    /// stopped, as it takes seconds. Throws glint::Error without AOVs (SessionOptions::aovs)
+    /// or without the weights, and glint::Interrupted when `progress` is cancelled.
+    Image denoised_image(Progress& progress, int threads) const;
     /// What the last pass reported (samples, rays, seconds).
     const RenderStats& last_stats() const { return m_last; }
 

@@ -1,0 +1,175 @@
+// The network denoiser on glint's own scenes: its error against a converged reference
+// compared with the noisy image's and with the non-local means filter's, the contrast it
+// keeps at geometry and texture edges, and an image with no noise coming back unchanged.
+#include <glint/denoise/network_denoiser.h>
+#include <glint/film/denoise.h>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+#include <support/denoise_metrics.h>
+#include <support/render_helpers.h>
+
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+#include "weights.h"
+
+namespace glint {
+namespace {
+
+using test::example_with_settings;
+using test::Halves;
+
+// What the network must do on a scene at one sample count: its error lower than the
+// non-local means filter's by `gain_over_nlm`, and the edges' contrast at least these
+// fractions of the reference's. The bounds sit below what was measured (docs/denoiser.md
+// lists the figures): the issue's 2x over non-local means holds at 4 spp on the Cornell box
+// and the spheres, not at 16 spp, where the filter with its two halves is already close.
+struct Expectation {
+    int spp;
+    double gain_over_nlm, geometry_contrast, texture_contrast;
+};
+
+struct Scene {
+    const char* file;
+    const char* settings;  // glint.render{...} without spp and seed
+    std::vector<Expectation> expectations;
+};
+
+// Measured gain over non-local means / geometry / texture contrast: 2.88 / 0.92 at 4 spp,
+// 1.35 / 0.94 at 16.
+const Scene cornell{"cornell-box.lua",
+                    "width = 64, height = 64, integrator = 'path'",
+                    {{4, 2.0, 0.9, 0.0}, {16, 1.15, 0.9, 0.0}}};
+// Textures under an environment light: the IBL scene too. Measured 1.21 / 0.67 / 0.93 at 4
+// spp, 1.39 / 0.81 / 0.96 at 16; its geometry edges include the glass and metal spheres'
+// silhouettes against a reference that is itself noisy there.
+const Scene textures{"textures.lua",
+                     "width = 160, height = 90, crop = {16, 24, 144, 84}, max_depth = 8",
+                     {{4, 1.1, 0.6, 0.9}, {16, 1.2, 0.75, 0.9}}};
+// A glass and a mirror sphere: measured 2.40 / 0.49 at 4 spp, 1.28 / 0.91 at 16 (the caustic
+// and the refracted room are what the network smooths at 4 spp).
+const Scene spheres{"cornell-spheres.lua",
+                    "width = 64, height = 64, integrator = 'path'",
+                    {{4, 2.0, 0.4, 0.0}, {16, 1.1, 0.85, 0.0}}};
+
+std::string code(const Scene& scene, int spp, int seed) {
+    return example_with_settings(scene.file,
+                                 fmt::format("{}, spp = {}, seed = {}", scene.settings, spp, seed));
+}
+
+struct Errors {
+    double noisy, nlm, network;
+};
+
+// The whole-image errors at `e.spp`, and the network's edge contrast against the
+// reference's (at least e's fraction of it on each band that is checked).
+Errors measure(const Scene& scene, const Halves& ref, const Expectation& e) {
+    const int spp = e.spp;
+    const Halves noisy = test::render_halves(code(scene, spp, 1));
+    NetworkDenoiseSettings settings;
+    settings.threads = 2;
+    const Image network = denoise_network(noisy.full, settings);
+    const Image nlm = denoise(noisy.full, noisy.a, noisy.b);
+    const Errors errors{test::error_against(noisy.full, ref), test::error_against(nlm, ref),
+                        test::error_against(network, ref)};
+    fmt::print(
+        "{} at {} spp: relative MSE noisy {:.5f}, non-local means {:.5f}, network {:.5f} ({:.2f} x "
+        "lower)\n",
+        scene.file, spp, errors.noisy, errors.nlm, errors.network, errors.nlm / errors.network);
+    const test::EdgeBands bands = test::edge_bands(ref.full);
+    std::vector<std::tuple<const char*, const std::vector<uint8_t>*, double>> checks = {
+        {"geometry", &bands.geometry, e.geometry_contrast}};
+    if (e.texture_contrast > 0.0) checks.push_back({"texture", &bands.texture, e.texture_contrast});
+    for (const auto& [name, band, min_contrast] : checks) {
+        EXPECT_GT(test::band_size(*band), 50) << name;
+        const double ref_contrast = test::edge_contrast(ref.full, *band);
+        const double contrast = test::edge_contrast(network, *band);
+        fmt::print("  {} edges: contrast {:.1f} % of the reference's\n", name,
+                   100.0 * contrast / ref_contrast);
+        EXPECT_GE(contrast, min_contrast * ref_contrast)
+            << scene.file << " " << name << " edges at " << spp;
+    }
+    return errors;
+}
+
+void check_scene(const Scene& scene) {
+    test::installed_weights("rt_hdr_alb_nrm");
+    const Halves ref = test::render_halves(code(scene, 512, 2));
+    for (const Expectation& expectation : scene.expectations) {
+        const Errors e = measure(scene, ref, expectation);
+        EXPECT_LT(5.0 * e.network, e.noisy) << scene.file << " at " << expectation.spp;
+        EXPECT_LT(expectation.gain_over_nlm * e.network, e.nlm)
+            << scene.file << " at " << expectation.spp;
+    }
+}
+
+TEST(NetworkDenoiserQuality, CornellBox) {
+    check_scene(cornell);
+}
+TEST(NetworkDenoiserQuality, TexturesUnderEnvironmentLight) {
+    check_scene(textures);
+}
+TEST(NetworkDenoiserQuality, GlassAndMirrorSpheres) {
+    check_scene(spheres);
+}
+
+// A checkerboard albedo under a smooth light, with matching features and no noise: the
+// network must give it back within 1 % on average, and all but a few per cent of the values
+// away from the border within 1 % each (it must not invent or remove detail). Within a few
+// pixels of the border, where the convolutions see zeros, it changes more (up to about 45 %
+// in a corner of this image).
+TEST(NetworkDenoiserQuality, NoiseFreeImageComesBackWithinOnePercent) {
+    const int w = 96, h = 64;
+    Image image = make_image(
+        w, h,
+        {"R", "G", "B", "albedo.R", "albedo.G", "albedo.B", "normal.X", "normal.Y", "normal.Z"});
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const float albedo = ((x / 8 + y / 8) % 2) ? 0.8f : 0.2f;
+            const float light = 1.0f + 0.5f * std::sin(0.05f * x) * std::cos(0.07f * y);
+            for (int c = 0; c < 3; ++c) {
+                image.at(x, y, c) = albedo * light * (0.6f + 0.2f * c);
+                image.at(x, y, 3 + c) = albedo;
+            }
+            image.at(x, y, 8) = 1.0f;
+        }
+    }
+    NetworkDenoiseSettings settings;
+    settings.threads = 2;
+    test::installed_weights("rt_hdr_alb_nrm");
+    const Image result = denoise_network(image, settings);
+    double sum = 0.0, worst = 0.0;
+    int far = 0, interior = 0, wx = 0, wy = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            for (int c = 0; c < 3; ++c) {
+                const double relative =
+                    std::abs(result.at(x, y, c) - image.at(x, y, c)) / image.at(x, y, c);
+                sum += relative;
+                if (x >= 8 && y >= 8 && x < w - 8 && y < h - 8) {
+                    ++interior;
+                    far += relative > 0.01;
+                }
+                if (relative > worst) {
+                    worst = relative;
+                    wx = x;
+                    wy = y;
+                }
+            }
+        }
+    }
+    const double mean = sum / (3.0 * w * h);
+    const double far_share = static_cast<double>(far) / interior;
+    fmt::print(
+        "noise-free image: mean relative change {:.4f}, largest {:.4f} at ({}, {}); {:.1f} % of "
+        "the "
+        "values 8 pixels or more inside changed by more than 1 %\n",
+        mean, worst, wx, wy, 100.0 * far_share);
+    EXPECT_LT(mean, 0.01);
+    EXPECT_LT(far_share, 0.05);
+}
+
+}  // namespace
+}  // namespace glint
