@@ -244,8 +244,10 @@ int new_shape(lua_State* L) {
         group = h->index;
         args = 2;
     }
-    SceneDesc& desc = desc_of(L);
-    desc.groups[group].shapes.push_back(to_params(L, args, type));
+    // Read before the group is looked up: reading may run a script's __gc finaliser, which
+    // may add a group and so move every group (a reference taken before would dangle).
+    Params params = to_params(L, args, type);
+    desc_of(L).groups[group].shapes.push_back(std::move(params));
     return 0;
 }
 
@@ -363,8 +365,10 @@ int place_group(lua_State* L) {
     }
     const int child = group_index_of(L, args);
     if (child == 0) fail(L, "the world group cannot be placed");
-    desc_of(L).groups[parent].instances.push_back(
-        {child, optional_transform(L, args + 1), where(L)});
+    // Both read before the group is looked up (where() allocates, which may run a
+    // finaliser that adds a group, see new_shape).
+    InstanceDesc instance{child, optional_transform(L, args + 1), where(L)};
+    desc_of(L).groups[parent].instances.push_back(std::move(instance));
     return 0;
 }
 
