@@ -15,6 +15,9 @@ struct ImportTarget {
     std::optional<ObjectRef> material;  ///< replaces every material of the file
     float light_scale = 1.0f;           ///< multiplies glTF light intensities (see the docs)
     std::string where;                  ///< the script location of the import, for messages
+    /// Files the model refers to (MTL libraries, glTF buffers and images) must lie inside
+    /// the model's folder; a trusted scene lifts this.
+    bool confine_references = true;
 };
 
 /// glint.import{ file = ..., transform = ..., material = ..., light_scale = ... }: reads the

@@ -574,6 +574,7 @@ SceneDesc run_chunk(const std::function<int(lua_State*)>& load, const std::strin
                     const std::string& directory, const LoaderOptions& options) {
     LoaderState loader;
     loader.desc.directory = directory;
+    loader.desc.trusted = options.trusted;
     LuaVm vm(options, directory);  // closed before `loader` goes
     lua_State* L = vm.state();
     lua_pushlightuserdata(L, &loader);
