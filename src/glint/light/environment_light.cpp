@@ -286,7 +286,21 @@ std::unique_ptr<Light> make_environment_light(const Params& params, const std::s
     if (image.width <= 0 || image.height <= 0)
         params.fail(fmt::format("environment map '{}' holds no image", path.string()));
     std::vector<Spectrum> pixels = radiance_pixels(image, params, path.string());
-    for (Spectrum& p : pixels) p *= intensity;
+    // The map's sums (its sampling weights, over up to 2^40 pixels, and its power) are
+    // taken in float: radiance beyond this overflows them, so it is refused here, naming
+    // the pixel, rather than failing later inside the sampling tables.
+    constexpr float kMaxRadiance = 1e18f;
+    for (size_t i = 0; i < pixels.size(); ++i) {
+        pixels[i] *= intensity;
+        const float largest = std::max({pixels[i].r, pixels[i].g, pixels[i].b});
+        if (!(largest <= kMaxRadiance)) {
+            params.fail(fmt::format(
+                "environment map '{}': pixel ({}, {}) times 'intensity' is {:g}, beyond the "
+                "largest radiance an environment may hold ({:g}); scale the map down",
+                path.string(), i % static_cast<size_t>(image.width),
+                i / static_cast<size_t>(image.width), largest, kMaxRadiance));
+        }
+    }
     const Mat3 spin = Mat3(Transform::rotate(rotation, Vec3(0.0f, 1.0f, 0.0f)).matrix());
     return std::make_unique<EnvironmentLight>(std::move(pixels), image.width, image.height,
                                               placement * spin);
