@@ -3,7 +3,7 @@
 // the back wall of a unit box (as a global map's do, on surfaces); queries are at random points
 // of both planes and of a plane halfway between (where few photons lie within the cap).
 // Prints nanoseconds per query and photons examined per query. Not part of CI.
-#include <glint/integrator/photon_map.h>
+#include <glint/integrator/photon/photon_map.h>
 
 #include <fmt/format.h>
 

@@ -12,7 +12,7 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/film/image_io.h>
-#include <glint/integrator/preview.h>
+#include <glint/integrator/photon/preview.h>
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 

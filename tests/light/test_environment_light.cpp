@@ -6,7 +6,7 @@
 #include <glint/core/rng.h>
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
-#include <glint/integrator/photon.h>
+#include <glint/integrator/photon/photon.h>
 #include <glint/light/environment_light.h>
 #include <glint/light/registry.h>
 #include <glint/scene/build.h>

@@ -5,7 +5,7 @@
 #include <glint/core/rng.h>
 #include <glint/geometry/mesh.h>
 #include <glint/geometry/sphere.h>
-#include <glint/integrator/projection_map.h>
+#include <glint/integrator/photon/projection_map.h>
 #include <glint/light/area_light.h>
 #include <glint/light/environment_light.h>
 #include <glint/light/point_light.h>

@@ -4,7 +4,7 @@
 #include <glint/core/error.h>
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
-#include <glint/integrator/shading.h>
+#include <glint/integrator/transport/shading.h>
 #include <glint/material/texture/image_texture.h>
 #include <glint/material/texture/mapping.h>
 #include <glint/material/texture/texture_table.h>

@@ -1,14 +1,14 @@
 #include <glint/core/error.h>
-#include <glint/integrator/bdpt.h>
-#include <glint/integrator/light_tracer.h>
-#include <glint/integrator/mlt.h>
-#include <glint/integrator/path.h>
-#include <glint/integrator/photon.h>
-#include <glint/integrator/preview.h>
-#include <glint/integrator/radiosity.h>
-#include <glint/integrator/sppm.h>
-#include <glint/integrator/vcm.h>
-#include <glint/integrator/whitted.h>
+#include <glint/integrator/bidirectional/bdpt.h>
+#include <glint/integrator/bidirectional/light_tracer.h>
+#include <glint/integrator/bidirectional/mlt.h>
+#include <glint/integrator/path/path.h>
+#include <glint/integrator/photon/photon.h>
+#include <glint/integrator/photon/preview.h>
+#include <glint/integrator/radiosity/radiosity.h>
+#include <glint/integrator/photon/sppm.h>
+#include <glint/integrator/bidirectional/vcm.h>
+#include <glint/integrator/path/whitted.h>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -1,0 +1,40 @@
+#pragma once
+// The render flags, shared by `glint render` and `glint view`, and the settings they make.
+#include <glint/scene/render_settings.h>
+#include <glint/scene/scene_desc.h>
+
+#include <string>
+#include <vector>
+
+namespace glint::cli {
+
+/// Numeric flags are taken as text and parsed strictly (flags.h).
+struct RenderOptions {
+    std::string scene;
+    std::vector<std::string> outputs;
+    std::string spp;
+    std::string resolution;
+    std::string threads;
+    std::string seed;
+    std::string crop;
+    std::string integrator;
+    std::string exposure;
+    std::string tonemap;
+    bool denoise = false;
+    std::string adaptive;
+    std::string photons;
+    bool no_mipmap = false;
+    std::string intermediate;
+    std::vector<std::string> debug;
+    bool aovs = false;
+    bool quiet = false;
+    bool trusted_scene = false;
+    std::string script_time_limit;
+};
+
+/// The scene's settings with the flags' values written into its glint.render{...} table,
+/// each with the flag's name as its location, so that an error about a value names the
+/// flag that gave it and anything else names the scene's line.
+RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options);
+
+}  // namespace glint::cli

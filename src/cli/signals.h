@@ -1,0 +1,32 @@
+#pragma once
+// SIGINT and SIGTERM for the `glint` command: recorded by a handler, polled by the work.
+#include <atomic>
+#include <csignal>
+
+namespace glint::cli {
+
+/// The number of the first SIGINT or SIGTERM received, 0 before. The one global of the
+/// program: a signal handler can reach nothing else. The handler only stores to it (a
+/// lock-free atomic store is async-signal-safe); the render polls it once per tile through
+/// Progress, and the output code before each file and before the renames.
+extern std::atomic<int> g_signal;
+
+void install_signal_handlers();
+
+/// Throws Interrupted when a signal has arrived.
+void throw_if_interrupted();
+
+/// SIGINT and SIGTERM held back while the outputs are renamed into place, so that a run
+/// ends either with every output renamed or with none.
+class SignalBlock {
+public:
+    SignalBlock();
+    ~SignalBlock();
+    SignalBlock(const SignalBlock&) = delete;
+    SignalBlock& operator=(const SignalBlock&) = delete;
+
+private:
+    sigset_t m_old;
+};
+
+}  // namespace glint::cli

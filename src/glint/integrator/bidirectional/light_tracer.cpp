@@ -1,0 +1,174 @@
+#include <glint/core/progress.h>
+#include <glint/core/rng.h>
+#include <glint/integrator/bidirectional/light_tracer.h>
+#include <glint/integrator/transport/transport.h>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <chrono>
+
+namespace glint {
+namespace {
+
+// Paths per chunk: the unit of parallel work and of the fixed order in which splats reach
+// the film.
+constexpr uint64_t kChunkPaths = 4096;
+// Chunks traced in parallel before their splats are added to the film, in chunk order:
+// bounds the splats held in memory at once, independently of the thread count.
+constexpr uint64_t kChunksPerBatch = 64;
+// A hard cap on a light path's scattering events, for where roulette never ends a path
+// (inside a closed lossless mirror every scattering weight is 1).
+constexpr int kMaxBounces = 1024;
+
+}  // namespace
+
+// What one chunk of paths produces: its splats, the rays it traced, and the random numbers
+// of the path being traced.
+struct LightTracer::Chunk {
+    std::vector<Splat> splats;
+    uint64_t rays = 0;
+    Arena arena;
+    Rng rng;
+
+    Vec2 next_2d() {
+        const float x = rng.next_float();
+        return Vec2(x, rng.next_float());
+    }
+};
+
+LightTracer::LightTracer(const RenderSettings& settings) : m_settings(settings) {}
+
+std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, const Params&) {
+    return std::make_unique<LightTracer>(settings);
+}
+
+RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();
+    const uint64_t paths = pixels * static_cast<uint64_t>(m_settings.spp);
+    // Camera::We is normalised over the whole image: a pixel's value is its splats times
+    // pixel count / paths (see camera.h).
+    film.set_splat_scale(static_cast<double>(pixels) / static_cast<double>(paths));
+    RenderStats stats;
+    const uint64_t chunks = (paths + kChunkPaths - 1) / kChunkPaths;
+    for (uint64_t first = 0; first < chunks; first += kChunksPerBatch) {
+        const uint64_t batch = std::min(kChunksPerBatch, chunks - first);
+        std::vector<Chunk> results(batch);
+        tbb::parallel_for(uint64_t{0}, batch, [&](uint64_t b) {
+            const uint64_t chunk = first + b;
+            const uint64_t end = std::min(paths, (chunk + 1) * kChunkPaths);
+            for (uint64_t index = chunk * kChunkPaths; index < end; ++index)
+                trace_path(scene, index, results[b]);
+            progress.advance(end - chunk * kChunkPaths);
+        });
+        for (const Chunk& chunk : results) {
+            film.add_splats(chunk.splats);
+            stats.rays += chunk.rays;
+        }
+    }
+    stats.samples = paths;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+// One light path: a light chosen by power, a ray from it, then scattering in importance
+// mode until roulette, the depth limit or an escape ends it; the light's point and every
+// non-specular vertex connect to the camera. Draws, from an RNG keyed by (seed, index): the
+// light (1D), the ray's origin (2D) and direction (2D), the light's part (1D), the lens
+// point of the light's own connection (2D); then per vertex the lens point (2D), the BSDF
+// sample (2D + 1D) and roulette (1D).
+void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const {
+    chunk.rng.seed(hash_combine(mix_bits(m_settings.seed ^ 0x4c54u), index));
+    chunk.arena.reset();
+    const LightSampler::Choice choice = scene.light_sampler().sample(chunk.rng.next_float());
+    const Vec2 u_position = chunk.next_2d();
+    const Vec2 u_direction = chunk.next_2d();
+    const float u_select = chunk.rng.next_float();
+    const Vec2 u_light_lens = chunk.next_2d();
+    if (!choice.light) return;
+    const std::optional<LightEmission> emission =
+        choice.light->sample_le(u_position, u_direction, u_select);
+    if (!emission) return;
+    connect_light_to_camera(scene, *emission, *choice.light, choice.pmf, u_light_lens, chunk);
+
+    Spectrum beta = emission->beta() / choice.pmf;
+    if (beta.is_black()) return;
+    Ray ray = emission->ray;
+    const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : kMaxBounces;
+    for (int bounce = 1; bounce <= max_bounces; ++bounce) {
+        ++chunk.rays;
+        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        if (!hit) return;
+        SurfaceInteraction& si = *hit;
+        beta *= segment_transmittance(ray, si);
+        const Bsdf* bsdf = shade(scene, ray, si, chunk.arena);
+        if (!bsdf) return;
+        const Vec2 u_lens = chunk.next_2d();
+        if (!bsdf->is_delta()) connect_to_camera(scene, si, *bsdf, beta, u_lens, chunk);
+        if (bounce == max_bounces) return;
+
+        const Vec2 u = chunk.next_2d();
+        const float u_lobe = chunk.rng.next_float();
+        const std::optional<Scattering> scattering =
+            sample_scattering(si, *bsdf, si.to_local(si.wo), u, u_lobe, TransportMode::kImportance);
+        if (!scattering) return;
+        // Russian roulette keeps a particle's power roughly constant: it survives with the
+        // probability its scattering keeps (at most 1 in importance mode, where refraction
+        // carries no 1/eta^2).
+        const float survive = std::min(1.0f, scattering->weight.max_value());
+        if (!(survive > 0.0f) || chunk.rng.next_float() >= survive) return;
+        beta *= scattering->weight / survive;
+        continue_ray(ray, si, *scattering);
+    }
+}
+
+// The strategy that sees a non-specular surface lit by the path: the surface point
+// connected to a point on the lens, splatted where that connection lands on the film.
+void LightTracer::connect_to_camera(const Scene& scene, const SurfaceInteraction& si,
+                                    const Bsdf& bsdf, const Spectrum& beta, const Vec2& u_lens,
+                                    Chunk& chunk) const {
+    const std::optional<CameraWiSample> camera = scene.camera().sample_wi(si.p, u_lens);
+    if (!camera || camera->We.is_black() || !(camera->pdf > 0.0f)) return;
+    const Vec3 wi_local = si.to_local(camera->wi);
+    // Importance mode: wo is where the particle came from, wi where it goes (the camera).
+    const Spectrum f =
+        bsdf.eval(si.to_local(si.wo), wi_local, TransportMode::kImportance, si.to_local(si.ng));
+    if (f.is_black()) return;
+    ++chunk.rays;
+    if (scene.occluded(si, camera->p_lens)) return;
+    const Spectrum L = beta * f * (abs_cos_theta(wi_local) / camera->pdf) * camera->We;
+    chunk.splats.push_back({camera->film, L});
+}
+
+// The strategy that sees an emitting surface directly: the light's own point connected to
+// the lens. Lights without a surface are left out: point and spot lights are invisible to
+// the camera in every glint integrator, and lights at infinity have no point to connect.
+void LightTracer::connect_light_to_camera(const Scene& scene, const LightEmission& emission,
+                                          const Light& light, float light_pmf, const Vec2& u_lens,
+                                          Chunk& chunk) const {
+    const bool has_surface = emission.n != Vec3(0.0f);
+    if (!has_surface || light.is_infinite() || !(emission.pdf_pos > 0.0f)) return;
+    const Vec3& p = emission.ray.origin;
+    const std::optional<CameraWiSample> camera = scene.camera().sample_wi(p, u_lens);
+    if (!camera || camera->We.is_black() || !(camera->pdf > 0.0f)) return;
+    // The ray's origin is lifted off the side of the surface sample_le chose (its normal n):
+    // only that side can connect without hitting the light itself. A two-sided light
+    // chooses each side half the time, so the side facing the camera is counted double.
+    const float cosine = glm::dot(emission.n, camera->wi);
+    if (!(cosine > 0.0f)) return;
+    const Spectrum Le = light.emitted(p, emission.n, camera->wi);
+    if (Le.is_black()) return;
+    const bool two_sided = !light.emitted(p, emission.n, -emission.n).is_black();
+    const float side_pdf = two_sided ? 0.5f : 1.0f;
+    ++chunk.rays;
+    const Vec3 to_lens = camera->p_lens - p;
+    if (scene.occluded(Ray{p, to_lens, 0.0f, kShadowRayEnd})) return;
+    // The point was chosen with density pdf_pos per area and the lens point with `pdf` per
+    // solid angle at p: Le |cos| We / (pmf side pdf_pos pdf).
+    const Spectrum L =
+        Le * camera->We * (cosine / (light_pmf * side_pdf * emission.pdf_pos * camera->pdf));
+    chunk.splats.push_back({camera->film, L});
+}
+
+}  // namespace glint

@@ -1,0 +1,341 @@
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <glint/core/rng.h>
+#include <glint/integrator/bidirectional/bdpt.h>
+#include <glint/integrator/bidirectional/vcm.h>
+#include <glint/material/material.h>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+
+namespace glint {
+namespace {
+
+constexpr int kTileSize = 16;
+// Light subpaths per chunk: the unit of parallel work of the light pass and of the fixed
+// order in which its splats reach the film.
+constexpr int kChunkPaths = 256;
+// The light subpaths take their random numbers from a sampler of their own, seeded apart
+// from the camera's, so that the two subpaths of a pixel are independent.
+constexpr uint64_t kLightSeedSalt = 0x56434d4c49474854ULL;
+
+// A photon: vertex `vertex` (>= 1) of light subpath `path`, with a copy of its position so
+// that a gather rejects the photons outside its disc without reaching for the vertex (a cache
+// miss each: the vertices are large and scattered over the subpaths).
+struct PhotonRef {
+    Vec3 p;
+    uint32_t path;
+    uint32_t vertex;
+};
+
+// The photons of an iteration in a uniform grid of cells 2r wide, hashed into as many
+// buckets as photons, each bucket a range of one array (in the photons' order, so that a
+// query visits them in a fixed order). A disc of radius r around a point lies within the
+// 2 x 2 x 2 cells nearest to it.
+class PhotonGrid {
+public:
+    void build(std::vector<PhotonRef> photons, float radius) {
+        m_inverse_cell = 1.0f / (2.0f * radius);
+        const size_t n = photons.size();
+        m_begin.assign(std::max<size_t>(n, 1) + 1, 0);
+        std::vector<uint32_t> bucket_of(n);
+        for (size_t i = 0; i < n; ++i) {
+            bucket_of[i] = bucket(cell_of(photons[i].p));
+            ++m_begin[bucket_of[i] + 1];
+        }
+        for (size_t b = 1; b < m_begin.size(); ++b) m_begin[b] += m_begin[b - 1];
+        m_photons.resize(n);
+        std::vector<uint32_t> next(m_begin.begin(), m_begin.end() - 1);
+        for (size_t i = 0; i < n; ++i) m_photons[next[bucket_of[i]]++] = photons[i];
+    }
+
+    // Calls visit(photon) for every photon in the cells a disc of radius r around `p` can
+    // reach (a superset of those within r), each once, in a fixed order.
+    template <typename Visit>
+    void for_each_near(const Vec3& p, Visit&& visit) const {
+        if (m_photons.empty()) return;
+        const Vec3 c = p * m_inverse_cell;
+        const glm::ivec3 base = glm::ivec3(glm::floor(c - Vec3(0.5f)));
+        uint32_t buckets[8];
+        int count = 0;
+        for (int i = 0; i < 8; ++i)
+            buckets[count++] = bucket(base + glm::ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
+        // Two cells may share a bucket: visit it once.
+        std::sort(buckets, buckets + count);
+        count = static_cast<int>(std::unique(buckets, buckets + count) - buckets);
+        for (int i = 0; i < count; ++i)
+            for (uint32_t j = m_begin[buckets[i]]; j < m_begin[buckets[i] + 1]; ++j)
+                visit(m_photons[j]);
+    }
+
+private:
+    glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p * m_inverse_cell)); }
+    uint32_t bucket(const glm::ivec3& c) const {
+        const uint64_t h =
+            hash_combine(hash_combine(static_cast<uint32_t>(c.x), static_cast<uint32_t>(c.y)),
+                         static_cast<uint32_t>(c.z));
+        return static_cast<uint32_t>(h % (m_begin.size() - 1));
+    }
+
+    float m_inverse_cell = 1.0f;
+    std::vector<uint32_t> m_begin;  // bucket b holds m_photons[m_begin[b], m_begin[b + 1])
+    std::vector<PhotonRef> m_photons;
+};
+
+}  // namespace
+
+// What the passes of one iteration share.
+struct VcmIntegrator::Iteration {
+    int index = 0;
+    float radius = 0.0f;
+    float eta = 0.0f;                  // n_L pi r^2: the merges' count against a connection's 1
+    float merge_scale = 0.0f;          // the kernel over the light subpaths: 1 / (n_L pi r^2)
+    float light_tracing_count = 1.0f;  // n_L / n_C: light tracing's count (bdpt_mis.h)
+    WalkLimits camera_limits, light_limits;
+    const Sampler* camera_sampler = nullptr;  // prototypes
+    const Sampler* light_sampler = nullptr;
+    std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
+    std::vector<Arena> arenas;                         // per chunk: the light BSDFs
+    std::vector<std::vector<Splat>> splats;            // per chunk
+    PhotonGrid grid;
+    mutable std::atomic<uint64_t> rays{0};
+    Progress* progress = nullptr;
+};
+
+VcmSettings VcmSettings::read(const Params& p) {
+    VcmSettings s;
+    s.radius = p.get_float("vcm_radius", s.radius);
+    s.alpha = p.get_float("vcm_alpha", s.alpha);
+    s.light_paths = p.get_int("vcm_light_paths", s.light_paths);
+    if (!(s.radius >= 0.0f && s.radius <= 1e12f))
+        p.fail_at("vcm_radius", "'vcm_radius' must be in [0, 1e12] (0: from the scene's size)");
+    if (!(s.alpha > 0.0f && s.alpha <= 1.0f))
+        p.fail_at("vcm_alpha", "'vcm_alpha' must be in (0, 1] (1 keeps the radius fixed)");
+    if (s.light_paths < 0 || s.light_paths > VcmSettings::kMaxLightPaths)
+        p.fail_at("vcm_light_paths",
+                  fmt::format("'vcm_light_paths' must be in [0, {}] (0: one per pixel)",
+                              VcmSettings::kMaxLightPaths));
+    return s;
+}
+
+VcmIntegrator::VcmIntegrator(const RenderSettings& settings, const VcmSettings& vcm)
+    : m_settings(settings), m_vcm(vcm) {
+    auto blame = [&](const char* key, auto&& check) {
+        try {
+            check();
+        } catch (const Error& e) {
+            throw Error(fmt::format("{}: {}", settings.where_of(key), e.what()));
+        }
+    };
+    blame("filter", [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
+    blame("sampler", [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
+    blame("adaptive", [&] {
+        if (settings.adaptive != "none")
+            throw Error(fmt::format("integrator 'vcm' has no adaptive sampling (adaptive '{}')",
+                                    settings.adaptive));
+    });
+}
+
+std::unique_ptr<Integrator> VcmIntegrator::create(const RenderSettings& settings,
+                                                  const Params& params) {
+    return std::make_unique<VcmIntegrator>(settings, VcmSettings::read(params));
+}
+
+float VcmIntegrator::radius_at(float r0, float alpha, int iteration) {
+    return r0 * std::pow(static_cast<float>(iteration + 1), 0.5f * (alpha - 1.0f));
+}
+
+RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    const int w = film.width(), h = film.height();
+    const size_t pixels = static_cast<size_t>(w) * h;
+    const size_t n_light = m_vcm.light_paths > 0 ? static_cast<size_t>(m_vcm.light_paths) : pixels;
+    // A light subpath's splat is an estimate of the whole image as one light path per pixel
+    // would make it (the lens importance is normalised over the frame, camera.h): n_L of them
+    // per iteration make pixels / n_L of that image each. With n_L = pixels the scale is
+    // 1 / spp (exactly: both roundings are of the same quotient), as bdpt's.
+    film.set_splat_scale(static_cast<double>(pixels) /
+                         (static_cast<double>(n_light) * m_settings.spp));
+    const SceneStats& scene_stats = scene.stats();
+    const float scene_size =
+        scene_stats.bounds.is_empty() ? 1.0f : glm::length(scene_stats.bounds.extent());
+    const float r0 = m_vcm.radius > 0.0f ? m_vcm.radius : scene_size / 256.0f;
+    const auto camera_sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
+    const auto light_sampler = make_sampler(m_settings.sampler, m_settings.spp,
+                                            mix_bits(m_settings.seed ^ kLightSeedSalt));
+    const int max_depth = m_settings.max_depth;
+
+    Iteration it;
+    // Paths of at most max_depth bounces: max_depth + 2 vertices, as bdpt's.
+    it.camera_limits = WalkLimits{max_depth >= 0 ? max_depth + 2 : kMaxVertices, true};
+    it.light_limits = WalkLimits{max_depth >= 0 ? max_depth + 1 : kMaxVertices, true};
+    it.camera_sampler = camera_sampler.get();
+    it.light_sampler = light_sampler.get();
+    it.light_tracing_count =
+        static_cast<float>(static_cast<double>(n_light) / static_cast<double>(pixels));
+    it.light_paths.resize(n_light);
+    const int chunks = static_cast<int>((n_light + kChunkPaths - 1) / kChunkPaths);
+    it.arenas.resize(chunks);
+    it.splats.resize(chunks);
+    it.progress = &progress;
+    const int tiles_x = (w + kTileSize - 1) / kTileSize, tiles_y = (h + kTileSize - 1) / kTileSize;
+    RenderStats stats;
+    std::vector<PhotonRef> photons;
+    for (int iteration = 0; iteration < m_settings.spp; ++iteration) {
+        it.index = iteration;
+        it.radius = radius_at(r0, m_vcm.alpha, iteration);
+        const double area = kPi * static_cast<double>(it.radius) * it.radius;
+        it.eta = static_cast<float>(static_cast<double>(n_light) * area);
+        it.merge_scale = static_cast<float>(1.0 / (static_cast<double>(n_light) * area));
+
+        tbb::parallel_for(0, chunks, [&](int chunk) { trace_light_chunk(scene, film, it, chunk); });
+        for (std::vector<Splat>& splats : it.splats) film.add_splats(splats);
+
+        // The photons in subpath order, vertex order within a subpath.
+        photons.clear();
+        for (size_t i = 0; i < n_light; ++i) {
+            const std::vector<PathVertex>& path = it.light_paths[i];
+            for (size_t v = 1; v < path.size(); ++v) {
+                if (path[v].is_surface() && path[v].connectible())
+                    photons.push_back(
+                        {path[v].p, static_cast<uint32_t>(i), static_cast<uint32_t>(v)});
+            }
+        }
+        it.grid.build(photons, it.radius);
+
+        tbb::parallel_for(0, tiles_x * tiles_y,
+                          [&](int tile) { render_tile(scene, film, it, tile); });
+        stats.samples += pixels;
+    }
+    stats.rays = it.rays.load();
+    stats.notes.push_back(
+        fmt::format("vcm: {} light subpaths per iteration, merging radius {:.4g} at the first "
+                    "iteration, {:.4g} at the last",
+                    n_light, r0, radius_at(r0, m_vcm.alpha, m_settings.spp - 1)));
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
+// The light subpaths of one chunk, and their joins to the lens (t = 1). Light subpath i draws
+// from the light sampler at (pixel (i mod width, i div width), iteration) -- rows past the
+// image's last stand for the subpaths beyond one per pixel; the sampler keys on the pixel
+// alone, so they are as independent as those of real pixels: the subpath (subpath.h), then a
+// lens point (2D) per strategy (s, 1), s = 1, 2, ...
+void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iteration& it,
+                                      int chunk) const {
+    const int w = film.width();
+    const size_t n_light = it.light_paths.size();
+    const size_t begin = static_cast<size_t>(chunk) * kChunkPaths;
+    const size_t end = std::min(n_light, begin + kChunkPaths);
+    const int max_depth = m_settings.max_depth;
+    auto sampler = it.light_sampler->clone();
+    Arena& arena = it.arenas[chunk];
+    arena.reset();  // the BSDFs of this chunk's subpaths live until the camera pass is done
+    std::vector<Splat>& splats = it.splats[chunk];
+    splats.clear();
+    RayCounter counter;
+    std::vector<MisVertex> scratch;
+    // t = 1 stands the lens point it samples in for the camera subpath.
+    const PathVertex no_camera[1] = {};
+    for (size_t i = begin; i < end; ++i) {
+        const Vec2i pixel(static_cast<int>(i % w), static_cast<int>(i / w));
+        sampler->start_pixel_sample(pixel, it.index);
+        std::vector<PathVertex>& light = it.light_paths[i];
+        generate_light_subpath(scene, *sampler, arena, counter, it.light_limits, light);
+        for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
+            if (max_depth >= 0 && s - 1 > max_depth) break;
+            const StrategyContribution c =
+                connect_strategy(scene, light, no_camera, s, 1, *sampler, counter,
+                                 MisHeuristic::kBalance, scratch, it.eta, it.light_tracing_count);
+            if (!c.L.is_black()) splats.push_back({c.film, c.L});
+        }
+    }
+    it.rays += counter.rays;
+}
+
+// One camera subpath per pixel of the tile: every connection with one light subpath (t >= 2,
+// t outer, s inner, as bdpt), then the merges at each of its vertices in order. Pixel j (row-
+// major) connects to light subpath j mod n_L: each camera subpath needs one light subpath
+// independent of itself, and any fixed choice is unbiased; with n_L >= pixels each pixel has
+// one of its own (the default: its own pixel's), with fewer the pixels that share one are n_L
+// apart in scan order, rows apart, so the error they share is not a visible block.
+// Draws, from the camera sampler at (pixel, iteration): the filter (2D), the camera ray, the
+// subpath (subpath.h), then the strategies' draws (connect_strategy).
+void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration& it,
+                                int tile) const {
+    const int tiles_x = (film.width() + kTileSize - 1) / kTileSize;
+    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, film.width());
+    const int y1 = std::min(y0 + kTileSize, film.height());
+    const int max_depth = m_settings.max_depth;
+    const float radius2 = it.radius * it.radius;
+    auto sampler = it.camera_sampler->clone();
+    Arena arena;
+    RayCounter counter;
+    std::vector<PathVertex> camera;
+    std::vector<MisVertex> scratch;
+    for (int y = y0; y < y1; ++y) {
+        for (int x = x0; x < x1; ++x) {
+            const Vec2i pixel(x, y);
+            sampler->start_pixel_sample(pixel, it.index);
+            const FilterSample filter = m_filter->sample(sampler->get_pixel_2d());
+            const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
+            const Ray ray = scene.camera().sample_ray(film_point, *sampler);
+            arena.reset();
+            generate_camera_subpath(scene, ray, *sampler, arena, counter, it.camera_limits, camera);
+            const std::vector<PathVertex>& light =
+                it.light_paths[(static_cast<size_t>(y) * film.width() + x) % it.light_paths.size()];
+            Spectrum L(0.0f);
+            const int n_camera = static_cast<int>(camera.size());
+            const int n_light = std::max(1, static_cast<int>(light.size()));
+            for (int t = 2; t <= n_camera; ++t) {
+                for (int s = 0; s <= n_light; ++s) {
+                    if (max_depth >= 0 && s + t - 2 > max_depth) continue;
+                    L += connect_strategy(scene, light, camera, s, t, *sampler, counter,
+                                          MisHeuristic::kBalance, scratch, it.eta,
+                                          it.light_tracing_count)
+                             .L;
+                }
+            }
+            for (int t = 2; t <= n_camera; ++t) {
+                const PathVertex& pt = camera[t - 1];
+                if (!pt.is_surface() || !pt.connectible()) continue;
+                const Vec3 wo_local = pt.si.to_local(pt.si.wo);
+                it.grid.for_each_near(pt.p, [&](const PhotonRef& ref) {
+                    const int s = static_cast<int>(ref.vertex);
+                    if (max_depth >= 0 && s + t - 2 > max_depth) return;
+                    if (length_squared(ref.p - pt.p) > radius2) return;
+                    const std::vector<PathVertex>& path = it.light_paths[ref.path];
+                    const PathVertex& photon = path[ref.vertex];
+                    // A photon on the other side of a surface (a thin wall) lights that side.
+                    if (!(glm::dot(photon.ng, pt.ng) > 0.0f)) return;
+                    const Spectrum f = pt.bsdf->eval(wo_local, pt.si.to_local(photon.si.wo));
+                    if (f.is_black()) return;
+                    const float weight = merge_mis_weight(
+                        scene, std::span(path).first(ref.vertex), camera, s, t, it.eta,
+                        MisHeuristic::kBalance, scratch, it.light_tracing_count);
+                    L += pt.beta * f * photon.beta * (it.merge_scale * weight);
+                });
+            }
+            AovSample aov{};
+            if (film.has_aovs() && n_camera > 1) {
+                const PathVertex& first = camera[1];
+                if (first.kind == PathVertex::Kind::kEscape)
+                    aov = AovSample{scene.escaped_radiance(first.w_sky), Vec3(0.0f), kInfinity};
+                else
+                    aov = AovSample{first.si.material->albedo(first.si), first.si.shading.n(),
+                                    first.si.t};
+            }
+            film.add_sample(pixel, L, filter.weight, film.has_aovs() ? &aov : nullptr);
+        }
+    }
+    it.progress->advance(static_cast<uint64_t>(x1 - x0) * (y1 - y0));
+    it.rays += counter.rays;
+}
+
+}  // namespace glint

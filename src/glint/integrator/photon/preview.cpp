@@ -1,0 +1,470 @@
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <glint/core/rng.h>
+#include <glint/core/sampler.h>
+#include <glint/integrator/photon/photon_tracer.h>
+#include <glint/integrator/photon/preview.h>
+#include <glint/integrator/transport/transport.h>
+#include <glint/math/frame.h>
+#include <glint/math/warp.h>
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <bit>
+#include <chrono>
+
+namespace glint {
+namespace {
+
+// Knaus and Zwicker's alpha: the radius shrinks so that bias and variance both vanish.
+constexpr float kAlpha = 2.0f / 3.0f;
+constexpr int kMaxCameraSegments = 16;
+// The camera pass's packets: blocks of 4 x 2 pixels.
+constexpr int kBlockWidth = 4, kBlockHeight = 2;
+static_assert(kBlockWidth * kBlockHeight == kPacketWidth);
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// Keeps the photons that reached their first non-specular surface through mirrors and glass.
+struct CausticSink {
+    std::vector<Photon> photons;
+    void store(const PhotonHit& hit) {
+        if (hit.caustic) photons.push_back({hit.si->p, hit.wi, hit.power});
+    }
+};
+
+// The fraction of the light leaving the scene's surfaces that meets another surface rather
+// than escaping: from surface points found by rays from random points of the bounds, the
+// fraction of cosine-distributed directions that hit something (256 probes, fixed seed).
+float enclosure(const Scene& scene) {
+    const Bounds3& bounds = scene.stats().bounds;
+    if (bounds.is_empty()) return 0.0f;
+    Rng rng(0x2545f4914f6cdd1dull);
+    int probes = 0, enclosed = 0;
+    for (int i = 0; i < 4096 && probes < 256; ++i) {
+        Ray ray;
+        ray.origin = bounds.min +
+                     bounds.extent() * Vec3(rng.next_float(), rng.next_float(), rng.next_float());
+        ray.direction = warp::square_to_uniform_sphere(Vec2(rng.next_float(), rng.next_float()));
+        const std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        if (!hit) continue;
+        // Light leaves the side the probe arrived from.
+        const Vec3 n = glm::dot(hit->ng, ray.direction) < 0.0f ? hit->ng : -hit->ng;
+        const Vec3 w = warp::square_to_cosine_hemisphere(Vec2(rng.next_float(), rng.next_float()));
+        ++probes;
+        if (scene.intersect(spawn_ray(*hit, Frame::from_normal(n).to_world(w)))) ++enclosed;
+    }
+    return probes > 0 ? static_cast<float>(enclosed) / static_cast<float>(probes) : 0.0f;
+}
+
+// The preview's sampler: one sample per pixel per pass, the pass being the sample index.
+// The film position is the pass's point of the 2D Sobol sequence (van der Corput and
+// Sobol's second dimension, a (0,2)-sequence: any 2^k consecutive passes stratify the
+// pixel), shifted by a per-pixel random offset modulo 1 (Cranley-Patterson rotation), so
+// that pixels do not share their jitter; every other value is drawn from a PCG stream keyed
+// by (seed, pixel, pass). The preview is biased already and its noise is the photons';
+// this costs a few hashes per pixel where the Owen-scrambled Sobol sampler costs a
+// scramble per group of four values, 7 % of the camera pass. Like every sampler it depends
+// only on (seed, pixel, pass): the image is the same for any thread count.
+class PassSampler final : public Sampler {
+public:
+    explicit PassSampler(uint64_t seed = 0) : Sampler(1, seed) {}
+
+    void start_pixel_sample(Vec2i pixel, int index) override {
+        const uint64_t packed = (static_cast<uint64_t>(static_cast<uint32_t>(pixel.x)) << 32) |
+                                static_cast<uint32_t>(pixel.y);
+        const uint64_t pixel_key = hash_combine(m_seed_key, packed);
+        m_shift = pixel_key;
+        m_index = static_cast<uint32_t>(index);
+        m_rng.seed(hash_combine(pixel_key, m_index));
+    }
+    float get_1d() override { return m_rng.next_float(); }
+    Vec2 get_2d() override {
+        const float x = m_rng.next_float();
+        return Vec2(x, m_rng.next_float());
+    }
+    // The rotated Sobol point; wrapping 32-bit addition is the shift modulo 1.
+    Vec2 get_pixel_2d() override {
+        const uint32_t x = bit_reverse(m_index) + static_cast<uint32_t>(m_shift);
+        const uint32_t y = sobol_second(m_index) + static_cast<uint32_t>(m_shift >> 32);
+        return Vec2(static_cast<float>(x >> 8) * 0x1p-24f, static_cast<float>(y >> 8) * 0x1p-24f);
+    }
+    std::unique_ptr<Sampler> clone() const override {
+        return std::make_unique<PassSampler>(m_seed);
+    }
+    void set_seed(uint64_t seed) {
+        m_seed = seed;
+        m_seed_key = mix_bits(seed);
+    }
+
+private:
+    static uint32_t bit_reverse(uint32_t v) {
+        v = ((v >> 1) & 0x55555555u) | ((v & 0x55555555u) << 1);
+        v = ((v >> 2) & 0x33333333u) | ((v & 0x33333333u) << 2);
+        v = ((v >> 4) & 0x0f0f0f0fu) | ((v & 0x0f0f0f0fu) << 4);
+        v = ((v >> 8) & 0x00ff00ffu) | ((v & 0x00ff00ffu) << 8);
+        return (v >> 16) | (v << 16);
+    }
+    // Sobol's second dimension: its generator matrix is Pascal's triangle mod 2, whose
+    // column k is the previous one xor itself shifted by one.
+    static uint32_t sobol_second(uint32_t index) {
+        uint32_t result = 0;
+        for (uint32_t column = 1u << 31; index != 0; index >>= 1, column ^= column >> 1)
+            if (index & 1u) result ^= column;
+        return result;
+    }
+
+    uint64_t m_seed_key = mix_bits(m_seed);
+    uint64_t m_shift = 0;
+    uint32_t m_index = 0;
+    Rng m_rng;
+};
+
+}  // namespace
+
+PreviewSettings PreviewSettings::read(const Params& p) {
+    PreviewSettings s;
+    s.photons = p.get_int("preview_photons", s.photons);
+    s.window = p.get_int("preview_window", s.window);
+    s.radius = p.get_float("preview_radius", s.radius);
+    s.ambient = p.get_float("preview_ambient", s.ambient);
+    if (s.photons < 0 || s.photons > 100000000)
+        p.fail_at("preview_photons", "'preview_photons' must be in [0, 1e8] (photons per pass)");
+    if (s.window < 1 || s.window > 1024)
+        p.fail_at("preview_window", "'preview_window' must be in [1, 1024] (passes of photons)");
+    if (!(s.radius >= 0.0f && s.radius <= 1e12f))
+        p.fail_at("preview_radius",
+                  "'preview_radius' must be in [0, 1e12] (0: from the scene's size)");
+    if (!(s.ambient >= 0.0f && s.ambient <= 1e6f))
+        p.fail_at("preview_ambient", "'preview_ambient' must be in [0, 1e6] (0: no ambient term)");
+    return s;
+}
+
+std::unique_ptr<Integrator> PreviewIntegrator::create(const RenderSettings& settings,
+                                                      const Params& params) {
+    // No tile loop checks the sampler's name: check it here, before any scene is built.
+    try {
+        make_sampler(settings.sampler, settings.spp, settings.seed);
+    } catch (const Error& e) {
+        throw Error(fmt::format("{}: {}", settings.where_of("sampler"), e.what()));
+    }
+    // A pass is one sample in every pixel: there is nothing to adapt.
+    if (settings.adaptive != "none") {
+        throw Error(fmt::format("{}: integrator 'preview' has no adaptive sampling (adaptive '{}')",
+                                settings.where_of("adaptive"), settings.adaptive));
+    }
+    return std::make_unique<PreviewIntegrator>(settings, PreviewSettings::read(params));
+}
+
+PreviewIntegrator::PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview)
+    : m_settings(settings), m_preview(preview) {}
+
+void PreviewIntegrator::scene_changed(SceneChange change) {
+    // World-space photons do not depend on the camera; anything else may move them.
+    if (change != SceneChange::camera) m_scene = nullptr;
+}
+
+// Drops the photons and prepares what depends on the lights and objects.
+void PreviewIntegrator::restart(const Scene& scene) {
+    m_scene = &scene;
+    m_batches.clear();
+    m_grid = PhotonGrid();
+    m_photon_passes = 0;
+    const Bounds3& bounds = scene.stats().bounds;
+    const Vec3 extent = bounds.is_empty() ? Vec3(1.0f) : bounds.extent();
+    const float diagonal = glm::length(extent);
+    const float r0 = m_preview.radius > 0.0f ? m_preview.radius : diagonal / 400.0f;
+    m_radius2 = r0 * r0;
+
+    m_projections.assign(scene.lights().size(), std::nullopt);
+    for (size_t i = 0; i < scene.lights().size(); ++i) {
+        if (ProjectionMap::supports(*scene.lights()[i]))
+            m_projections[i].emplace(scene, *scene.lights()[i]);
+    }
+
+    // The ambient term stands for the light that is neither direct nor caustic, after
+    // Cohen et al.'s ambient term of progressive radiosity (1988). Light leaving a surface
+    // meets another with probability c (enclosure(), 1 in a closed room) and is reflected
+    // there with an albedo taken as 1/2, so the light of all later bounces is the lights'
+    // power times k / (1 - k), k = c / 2; spread over the surfaces (the bounding box's
+    // area A stands for theirs), that is an irradiance of power x k / (1 - k) / A and a
+    // radiance of albedo x that / pi. The fraction 1 - c of directions that escape sees
+    // the constant background instead (an environment light is sampled as direct light).
+    const float c = enclosure(scene);
+    const float k = 0.5f * c;
+    Spectrum power(0.0f);
+    for (const auto& light : scene.lights()) {
+        const Spectrum p = light->power();
+        if (light.get() != scene.environment() && p.is_finite()) power += p;
+    }
+    const float area = 2.0f * (extent.x * extent.y + extent.y * extent.z + extent.z * extent.x);
+    const Spectrum bounced = area > 0.0f ? power * (k / (1.0f - k) / (kPi * area)) : Spectrum(0.0f);
+    const Spectrum sky = scene.environment() ? Spectrum(0.0f) : scene.background() * (1.0f - c);
+    m_ambient = (bounced + sky) * m_preview.ambient;
+}
+
+void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
+    if (m_photon_passes > 0) m_radius2 *= (m_photon_passes + kAlpha) / (m_photon_passes + 1.0f);
+    const uint64_t count = static_cast<uint64_t>(m_preview.photons);
+    PhotonEmitter emitter = [this](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
+        const auto& projection = m_projections[static_cast<size_t>(light.index())];
+        return projection ? projection->sample(light, u1, u2, u3) : light.sample_le(u1, u2, u3);
+    };
+    const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
+    const PhotonTracer tracer(scene, max_bounces, emitter, true);
+    // Batch g is photons [g count, (g + 1) count) of one sequence: every batch differs, and
+    // the same passes trace the same photons for any thread count.
+    const auto sinks = tracer.trace(static_cast<uint64_t>(m_photon_passes) * count, count,
+                                    m_settings.seed + 1, stats.rays, [] { return CausticSink{}; });
+    std::vector<Photon> batch;
+    for (const CausticSink& sink : sinks)
+        batch.insert(batch.end(), sink.photons.begin(), sink.photons.end());
+    // Each batch is an estimate on its own: its photons carry power per emitted photon.
+    const float scale = count > 0 ? 1.0f / static_cast<float>(count) : 0.0f;
+    for (Photon& photon : batch) photon.power *= scale;
+
+    const size_t window = static_cast<size_t>(m_preview.window);
+    if (m_batches.size() < window)
+        m_batches.push_back(std::move(batch));
+    else
+        m_batches[static_cast<size_t>(m_photon_passes) % window] = std::move(batch);
+    ++m_photon_passes;
+
+    std::vector<Photon> kept;
+    for (const std::vector<Photon>& b : m_batches) kept.insert(kept.end(), b.begin(), b.end());
+    m_grid.build(kept, std::sqrt(m_radius2));
+}
+
+// What the lanes of a block of pixels carry from its camera packet to its shadow packet.
+struct PreviewIntegrator::CameraLanes {
+    PerLane<PassSampler> samplers;
+    PerLane<Vec2i> pixels;
+    PerLane<Ray> rays;
+    PerLane<SurfaceInteraction> si;
+    PerLane<SpecularChain> chains;  // for the lanes whose camera ray met a mirror or glass
+    PerLane<Spectrum> L;
+    PhotonGrid::Cache photon_cache;  // the lanes' caustic estimates, one after the other
+};
+
+// The caustic photons within the radius of `si`, each batch an estimate of its own (Knaus
+// and Zwicker): sum f Phi / (pi r^2) over the photons, divided by the batches kept.
+Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                                             PhotonGrid::Cache& cache) const {
+    const Vec3 wo = si.to_local(si.wo);
+    const float viewer_side = glm::dot(si.wo, si.ng);
+    Spectrum sum(0.0f);
+    m_grid.for_each_near(si.p, cache, [&](const Photon& photon) {
+        if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) return;  // the other side
+        sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power;
+    });
+    const float batches = static_cast<float>(m_batches.size());
+    return sum / (kPi * m_radius2 * batches);
+}
+
+// Light leaving the first surface that is not purely specular towards the camera, but for
+// the direct light: the caustic photons and the ambient term.
+Spectrum PreviewIntegrator::indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                                              Spectrum reflected, PhotonGrid::Cache& cache) const {
+    if (m_grid.size() > 0) reflected += caustic_estimate(si, bsdf, cache);
+    reflected += m_ambient * si.material->albedo(si);
+    return reflected;
+}
+
+// The one-ray form, which the packet form below must match bit for bit (it is tested
+// against it): radiance along a camera ray through mirrors and glass to the first surface
+// that is not purely specular, where direct light, the caustic photons and the ambient
+// term meet.
+Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler,
+                                          Arena& arena, RayCounter& counter,
+                                          PhotonGrid::Cache& cache) const {
+    const SpecularChain chain = follow_specular_chain(scene, ray, Spectrum(1.0f), sampler, arena,
+                                                      counter, kMaxCameraSegments, nullptr);
+    Spectrum L = chain.emitted;
+    if (chain.escaped) return L + chain.beta * scene.escaped_radiance(chain.ray.direction);
+    if (!chain.hit) return L;
+    const SurfaceInteraction& si = *chain.hit;
+    const Bsdf& bsdf = *chain.bsdf;
+    const Spectrum direct =
+        estimate_direct_light(scene, si, bsdf, sampler, LightWeighting::kNone, counter);
+    return L + chain.beta * indirect_estimate(si, bsdf, direct, cache);
+}
+
+// The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
+// packet, and the shadow rays of their direct-light samples as another; both are coherent
+// (neighbouring pixels, one light), which Embree's packet kernels turn into fewer
+// instructions per ray. A ray whose first hit is a mirror or glass goes on alone, retraced
+// from the camera by follow_specular_chain (a few pixels; the chain then draws exactly
+// what the one-ray form draws). Each lane takes the steps camera_sample() takes with the
+// same draws, so each pixel gets what camera_sample() gives it, bit for bit.
+void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corner, int pass,
+                                     CameraLanes& lanes, Arena& arena, RayCounter& counter) const {
+    const int w = film.width(), h = film.height();
+    uint32_t active = 0;
+    PerLane<const Ray*> ray_of{};
+    PerLane<SurfaceInteraction*> si_of{};
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const int x = corner.x + lane % kBlockWidth, y = corner.y + lane / kBlockWidth;
+        if (x >= w || y >= h) continue;
+        // The film may be a window: pixels are named in the full image.
+        const Vec2i pixel = film.origin() + Vec2i(x, y);
+        PassSampler& sampler = lanes.samplers[lane];
+        sampler.start_pixel_sample(pixel, pass);
+        const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+        lanes.rays[lane] = scene.camera().sample_ray(film_point, sampler);
+        lanes.pixels[lane] = pixel;
+        ray_of[lane] = &lanes.rays[lane];
+        si_of[lane] = &lanes.si[lane];
+        active |= 1u << lane;
+    }
+    arena.reset();
+    counter.rays += static_cast<uint64_t>(std::popcount(active));
+    const uint32_t hit = scene.intersect_packet(ray_of, active, si_of, true);
+
+    PerLane<Spectrum> emitted, beta, reflected;
+    PerLane<const SurfaceInteraction*> surface{};
+    PerLane<const Bsdf*> bsdf_of{};
+    PerLane<Vec3> shadow_origins, shadow_directions;
+    uint32_t shading = 0, shadowed = 0;
+    for_each_lane(active, [&](int lane) {
+        const Ray& ray = lanes.rays[lane];
+        Spectrum& L = lanes.L[lane];
+        if (!(hit & (1u << lane))) {
+            L = scene.escaped_radiance(ray.direction);
+            return;
+        }
+        SurfaceInteraction& si = lanes.si[lane];
+        beta[lane] = segment_transmittance(ray, si);
+        emitted[lane] = beta[lane] * emitted_radiance(si);
+        const Bsdf* bsdf = shade(scene, ray, si, arena);
+        surface[lane] = &si;
+        if (bsdf && bsdf->is_delta()) {
+            // Through mirrors and glass, one ray at a time, from the camera again: the chain
+            // traces and counts the camera ray anew (few pixels see a mirror or glass).
+            --counter.rays;
+            lanes.chains[lane] =
+                follow_specular_chain(scene, ray, Spectrum(1.0f), lanes.samplers[lane], arena,
+                                      counter, kMaxCameraSegments, nullptr);
+            const SpecularChain& chain = lanes.chains[lane];
+            emitted[lane] = chain.emitted;
+            beta[lane] = chain.beta;
+            if (chain.escaped) {
+                L = chain.emitted + chain.beta * scene.escaped_radiance(chain.ray.direction);
+                return;
+            }
+            bsdf = chain.hit ? chain.bsdf : nullptr;
+            if (chain.hit) surface[lane] = &*chain.hit;
+        }
+        if (!bsdf) {
+            L = emitted[lane];
+            return;
+        }
+        bsdf_of[lane] = bsdf;
+        shading |= 1u << lane;
+        const SurfaceInteraction& at = *surface[lane];
+        reflected[lane] = Spectrum(0.0f);
+        const std::optional<DirectLight> direct = sample_direct_light(
+            scene, at, *bsdf, at.to_local(at.wo), lanes.samplers[lane], LightWeighting::kNone);
+        if (!direct) return;
+        reflected[lane] = direct->contribution;
+        const Scene::ShadowRay shadow = Scene::shadow_ray(at, direct->target);
+        shadow_origins[lane] = shadow.origin;
+        shadow_directions[lane] = shadow.direction;
+        shadowed |= 1u << lane;
+        ++counter.rays;
+    });
+    if (shadowed != 0) {
+        const uint32_t blocked =
+            scene.occluded_packet(shadow_origins, shadow_directions, shadowed, true);
+        for_each_lane(blocked, [&](int lane) { reflected[lane] = Spectrum(0.0f); });
+    }
+    for_each_lane(shading, [&](int lane) {
+        lanes.L[lane] =
+            emitted[lane] + beta[lane] * indirect_estimate(*surface[lane], *bsdf_of[lane],
+                                                           reflected[lane], lanes.photon_cache);
+    });
+    for_each_lane(active, [&](int lane) {
+        film.add_sample(lanes.pixels[lane], lanes.L[lane], 1.0f, nullptr);
+    });
+}
+
+RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int pass,
+                                           Progress& progress) {
+    if (pass < 0) throw Error(fmt::format("preview: pass {} is negative", pass));
+    RenderStats stats;
+    const auto start = std::chrono::steady_clock::now();
+    if (m_scene != &scene) restart(scene);
+    trace_photons(scene, stats);
+    m_timing.photons = seconds_since(start);
+
+    const auto camera_start = std::chrono::steady_clock::now();
+    const int w = film.width(), h = film.height();
+    std::atomic<uint64_t> camera_rays{0};
+    // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
+    // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
+    // photons, so the image is the same for any threads.
+    const int block_rows = (h + kBlockHeight - 1) / kBlockHeight;
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, block_rows, 2), [&](const tbb::blocked_range<int>& rows) {
+            Arena arena;
+            RayCounter counter;
+            if (m_packets) {
+                auto lanes = std::make_unique<CameraLanes>();
+                for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
+                for (int row = rows.begin(); row < rows.end(); ++row)
+                    for (int x = 0; x < w; x += kBlockWidth)
+                        render_block(scene, film, Vec2i(x, row * kBlockHeight), pass, *lanes, arena,
+                                     counter);
+            } else {
+                PassSampler sampler;
+                sampler.set_seed(m_settings.seed);
+                PhotonGrid::Cache cache;
+                for (int y = rows.begin() * kBlockHeight;
+                     y < std::min(h, rows.end() * kBlockHeight); ++y) {
+                    for (int x = 0; x < w; ++x) {
+                        const Vec2i pixel = film.origin() + Vec2i(x, y);
+                        sampler.start_pixel_sample(pixel, pass);
+                        const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+                        const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                        arena.reset();
+                        film.add_sample(pixel,
+                                        camera_sample(scene, ray, sampler, arena, counter, cache),
+                                        1.0f, nullptr);
+                    }
+                }
+            }
+            camera_rays += counter.rays;
+        });
+    stats.rays += camera_rays.load();
+    m_timing.camera = seconds_since(camera_start);
+    const uint64_t pixels = static_cast<uint64_t>(w) * static_cast<uint64_t>(h);
+    stats.samples = pixels;
+    progress.advance(pixels);
+    stats.seconds = seconds_since(start);
+    return stats;
+}
+
+RenderStats PreviewIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    const auto start = std::chrono::steady_clock::now();
+    m_scene = nullptr;  // a render starts from no photons
+    RenderStats stats;
+    double photon_seconds = 0.0;
+    for (int pass = 0; pass < m_settings.spp; ++pass) {
+        const RenderStats pass_stats = render_pass(scene, film, pass, progress);
+        stats.samples += pass_stats.samples;
+        stats.rays += pass_stats.rays;
+        photon_seconds += m_timing.photons;
+    }
+    stats.seconds = seconds_since(start);
+    stats.notes.push_back(fmt::format(
+        "preview: {} passes, {} caustic photons kept from the last {} batches, final radius "
+        "{:.4g}; photon passes took {:.2f} s of {:.2f} s",
+        m_photon_passes, m_grid.size(), m_batches.size(), std::sqrt(m_radius2), photon_seconds,
+        stats.seconds));
+    return stats;
+}
+
+}  // namespace glint

@@ -1,0 +1,102 @@
+#pragma once
+// The interactive preview with real-time caustics (issue 18). Each pass first traces a
+// batch of caustic photons (light - specular+ - first non-specular surface) from every
+// light, aimed at mirrors and glass with projection maps, and keeps the last few batches in
+// world space; then it traces one camera sample per pixel through mirrors and glass (one
+// Fresnel-chosen lobe per interface) to the first non-specular surface, where it adds
+// direct light (one light sample and its shadow ray), the caustic photons' density within
+// a global radius that shrinks from pass to pass (progressive photon mapping with Knaus and
+// Zwicker's radius schedule), and an ambient term for the light neither of those carries.
+// The film averages the passes, so the image converges while nothing changes; photons
+// survive a camera move (they are in world space) and are dropped when a light or an
+// object moves. For speed (15 frames per second at 640x480 is the aim) the camera rays of
+// 4 x 2 pixel blocks and their shadow rays are traced as Embree packets, the pass draws its
+// numbers from a cheap sampler of its own, and the photon grid caches its cells per thread;
+// see docs/integrators.md.
+#include <glint/integrator/tile/tile_integrator.h>
+#include <glint/integrator/photon/photon_grid.h>
+#include <glint/integrator/progressive.h>
+#include <glint/integrator/photon/projection_map.h>
+
+#include <optional>
+#include <vector>
+
+namespace glint {
+
+/// The settings of "preview", from glint.render{...}. Its keys carry the prefix so that a
+/// scene's settings for photon or sppm (whose `photons` mean far more photons) do not slow
+/// the preview down.
+struct PreviewSettings {
+    int photons = 20000;  ///< caustic photons emitted per pass (>= 0)
+    int window = 4;       ///< passes of photons kept and used by every estimate (>= 1)
+    /// Radius of the first pass's caustic estimate, in scene units (>= 0); 0 means 1/400 of
+    /// the scene's bounding-box diagonal.
+    float radius = 0.0f;
+    /// Scale of the ambient term (>= 0; 0 turns it off), an estimate of the light of all
+    /// bounces after the first from the lights' power, the scene's size and how closed it
+    /// is, plus the constant background for the directions that escape (see restart()).
+    float ambient = 1.0f;
+
+    /// Reads and validates preview_photons, preview_window, preview_radius and
+    /// preview_ambient; errors name the key's location.
+    static PreviewSettings read(const Params& params);
+};
+
+class PreviewIntegrator final : public Integrator, public ProgressiveIntegrator {
+public:
+    PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview);
+    static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
+
+    /// settings.spp passes into `film`, starting from no photons.
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    /// One photon batch, then one camera sample per pixel (sample index `pass`) added to
+    /// `film`; `film` is the average of the passes since it was cleared.
+    RenderStats render_pass(const Scene& scene, Film& film, int pass, Progress& progress) override;
+    /// A camera change keeps the photons and the radius; any other change drops them.
+    void scene_changed(SceneChange change) override;
+
+    /// Where the last pass's time went, in seconds (for bench/preview).
+    struct PassTiming {
+        double photons = 0.0;  ///< tracing the photon batch and indexing the kept photons
+        double camera = 0.0;   ///< camera samples, their shading and the film
+    };
+    const PassTiming& last_pass_timing() const { return m_timing; }
+    /// Caustic photons kept now (the last `window` batches).
+    size_t stored_photons() const { return m_grid.size(); }
+    /// Photon batches traced since the photons were last dropped.
+    int photon_passes() const { return m_photon_passes; }
+    /// The radius the next pass's caustic estimate uses (0 before the first pass).
+    float radius() const { return m_photon_passes > 0 ? std::sqrt(m_radius2) : 0.0f; }
+
+    /// Whether the camera pass traces its rays in packets (the default) or one at a time:
+    /// the same image bit for bit, the one-ray form being the plain loop the packet form is
+    /// tested against (and what bench/preview compares its speed with).
+    void set_packets(bool packets) { m_packets = packets; }
+
+private:
+    struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
+    void restart(const Scene& scene);
+    void trace_photons(const Scene& scene, RenderStats& stats);
+    Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
+                              PhotonGrid::Cache& cache) const;
+    Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf, Spectrum reflected,
+                               PhotonGrid::Cache& cache) const;
+    Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
+                           RayCounter& counter, PhotonGrid::Cache& cache) const;
+    void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,
+                      Arena& arena, RayCounter& counter) const;
+
+    RenderSettings m_settings;
+    PreviewSettings m_preview;
+    const Scene* m_scene = nullptr;  // the scene the photons were traced in
+    std::vector<std::optional<ProjectionMap>> m_projections;  // per light, where supported
+    Spectrum m_ambient{0.0f};                                 // ambient radiance per unit albedo
+    std::vector<std::vector<Photon>> m_batches;               // the last `window` batches, a ring
+    PhotonGrid m_grid;        // the photons of m_batches, indexed for the current radius
+    int m_photon_passes = 0;  // batches traced since the restart
+    float m_radius2 = 0.0f;   // squared radius of the current pass's estimate
+    PassTiming m_timing;
+    bool m_packets = true;
+};
+
+}  // namespace glint
