@@ -115,6 +115,11 @@ void add_debug_images(const RenderSettings& settings, const RenderStats& stats, 
 
 }  // namespace
 
+void check_render_settings(const RenderSettings& settings) {
+    check_debug_views(settings);
+    check_denoise(settings, *make_integrator(settings, nullptr));
+}
+
 RenderReport render_to_files(const SceneDesc& desc, const RenderSettings& settings, bool quiet) {
     check_debug_views(settings);
     // Every output's directory is checked before the work: a bad path fails now, not

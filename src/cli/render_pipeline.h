@@ -28,4 +28,9 @@ struct RenderReport {
 /// `quiet` silences the progress line.
 RenderReport render_to_files(const SceneDesc& desc, const RenderSettings& settings, bool quiet);
 
+/// The checks render_to_files() makes of the settings before any work (debug views, the
+/// integrator and its own settings, the denoiser's needs), on their own: the CLI runs them
+/// first so that a flag's bad value is told apart (exit code 2). Throws glint::Error.
+void check_render_settings(const RenderSettings& settings);
+
 }  // namespace glint::cli

@@ -11,12 +11,21 @@ namespace glint::cli {
 /// Progress, and the output code before each file and before the renames.
 extern std::atomic<int> g_signal;
 
+/// The signals that stop a run cleanly (the work stops, temporaries are removed, exit code
+/// 128 + the signal).
+inline constexpr int kStoppingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+/// Records kStoppingSignals in g_signal, ignores SIGXFSZ (a write past the file-size limit
+/// then fails and is cleaned up), and points the library's cancellation flag at g_signal.
 void install_signal_handlers();
+
+/// "SIGINT", "SIGTERM", "SIGHUP", for messages.
+const char* signal_name(int signal);
 
 /// Throws Interrupted when a signal has arrived.
 void throw_if_interrupted();
 
-/// SIGINT and SIGTERM held back while the outputs are renamed into place, so that a run
+/// The stopping signals held back while the outputs are renamed into place, so that a run
 /// ends either with every output renamed or with none.
 class SignalBlock {
 public:

@@ -3,6 +3,7 @@
 // behind (no output, no temporary file).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <support/render_helpers.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -173,7 +174,39 @@ TEST_P(CliSignal, StopsARunawayScript) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM),
+// The long phases that report no progress of their own stop too (issue 28: they ran to their
+// end first): the MLT bootstrap, photon emission for a photon map, the radiosity solve. Each
+// scene's phase takes far longer than the 5 s allowed after the signal.
+TEST_P(CliSignal, StopsTheLongPhasesBeforeTheTiles) {
+    const int signal = GetParam();
+    const char* phases[] = {
+        "integrator = 'mlt', mlt_bootstrap = 20000000, mlt_chains = 16",
+        "integrator = 'photon', photons = 2000000, caustic_photons = 2000000, max_depth = 64",
+        "integrator = 'radiosity', radiosity_patch_size = 4, radiosity_unshot = 1e-9",
+    };
+    for (const char* phase : phases) {
+        SCOPED_TRACE(phase);
+        const std::string scene = (m_root / "phase.lua").string();
+        std::ofstream(scene) << test::example_with_settings(
+            "cornell-box.lua", std::string("width = 16, height = 16, spp = 1, ") + phase);
+        const pid_t pid = start({"render", scene, "-o", "a.png", "--quiet"});
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (!catches(pid, signal) && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // into the phase
+        const auto sent = std::chrono::steady_clock::now();
+        ::kill(pid, signal);
+        EXPECT_EQ(wait_for(pid, 60.0), 128 + signal) << stderr_text();
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count(),
+                  5.0);
+        EXPECT_NE(stderr_text().find("interrupted"), std::string::npos) << stderr_text();
+        EXPECT_EQ(leftovers(), std::vector<std::string>{});
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
                          [](const auto& info) {
-                             return std::string(info.param == SIGINT ? "SIGINT" : "SIGTERM");
+                             return std::string(info.param == SIGINT    ? "SIGINT"
+                                                : info.param == SIGTERM ? "SIGTERM"
+                                                                        : "SIGHUP");
                          });

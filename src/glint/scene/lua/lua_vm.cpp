@@ -483,6 +483,7 @@ int setup(lua_State* L) {
     const std::string message = fmt::format("glint: interrupted by {}; no output written\n",
                                             signal == SIGINT    ? "SIGINT"
                                             : signal == SIGTERM ? "SIGTERM"
+                                            : signal == SIGHUP  ? "SIGHUP"
                                                                 : "a signal");
     std::fputs(message.c_str(), stderr);
     std::fflush(stderr);
