@@ -42,8 +42,11 @@ protected:
     void TearDown() override { fs::remove_all(m_root); }
 
     // Starts glint with `args` in m_dir, stderr to m_root/stderr; `limit_bytes` > 0 sets
-    // RLIMIT_FSIZE with SIGXFSZ ignored, so writes past it fail with EFBIG.
-    pid_t start(const std::vector<std::string>& args, rlim_t limit_bytes = 0) {
+    // RLIMIT_FSIZE with SIGXFSZ ignored, so writes past it fail with EFBIG; with
+    // `default_sigxfsz` the signal keeps its default action (the process would be killed)
+    // unless glint itself ignores it.
+    pid_t start(const std::vector<std::string>& args, rlim_t limit_bytes = 0,
+                bool default_sigxfsz = false) {
         const std::string binary = glint_binary();
         const std::string stderr_path = (m_root / "stderr").string();
         const pid_t pid = ::fork();
@@ -52,7 +55,7 @@ protected:
             std::FILE* err = std::freopen(stderr_path.c_str(), "w", stderr);
             if (!err) ::_exit(121);
             if (limit_bytes > 0) {
-                std::signal(SIGXFSZ, SIG_IGN);
+                std::signal(SIGXFSZ, default_sigxfsz ? SIG_DFL : SIG_IGN);
                 const rlimit limit{limit_bytes, limit_bytes};
                 ::setrlimit(RLIMIT_FSIZE, &limit);
             }
@@ -116,6 +119,17 @@ bool catches(pid_t pid, int signal) {
 }
 
 }  // namespace
+
+// The same where SIGXFSZ has its default action, as in a shell with `ulimit -f` (issue 28:
+// the signal killed glint mid-write and left its temporaries): glint ignores it itself.
+TEST_F(CliRobustness, FileSizeLimitWithTheDefaultSignalLeavesNothing) {
+    const pid_t pid = start({"render", kScene, "-o", "a.png", "-o", "b.exr", "--res", "128x128",
+                             "--spp", "2", "--quiet"},
+                            /*limit_bytes=*/3000, /*default_sigxfsz=*/true);
+    EXPECT_EQ(wait_for(pid, 60.0), 1) << stderr_text();
+    EXPECT_NE(stderr_text().find("cannot write"), std::string::npos) << stderr_text();
+    EXPECT_EQ(leftovers(), std::vector<std::string>{});
+}
 
 // A file-size limit makes the EXR write fail part-way (as a full disk would): exit 1, a
 // message naming the output, and neither it nor the PNG written before it remain.

@@ -1,5 +1,5 @@
 -- expect-exit: 1
--- expect-message: scene_mlt_chains_huge.lua:7: render: 'mlt_bootstrap' must be at least 1
+-- expect-message: scene_mlt_chains_huge.lua:9: render: 'mlt_bootstrap' must be at least 1
 -- expect-absent: must be an integer
 -- Issue 28: an integer above 2e9 but within an int's range is an integer ('mlt_chains' was
 -- called "not an integer"); the bootstrap's error, read after it, ends the run at once.
