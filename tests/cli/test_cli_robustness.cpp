@@ -201,7 +201,7 @@ TEST_P(CliSignal, StopsTheLongPhasesBeforeTheTiles) {
     for (const char* phase : phases) {
         SCOPED_TRACE(phase);
         const std::string scene = (m_root / "phase.lua").string();
-        std::ofstream(scene) << test::example_with_settings(
+        std::ofstream(scene) << glint::test::example_with_settings(
             "cornell-box.lua", std::string("width = 16, height = 16, spp = 1, ") + phase);
         const pid_t pid = start({"render", scene, "-o", "a.png", "--quiet"});
         const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);

@@ -1,3 +1,4 @@
+#include <glint/core/cancel.h>
 #include <glint/core/error.h>
 #include <glint/core/file_access.h>
 #include <glint/scene/import/file_bytes.h>
@@ -307,6 +308,7 @@ private:
             fail(fmt::format("node {} is its own ancestor", node_index));
         if (path.size() >= kMaxGroupDepth)
             fail(fmt::format("nodes nest more than {} deep", kMaxGroupDepth));
+        if ((m_node_visits & 0xfff) == 0) throw_if_cancelled();
         // Nodes that share children (not a tree, as glTF requires, but a graph with repeated
         // edges) would be walked once per path: exponentially many times.
         if (++m_node_visits > 2 * kMaxPlacements) {
