@@ -27,7 +27,8 @@ constexpr double kMaxScriptTimeLimit = 1e6;  // seconds, about 11 days
 
 /// Runs `check`; a glint::Error it throws about a flag's value (the render settings give a
 /// flag's name as the place of the values it set, "--integrator: ...") becomes a usage error,
-/// exit code 2, as for any other bad flag. Errors about output paths stay input errors.
+/// exit code 2, as for any other bad flag. Errors about output paths and memory stay input
+/// errors (exit code 1).
 template <typename Check>
 auto with_flag_errors_as_usage_errors(Check&& check) {
     try {
@@ -38,7 +39,10 @@ auto with_flag_errors_as_usage_errors(Check&& check) {
         throw;
     } catch (const Error& e) {
         const std::string message = e.what();
-        if (message.rfind("--", 0) == 0 && message.rfind("--output", 0) != 0)
+        // Not the flag's fault: an output path, or a value this machine lacks the memory for
+        // (core/memory.h's message), which stays exit code 1 as documented.
+        const bool about_the_machine = message.find("this machine has") != std::string::npos;
+        if (message.rfind("--", 0) == 0 && message.rfind("--output", 0) != 0 && !about_the_machine)
             throw CLI::ValidationError(message);
         throw;
     }
