@@ -384,12 +384,12 @@ TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
         run_glint(fmt::format("render {} --res 16x16 --spp 4 --integrator bdpt "
                               "--denoise -o {} --quiet",
                               kCornell, out("x.exr")));
-    EXPECT_EQ(bdpt.exit_code, 1);
+    EXPECT_EQ(bdpt.exit_code, 2);  // a refused combination of flags is a usage error
     EXPECT_NE(bdpt.output.find("--denoise"), std::string::npos) << bdpt.output;
     EXPECT_NE(bdpt.output.find("'bdpt'"), std::string::npos) << bdpt.output;
     const auto one = run_glint(fmt::format("render {} --res 16x16 --spp 1 --denoise -o {} --quiet",
                                            kCornell, out("x.exr")));
-    EXPECT_EQ(one.exit_code, 1);
+    EXPECT_EQ(one.exit_code, 2);
     EXPECT_NE(one.output.find("at least 2 samples"), std::string::npos) << one.output;
     EXPECT_FALSE(std::filesystem::exists(out("x.exr")));
 }
