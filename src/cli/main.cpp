@@ -50,9 +50,7 @@ int main(int argc, char** argv) {
         return kExitUsageError;
     } catch (const glint::Interrupted& e) {
         fmt::print(stderr, "glint: interrupted by {}; no output written\n",
-                   e.signal() == SIGINT    ? "SIGINT"
-                   : e.signal() == SIGTERM ? "SIGTERM"
-                                           : "a signal");
+                   signal_name(e.signal()));
         return 128 + e.signal();
     } catch (const glint::Error& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());

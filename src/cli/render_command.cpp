@@ -3,6 +3,7 @@
 #include "flags.h"
 #include "signals.h"
 
+#include <glint/render/render_checks.h>
 #include <glint/render/render_job.h>
 
 #include <fmt/format.h>
@@ -77,7 +78,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& render) {
 int run_render(const RenderOptions& options) {
     const SceneDesc desc =
         load_scene(options.scene, loader_options(options.trusted_scene, options.script_time_limit));
-    const RenderSettings settings = settings_for(desc, options);
+    const RenderSettings settings =
+        with_flag_errors_as_usage_errors([&] { return settings_for(desc, options); });
+    with_flag_errors_as_usage_errors([&] { check_render_settings(settings); });
     RenderControl control;
     control.quiet = options.quiet;
     control.cancel = &g_signal;

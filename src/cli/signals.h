@@ -1,6 +1,7 @@
 #pragma once
 // SIGINT and SIGTERM for the `glint` command: recorded by a handler, polled by the work.
 #include <atomic>
+#include <csignal>
 
 namespace glint::cli {
 
@@ -10,7 +11,16 @@ namespace glint::cli {
 /// Progress, and the output code before each file and before the renames.
 extern std::atomic<int> g_signal;
 
+/// The signals that stop a run cleanly (the work stops, temporaries are removed, exit code
+/// 128 + the signal).
+inline constexpr int kStoppingSignals[] = {SIGINT, SIGTERM, SIGHUP};
+
+/// Records kStoppingSignals in g_signal, ignores SIGXFSZ (a write past the file-size limit
+/// then fails and is cleaned up), and points the library's cancellation flag at g_signal.
 void install_signal_handlers();
+
+/// "SIGINT", "SIGTERM", "SIGHUP", for messages.
+const char* signal_name(int signal);
 
 /// Throws Interrupted when a signal has arrived.
 void throw_if_interrupted();

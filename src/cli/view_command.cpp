@@ -88,12 +88,15 @@ int run_view(const ViewOptions& view) {
     options.hide_panel = view.hide_panel;
     options.interrupt = &g_signal;
 
+    // A model file (.glb, .obj, ...) is shown as `glint render MODEL` renders it, not read
+    // as Lua.
     const SceneDesc desc =
-        load_scene_file(view.render.scene,
-                        loader_options(view.render.trusted_scene, view.render.script_time_limit));
+        load_scene(view.render.scene,
+                   loader_options(view.render.trusted_scene, view.render.script_time_limit));
     RenderOptions render = view.render;
     if (render.spp.empty()) render.spp = std::to_string(kDefaultViewSpp);
-    const RenderSettings settings = settings_for(desc, render);
+    const RenderSettings settings =
+        with_flag_errors_as_usage_errors([&] { return settings_for(desc, render); });
     options.exposure = settings.exposure;
     const int threads =
         settings.threads > 0 ? settings.threads : tbb::this_task_arena::max_concurrency();

@@ -103,7 +103,7 @@ TEST_F(CliTest, SettingErrorsNameTheirSource) {
     auto result =
         run_glint(fmt::format("render {} --integrator bogus --adaptive sobel -o {} --quiet",
                               settings_scene(m_dir, "seed = 1"), out("a.exr")));
-    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_EQ(result.exit_code, 2) << result.output;  // a flag's bad value
     EXPECT_NE(result.output.find("--integrator: unknown integrator 'bogus'"), std::string::npos)
         << result.output;
     EXPECT_EQ(result.output.find("--adaptive"), std::string::npos) << result.output;
@@ -361,7 +361,7 @@ TEST_F(CliTest, CropWritesTheWindowOfTheFullRender) {
     }
     result = run_glint(fmt::format("render {}small.lua -o {} --res 20x10 --crop 0,0,21,4 --quiet",
                                    kScenes, out("bad.exr")));
-    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_EQ(result.exit_code, 2) << result.output;
     EXPECT_NE(result.output.find("--crop: render: 'crop' must be"), std::string::npos)
         << result.output;
     EXPECT_EQ(run_glint(fmt::format("render {}small.lua --crop 1,2,3", kScenes)).exit_code, 2);

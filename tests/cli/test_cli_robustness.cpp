@@ -3,6 +3,7 @@
 // behind (no output, no temporary file).
 #include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <support/render_helpers.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -41,8 +42,11 @@ protected:
     void TearDown() override { fs::remove_all(m_root); }
 
     // Starts glint with `args` in m_dir, stderr to m_root/stderr; `limit_bytes` > 0 sets
-    // RLIMIT_FSIZE with SIGXFSZ ignored, so writes past it fail with EFBIG.
-    pid_t start(const std::vector<std::string>& args, rlim_t limit_bytes = 0) {
+    // RLIMIT_FSIZE with SIGXFSZ ignored, so writes past it fail with EFBIG; with
+    // `default_sigxfsz` the signal keeps its default action (the process would be killed)
+    // unless glint itself ignores it.
+    pid_t start(const std::vector<std::string>& args, rlim_t limit_bytes = 0,
+                bool default_sigxfsz = false) {
         const std::string binary = glint_binary();
         const std::string stderr_path = (m_root / "stderr").string();
         const pid_t pid = ::fork();
@@ -51,7 +55,7 @@ protected:
             std::FILE* err = std::freopen(stderr_path.c_str(), "w", stderr);
             if (!err) ::_exit(121);
             if (limit_bytes > 0) {
-                std::signal(SIGXFSZ, SIG_IGN);
+                std::signal(SIGXFSZ, default_sigxfsz ? SIG_DFL : SIG_IGN);
                 const rlimit limit{limit_bytes, limit_bytes};
                 ::setrlimit(RLIMIT_FSIZE, &limit);
             }
@@ -116,6 +120,17 @@ bool catches(pid_t pid, int signal) {
 
 }  // namespace
 
+// The same where SIGXFSZ has its default action, as in a shell with `ulimit -f` (issue 28:
+// the signal killed glint mid-write and left its temporaries): glint ignores it itself.
+TEST_F(CliRobustness, FileSizeLimitWithTheDefaultSignalLeavesNothing) {
+    const pid_t pid = start({"render", kScene, "-o", "a.png", "-o", "b.exr", "--res", "128x128",
+                             "--spp", "2", "--quiet"},
+                            /*limit_bytes=*/3000, /*default_sigxfsz=*/true);
+    EXPECT_EQ(wait_for(pid, 60.0), 1) << stderr_text();
+    EXPECT_NE(stderr_text().find("cannot write"), std::string::npos) << stderr_text();
+    EXPECT_EQ(leftovers(), std::vector<std::string>{});
+}
+
 // A file-size limit makes the EXR write fail part-way (as a full disk would): exit 1, a
 // message naming the output, and neither it nor the PNG written before it remain.
 TEST_F(CliRobustness, FileSizeLimitFailsAndLeavesNothing) {
@@ -173,7 +188,39 @@ TEST_P(CliSignal, StopsARunawayScript) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM),
+// The long phases that report no progress of their own stop too (issue 28: they ran to their
+// end first): the MLT bootstrap, photon emission for a photon map, the radiosity solve. Each
+// scene's phase takes far longer than the 5 s allowed after the signal.
+TEST_P(CliSignal, StopsTheLongPhasesBeforeTheTiles) {
+    const int signal = GetParam();
+    const char* phases[] = {
+        "integrator = 'mlt', mlt_bootstrap = 20000000, mlt_chains = 16",
+        "integrator = 'photon', photons = 2000000, caustic_photons = 2000000, max_depth = 64",
+        "integrator = 'radiosity', radiosity_patch_size = 4, radiosity_unshot = 1e-9",
+    };
+    for (const char* phase : phases) {
+        SCOPED_TRACE(phase);
+        const std::string scene = (m_root / "phase.lua").string();
+        std::ofstream(scene) << glint::test::example_with_settings(
+            "cornell-box.lua", std::string("width = 16, height = 16, spp = 1, ") + phase);
+        const pid_t pid = start({"render", scene, "-o", "a.png", "--quiet"});
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+        while (!catches(pid, signal) && std::chrono::steady_clock::now() < deadline)
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1500));  // into the phase
+        const auto sent = std::chrono::steady_clock::now();
+        ::kill(pid, signal);
+        EXPECT_EQ(wait_for(pid, 60.0), 128 + signal) << stderr_text();
+        EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count(),
+                  5.0);
+        EXPECT_NE(stderr_text().find("interrupted"), std::string::npos) << stderr_text();
+        EXPECT_EQ(leftovers(), std::vector<std::string>{});
+    }
+}
+
+INSTANTIATE_TEST_SUITE_P(Signals, CliSignal, ::testing::Values(SIGINT, SIGTERM, SIGHUP),
                          [](const auto& info) {
-                             return std::string(info.param == SIGINT ? "SIGINT" : "SIGTERM");
+                             return std::string(info.param == SIGINT    ? "SIGINT"
+                                                : info.param == SIGTERM ? "SIGTERM"
+                                                                        : "SIGHUP");
                          });

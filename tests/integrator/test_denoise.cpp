@@ -39,7 +39,7 @@ using test::run_glint;
 // lower than the noisy one's; in the edge bands no worse than the noisy one's, and the
 // edges' contrast at least 80 % of the reference's.
 void check_scene(const std::string& noisy_code, const std::string& reference_code,
-                 bool has_texture_edges, double filter_gain) {
+                 bool has_texture_edges, double filter_gain, double texture_band_bound = 0.0) {
     const Halves noisy = render_halves(noisy_code);
     const Halves ref = render_halves(reference_code);
     const Image denoised = denoise(noisy.full, noisy.a, noisy.b);
@@ -74,6 +74,9 @@ void check_scene(const std::string& noisy_code, const std::string& reference_cod
         const double noisy_band = error_against(noisy.full, ref, band);
         const double denoised_band = error_against(denoised, ref, band);
         EXPECT_LE(denoised_band, noisy_band);
+        if (std::string(name) == "texture" && texture_band_bound > 0.0) {
+            EXPECT_LT(denoised_band, texture_band_bound);
+        }
         const double ref_contrast = edge_contrast(ref.full, *band);
         const double denoised_contrast = edge_contrast(denoised, *band);
         EXPECT_GE(denoised_contrast, 0.8 * ref_contrast)
@@ -97,6 +100,8 @@ TEST(Denoise, CornellBoxErrorFourTimesLowerWithSharpEdges) {
     check_scene(code(16, 1), code(512, 2), false, 3.0);
 }
 
+constexpr double kTextureBandBound = 0.0066;
+
 TEST(Denoise, TexturesErrorFourTimesLowerWithSharpEdges) {
     auto code = [](int spp, int seed) {
         return example_with_settings(
@@ -112,7 +117,9 @@ TEST(Denoise, TexturesErrorFourTimesLowerWithSharpEdges) {
     // Here the filter's gain beyond the clamp is small (measured 1.0 x): most of the
     // remaining error is around the rough glass, where 16 samples leave clusters of
     // bright paths in both halves; it must at least not add error.
-    check_scene(code(16, 1), code(128, 2), true, 0.95);
+    // The texture edges' error, recorded as 0.00438 and bounded with a margin of a half: without
+    // the albedo demodulation it doubles (issue 28's mutation check), and only this bound sees it.
+    check_scene(code(16, 1), code(128, 2), true, 0.95, kTextureBandBound);
 }
 
 Halves small_cornell() {
@@ -278,13 +285,13 @@ TEST_F(DenoiseCli, RefusesWhatItCannotDenoise) {
         run_glint(fmt::format("render {} --res 16x16 --spp 4 --integrator bdpt "
                               "--denoise -o {} --quiet",
                               kCornell, out("x.exr")));
-    EXPECT_EQ(bdpt.exit_code, 1);
+    EXPECT_EQ(bdpt.exit_code, 2);  // a refused combination of flags is a usage error
     EXPECT_NE(bdpt.output.find("--denoise"), std::string::npos) << bdpt.output;
     EXPECT_NE(bdpt.output.find("'bdpt'"), std::string::npos) << bdpt.output;
     // The non-local means filter needs two halves of at least one sample; the network not.
     const auto one = run_glint(fmt::format(
         "render {} --res 16x16 --spp 1 --denoise nlm -o {} --quiet", kCornell, out("x.exr")));
-    EXPECT_EQ(one.exit_code, 1);
+    EXPECT_EQ(one.exit_code, 2);
     EXPECT_NE(one.output.find("at least 2 samples"), std::string::npos) << one.output;
     EXPECT_FALSE(std::filesystem::exists(out("x.exr")));
     const auto network = run_glint(fmt::format(

@@ -20,6 +20,7 @@ fail() {
 
 expected_exit=""
 messages=()
+absent=()
 environment=()
 if [ -d "$case_path" ]; then
     [ -f "$case_path/case.txt" ] || fail "no case.txt"
@@ -30,6 +31,7 @@ if [ -d "$case_path" ]; then
             command:*) command=${line#command:} ;;
             expect-exit:*) expected_exit=${line#expect-exit:} ;;
             expect-message:*) messages+=("$(echo "${line#expect-message:}" | sed 's/^ //')") ;;
+            expect-absent:*) absent+=("$(echo "${line#expect-absent:}" | sed 's/^ //')") ;;
             env:*) environment+=("$(echo "${line#env:}" | sed 's/^ //')") ;;
         esac
     done < "$case_path/case.txt"
@@ -45,6 +47,7 @@ else
         case "$line" in
             "-- expect-exit:"*) expected_exit=${line#-- expect-exit:} ;;
             "-- expect-message:"*) messages+=("$(echo "${line#-- expect-message:}" | sed 's/^ //')") ;;
+            "-- expect-absent:"*) absent+=("$(echo "${line#-- expect-absent:}" | sed 's/^ //')") ;;
             "-- args:"*) args=${line#-- args:} ;;
             "-- env:"*) environment+=("$(echo "${line#-- env:}" | sed 's/^ //')") ;;
             --*) ;;
@@ -76,6 +79,12 @@ fi
 for message in "${messages[@]}"; do
     if ! grep -qF -- "$message" "$scratch/stderr"; then
         echo "FAIL $name: stderr lacks '$message'"
+        status=1
+    fi
+done
+for text in "${absent[@]}"; do
+    if grep -qF -- "$text" "$scratch/stderr" "$scratch/stdout"; then
+        echo "FAIL $name: the output shows '$text', which it must not"
         status=1
     fi
 done

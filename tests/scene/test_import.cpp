@@ -8,9 +8,11 @@
 #include <glint/scene/import/mtl.h>
 #include <glint/scene/lua/lua_loader.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/test_util.h>
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <string>
@@ -318,6 +320,42 @@ TEST(ImportGltf, HierarchyInstancingMaterialsCameraAndLights) {
 }
 
 // With a Lua material the geometry builds today: counts, instances and bounds.
+// A node's `matrix` is the same placement as its translation, rotation and scale applied as
+// T * R * S (issue 28: a matrix read in the wrong order put a node translated by (10, 0, 0)
+// at the origin, and no test noticed). The matrix is written column by column, as glTF
+// stores it: T * R * S for T = (10, 0, 0), R = 90 degrees about z, S = (2, 1, 1).
+TEST(ImportGltf, MatrixNodesPlaceAsTheSameTranslationRotationScale) {
+    test::TempDir dir;
+    const std::string triangle =
+        "data:application/octet-stream;base64,"
+        "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA";  // (0,0,0), (1,0,0), (0,1,0)
+    const float h = std::sqrt(0.5f);  // the quaternion (0, 0, sin 45, cos 45)
+    write(dir.file("nodes.gltf"), fmt::format(R"({{
+  "asset": {{"version": "2.0"}},
+  "buffers": [{{"byteLength": 36, "uri": "{}"}}],
+  "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+  "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}}],
+  "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}],
+  "nodes": [{{"mesh": 0, "matrix": [0, 2, 0, 0,  -1, 0, 0, 0,  0, 0, 1, 0,  10, 0, 0, 1]}},
+            {{"mesh": 0, "translation": [10, 0, 0], "rotation": [0, 0, {}, {}],
+              "scale": [2, 1, 1]}}],
+  "scenes": [{{"nodes": [0, 1]}}]
+}})",
+                                              triangle, h, h));
+    const SceneDesc desc = load("glint.import{ file = 'nodes.gltf' }", dir);
+    const std::vector<InstanceDesc>& placed = desc.groups[0].instances;
+    ASSERT_EQ(placed.size(), 2u);
+    for (const Vec3& p : {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(1, 2, 3)}) {
+        // T * R * S: scaled along x first, then turned onto y, then moved by 10 along x.
+        const Vec3 expected(10.0f - p.y, 2.0f * p.x, p.z);
+        for (const InstanceDesc& instance : placed) {
+            const Vec3 got = instance.transform.point(p);
+            for (int axis = 0; axis < 3; ++axis)
+                EXPECT_NEAR(got[axis], expected[axis], 1e-5f) << "axis " << axis;
+        }
+    }
+}
+
 TEST(ImportGltf, BuildsWithALuaMaterial) {
     test::TempDir dir;
     write(dir.file("model.gltf.glb"), glb(gltf_json(), gltf_bin()));

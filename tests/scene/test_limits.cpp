@@ -143,7 +143,7 @@ TEST(Limits, ValuesAreCheckedWhereTheyEnter) {
          "transform * transform: the transform is not"},
         {"glint.matrix{1,0,0,0, 0,1,0,0, 0,0,1e-30,0, 0,0,0,1}", "glint.matrix: the transform"},
         {"glint.render{ exposure = 0/0 }", "render: 'exposure' must be a finite number"},
-        {"glint.render{ exposure = 1000 }", "'exposure' must be in [-64, 64]"},
+        {"glint.render{ exposure = 1000 }", "'exposure' must be in [-100, 100]"},
         {"glint.render{ integrator = 'sppm', photon_radius = 1/0 }", "'photon_radius' must be"},
         {"glint.render{ integrator = 'sppm', photon_radius = 1e30 }", "'photon_radius' must be"},
         {"glint.background{ radiance = -1 }", "'radiance' must not be negative"},

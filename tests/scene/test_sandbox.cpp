@@ -223,6 +223,31 @@ TEST(Sandbox, HandlesAndFinalisersAreSafe) {
               "scene.lua:4: boom");
 }
 
+// A finaliser that adds a group while another glint call is reading its arguments (so the
+// groups move in memory): the shape and the placement still land in their group. The calls
+// are made from a loaded chunk, one per line, so that each call's location is a new string:
+// the garbage collector steps, and runs the finalisers, inside the glint calls.
+TEST(Sandbox, FinalisersDuringAGlintCallLoseNothing) {
+    const std::string code = R"lua(
+        local m = glint.diffuse{}
+        local g = glint.group()
+        local h = glint.group()
+        h:sphere{ radius = 1, material = m }
+        local p = { radius = 0.01, material = m }
+        local lines = {}
+        for i = 1, 3000 do lines[i] = "g:sphere(p) g:place(h)" end
+        local calls = load("local g, h, p = ...\n" .. table.concat(lines, "\n"), "=calls")
+        local finaliser = { __gc = function() glint.group() end }
+        for i = 1, 3000 do setmetatable({}, finaliser) end
+        collectgarbage("incremental", 1, 1000)
+        calls(g, h, p)
+    )lua";
+    const SceneDesc desc = load_scene_string(code, "scene.lua", ".", {});
+    ASSERT_GT(desc.groups.size(), 100u);  // the finalisers ran
+    EXPECT_EQ(desc.groups[1].shapes.size(), 3000u);
+    EXPECT_EQ(desc.groups[1].instances.size(), 3000u);
+}
+
 // What a finaliser run by lua_close after a failed script gets from glint, seen through a
 // file (a trusted scene may write one).
 TEST(Sandbox, FinalisersAfterTheScriptFindGlintClosed) {
@@ -245,6 +270,33 @@ TEST(Sandbox, FinalisersAfterTheScriptFindGlintClosed) {
     const std::string seen = test::read_text(dir.file("gc.txt"));
     EXPECT_NE(seen.find("false"), std::string::npos) << seen;
     EXPECT_NE(seen.find("once the scene script has ended"), std::string::npos) << seen;
+}
+
+// load() with a reader function: the guard in front of load looks only at a string's
+// first byte, so a binary chunk handed over piece by piece must be refused by the mode.
+TEST(Sandbox, LoadRefusesBinaryChunksFromAReader) {
+    const std::string message = error_in(R"(
+        local bytes = string.dump(function() return 1 end)
+        local given = false
+        local f, why = load(function()
+            if given then return nil end
+            given = true
+            return bytes
+        end)
+        assert(f == nil, "a binary chunk was loaded")
+        error(why)
+    )");
+    EXPECT_NE(message.find("scene.lua:10:"), std::string::npos) << message;
+    EXPECT_NE(message.find("binary"), std::string::npos) << message;
+    // Given one byte at a time as well.
+    const std::string bytewise = error_in(R"(
+        local bytes = string.dump(function() return 1 end)
+        local i = 0
+        local f, why = load(function() i = i + 1; return i <= #bytes and bytes:sub(i, i) or nil end)
+        assert(f == nil, "a binary chunk was loaded")
+        error(why)
+    )");
+    EXPECT_NE(bytewise.find("binary"), std::string::npos) << bytewise;
 }
 
 TEST(Sandbox, NonStringErrorsNameTheLine) {

@@ -5,9 +5,12 @@
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
+#include <support/render_helpers.h>
 #include <support/test_util.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -335,4 +338,32 @@ TEST(Solids, ShortcutsOffFindTheSameHits) {
         EXPECT_EQ(to_rgb(a->material->albedo(*a)).r, to_rgb(b->material->albedo(*b)).r);
     }
     EXPECT_GT(hits, 150);
+}
+
+// A general quadric is the same surface for its matrix times any positive number: one with
+// coefficients of 1e-30 (a unit sphere) renders as the same sphere with coefficients of 1,
+// every sample finite (issue 28: its normals were 0/0 and its rays not finite).
+TEST(Solids, QuadricScaledByAnyFactorRendersTheSame) {
+    auto scene = [](const char* scale) {
+        return fmt::format(R"(
+            glint.camera{{ eye = {{0, 0, 4}}, look_at = {{0, 0, 0}}, fov = 40 }}
+            glint.render{{ width = 24, height = 24, spp = 4 }}
+            glint.point_light{{ position = {{0, 2, 3}}, intensity = 10 }}
+            local s = {}
+            glint.add(glint.solid.quadric{{ matrix = {{ s, 0, 0, 0,  0, s, 0, 0,  0, 0, s, 0,
+                                                     0, 0, 0, -s }} }},
+                      {{ material = glint.diffuse{{ reflectance = 0.5 }} }})
+        )",
+                           scale);
+    };
+    const Image unit = glint::test::render_lua(scene("1"));
+    const Image tiny = glint::test::render_lua(scene("1e-30"));
+    ASSERT_EQ(unit.pixels.size(), tiny.pixels.size());
+    double sum = 0.0;
+    for (size_t i = 0; i < unit.pixels.size(); ++i) {
+        ASSERT_TRUE(std::isfinite(tiny.pixels[i])) << i;
+        EXPECT_EQ(unit.pixels[i], tiny.pixels[i]) << i;
+        sum += tiny.pixels[i];
+    }
+    EXPECT_GT(sum, 0.0);
 }

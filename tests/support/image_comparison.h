@@ -103,6 +103,25 @@ inline Estimate image_mean(const std::function<std::string(int)>& scene, int k, 
     return estimate(means, 1.0);
 }
 
+// The noise of one pixel of `scene` in channel `c`: half the mean squared difference of two
+// renders with independent seeds, over all pixels (for a scene whose pixels all have the same
+// expected value, such as a furnace). With hundreds of pixels it is known to a few per cent,
+// far better than the spread of a few image means, so it can be bounded against a recorded
+// level: an integrator that became less efficient (a wrong MIS weight) shows it here.
+inline double pixel_variance(const std::function<std::string(int)>& scene, int c) {
+    const std::vector<Image> images = render_seeds(scene, 2);
+    const Image& a = images[0];
+    const Image& b = images[1];
+    double sum = 0.0;
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            const double d = static_cast<double>(a.at(x, y, c)) - b.at(x, y, c);
+            sum += 0.5 * d * d;
+        }
+    }
+    return sum / (static_cast<double>(a.width) * a.height);
+}
+
 // Means over the masked pixels of a square block of `block` x `block` pixels (NaN for
 // a block with fewer than a quarter of its pixels masked), per channel, and over the
 // kScattering pixels of the mask (the last three entries). The region means leave out the

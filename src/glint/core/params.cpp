@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <limits>
 
 namespace glint {
 
@@ -96,7 +97,12 @@ int Params::get_int(const std::string& name, int fallback) const {
     const ParamValue* v = lookup(name);
     if (!v) return fallback;
     auto d = std::get_if<double>(v);
-    if (!d || *d != std::floor(*d) || std::abs(*d) > 2e9) wrong_type(name, "an integer");
+    if (!d || *d != std::floor(*d)) wrong_type(name, "an integer");
+    // Whole numbers past what an int holds are out of range, not "not an integer".
+    if (*d > std::numeric_limits<int>::max() || *d < std::numeric_limits<int>::min())
+        fail_at(name, fmt::format("'{}' is {:.0f}, beyond the integers glint holds (-2^31 to "
+                                  "2^31 - 1)",
+                                  name, *d));
     return static_cast<int>(*d);
 }
 

@@ -1,3 +1,4 @@
+#include <glint/core/cancel.h>
 #include <glint/film/denoise.h>
 
 #include <glint/core/error.h>
@@ -68,6 +69,7 @@ Vec3 demodulation_divisor(const Vec3& albedo) {
 template <typename Body>
 void for_each_row(int height, Body&& body) {
     tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+        throw_if_cancelled();  // the denoiser's every pass goes through here
         for (int y = rows.begin(); y < rows.end(); ++y) body(y);
     });
 }

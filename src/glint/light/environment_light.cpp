@@ -303,7 +303,22 @@ std::unique_ptr<Light> make_environment_light(const Params& params, const std::s
     } catch (const Error& e) {
         params.fail(fmt::format("environment map '{}': {}", path.string(), e.what()));
     }
-    for (Spectrum& p : map.pixels) p *= intensity;
+    // The map's sums (its sampling weights, over up to 2^40 pixels, and its power) are
+    // taken in float: radiance beyond this overflows them, so it is refused here, naming
+    // the pixel (of the lat-long map the probe became), rather than failing later inside
+    // the sampling tables.
+    constexpr float kMaxRadiance = 1e18f;
+    for (size_t i = 0; i < map.pixels.size(); ++i) {
+        map.pixels[i] *= intensity;
+        const float largest = map.pixels[i].max_value();
+        if (!(largest <= kMaxRadiance)) {
+            params.fail(fmt::format(
+                "environment map '{}': pixel ({}, {}) times 'intensity' is {:g}, beyond the "
+                "largest radiance an environment may hold ({:g}); scale the map down",
+                path.string(), i % static_cast<size_t>(map.width),
+                i / static_cast<size_t>(map.width), largest, kMaxRadiance));
+        }
+    }
     const Mat3 spin = Mat3(Transform::rotate(rotation, Vec3(0.0f, 1.0f, 0.0f)).matrix());
     return std::make_unique<EnvironmentLight>(std::move(map.pixels), map.width, map.height,
                                               placement * spin);

@@ -29,7 +29,6 @@ void check_denoise(const RenderSettings& settings, const IntegratorCapabilities&
         if (settings.spp < 2)
             throw Error(fmt::format("{}: the denoiser needs at least 2 samples per pixel", where));
     }
-    check_denoiser_ready(settings);
 }
 
 bool film_needs_halves(const RenderSettings& settings) {

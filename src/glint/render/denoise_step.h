@@ -11,8 +11,8 @@ namespace glint {
 
 /// Throws glint::Error (naming the `denoise` setting) when `settings.denoise` asks for
 /// more than the integrator and the settings give (first-hit features; for the non-local
-/// means filter also the film's halves, two samples in each), or when the network's weights
-/// are not installed.
+/// means filter also the film's halves, two samples in each). Whether the network's
+/// weights are installed is check_denoiser_ready()'s question (denoise/film_denoiser.h).
 void check_denoise(const RenderSettings& settings, const IntegratorCapabilities& capabilities);
 
 /// Whether the film must keep its two halves of each pixel's samples.

@@ -62,6 +62,11 @@ bool film_needs_aovs(const RenderSettings& settings) {
     return settings.aovs || settings.denoise;
 }
 
+void check_render_settings(const RenderSettings& settings) {
+    check_debug_views(settings);
+    check_denoise(settings, make_integrator(settings, nullptr)->capabilities());
+}
+
 void check_film_memory(const RenderSettings& settings) {
     const bool aovs = film_needs_aovs(settings);
     const bool halves = film_needs_halves(settings);

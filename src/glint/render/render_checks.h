@@ -12,6 +12,11 @@ void check_debug_views(const RenderSettings& settings);
 /// The film (with AOVs and halves when the render needs them) fits the memory budget.
 void check_film_memory(const RenderSettings& settings);
 
+/// The checks a render makes of its settings before any work (debug views, the integrator
+/// and its own settings, the denoiser's needs), on their own: the CLI runs them first so
+/// that a flag's bad value is told apart (exit code 2). Throws glint::Error.
+void check_render_settings(const RenderSettings& settings);
+
 /// Whether the film records AOVs: asked for, or needed by the denoiser.
 bool film_needs_aovs(const RenderSettings& settings);
 

@@ -4,6 +4,7 @@
 #include <glint/film/output_batch.h>
 #include <glint/geometry/accel.h>
 #include <glint/integrator/integrator.h>
+#include <glint/denoise/film_denoiser.h>
 #include <glint/render/denoise_step.h>
 #include <glint/render/render_checks.h>
 #include <glint/render/render_job.h>
@@ -100,6 +101,7 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
     check_denoise(settings, integrator->capabilities());
+    if (settings.denoise) check_denoiser_ready(settings);
     for (const std::string& warning : warnings) warn(control, warning);
     const auto scene = build_scene(desc, settings);
     for (const std::string& warning : scene->stats().warnings) warn(control, warning);

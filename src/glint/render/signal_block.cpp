@@ -9,6 +9,7 @@ SignalBlock::SignalBlock() {
     sigemptyset(&set);
     sigaddset(&set, SIGINT);
     sigaddset(&set, SIGTERM);
+    sigaddset(&set, SIGHUP);  // the stopping signals (cli/signals.h kStoppingSignals)
     pthread_sigmask(SIG_BLOCK, &set, &m_old);
 }
 

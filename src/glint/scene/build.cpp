@@ -20,6 +20,8 @@ public:
         : m_desc(desc), m_settings(settings), m_scene(std::make_unique<Scene>()) {}
 
     std::unique_ptr<Scene> build() {
+        m_scene->m_directory = m_desc.directory.empty() ? "." : m_desc.directory;
+        m_scene->m_trusted = m_desc.trusted;
         build_camera();
         m_scene->m_textures =
             std::make_unique<TextureTable>(m_desc.directory, m_settings.mipmapping);

@@ -65,9 +65,9 @@ RenderSettings parse_render_settings(const Params* params) {
                               kMaxPathDepth, s.max_depth));
     }
     if (p.get_int("seed", 0) < 0) p.fail_at("seed", "'seed' must not be negative");
-    // 2^64 already makes any radiance white or black; beyond that the scale is not finite.
-    if (!(std::abs(s.exposure) <= 64.0f))
-        p.fail_at("exposure", "'exposure' must be in [-64, 64] stops");
+    // 2^100 is still a finite float scale (any radiance is then white or black already).
+    if (!(std::abs(s.exposure) <= 100.0f))  // as the --exposure flag
+        p.fail_at("exposure", "'exposure' must be in [-100, 100] stops");
     if (s.filter_radius < 0.0f) p.fail_at("filter_radius", "'filter_radius' must not be negative");
     if (s.edge_radius < 0 || s.edge_radius > 16)
         p.fail_at("edge_radius", "'edge_radius' must be in [0, 16]");

@@ -130,6 +130,11 @@ public:
     /// Whether a material only bounds media (Material::is_interface): shadow rays then
     /// cross such surfaces (transport/visibility.h); otherwise any hit blocks them.
     bool has_interfaces() const { return m_has_interfaces; }
+    /// The folder of the scene's script (or model file): where files the scene names, such
+    /// as a radiosity cache, are looked for, and which they must not leave unless trusted().
+    const std::string& directory() const { return m_directory; }
+    /// Whether the user vouched for the scene (--trusted-scene).
+    bool trusted() const { return m_trusted; }
     /// Every placed shape of the world, in world geometry id order (an instance's shapes in
     /// their local id order); built on each call.
     std::vector<ScenePlacement> placements() const;
@@ -196,6 +201,8 @@ private:
     std::unique_ptr<Camera> m_camera;
     LightSampler m_light_sampler;
     Spectrum m_background;
+    std::string m_directory = ".";
+    bool m_trusted = false;
     const Light* m_environment = nullptr;  // one of m_lights
     SceneStats m_stats;
     bool m_has_interfaces = false;

@@ -48,6 +48,7 @@ struct SceneDesc {
     std::vector<SolidDesc> solids;               // ObjectRef{"solid", i} indexes this
     std::vector<GroupDesc> groups{GroupDesc{}};  // groups[0] is the world (root) group
     std::string directory;  // where the script lives; relative file names start here
+    bool trusted = false;   // --trusted-scene: the script may reach files outside its folder
     // Geometry read by glint.import: a "mesh" shape with data = ObjectRef{"mesh_data", i}
     // takes meshes[i] (shared, so that a description stays cheap to copy).
     std::vector<std::shared_ptr<const MeshData>> meshes;

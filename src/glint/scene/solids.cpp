@@ -20,6 +20,7 @@ using QuadricFactory = glm::dmat4 (*)(const Params&);
 // matrix holds their inverse squares, and beyond this range the solid is numerically
 // degenerate (a near-zero axis makes hits and normals that are not finite).
 constexpr double kSmallestLength = 1e-6, kLargestLength = 1e6;
+constexpr double kSmallestCoefficientRatio = 1e-24;  // (kSmallestLength / kLargestLength)^2
 
 double positive(const Params& p, const char* name) {
     const float v = p.get_float(name, 1.0f);
@@ -105,6 +106,23 @@ glm::dmat4 quadric_matrix(const Params& p) {
         p.fail(
             "'matrix' has no quadratic terms (its upper-left 3x3 block is zero): that is a plane "
             "or nothing");
+    // The surface is the same for the matrix times any positive number: scaled so that its
+    // largest entry is 1, coefficients of 1e-30 give normals (the matrix times a point) that
+    // are finite in float. Entries far smaller than the largest make lengths beyond what the
+    // named solids accept (1e-6 to 1e6: inverse squares 1e-12 to 1e12, a ratio of 1e24).
+    q /= largest;
+    for (int row = 0; row < 4; ++row) {
+        for (int col = 0; col < 4; ++col) {
+            const double v = std::abs(q[col][row]);
+            if (v != 0.0 && v < kSmallestCoefficientRatio) {
+                p.fail(fmt::format(
+                    "'matrix' entry ({}, {}) is {:g} times its largest: entries may differ by a "
+                    "factor of at most {:g} (or be 0), so that lengths stay within [{:g}, {:g}]",
+                    row + 1, col + 1, v, 1.0 / kSmallestCoefficientRatio, kSmallestLength,
+                    kLargestLength));
+            }
+        }
+    }
     return q;
 }
 

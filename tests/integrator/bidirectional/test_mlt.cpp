@@ -280,3 +280,25 @@ TEST(Mlt, ConvergesToPathOnTheCornellBox) {
     EXPECT_FALSE(biased.agrees()) << "a 3 % bias passes: " << biased.describe();
 }
 
+// The same agreement with other mutation settings (issue 28: only the defaults were ever
+// rendered): mostly small steps of a wide kernel, and mostly large steps with a narrow one.
+// The acceptance rule must keep the image unbiased whatever the proposal does.
+TEST(Mlt, ConvergesToPathWithOtherMutationSettings) {
+    constexpr int kImages = 8;
+    constexpr int kBlock = 4;
+    const Image first = render_lua(cornell("path", 1, 1));
+    const std::vector<uint8_t> mask(static_cast<size_t>(first.width) * first.height, kScattering);
+    const auto path = render_seeds([&](int seed) { return cornell("path", 64, seed); }, kImages);
+    for (const char* mutations : {", mlt_large_step = 0.05, mlt_sigma = 0.1",
+                                  ", mlt_large_step = 0.8, mlt_sigma = 0.002"}) {
+        SCOPED_TRACE(mutations);
+        const std::string settings =
+            std::string(", mlt_bootstrap = 20000, mlt_chains = 256") + mutations;
+        const auto mlt = render_seeds(
+            [&](int seed) { return cornell("mlt", 128, seed, 32, settings); }, kImages);
+        const Comparison same = compare(mlt, path, mask, kBlock);
+        fmt::print("mlt{} vs path: {}\n", mutations, same.describe());
+        EXPECT_TRUE(same.mse_agrees()) << same.describe();
+        for (int c = 0; c < 3; ++c) EXPECT_TRUE(same.means_agree(c)) << "channel " << c;
+    }
+}

@@ -15,6 +15,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
 #include <cmath>
 #include <cstring>
@@ -328,10 +329,17 @@ TEST(Radiosity, HybridAgreesWithPathOnTheCornellSpheres) {
 
 namespace {
 
+// In the temporary folder, for a scene file written there too.
 std::string temporary_path(const std::string& name) {
     return (std::filesystem::temp_directory_path() /
             fmt::format("glint-radiosity-{}-{}", ::getpid(), name))
         .string();
+}
+
+// Beside a scene given as a string (its folder is the working directory): a scene may keep
+// its cache only inside its own folder.
+std::string local_path(const std::string& name) {
+    return fmt::format("glint-radiosity-{}-{}", ::getpid(), name);
 }
 
 std::string cached_box(const std::string& cache, const std::string& extra = "") {
@@ -352,7 +360,7 @@ std::string cached_box(const std::string& cache, const std::string& extra = "") 
 // A solution saved to the cache and loaded again renders the same image bit for bit, and
 // the load does not solve (no visibility rays).
 TEST(RadiosityCache, ReloadedSolutionRendersBitIdentically) {
-    const std::string cache = temporary_path("reload.rad");
+    const std::string cache = local_path("reload.rad");
     std::filesystem::remove(cache);
     const glint::test::RenderResult solved = glint::test::render_lua_with_stats(cached_box(cache));
     ASSERT_TRUE(std::filesystem::exists(cache));
@@ -370,7 +378,7 @@ TEST(RadiosityCache, ReloadedSolutionRendersBitIdentically) {
 // A cache from another scene, and a damaged cache, are errors naming the file, never a
 // crash or a wrong image; so is one cut short.
 TEST(RadiosityCache, ForeignOrDamagedCacheIsAClearError) {
-    const std::string cache = temporary_path("damaged.rad");
+    const std::string cache = local_path("damaged.rad");
     std::filesystem::remove(cache);
     render_lua(cached_box(cache));
     auto error_of = [&](const std::string& code) {
@@ -423,4 +431,62 @@ TEST(RadiosityCache, CommandLineExitsWithOneOnABadCache) {
     EXPECT_NE(r.output.find(cache), std::string::npos) << r.output;
     std::filesystem::remove(cache);
     std::filesystem::remove(scene);
+}
+
+// A cache solved with other lights is not reused: moving or dimming the point light changes
+// the fingerprint (issue 28: lights were not part of it).
+TEST(RadiosityCache, OtherLightsMakeTheCacheForeign) {
+    const std::string cache = local_path("lights.rad");
+    std::filesystem::remove(cache);
+    render_lua(cached_box(cache));
+    auto error_of = [&](const std::string& code) {
+        try {
+            render_lua(code);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    std::string moved = cached_box(cache);
+    moved.replace(moved.find("{0.1, 0.2, -0.1}"), 16, "{0.3, 0.2, -0.1}");
+    EXPECT_NE(error_of(moved).find("another scene"), std::string::npos);
+    std::string dimmer = cached_box(cache);
+    dimmer.replace(dimmer.find("intensity = 2"), 13, "intensity = 1");
+    EXPECT_NE(error_of(dimmer).find("another scene"), std::string::npos);
+    EXPECT_EQ(error_of(cached_box(cache)), "no error");
+    std::filesystem::remove(cache);
+}
+
+// A scene keeps its cache in its own folder: a path leading elsewhere is refused before the
+// solve, and nothing is written there; a failed write leaves no temporary beside the target.
+TEST(RadiosityCache, CachePathsStayInTheScenesFolder) {
+    const std::string outside = temporary_path("outside.rad");
+    std::filesystem::remove(outside);
+    for (const std::string& path : {outside, std::string("../") + local_path("up.rad")}) {
+        std::string message;
+        try {
+            render_lua(cached_box(path));
+        } catch (const Error& e) {
+            message = e.what();
+        }
+        EXPECT_NE(message.find("lies outside the scene's folder"), std::string::npos) << message;
+    }
+    EXPECT_FALSE(std::filesystem::exists(outside));
+
+    // A directory where the cache would go: the write fails, naming the file, and leaves
+    // nothing behind.
+    glint::test::TempDir dir;
+    const std::string blocked = dir.file("blocked.rad");
+    std::filesystem::create_directory(blocked);
+    const std::string scene = dir.file("scene.lua");
+    std::ofstream(scene) << cached_box("blocked.rad");
+    const glint::test::CommandResult r =
+        glint::test::run_glint(fmt::format("render -q -o {} {}", dir.file("out.exr"), scene));
+    EXPECT_EQ(r.exit_code, 1) << r.output;
+    EXPECT_NE(r.output.find("blocked.rad"), std::string::npos) << r.output;
+    size_t entries = 0;
+    for ([[maybe_unused]] const auto& entry :
+         std::filesystem::directory_iterator(std::filesystem::path(scene).parent_path()))
+        ++entries;
+    EXPECT_EQ(entries, 2u) << "only scene.lua and the blocking folder may remain";
 }

@@ -1,4 +1,4 @@
--- expect-exit: 1
+-- expect-exit: 2
 -- expect-message: --adaptive
 -- expect-message: integrator 'preview' has no adaptive sampling
 -- args: --integrator preview --adaptive sobel

@@ -1,4 +1,4 @@
--- expect-exit: 1
+-- expect-exit: 2
 -- expect-message: --tonemap: render: unknown tonemap 'aces'
 -- expect-message: clip, reinhard, filmic
 -- args: --tonemap aces

@@ -1,3 +1,4 @@
+#include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/bidirectional/light_tracer.h>
@@ -43,6 +44,11 @@ struct LightTracer::Chunk {
 LightTracer::LightTracer(const RenderSettings& settings) : m_settings(settings) {}
 
 std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, const Params&) {
+    // Every path splats wherever it lands: there is no pixel to sample more or less.
+    if (settings.adaptive != "none") {
+        throw Error(fmt::format("{}: integrator 'light' has no adaptive sampling (adaptive '{}')",
+                                settings.where_of("adaptive"), settings.adaptive));
+    }
     return std::make_unique<LightTracer>(settings);
 }
 

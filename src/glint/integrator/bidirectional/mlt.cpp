@@ -1,3 +1,4 @@
+#include <glint/core/cancel.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/integrator/bidirectional/bdpt.h>
@@ -122,6 +123,7 @@ RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& prog
     tbb::parallel_for(
         tbb::blocked_range<uint64_t>(0, n_bootstrap, 256),
         [&](const tbb::blocked_range<uint64_t>& range) {
+            throw_if_cancelled();  // the bootstrap has no progress of its own
             MltWorkspace ws;
             for (uint64_t i = range.begin(); i != range.end(); ++i) {
                 PssSampler sampler(bootstrap_key(m_settings.seed, i), m_mlt.sigma,

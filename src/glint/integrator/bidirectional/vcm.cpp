@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/bidirectional/bdpt.h>
@@ -155,6 +156,16 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     const int w = film.width(), h = film.height();
     const size_t pixels = static_cast<size_t>(w) * h;
     const size_t n_light = m_vcm.light_paths > 0 ? static_cast<size_t>(m_vcm.light_paths) : pixels;
+    // Every light subpath of an iteration is kept for the merges: at least its light vertex
+    // and its first hit, and the grid's entry for each. Checked before anything is
+    // allocated, so that too many paths for this machine is a clear error, not a failed
+    // allocation halfway through.
+    constexpr uint64_t kLeastVerticesPerPath = 2;
+    check_memory(static_cast<uint64_t>(n_light) *
+                     (sizeof(std::vector<PathVertex>) +
+                      kLeastVerticesPerPath * (sizeof(PathVertex) + 2 * sizeof(uint32_t))),
+                 fmt::format("vcm's {} light subpaths per iteration ({})", n_light,
+                             m_vcm.light_paths > 0 ? "vcm_light_paths" : "one per pixel"));
     // A light subpath's splat is an estimate of the whole image as one light path per pixel
     // would make it (the lens importance is normalised over the frame, camera.h): n_L of them
     // per iteration make pixels / n_L of that image each. With n_L = pixels the scale is

@@ -4,6 +4,7 @@
 // sink. Photons are split into fixed chunks, each traced sequentially with its own sink,
 // and the sinks come back in chunk order, so results do not depend on the thread count.
 #include <glint/core/arena.h>
+#include <glint/core/cancel.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/transport/light_path_start.h>
@@ -56,6 +57,7 @@ public:
         for (uint64_t c = 0; c < chunks; ++c) sinks.push_back(make_sink());
         std::atomic<uint64_t> total_rays{0};
         tbb::parallel_for(uint64_t{0}, chunks, [&](uint64_t chunk) {
+            throw_if_cancelled();  // emission reports no progress: SIGINT stops it here
             Arena arena;
             uint64_t chunk_rays = 0;
             const uint64_t end = std::min(count, (chunk + 1) * kChunk);

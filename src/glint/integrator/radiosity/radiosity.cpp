@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/file_access.h>
 #include <glint/core/progress.h>
 #include <glint/integrator/radiosity/radiosity.h>
 #include <glint/integrator/radiosity/radiosity_cache.h>
@@ -38,11 +39,29 @@ RadiosityIntegrator::RadiosityIntegrator(const RenderSettings& settings,
                                          const RadiosityIntegratorSettings& radiosity)
     : TileIntegrator(settings), m_radiosity(radiosity) {}
 
+// The cache file: named relative to the scene's folder, and inside it (a scene has no other
+// file access; --trusted-scene lifts this).
+std::string RadiosityIntegrator::cache_path(const Scene& scene) const {
+    const std::string& name = m_radiosity.cache;
+    if (name.empty()) return name;
+    std::filesystem::path path(name);
+    if (path.is_relative()) path = std::filesystem::path(scene.directory()) / path;
+    if (!scene.trusted() && !is_inside_folder(scene.directory(), path.string())) {
+        throw Error(fmt::format(
+            "{}: radiosity_cache '{}' lies outside the scene's folder '{}'; a scene may keep "
+            "its cache only there (glint render --trusted-scene lifts this)",
+            m_settings.where_of("radiosity_cache"), name, scene.directory()));
+    }
+    return path.string();
+}
+
 void RadiosityIntegrator::solve(const Scene& scene, bool quiet) {
+    const std::string cache = cache_path(scene);
     const float patch_size = radiosity_patch_size(scene, m_radiosity.solve);
     m_mesh = RadiosityMesh::build(scene, patch_size, kMaxPatches);
-    const std::string& cache = m_radiosity.cache;
-    if (!cache.empty() && std::filesystem::exists(cache)) {
+    std::error_code ec;
+    if (!cache.empty() && std::filesystem::symlink_status(cache, ec).type() !=
+                              std::filesystem::file_type::not_found) {
         load_radiosity_cache(m_mesh, cache);
         m_loaded = true;
         return;

@@ -58,6 +58,9 @@ public:
     /// Meshes and solves `scene`, or loads the cache; `quiet` hides the solve's progress.
     /// prepare() calls it before render()'s tiles and before the viewer's first pass.
     void solve(const Scene& scene, bool quiet);
+    /// The cache's file: relative to the scene's folder, and inside it unless the scene is
+    /// trusted (glint::Error otherwise, naming where the setting came from).
+    std::string cache_path(const Scene& scene) const;
     const RadiosityMesh& mesh() const { return m_mesh; }
     const RadiositySolveStats& solve_stats() const { return m_solve_stats; }
 

@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/file_access.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/radiosity/radiosity_cache.h>
 
@@ -63,12 +64,12 @@ public:
         : m_bytes(bytes), m_path(path) {}
     template <typename T>
     T get() {
-        if (m_at + sizeof(T) > m_bytes.size()) fail("it ends too early");
+        if (m_at + sizeof(T) > m_bytes.size()) fail("it is cut short");
         T value;
         std::memcpy(&value, m_bytes.data() + m_at, sizeof(T));
         m_at += sizeof(T);
         if constexpr (std::is_floating_point_v<T>) {
-            if (!std::isfinite(value)) fail("it holds a value that is not finite");
+            if (!std::isfinite(value)) fail("it is damaged");
         }
         return value;
     }
@@ -86,7 +87,8 @@ public:
         return Spectrum::from_stored(values);
     }
     [[noreturn]] void fail(const std::string& why) const {
-        throw Error(fmt::format("{}: not a usable radiosity cache: {}", m_path, why));
+        throw Error(fmt::format("{}: not a usable radiosity cache: {}; delete it to solve again",
+                                m_path, why));
     }
 
 private:
@@ -126,24 +128,12 @@ void save_radiosity_cache(const RadiosityMesh& mesh, const std::string& path) {
     }
     w.put(checksum(w.bytes, w.bytes.size()));
 
-    const std::string temporary = path + ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        out.write(w.bytes.data(), static_cast<std::streamsize>(w.bytes.size()));
-        if (!out) throw Error(fmt::format("{}: cannot write the radiosity cache", temporary));
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        throw Error(fmt::format("{}: cannot write the radiosity cache: {}", path, error.message()));
-    }
+    write_file_atomically(path, std::string(w.bytes.begin(), w.bytes.end()), "the radiosity cache");
 }
 
 void load_radiosity_cache(RadiosityMesh& mesh, const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(fmt::format("{}: cannot open the radiosity cache", path));
-    const std::vector<char> bytes((std::istreambuf_iterator<char>(in)),
-                                  std::istreambuf_iterator<char>());
+    const std::string text = read_regular_file(path, "the radiosity cache");
+    const std::vector<char> bytes(text.begin(), text.end());
     Reader r(bytes, path);
     if (bytes.size() < kHeaderBytes + 8 || std::memcmp(bytes.data(), kMagic, 8) != 0)
         r.fail("it does not start as one");
@@ -152,11 +142,11 @@ void load_radiosity_cache(RadiosityMesh& mesh, const std::string& path) {
     std::memcpy(&stored, bytes.data() + body, 8);
     if (stored != checksum(bytes, body)) r.fail("its checksum does not match (damaged file)");
     for (int i = 0; i < 8; ++i) r.get<char>();
-    if (r.get<uint32_t>() != kVersion) r.fail("it has another version");
+    if (r.get<uint32_t>() != kVersion) r.fail("another version of glint wrote it");
     if (r.get<uint64_t>() != mesh.fingerprint_at_build) {
         throw Error(fmt::format(
-            "{}: the radiosity cache was solved for another scene (or other radiosity mesh "
-            "settings); delete it to solve again",
+            "{}: the radiosity cache was solved for another scene (other geometry, materials, "
+            "lights or radiosity mesh settings); delete it to solve again",
             path));
     }
     const uint64_t vertices = r.get<uint64_t>();
@@ -164,12 +154,12 @@ void load_radiosity_cache(RadiosityMesh& mesh, const std::string& path) {
     const uint64_t patches = r.get<uint64_t>();
     if (patches != mesh.patches.size() || vertices < mesh.vertices.size() ||
         elements < mesh.elements.size())
-        r.fail("its counts do not fit the scene's mesh");
+        r.fail("it is damaged");
     // Checked before anything is allocated: counts a damaged file makes up cannot fit.
     const size_t available = body - kHeaderBytes;
     if (vertices > available / kVertexBytes || elements > available / kElementBytes ||
         vertices * kVertexBytes + elements * kElementBytes + patches * kPatchBytes != available)
-        r.fail("its size does not match its counts");
+        r.fail("it is cut short or damaged");
     const Spectrum ambient = r.spectrum();
 
     std::vector<RadiosityVertex> vs(vertices);
@@ -185,21 +175,20 @@ void load_radiosity_cache(RadiosityMesh& mesh, const std::string& path) {
         RadiosityElement& e = es[i];
         for (uint32_t& v : e.v) {
             v = r.get<uint32_t>();
-            if (v >= vertices) r.fail("an element names a vertex it does not hold");
+            if (v >= vertices) r.fail("it is damaged");
         }
         for (Vec2& uv : e.uv) uv = r.vec2();
         e.first_child = r.get<int32_t>();
         // Children come after their parent: the lookup's descent then always ends.
         if (e.first_child != -1 && (e.first_child <= static_cast<int64_t>(i) ||
                                     static_cast<uint64_t>(e.first_child) + 4 > elements))
-            r.fail("an element's children are out of place");
+            r.fail("it is damaged");
         e.patch = r.get<uint32_t>();
-        if (e.patch >= patches) r.fail("an element names a patch it does not hold");
+        if (e.patch >= patches) r.fail("it is damaged");
         e.area = r.get<float>();
     }
     for (size_t i = 0; i < mesh.patches.size(); ++i) {
-        if (es[i].patch != i || es[i].uv[0] != mesh.elements[i].uv[0])
-            r.fail("its patches are not the scene's");
+        if (es[i].patch != i || es[i].uv[0] != mesh.elements[i].uv[0]) r.fail("it is damaged");
     }
     std::vector<RadiosityPatch> ps = mesh.patches;
     for (RadiosityPatch& p : ps) {

@@ -70,6 +70,27 @@ uint64_t hash_spectrum(uint64_t h, const Spectrum& s) {
     return h;
 }
 
+// The lights that shoot by sampling (point, spot, directional, environment, area lights not
+// meshed) are not in the mesh, yet the solve depends on them: each is hashed by its power
+// and by a few rays it emits (their origins, directions and emission), which change when
+// it moves, turns or changes its light.
+uint64_t hash_lights(uint64_t h, const Scene& scene, const std::vector<const Light*>& meshed) {
+    for (const std::unique_ptr<Light>& light : scene.lights()) {
+        if (std::find(meshed.begin(), meshed.end(), light.get()) != meshed.end()) continue;
+        h = hash_spectrum(h, light->power());
+        for (const float u : {0.125f, 0.375f, 0.625f, 0.875f}) {
+            const auto emission = light->sample_le(Vec2(u, 1.0f - u), Vec2(1.0f - u, u), u);
+            if (!emission) {
+                h = hash_combine(h, 0);
+                continue;
+            }
+            h = hash_vec(hash_vec(h, emission->ray.origin), emission->ray.direction);
+            h = hash_spectrum(h, emission->Le);
+        }
+    }
+    return h;
+}
+
 }  // namespace
 
 RadiosityMesh RadiosityMesh::build(const Scene& scene, float patch_size, size_t max_patches) {
@@ -195,7 +216,7 @@ RadiosityMesh RadiosityMesh::build(const Scene& scene, float patch_size, size_t 
             }
         }
     }
-    mesh.fingerprint_at_build = mesh.fingerprint();
+    mesh.fingerprint_at_build = hash_lights(mesh.fingerprint(), scene, mesh.meshed_lights);
     return mesh;
 }
 

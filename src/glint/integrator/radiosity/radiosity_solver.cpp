@@ -1,3 +1,4 @@
+#include <glint/core/cancel.h>
 #include <glint/core/progress.h>
 #include <glint/integrator/radiosity/radiosity_solver.h>
 #include <glint/integrator/transport/visibility.h>
@@ -273,6 +274,7 @@ RadiositySolveStats solve_radiosity(const Scene& scene, RadiosityMesh& mesh,
     uint64_t shown = 0;
     while (reference > 0.0 && stats.shots < settings.max_shots &&
            unshot > settings.unshot * reference) {
+        throw_if_cancelled();  // one shot can take long in a big scene; SIGINT stops it here
         if (!solver.shoot_next()) break;
         ++stats.shots;
         unshot = solver.unshot_power();

@@ -1,4 +1,5 @@
 #include <glint/core/arena.h>
+#include <glint/core/cancel.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
@@ -197,6 +198,9 @@ uint64_t TileIntegrator::for_each_pixel(const Film& film, const Sampler& prototy
                               y1 = std::min(y0 + kTileSize, height);
                     uint64_t samples = 0;
                     for (int y = y0; y < y1; ++y) {
+                        // A tile of thousands of samples per pixel takes seconds: a signal
+                        // is looked at per row, not only per tile (Progress::advance).
+                        throw_if_cancelled();
                         for (int x = x0; x < x1; ++x) {
                             if (wanted && !(*wanted)[static_cast<size_t>(y) * width + x]) continue;
                             samples += work(origin + Vec2i(x, y), worker);

@@ -1,4 +1,6 @@
+#include <glint/core/cancel.h>
 #include <glint/core/error.h>
+#include <glint/core/file_access.h>
 #include <glint/scene/import/file_bytes.h>
 #include <glint/scene/import/gltf.h>
 
@@ -8,6 +10,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -16,6 +19,10 @@
 #include <map>
 #include <set>
 #include <tuple>
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
 
 namespace glint {
 namespace {
@@ -44,6 +51,91 @@ std::string percent_decoded(const std::string& uri) {
         }
     }
     return out;
+}
+
+// JSON arrays and objects nested deeper than this are refused before tinygltf parses the
+// text: its parser recurses once per level, and ~10^4 levels overflow the stack. glTF's own
+// structure needs fewer than ten; `extras` may hold more, but not hundreds.
+constexpr int kMaxJsonDepth = 256;
+
+// The deepest nesting of arrays and objects in `json` (brackets inside strings skipped), or
+// the byte offset where it first passes kMaxJsonDepth.
+struct JsonDepth {
+    int depth = 0;
+    size_t too_deep_at = std::string::npos;
+};
+
+JsonDepth json_depth(std::string_view json) {
+    JsonDepth result;
+    int depth = 0;
+    bool in_string = false;
+    for (size_t i = 0; i < json.size(); ++i) {
+        const char c = json[i];
+        if (in_string) {
+            if (c == '\\')
+                ++i;
+            else if (c == '"')
+                in_string = false;
+        } else if (c == '"') {
+            in_string = true;
+        } else if (c == '[' || c == '{') {
+            result.depth = std::max(result.depth, ++depth);
+            if (depth > kMaxJsonDepth) {
+                result.too_deep_at = i;
+                return result;
+            }
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return result;
+}
+
+// The files a glTF file refers to (buffers, images) are read through these callbacks instead
+// of tinygltf's own: only regular files (a FIFO would block for ever), only inside the glTF
+// file's folder (a model from elsewhere must not read the user's other files), and names
+// taken as they are (tinygltf's default expands them like a shell).
+struct ReferencedFiles {
+    std::string folder;
+    bool confined = true;
+};
+
+std::string as_given(const std::string& path, void*) {
+    return path;
+}
+
+// Any file that exists counts as found, so that reading it gives the reason it is refused
+// (outside the folder, a FIFO, a directory) rather than tinygltf's "File not found".
+bool referenced_file_exists(const std::string& path, void*) {
+    struct stat info {};
+    return ::stat(path.c_str(), &info) == 0;
+}
+
+bool read_referenced_file(std::vector<unsigned char>* out, std::string* error,
+                          const std::string& path, void* user) {
+    const auto& files = *static_cast<ReferencedFiles*>(user);
+    if (files.confined && !is_inside_folder(files.folder, path)) {
+        if (error)
+            *error += fmt::format(
+                "'{}' lies outside the glTF file's folder, where the files it "
+                "refers to must be\n",
+                path);
+        return false;
+    }
+    try {
+        const std::string bytes = read_regular_file(path, "file");
+        out->assign(bytes.begin(), bytes.end());
+        return true;
+    } catch (const std::exception& e) {
+        if (error) *error += std::string(e.what()) + "\n";
+        return false;
+    }
+}
+
+bool refuse_writing(std::string* error, const std::string&, const std::vector<unsigned char>&,
+                    void*) {
+    if (error) *error += "glint writes no glTF files\n";
+    return false;
 }
 
 std::vector<double> numbers_of(const Vec3& v) {
@@ -140,6 +232,11 @@ private:
         const auto size = static_cast<unsigned int>(bytes.size());
         const std::string base = m_directory.empty() ? std::string(".") : m_directory.string();
         if (bytes.size() > std::numeric_limits<unsigned int>::max()) fail("the file is over 4 GB");
+        check_json_depth(binary ? glb_json(bytes) : std::string_view(bytes));
+        m_files.folder = base;
+        m_files.confined = m_target.confine_references;
+        loader.SetFsCallbacks(tinygltf::FsCallbacks{
+            referenced_file_exists, as_given, read_referenced_file, refuse_writing, &m_files});
         const bool ok =
             binary
                 ? loader.LoadBinaryFromMemory(&m_model, &error, &warning, data, size, base)
@@ -166,6 +263,21 @@ private:
             if (!is_supported_extension(name) && m_warned_extensions.insert(name).second)
                 warn(fmt::format("extension {} is not supported (ignored)", name));
         }
+    }
+
+    void check_json_depth(std::string_view json) const {
+        const JsonDepth depth = json_depth(json);
+        if (depth.too_deep_at != std::string::npos) {
+            fail(fmt::format("JSON byte {}: arrays and objects nest more than {} deep",
+                             depth.too_deep_at, kMaxJsonDepth));
+        }
+    }
+
+    // The JSON chunk of a GLB file that check_glb() accepted.
+    static std::string_view glb_json(const std::string& bytes) {
+        uint32_t length;
+        std::memcpy(&length, bytes.data() + 12, 4);
+        return std::string_view(bytes).substr(20, length);
     }
 
     // The GLB container checked before tinygltf sees it: a header, a JSON chunk and an
@@ -224,6 +336,15 @@ private:
             fail(fmt::format("node {} is its own ancestor", node_index));
         if (path.size() >= kMaxGroupDepth)
             fail(fmt::format("nodes nest more than {} deep", kMaxGroupDepth));
+        if ((m_node_visits & 0xfff) == 0) throw_if_cancelled();
+        // Nodes that share children (not a tree, as glTF requires, but a graph with repeated
+        // edges) would be walked once per path: exponentially many times.
+        if (++m_node_visits > 2 * kMaxPlacements) {
+            fail(
+                fmt::format("the node graph places nodes more than {} times (do nodes share "
+                            "children? glTF nodes must form trees)",
+                            kMaxPlacements));
+        }
         path.push_back(node_index);
     }
 
@@ -486,26 +607,25 @@ private:
             fs::path path = percent_decoded(image.uri);
             if (path.is_relative()) path = fs::absolute(m_directory / path);
             file = path.lexically_normal().string();
+            if (m_files.confined && !is_inside_folder(m_files.folder, file)) {
+                fail(
+                    fmt::format("image {}: '{}' lies outside the glTF file's folder, where the "
+                                "files it refers to must be",
+                                image_index, file));
+            }
         } else {
             if (image.image.empty()) fail(fmt::format("image {} has no data", image_index));
             uint64_t hash = 0xcbf29ce484222325ull;  // FNV-1a, 64 bits
             for (unsigned char b : image.image) hash = (hash ^ b) * 0x100000001b3ull;
             const std::string ext = image.mimeType == "image/jpeg" ? ".jpg" : ".png";
-            const fs::path dir = fs::temp_directory_path() / "glint-gltf-images";
-            const fs::path path = dir / fmt::format("{:016x}-{}{}", hash, image.image.size(), ext);
-            std::error_code ec;
-            if (!fs::is_regular_file(path, ec)) {
-                fs::create_directories(dir, ec);
-                const fs::path temp = dir / fmt::format("{}.{}.tmp", path.filename().string(),
-                                                        static_cast<const void*>(this));
-                std::ofstream out(temp, std::ios::binary);
-                out.write(reinterpret_cast<const char*>(image.image.data()),
-                          static_cast<std::streamsize>(image.image.size()));
-                out.close();
-                if (!out || (fs::rename(temp, path, ec), ec)) {
-                    fs::remove(temp, ec);
-                    fail(fmt::format("cannot write embedded image {} to '{}'", image_index,
-                                     path.string()));
+            const fs::path path = embedded_image_folder() /
+                                  fmt::format("{:016x}-{}{}", hash, image.image.size(), ext);
+            const std::string bytes(image.image.begin(), image.image.end());
+            if (!cached_copy_matches(path, bytes)) {
+                try {
+                    write_file_atomically(path.string(), bytes, "an embedded image");
+                } catch (const Error& e) {
+                    fail(fmt::format("image {}: {}", image_index, e.what()));
                 }
             }
             file = path.string();
@@ -565,6 +685,40 @@ private:
             warn(fmt::format("{}: {} uses TEXCOORD_{}; glint reads TEXCOORD_0", where, map,
                              info.texCoord));
         return texture(info.index, colour, uv_transform(info, where, map), where);
+    }
+
+    // glint's cache of embedded images: a folder of this user's own in the temporary
+    // folder, made private (0700). One that exists already is used only when it is a real
+    // folder (not a link), owned by this user and closed to everyone else: another user
+    // could otherwise plant files or links in it.
+    fs::path embedded_image_folder() const {
+        const fs::path folder =
+            fs::temp_directory_path() / fmt::format("glint-gltf-images-{}", ::getuid());
+        if (::mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST)
+            fail(fmt::format("cannot make the folder for embedded images '{}'", folder.string()));
+        struct stat info {};
+        if (::lstat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) ||
+            info.st_uid != ::getuid() || (info.st_mode & 077) != 0) {
+            fail(
+                fmt::format("the folder for embedded images '{}' is not a private folder of "
+                            "this user (a link, another owner, or open to others); remove it",
+                            folder.string()));
+        }
+        return folder;
+    }
+
+    // Whether `path` is a regular file (not a link) of this user holding exactly `bytes`: only
+    // then is an earlier copy used.
+    static bool cached_copy_matches(const fs::path& path, const std::string& bytes) {
+        struct stat info {};
+        if (::lstat(path.c_str(), &info) != 0 || !S_ISREG(info.st_mode) ||
+            info.st_uid != ::getuid() || static_cast<size_t>(info.st_size) != bytes.size())
+            return false;
+        try {
+            return read_regular_file(path.string(), "cached image") == bytes;
+        } catch (const Error&) {
+            return false;
+        }
     }
 
     // An image texture for a glTF texture: sRGB for colours, linear for data.
@@ -915,6 +1069,8 @@ private:
     const ImportTarget& m_target;
     tinygltf::Model m_model;
     fs::path m_directory;
+    ReferencedFiles m_files;
+    size_t m_node_visits = 0;  // both walks over the node graph together
     std::vector<int> m_roots;
     std::map<int, int> m_uses;           // mesh -> placements
     std::map<int, int> m_group_of_mesh;  // repeated mesh -> its group

@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/file_access.h>
 #include <glint/scene/import/gltf.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/import/mtl.h>
@@ -64,6 +65,13 @@ Bounds3 import_obj(SceneDesc& desc, const ImportTarget& target) {
     std::map<std::string, MtlMaterial> library;
     for (const std::string& name : scene.material_libraries) {
         const std::string file = (directory / name).string();
+        if (target.confine_references &&
+            !is_inside_folder(directory.empty() ? "." : directory.string(), file)) {
+            throw Error(fmt::format(
+                "{}: {}: material library '{}' lies outside the OBJ file's folder, where the "
+                "files it refers to must be (glint render --trusted-scene lifts this)",
+                target.where, target.path, name));
+        }
         if (!std::filesystem::is_regular_file(file)) {
             desc.warnings.push_back(fmt::format(
                 "{}: {}: material library '{}' not found; its materials are grey diffuse",
@@ -141,6 +149,7 @@ void import_into(SceneDesc& desc, const Params& params) {
     if (!(target.emission_scale >= 0.0f) || !std::isfinite(target.emission_scale))
         params.fail("'emission_scale' must be a finite number >= 0");
     target.where = params.where();
+    target.confine_references = !desc.trusted;
     params.check_all_used();
     try {
         import_file(desc, target);

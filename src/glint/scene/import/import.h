@@ -20,6 +20,9 @@ struct ImportTarget {
     float light_scale = kWattsPerLumen;
     float emission_scale = 1.0f;  ///< multiplies glTF emission (see the docs)
     std::string where;            ///< the script location of the import, for messages
+    /// Files the model refers to (MTL libraries, glTF buffers and images) must lie inside
+    /// the model's folder; a trusted scene lifts this.
+    bool confine_references = true;
 };
 
 /// glint.import{ file = ..., transform = ..., material = ..., light_scale = ...,

@@ -52,7 +52,10 @@ public:
             m_materials.back().where = fmt::format("{}:{}", m_name, m_line);
             return;
         }
-        if (m_materials.empty()) fail(fmt::format("'{}' before any 'newmtl'", keyword));
+        if (m_materials.empty()) {
+            fail(fmt::format("{} before any 'newmtl' (is this an MTL file?)",
+                             keyword_shown(keyword)));
+        }
         MtlMaterial& m = m_materials.back();
         if (keyword == "Kd") {
             m.kd = colour(rest, keyword);
@@ -89,7 +92,7 @@ public:
             // Ambient light and transmission filters have no counterpart in a physically
             // based renderer: read and dropped without a warning (every exporter writes Ka).
         } else {
-            m.ignored.emplace_back(keyword);
+            m.ignored.emplace_back(keyword_shown(keyword));
         }
     }
 
@@ -98,6 +101,17 @@ public:
 private:
     [[noreturn]] void fail(const std::string& what) const {
         throw Error(fmt::format("{}:{}: {}", m_name, m_line, what));
+    }
+
+    // A keyword quoted in a message only when it looks like one (a short word): a file that
+    // is no MTL file (a model can name any file as its library) must not have its content
+    // printed.
+    static std::string keyword_shown(std::string_view keyword) {
+        const bool word =
+            keyword.size() <= 16 && std::all_of(keyword.begin(), keyword.end(), [](char c) {
+                return std::isalnum(static_cast<unsigned char>(c)) || c == '_';
+            });
+        return word ? fmt::format("'{}'", keyword) : std::string("a statement that is not MTL");
     }
 
     float number(std::string_view& rest, std::string_view keyword, float lo, float hi) const {

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <new>
 
 namespace glint {
 namespace {
@@ -53,14 +54,29 @@ SceneDesc& desc_of(lua_State* L) {
     return loader_of(L).desc;
 }
 
-// "file:line" of the script statement that called into glint.
+// "file:line" of the innermost Lua function on `thread`'s stack from `level` up, or "".
+std::string innermost_line(lua_State* thread, int level) {
+    lua_Debug ar;
+    for (; lua_getstack(thread, level, &ar); ++level) {
+        if (lua_getinfo(thread, "Sl", &ar) && ar.currentline > 0)
+            return fmt::format("{}:{}", ar.short_src, ar.currentline);
+    }
+    return "";
+}
+
+// "file:line" of the script statement that called into glint: the innermost Lua function
+// with a line, so that a call made through pcall or another library function still names
+// the script's line; a function run as a coroutine (coroutine.wrap(glint.sphere)) has no
+// Lua caller on its own stack, so the thread that resumed it is asked (the main thread's
+// innermost line).
 std::string where(lua_State* L) {
-    luaL_where(L, 1);
-    std::string location = lua_tostring(L, -1);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, LUA_RIDX_MAINTHREAD);
+    lua_State* main = lua_tothread(L, -1);
     lua_pop(L, 1);
-    while (!location.empty() && (location.back() == ' ' || location.back() == ':'))
-        location.pop_back();
-    return location.empty() ? "?" : location;
+    const std::string line = innermost_line(L, 1);
+    if (!line.empty() || !main || main == L) return line.empty() ? "?" : line;
+    const std::string resumed_from = innermost_line(main, 0);
+    return resumed_from.empty() ? "?" : resumed_from;
 }
 
 // Runs a binding, turning glint errors into Lua errors (which carry their own location).
@@ -71,6 +87,13 @@ int guarded(lua_State* L) {
     try {
         const GlintCallTime own_time(L);
         return F(L);
+    } catch (const std::bad_alloc&) {
+        // C++ memory (the scene's description) is not under the script's memory limit.
+        const std::string message = fmt::format(
+            "{}: out of memory: the scene grew past what this machine can hold (a loop that adds "
+            "objects without end?)",
+            where(L));
+        lua_pushstring(L, message.c_str());
     } catch (const std::exception& e) {
         lua_pushstring(L, e.what());
     }
@@ -244,8 +267,10 @@ int new_shape(lua_State* L) {
         group = h->index;
         args = 2;
     }
-    SceneDesc& desc = desc_of(L);
-    desc.groups[group].shapes.push_back(to_params(L, args, type));
+    // Read before the group is looked up: reading may run a script's __gc finaliser, which
+    // may add a group and so move every group (a reference taken before would dangle).
+    Params params = to_params(L, args, type);
+    desc_of(L).groups[group].shapes.push_back(std::move(params));
     return 0;
 }
 
@@ -363,8 +388,10 @@ int place_group(lua_State* L) {
     }
     const int child = group_index_of(L, args);
     if (child == 0) fail(L, "the world group cannot be placed");
-    desc_of(L).groups[parent].instances.push_back(
-        {child, optional_transform(L, args + 1), where(L)});
+    // Both read before the group is looked up (where() allocates, which may run a
+    // finaliser that adds a group, see new_shape).
+    InstanceDesc instance{child, optional_transform(L, args + 1), where(L)};
+    desc_of(L).groups[parent].instances.push_back(std::move(instance));
     return 0;
 }
 
@@ -570,6 +597,7 @@ SceneDesc run_chunk(const std::function<int(lua_State*)>& load, const std::strin
                     const std::string& directory, const LoaderOptions& options) {
     LoaderState loader;
     loader.desc.directory = directory;
+    loader.desc.trusted = options.trusted;
     LuaVm vm(options, directory);  // closed before `loader` goes
     lua_State* L = vm.state();
     lua_pushlightuserdata(L, &loader);

@@ -153,9 +153,16 @@ int noted_library_call(lua_State* L) {
 // build long strings.
 void note_long_library_calls(lua_State* L) {
     const std::pair<const char*, const char*> functions[] = {
-        {LUA_STRLIBNAME, "find"},   {LUA_STRLIBNAME, "match"}, {LUA_STRLIBNAME, "gmatch"},
-        {LUA_STRLIBNAME, "gsub"},   {LUA_STRLIBNAME, "rep"},   {LUA_STRLIBNAME, "format"},
+        {LUA_STRLIBNAME, "find"},
+        {LUA_STRLIBNAME, "match"},
+        {LUA_STRLIBNAME, "gmatch"},
+        {LUA_STRLIBNAME, "gsub"},
+        {LUA_STRLIBNAME, "rep"},
+        {LUA_STRLIBNAME, "format"},
         {LUA_TABLIBNAME, "concat"},
+        // Finalisers run inside it (and Lua runs them with hooks off: no count hook stops
+        // a __gc that loops, only the watchdog).
+        {"_G", "collectgarbage"},
     };
     for (const auto& [library, name] : functions) {
         lua_getglobal(L, library);
@@ -187,10 +194,30 @@ void push_script_location(lua_State* L) {
     lua_pushliteral(L, "?:");
 }
 
+// Whether `message` starts with a place, "source:line:".
+bool has_location(const char* message) {
+    const char* colon = std::strchr(message, ':');
+    if (!colon || colon == message) return false;
+    const char* digit = colon + 1;
+    if (!std::isdigit(static_cast<unsigned char>(*digit))) return false;
+    while (std::isdigit(static_cast<unsigned char>(*digit))) ++digit;
+    return *digit == ':';
+}
+
 // Runtime errors and error("text") already carry file:line; error(42) or error({}) do not,
-// so those get the place of the Lua code that raised them.
+// so those get the place of the Lua code that raised them, as do the messages Lua raises
+// from inside a C function ("C stack overflow", "error in __gc") and error("text", 0).
 int message_handler(lua_State* L) {
-    if (lua_type(L, 1) == LUA_TSTRING) return 1;
+    if (lua_type(L, 1) == LUA_TSTRING) {
+        if (has_location(lua_tostring(L, 1))) return 1;
+        push_script_location(L);
+        if (std::strcmp(lua_tostring(L, -1), "?:") == 0) {
+            lua_pop(L, 1);
+            return 1;
+        }
+        lua_pushfstring(L, "%s %s", lua_tostring(L, -1), lua_tostring(L, 1));
+        return 1;
+    }
     push_script_location(L);
     if (luaL_getmetafield(L, 1, "__tostring") != LUA_TNIL) {
         lua_pop(L, 1);
@@ -441,9 +468,10 @@ int setup(lua_State* L) {
                                      : limits.chunk_name;
     }
     const std::string message = fmt::format(
-        "glint: error: {}: script ran past its time limit of {:g} s inside one call of a "
-        "function of Lua's library, which cannot be interrupted (a string pattern that "
-        "backtracks without end?)\n",
+        "glint: error: {}: script ran past its time limit of {:g} s inside a call that cannot "
+        "be interrupted: a function of Lua's library (a string pattern that backtracks without "
+        "end?) or a __gc finaliser (Lua runs those with the script's limits off: one that "
+        "loops?)\n",
         where, limits.time_limit);
     std::fputs(message.c_str(), stderr);
     std::fflush(stderr);
@@ -455,6 +483,7 @@ int setup(lua_State* L) {
     const std::string message = fmt::format("glint: interrupted by {}; no output written\n",
                                             signal == SIGINT    ? "SIGINT"
                                             : signal == SIGTERM ? "SIGTERM"
+                                            : signal == SIGHUP  ? "SIGHUP"
                                                                 : "a signal");
     std::fputs(message.c_str(), stderr);
     std::fflush(stderr);
