@@ -108,4 +108,19 @@ void write_file_atomically(const std::string& path, const std::string& bytes,
     if (::rename(temporary.c_str(), path.c_str()) != 0) remove_and_fail(reason(errno));
 }
 
+std::string private_cache_folder(const std::string& name) {
+    const fs::path folder = fs::temp_directory_path() / fmt::format("{}-{}", name, ::getuid());
+    if (::mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST)
+        throw Error(fmt::format("cannot make the cache folder '{}': {}", folder.string(),
+                                std::strerror(errno)));
+    struct stat info {};
+    if (::lstat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) ||
+        info.st_uid != ::getuid() || (info.st_mode & 077) != 0) {
+        throw Error(fmt::format("the cache folder '{}' is not a private folder of this user (a "
+                                "link, another owner, or open to others); remove it",
+                                folder.string()));
+    }
+    return folder.string();
+}
+
 }  // namespace glint

@@ -24,4 +24,10 @@ bool is_inside_folder(const std::string& folder, const std::string& path);
 void write_file_atomically(const std::string& path, const std::string& bytes,
                            const std::string& what);
 
+/// A cache folder of this user's own in the temporary folder, `NAME-UID`, made private
+/// (0700) when new. One that exists already is used only when it is a real folder (not a
+/// link), owned by this user and closed to everyone else: another user could otherwise plant
+/// files or links in it. Throws glint::Error naming the folder otherwise.
+std::string private_cache_folder(const std::string& name);
+
 }  // namespace glint

@@ -687,24 +687,14 @@ private:
         return texture(info.index, colour, uv_transform(info, where, map), where);
     }
 
-    // glint's cache of embedded images: a folder of this user's own in the temporary
-    // folder, made private (0700). One that exists already is used only when it is a real
-    // folder (not a link), owned by this user and closed to everyone else: another user
-    // could otherwise plant files or links in it.
+    // glint's cache of embedded images: a private folder of this user's own
+    // (core/file_access.h says why it must be).
     fs::path embedded_image_folder() const {
-        const fs::path folder =
-            fs::temp_directory_path() / fmt::format("glint-gltf-images-{}", ::getuid());
-        if (::mkdir(folder.c_str(), 0700) != 0 && errno != EEXIST)
-            fail(fmt::format("cannot make the folder for embedded images '{}'", folder.string()));
-        struct stat info {};
-        if (::lstat(folder.c_str(), &info) != 0 || !S_ISDIR(info.st_mode) ||
-            info.st_uid != ::getuid() || (info.st_mode & 077) != 0) {
-            fail(
-                fmt::format("the folder for embedded images '{}' is not a private folder of "
-                            "this user (a link, another owner, or open to others); remove it",
-                            folder.string()));
+        try {
+            return private_cache_folder("glint-gltf-images");
+        } catch (const Error& e) {
+            fail(e.what());
         }
-        return folder;
     }
 
     // Whether `path` is a regular file (not a link) of this user holding exactly `bytes`: only
@@ -1037,7 +1027,7 @@ private:
         const std::string where = fmt::format("{}: light {}", origin(), light_index);
         Vec3 colour(1.0f);
         if (light.color.size() == 3) colour = Vec3(light.color[0], light.color[1], light.color[2]);
-        const Vec3 power = colour * static_cast<float>(light.intensity) * m_target.light_scale;
+        const Vec3 power = colour * static_cast<float>(light.intensity) * m_target.light_scale.value_or(kWattsPerLumen);
         const Vec3 position(world * glm::vec4(0, 0, 0, 1));
         const Vec3 direction = glm::normalize(Vec3(world * glm::vec4(0, 0, -1, 0)));
         Params params;

@@ -142,9 +142,11 @@ void import_into(SceneDesc& desc, const Params& params) {
     target.path = path.string();
     target.transform = params.get_transform("transform");
     if (params.has("material")) target.material = params.get_ref("material", "material");
-    target.light_scale = params.get_float("light_scale", kWattsPerLumen);
-    if (!(target.light_scale >= 0.0f) || !std::isfinite(target.light_scale))
-        params.fail("'light_scale' must be a finite number >= 0");
+    if (params.has("light_scale")) {
+        target.light_scale = params.get_float("light_scale");
+        if (!(*target.light_scale >= 0.0f) || !std::isfinite(*target.light_scale))
+            params.fail("'light_scale' must be a finite number >= 0");
+    }
     target.emission_scale = params.get_float("emission_scale", 1.0f);
     if (!(target.emission_scale >= 0.0f) || !std::isfinite(target.emission_scale))
         params.fail("'emission_scale' must be a finite number >= 0");

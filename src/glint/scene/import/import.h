@@ -16,8 +16,9 @@ struct ImportTarget {
     std::string path;                   ///< the file, as found (relative to the cwd or absolute)
     Transform transform;                ///< placed at this transform in the world
     std::optional<ObjectRef> material;  ///< replaces every material of the file
-    /// Watts per glTF light unit: candela -> W/sr, lux -> W/m^2 (see the docs).
-    float light_scale = kWattsPerLumen;
+    /// Multiplies the file's light intensities; unset, each format's own unit: glTF's candela
+    /// and lux become W/sr and W/m^2 (1/683, see the docs), pbrt's are glint's (1).
+    std::optional<float> light_scale;
     float emission_scale = 1.0f;  ///< multiplies glTF emission (see the docs)
     std::string where;            ///< the script location of the import, for messages
     /// Files the model refers to (MTL libraries, glTF buffers and images) must lie inside

@@ -5,6 +5,7 @@
 // the scene's mirror baked in, written once to glint's image cache and used as glint's
 // environment.
 #include <glint/core/error.h>
+#include <glint/core/file_access.h>
 #include <glint/film/image_io.h>
 #include <glint/scene/import/pbrt/translator.h>
 
@@ -113,12 +114,17 @@ void PbrtTranslator::environment_map(const PbrtEntity& e, const std::string& nam
     mix(file.data(), file.size());
     mix(&stamp, sizeof stamp);
     mix(&light_from_world, sizeof light_from_world);
-    const fs::path dir = fs::temp_directory_path() / "glint-pbrt-environments";
-    const fs::path path = dir / fmt::format("{:016x}.exr", hash);
-    if (!fs::is_regular_file(path, ec)) {
-        fs::create_directories(dir, ec);
-        write_image(path.string(), latlong_from_equal_area(square, light_from_world, file));
+    // A private folder of this user's own (core/file_access.h): another user could otherwise
+    // plant a link or a different map under the predictable name.
+    fs::path dir;
+    try {
+        dir = private_cache_folder("glint-pbrt-environments");
+    } catch (const Error& error) {
+        throw Error(fmt::format("{}: LightSource \"infinite\": {}", e.where.str(), error.what()));
     }
+    const fs::path path = dir / fmt::format("{:016x}.exr", hash);
+    if (!fs::is_regular_file(fs::symlink_status(path, ec)))
+        write_image(path.string(), latlong_from_equal_area(square, light_from_world, file));
     Params p("environment", where(e.where));
     p.set("file", path.string());
     if (scale != 1.0) p.set("intensity", scale);

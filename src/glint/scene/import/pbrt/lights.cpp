@@ -34,7 +34,7 @@ void PbrtTranslator::light(const PbrtLight& l) {
     const PbrtEntity& e = l.entity;
     const Mat4 to_world = m_target.transform.matrix() * m_mirror * l.to_world;
     auto point = [&](const Vec3& p) { return Vec3(to_world * Vec4(p, 1.0f)); };
-    const double scale = e.params.get_float("scale", 1.0) * m_imaging_ratio * m_target.light_scale;
+    const double scale = e.params.get_float("scale", 1.0) * m_imaging_ratio * m_target.light_scale.value_or(1.0f);
     const double power = e.params.get_float("power", -1.0);
     Params p;
     if (e.type == "point") {
@@ -138,7 +138,7 @@ std::optional<ObjectRef> PbrtTranslator::area_light_material(const PbrtEntity& a
     }
     const bool two_sided = area.params.get_bool("twosided", false);
     const double scale =
-        area.params.get_float("scale", 1.0) * m_imaging_ratio * m_target.light_scale;
+        area.params.get_float("scale", 1.0) * m_imaging_ratio * m_target.light_scale.value_or(1.0f);
     const double power = area.params.get_float("power", -1.0);
     // pbrt-v4 sets the radiance so that the shape emits `power` watts: pi * area per side.
     const double k = power > 0.0 && area_of_shape > 0.0
