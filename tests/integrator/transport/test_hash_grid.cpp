@@ -97,7 +97,8 @@ TEST(HashGrid, FindsThePointsWithinTheRadius) {
 }
 
 // Points and queries on a lattice of the cell size: every point on cell borders, its
-// neighbours at exactly the radius (found: the ball is closed), the diagonal ones beyond.
+// neighbours at exactly the radius (found by the closed ball, not by the open one), the
+// diagonal ones beyond.
 TEST(HashGrid, FindsPointsOnCellBordersAtExactlyTheRadius) {
     const float radius = 0.25f;
     std::vector<Vec3> points;
@@ -118,6 +119,18 @@ TEST(HashGrid, FindsPointsOnCellBordersAtExactlyTheRadius) {
                     EXPECT_EQ(visited, brute_force(points, q, radius));
                     if (offset == Vec3(0.0f)) {
                         EXPECT_EQ(visited.size(), 7u);  // itself and its 6 neighbours
+                    }
+                    // The open ball leaves out the points at exactly the radius.
+                    std::vector<uint32_t> open;
+                    grid.for_each_near<HashGrid::Ball::kOpen>(
+                        q, cache, [&](uint32_t index, float) { open.push_back(index); });
+                    std::sort(open.begin(), open.end());
+                    std::vector<uint32_t> strictly;
+                    for (uint32_t i : visited)
+                        if (length_squared(points[i] - q) < radius * radius) strictly.push_back(i);
+                    EXPECT_EQ(open, strictly);
+                    if (offset == Vec3(0.0f)) {
+                        EXPECT_EQ(open.size(), 1u);  // itself
                     }
                 }
             }

@@ -235,15 +235,23 @@ void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
         m_batches[static_cast<size_t>(m_photon_passes) % window] = std::move(batch);
     ++m_photon_passes;
 
-    std::vector<Photon> kept;
-    for (const std::vector<Photon>& b : m_batches) kept.insert(kept.end(), b.begin(), b.end());
-    // The grid holds positions; the photons follow its storage order, so that a query
-    // reads the photons it finds next to each other.
-    std::vector<Vec3> positions(kept.size());
-    for (size_t i = 0; i < kept.size(); ++i) positions[i] = kept[i].p;
+    // The kept photons, batch after batch: the grid holds their positions, and the photons
+    // follow its storage order, so that a query reads the photons it finds side by side.
+    size_t total = 0;
+    for (const std::vector<Photon>& b : m_batches) total += b.size();
+    std::vector<Vec3> positions;
+    std::vector<const Photon*> kept;
+    positions.reserve(total);
+    kept.reserve(total);
+    for (const std::vector<Photon>& b : m_batches) {
+        for (const Photon& photon : b) {
+            positions.push_back(photon.p);
+            kept.push_back(&photon);
+        }
+    }
     m_grid.build(positions, std::sqrt(m_radius2), HashGrid::Numbering::kStorage);
     m_photons.resize(kept.size());
-    for (size_t k = 0; k < kept.size(); ++k) m_photons[k] = kept[m_grid.order()[k]];
+    for (size_t k = 0; k < kept.size(); ++k) m_photons[k] = *kept[m_grid.order()[k]];
 }
 
 // What the lanes of a block of pixels carry from its camera packet to its shadow packet.
@@ -263,11 +271,9 @@ Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const
                                              HashGrid::Cache& cache) const {
     const Vec3 wo = si.to_local(si.wo);
     const float viewer_side = glm::dot(si.wo, si.ng);
-    // Strictly within the radius (the grid's ball is closed).
-    const float r2 = m_grid.radius() * m_grid.radius();
     Spectrum sum(0.0f);
-    m_grid.for_each_near(si.p, cache, [&](uint32_t index, float distance2) {
-        if (distance2 >= r2) return;
+    // Strictly within the radius.
+    m_grid.for_each_near<HashGrid::Ball::kOpen>(si.p, cache, [&](uint32_t index, float) {
         const Photon& photon = m_photons[index];
         if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) return;  // the other side
         sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power;

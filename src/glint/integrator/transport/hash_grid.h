@@ -36,6 +36,9 @@ public:
     /// default), or the position in the grid's storage order, for a caller that lays its
     /// payload out in that order (order()) so that a query reads it contiguously.
     enum class Numbering { kGiven, kStorage };
+    /// Which points at exactly the radius count: all (kClosed: distance <= radius) or none
+    /// (kOpen: distance < radius), as each user's estimator was defined.
+    enum class Ball { kClosed, kOpen };
 
     HashGrid() = default;
 
@@ -73,16 +76,16 @@ public:
         int newest = 0;
     };
 
-    /// Calls visit(index, distance2) for every point within the radius of `x` (distance
-    /// <= radius), distance2 = length_squared(point - x): the cells around x in z, y, x
-    /// order, and each cell's points in the order build() was given them -- an order that
+    /// Calls visit(index, distance2) for every point within the radius of `x` (the ball
+    /// closed or open), distance2 = length_squared(point - x): the cells around x in z, y,
+    /// x order, and each cell's points in the order build() was given them -- an order that
     /// depends only on the points and `x` (never on threads or on the cache).
-    template <typename Visit>
+    template <Ball ball = Ball::kClosed, typename Visit>
     void for_each_near(const Vec3& x, Cache& cache, Visit&& visit) const;
-    template <typename Visit>
+    template <Ball ball = Ball::kClosed, typename Visit>
     void for_each_near(const Vec3& x, Visit&& visit) const {
         Cache cache;
-        for_each_near(x, cache, visit);
+        for_each_near<ball>(x, cache, visit);
     }
 
     size_t size() const { return m_positions.size(); }
@@ -123,6 +126,10 @@ private:
         const uint32_t bit = coarse_bit(coarse_cell_of(p));
         return (m_coarse[bit >> 6] >> (bit & 63)) & 1u;
     }
+    template <Ball ball>
+    static bool inside(float distance2, float radius2) {
+        return ball == Ball::kClosed ? distance2 <= radius2 : distance2 < radius2;
+    }
     static constexpr uint32_t kCoarseBits = 1u << 16;
     static constexpr uint32_t kNoCell = ~0u;
     struct Cell {
@@ -142,7 +149,7 @@ private:
     std::vector<uint64_t> m_coarse;   // kCoarseBits bits: coarse cells within r of a point
 };
 
-template <typename Visit>
+template <HashGrid::Ball ball, typename Visit>
 void HashGrid::for_each_near(const Vec3& x, Cache& cache, Visit&& visit) const {
     if (m_positions.empty() || !coarse_marked(x)) return;
     const glm::ivec3 centre = cell_of(x);
@@ -161,12 +168,12 @@ void HashGrid::for_each_near(const Vec3& x, Cache& cache, Visit&& visit) const {
     }
     for (int c = 0; c < near.count; ++c) {
         const Cache::Neighbourhood::Occupied& cell = near.cells[c];
-        // A cell whose box is farther than r from x is skipped.
+        // A cell whose box lies outside the ball is skipped.
         const float dyz = d2[2][cell.z] + d2[1][cell.y];
-        if (dyz > r2 || dyz + d2[0][cell.x] > r2) continue;
+        if (!inside<ball>(dyz, r2) || !inside<ball>(dyz + d2[0][cell.x], r2)) continue;
         for (uint32_t i = cell.begin; i < cell.end; ++i) {
             const float distance2 = length_squared(m_positions[i] - x);
-            if (distance2 <= r2) visit(m_indices[i], distance2);
+            if (inside<ball>(distance2, r2)) visit(m_indices[i], distance2);
         }
     }
 }
