@@ -4,7 +4,6 @@
 #include <glint/core/rng.h>
 #include <glint/film/image.h>
 #include <glint/film/image_io.h>
-#include <glint/integrator/photon/photon_grid.h>
 #include <glint/integrator/photon/preview.h>
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
@@ -181,80 +180,6 @@ TEST(Preview, MirrorCeilingCausticMatchesClosedForm) {
         }
     }
     std::printf("largest relative deviation of a block: %.4f\n", worst);
-}
-
-// The photon grid's fixed-radius query finds exactly the photons strictly within the radius
-// (checked against a loop over all of them), each once, in the same order on every build of
-// the same photons. Photons on a plane at y = 0 (on the cells' boundary, as a floor's caustic
-// lies), in a dense spot (many per cell) and scattered in a box; queries on the plane, just
-// off it, in the spot and at random points of the box (most far from every photon).
-TEST(Preview, PhotonGridFindsThePhotonsWithinTheRadius) {
-    Rng rng(12345);
-    auto u = [&] { return rng.next_float(); };
-    std::vector<Photon> photons;
-    for (int i = 0; i < 3000; ++i) {
-        Vec3 p;
-        if (i % 3 == 0)
-            p = Vec3(4.0f * u() - 2.0f, 0.0f, 4.0f * u() - 2.0f);
-        else if (i % 3 == 1)
-            p = Vec3(0.5f + 0.05f * u(), 0.0f, -0.3f + 0.05f * u());
-        else
-            p = Vec3(4.0f * u() - 2.0f, 2.0f * u() - 1.0f, 4.0f * u() - 2.0f);
-        photons.push_back({p, Vec3(0.0f, 1.0f, 0.0f), Spectrum(static_cast<float>(i))});
-    }
-    const float radius = 0.07f;
-    PhotonGrid grid, rebuilt;
-    grid.build(photons, radius);
-    rebuilt.build(photons, radius);
-    ASSERT_EQ(grid.size(), photons.size());
-    int found = 0;
-    PhotonGrid::Cache cache;
-    for (int q = 0; q < 2000; ++q) {
-        Vec3 p;
-        switch (q % 4) {
-            case 0:
-                p = Vec3(4.0f * u() - 2.0f, 0.0f, 4.0f * u() - 2.0f);
-                break;
-            case 1:
-                p = Vec3(4.0f * u() - 2.0f, 0.03f * u() - 0.015f, 4.0f * u() - 2.0f);
-                break;
-            case 2:
-                p = Vec3(0.45f + 0.15f * u(), 0.0f, -0.35f + 0.15f * u());
-                break;
-            default:
-                p = Vec3(4.0f * u() - 2.0f, 2.0f * u() - 1.0f, 4.0f * u() - 2.0f);
-                break;
-        }
-        std::vector<int> expected, visited, again;
-        for (size_t i = 0; i < photons.size(); ++i)
-            if (length_squared(photons[i].p - p) < radius * radius)
-                expected.push_back(static_cast<int>(i));
-        grid.for_each_near(p,
-                           [&](const Photon& ph) { visited.push_back(int(to_rgb(ph.power)[0])); });
-        rebuilt.for_each_near(p,
-                              [&](const Photon& ph) { again.push_back(int(to_rgb(ph.power)[0])); });
-        EXPECT_EQ(visited, again) << "query " << q;
-        // One cache across all queries (as a thread keeps it) changes nothing.
-        std::vector<int> cached;
-        grid.for_each_near(p, cache,
-                           [&](const Photon& ph) { cached.push_back(int(to_rgb(ph.power)[0])); });
-        EXPECT_EQ(cached, visited) << "query " << q;
-        std::sort(visited.begin(), visited.end());
-        EXPECT_EQ(visited, expected) << "query " << q;
-        found += static_cast<int>(expected.size());
-    }
-    EXPECT_GT(found, 5000);  // the queries met photons (in the spot, many per query)
-
-    // A rebuild with other photons: the cache notices and forgets what it knew.
-    const Vec3 spot(0.52f, 0.0f, -0.28f);
-    int before = 0, after = 0;
-    grid.for_each_near(spot, cache, [&](const Photon&) { ++before; });
-    grid.build(std::vector<Photon>(photons.begin(), photons.begin() + 1500), radius);
-    grid.for_each_near(spot, cache, [&](const Photon&) { ++after; });
-    int fresh = 0;
-    grid.for_each_near(spot, [&](const Photon&) { ++fresh; });
-    EXPECT_GT(before, after);
-    EXPECT_EQ(after, fresh);
 }
 
 // The camera pass's packet form (4 x 2 pixels a packet, shadow rays as a second packet)

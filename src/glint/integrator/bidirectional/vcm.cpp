@@ -4,6 +4,7 @@
 #include <glint/core/rng.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/vcm.h>
+#include <glint/integrator/transport/hash_grid.h>
 #include <glint/material/material.h>
 
 #include <fmt/format.h>
@@ -25,67 +26,12 @@ constexpr int kChunkPaths = 256;
 // from the camera's, so that the two subpaths of a pixel are independent.
 constexpr uint64_t kLightSeedSalt = 0x56434d4c49474854ULL;
 
-// A photon: vertex `vertex` (>= 1) of light subpath `path`, with a copy of its position so
-// that a gather rejects the photons outside its disc without reaching for the vertex (a cache
-// miss each: the vertices are large and scattered over the subpaths).
+// A photon: vertex `vertex` (>= 1) of light subpath `path`. The grid keeps a copy of its
+// position, so that a gather rejects the photons outside its disc without reaching for the
+// vertex (a cache miss each: the vertices are large and scattered over the subpaths).
 struct PhotonRef {
-    Vec3 p;
     uint32_t path;
     uint32_t vertex;
-};
-
-// The photons of an iteration in a uniform grid of cells 2r wide, hashed into as many
-// buckets as photons, each bucket a range of one array (in the photons' order, so that a
-// query visits them in a fixed order). A disc of radius r around a point lies within the
-// 2 x 2 x 2 cells nearest to it.
-class PhotonGrid {
-public:
-    void build(std::vector<PhotonRef> photons, float radius) {
-        m_inverse_cell = 1.0f / (2.0f * radius);
-        const size_t n = photons.size();
-        m_begin.assign(std::max<size_t>(n, 1) + 1, 0);
-        std::vector<uint32_t> bucket_of(n);
-        for (size_t i = 0; i < n; ++i) {
-            bucket_of[i] = bucket(cell_of(photons[i].p));
-            ++m_begin[bucket_of[i] + 1];
-        }
-        for (size_t b = 1; b < m_begin.size(); ++b) m_begin[b] += m_begin[b - 1];
-        m_photons.resize(n);
-        std::vector<uint32_t> next(m_begin.begin(), m_begin.end() - 1);
-        for (size_t i = 0; i < n; ++i) m_photons[next[bucket_of[i]]++] = photons[i];
-    }
-
-    // Calls visit(photon) for every photon in the cells a disc of radius r around `p` can
-    // reach (a superset of those within r), each once, in a fixed order.
-    template <typename Visit>
-    void for_each_near(const Vec3& p, Visit&& visit) const {
-        if (m_photons.empty()) return;
-        const Vec3 c = p * m_inverse_cell;
-        const glm::ivec3 base = glm::ivec3(glm::floor(c - Vec3(0.5f)));
-        uint32_t buckets[8];
-        int count = 0;
-        for (int i = 0; i < 8; ++i)
-            buckets[count++] = bucket(base + glm::ivec3(i & 1, (i >> 1) & 1, (i >> 2) & 1));
-        // Two cells may share a bucket: visit it once.
-        std::sort(buckets, buckets + count);
-        count = static_cast<int>(std::unique(buckets, buckets + count) - buckets);
-        for (int i = 0; i < count; ++i)
-            for (uint32_t j = m_begin[buckets[i]]; j < m_begin[buckets[i] + 1]; ++j)
-                visit(m_photons[j]);
-    }
-
-private:
-    glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p * m_inverse_cell)); }
-    uint32_t bucket(const glm::ivec3& c) const {
-        const uint64_t h =
-            hash_combine(hash_combine(static_cast<uint32_t>(c.x), static_cast<uint32_t>(c.y)),
-                         static_cast<uint32_t>(c.z));
-        return static_cast<uint32_t>(h % (m_begin.size() - 1));
-    }
-
-    float m_inverse_cell = 1.0f;
-    std::vector<uint32_t> m_begin;  // bucket b holds m_photons[m_begin[b], m_begin[b + 1])
-    std::vector<PhotonRef> m_photons;
 };
 
 }  // namespace
@@ -103,7 +49,8 @@ struct VcmIntegrator::Iteration {
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<Arena> arenas;                         // per chunk: the light BSDFs
     std::vector<std::vector<Splat>> splats;            // per chunk
-    PhotonGrid grid;
+    std::vector<PhotonRef> photons;                    // the light vertices merges use, in the grid
+    HashGrid grid;
     mutable std::atomic<uint64_t> rays{0};
     Progress* progress = nullptr;
 };
@@ -196,7 +143,7 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     it.progress = &progress;
     const int tiles_x = (w + kTileSize - 1) / kTileSize, tiles_y = (h + kTileSize - 1) / kTileSize;
     RenderStats stats;
-    std::vector<PhotonRef> photons;
+    std::vector<Vec3> positions;  // of it.photons
     for (int iteration = 0; iteration < m_settings.spp; ++iteration) {
         it.index = iteration;
         it.radius = radius_at(r0, m_vcm.alpha, iteration);
@@ -208,16 +155,18 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
         for (std::vector<Splat>& splats : it.splats) film.add_splats(splats);
 
         // The photons in subpath order, vertex order within a subpath.
-        photons.clear();
+        it.photons.clear();
+        positions.clear();
         for (size_t i = 0; i < n_light; ++i) {
             const std::vector<PathVertex>& path = it.light_paths[i];
             for (size_t v = 1; v < path.size(); ++v) {
-                if (path[v].is_surface() && path[v].connectible())
-                    photons.push_back(
-                        {path[v].p, static_cast<uint32_t>(i), static_cast<uint32_t>(v)});
+                if (path[v].is_surface() && path[v].connectible()) {
+                    it.photons.push_back({static_cast<uint32_t>(i), static_cast<uint32_t>(v)});
+                    positions.push_back(path[v].p);
+                }
             }
         }
-        it.grid.build(photons, it.radius);
+        it.grid.build(positions, it.radius);
 
         tbb::parallel_for(0, tiles_x * tiles_y,
                           [&](int tile) { render_tile(scene, film, it, tile); });
@@ -284,8 +233,8 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
     const int x1 = std::min(x0 + kTileSize, film.width());
     const int y1 = std::min(y0 + kTileSize, film.height());
     const int max_depth = m_settings.max_depth;
-    const float radius2 = it.radius * it.radius;
     auto sampler = it.camera_sampler->clone();
+    HashGrid::Cache cache;  // a tile's camera vertices are near each other
     Arena arena;
     RayCounter counter;
     std::vector<PathVertex> camera;
@@ -317,10 +266,10 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                 const PathVertex& pt = camera[t - 1];
                 if (!pt.is_surface() || !pt.connectible()) continue;
                 const Vec3 wo_local = pt.si.to_local(pt.si.wo);
-                it.grid.for_each_near(pt.p, [&](const PhotonRef& ref) {
+                it.grid.for_each_near(pt.p, cache, [&](uint32_t index, float) {
+                    const PhotonRef& ref = it.photons[index];
                     const int s = static_cast<int>(ref.vertex);
                     if (max_depth >= 0 && s + t - 2 > max_depth) return;
-                    if (length_squared(ref.p - pt.p) > radius2) return;
                     const std::vector<PathVertex>& path = it.light_paths[ref.path];
                     const PathVertex& photon = path[ref.vertex];
                     // A photon on the other side of a surface (a thin wall) lights that side.

@@ -172,7 +172,8 @@ void PreviewIntegrator::scene_changed(SceneChange change) {
 void PreviewIntegrator::restart(const Scene& scene) {
     m_scene = &scene;
     m_batches.clear();
-    m_grid = PhotonGrid();
+    m_grid = HashGrid();
+    m_photons.clear();
     m_photon_passes = 0;
     const Bounds3& bounds = scene.stats().bounds;
     const Vec3 extent = bounds.is_empty() ? Vec3(1.0f) : bounds.extent();
@@ -234,9 +235,23 @@ void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
         m_batches[static_cast<size_t>(m_photon_passes) % window] = std::move(batch);
     ++m_photon_passes;
 
-    std::vector<Photon> kept;
-    for (const std::vector<Photon>& b : m_batches) kept.insert(kept.end(), b.begin(), b.end());
-    m_grid.build(kept, std::sqrt(m_radius2));
+    // The kept photons, batch after batch: the grid holds their positions, and the photons
+    // follow its storage order, so that a query reads the photons it finds side by side.
+    size_t total = 0;
+    for (const std::vector<Photon>& b : m_batches) total += b.size();
+    std::vector<Vec3> positions;
+    std::vector<const Photon*> kept;
+    positions.reserve(total);
+    kept.reserve(total);
+    for (const std::vector<Photon>& b : m_batches) {
+        for (const Photon& photon : b) {
+            positions.push_back(photon.p);
+            kept.push_back(&photon);
+        }
+    }
+    m_grid.build(positions, std::sqrt(m_radius2), HashGrid::Numbering::kStorage);
+    m_photons.resize(kept.size());
+    for (size_t k = 0; k < kept.size(); ++k) m_photons[k] = *kept[m_grid.order()[k]];
 }
 
 // What the lanes of a block of pixels carry from its camera packet to its shadow packet.
@@ -247,17 +262,19 @@ struct PreviewIntegrator::CameraLanes {
     PerLane<SurfaceInteraction> si;
     PerLane<SpecularChain> chains;  // for the lanes whose camera ray met a mirror or glass
     PerLane<Spectrum> L;
-    PhotonGrid::Cache photon_cache;  // the lanes' caustic estimates, one after the other
+    HashGrid::Cache photon_cache;  // the lanes' caustic estimates, one after the other
 };
 
 // The caustic photons within the radius of `si`, each batch an estimate of its own (Knaus
 // and Zwicker): sum f Phi / (pi r^2) over the photons, divided by the batches kept.
 Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
-                                             PhotonGrid::Cache& cache) const {
+                                             HashGrid::Cache& cache) const {
     const Vec3 wo = si.to_local(si.wo);
     const float viewer_side = glm::dot(si.wo, si.ng);
     Spectrum sum(0.0f);
-    m_grid.for_each_near(si.p, cache, [&](const Photon& photon) {
+    // Strictly within the radius.
+    m_grid.for_each_near<HashGrid::Ball::kOpen>(si.p, cache, [&](uint32_t index, float) {
+        const Photon& photon = m_photons[index];
         if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) return;  // the other side
         sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power;
     });
@@ -268,7 +285,7 @@ Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const
 // Light leaving the first surface that is not purely specular towards the camera, but for
 // the direct light: the caustic photons and the ambient term.
 Spectrum PreviewIntegrator::indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
-                                              Spectrum reflected, PhotonGrid::Cache& cache) const {
+                                              Spectrum reflected, HashGrid::Cache& cache) const {
     if (m_grid.size() > 0) reflected += caustic_estimate(si, bsdf, cache);
     reflected += m_ambient * si.material->albedo(si);
     return reflected;
@@ -280,7 +297,7 @@ Spectrum PreviewIntegrator::indirect_estimate(const SurfaceInteraction& si, cons
 // term meet.
 Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler,
                                           Arena& arena, RayCounter& counter,
-                                          PhotonGrid::Cache& cache) const {
+                                          HashGrid::Cache& cache) const {
     const SpecularChain chain = follow_specular_chain(scene, ray, Spectrum(1.0f), sampler, arena,
                                                       counter, kMaxCameraSegments, nullptr);
     Spectrum L = chain.emitted;
@@ -429,7 +446,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
             } else {
                 PassSampler sampler;
                 sampler.set_seed(m_settings.seed);
-                PhotonGrid::Cache cache;
+                HashGrid::Cache cache;
                 for (int y = rows.begin() * kBlockHeight;
                      y < std::min(h, rows.end() * kBlockHeight); ++y) {
                     for (int x = 0; x < w; ++x) {

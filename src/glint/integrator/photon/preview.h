@@ -13,10 +13,11 @@
 // 4 x 2 pixel blocks and their shadow rays are traced as Embree packets, the pass draws its
 // numbers from a cheap sampler of its own, and the photon grid caches its cells per thread;
 // see docs/integrators.md.
-#include <glint/integrator/tile/tile_integrator.h>
-#include <glint/integrator/photon/photon_grid.h>
-#include <glint/integrator/progressive.h>
+#include <glint/integrator/photon/photon_map.h>
 #include <glint/integrator/photon/projection_map.h>
+#include <glint/integrator/progressive.h>
+#include <glint/integrator/tile/tile_integrator.h>
+#include <glint/integrator/transport/hash_grid.h>
 
 #include <optional>
 #include <vector>
@@ -78,11 +79,11 @@ private:
     void restart(const Scene& scene);
     void trace_photons(const Scene& scene, RenderStats& stats);
     Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
-                              PhotonGrid::Cache& cache) const;
+                              HashGrid::Cache& cache) const;
     Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf, Spectrum reflected,
-                               PhotonGrid::Cache& cache) const;
+                               HashGrid::Cache& cache) const;
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
-                           RayCounter& counter, PhotonGrid::Cache& cache) const;
+                           RayCounter& counter, HashGrid::Cache& cache) const;
     void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,
                       Arena& arena, RayCounter& counter) const;
 
@@ -92,9 +93,10 @@ private:
     std::vector<std::optional<ProjectionMap>> m_projections;  // per light, where supported
     Spectrum m_ambient{0.0f};                                 // ambient radiance per unit albedo
     std::vector<std::vector<Photon>> m_batches;               // the last `window` batches, a ring
-    PhotonGrid m_grid;        // the photons of m_batches, indexed for the current radius
-    int m_photon_passes = 0;  // batches traced since the restart
-    float m_radius2 = 0.0f;   // squared radius of the current pass's estimate
+    HashGrid m_grid;                // the photons of m_batches, indexed for the current radius
+    std::vector<Photon> m_photons;  // the same photons, in m_grid's storage order
+    int m_photon_passes = 0;        // batches traced since the restart
+    float m_radius2 = 0.0f;         // squared radius of the current pass's estimate
     PassTiming m_timing;
     bool m_packets = true;
 };

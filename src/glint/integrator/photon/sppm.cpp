@@ -4,6 +4,7 @@
 #include <glint/film/image_io.h>
 #include <glint/integrator/photon/photon_tracer.h>
 #include <glint/integrator/photon/sppm.h>
+#include <glint/integrator/transport/hash_grid.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
 
@@ -47,50 +48,23 @@ VisiblePoint find_visible_point(const Scene& scene, const Ray& ray, Sampler& sam
     return {*chain.hit, chain.beta, true};
 }
 
-// Uniform grid over the visible points, hashed: each point is listed in every cell its
-// search sphere touches.
-class PointGrid {
-public:
-    PointGrid(const std::vector<VisiblePoint>& points, const std::vector<PixelState>& pixels) {
+// The valid visible points in a grid whose radius is the largest of their radii: a photon
+// finds every point whose own radius may reach it, and keeps those whose radius does.
+struct VisiblePointGrid {
+    VisiblePointGrid(const std::vector<VisiblePoint>& points,
+                     const std::vector<PixelState>& pixels) {
         float max_radius = 0.0f;
-        for (size_t i = 0; i < points.size(); ++i) {
-            if (points[i].valid) max_radius = std::max(max_radius, pixels[i].radius);
-        }
-        m_cell = std::max(max_radius, 1e-6f);
-        m_buckets.resize(std::max<size_t>(1, points.size()));
+        std::vector<Vec3> positions;
         for (size_t i = 0; i < points.size(); ++i) {
             if (!points[i].valid) continue;
-            const glm::ivec3 lo = cell_of(points[i].si.p - Vec3(pixels[i].radius));
-            const glm::ivec3 hi = cell_of(points[i].si.p + Vec3(pixels[i].radius));
-            for (int z = lo.z; z <= hi.z; ++z) {
-                for (int y = lo.y; y <= hi.y; ++y) {
-                    for (int x = lo.x; x <= hi.x; ++x) {
-                        // Two of the point's cells may hash to one bucket: list it there once,
-                        // or a photon would be deposited twice (points arrive in index order,
-                        // so a repeat is the bucket's last entry).
-                        std::vector<uint32_t>& list = m_buckets[bucket(glm::ivec3(x, y, z))];
-                        if (list.empty() || list.back() != i)
-                            list.push_back(static_cast<uint32_t>(i));
-                    }
-                }
-            }
+            max_radius = std::max(max_radius, pixels[i].radius);
+            positions.push_back(points[i].si.p);
+            pixel_of.push_back(static_cast<uint32_t>(i));
         }
+        grid.build(positions, std::max(max_radius, 1e-6f));
     }
-    const std::vector<uint32_t>& candidates(const Vec3& p) const {
-        return m_buckets[bucket(cell_of(p))];
-    }
-
-private:
-    glm::ivec3 cell_of(const Vec3& p) const { return glm::ivec3(glm::floor(p / m_cell)); }
-    size_t bucket(const glm::ivec3& c) const {
-        const uint64_t h =
-            hash_combine(hash_combine(static_cast<uint32_t>(c.x), static_cast<uint32_t>(c.y)),
-                         static_cast<uint32_t>(c.z));
-        return h % m_buckets.size();
-    }
-
-    float m_cell;
-    std::vector<std::vector<uint32_t>> m_buckets;
+    HashGrid grid;
+    std::vector<uint32_t> pixel_of;  // the pixel of each point the grid holds
 };
 
 struct Deposit {
@@ -198,31 +172,35 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
         stats.rays += camera_rays.load();
 
         // 2-3. Photons add their flux to the visible points within each point's radius.
-        const PointGrid grid(points, pixels);
+        const VisiblePointGrid grid(points, pixels);
         auto make_sink = [&] {
             struct Sink {
                 const std::vector<VisiblePoint>* points;
                 const std::vector<PixelState>* pixels;
-                const PointGrid* grid;
+                const VisiblePointGrid* grid;
+                HashGrid::Cache cache;
                 std::vector<Deposit> deposits;
                 Arena arena{4096};
                 void store(const PhotonHit& hit) {
                     if (hit.bounces == 0) return;  // direct light comes from next-event estimation
-                    for (uint32_t i : grid->candidates(hit.si->p)) {
+                    // A photon adds to each pixel at most once, so the order of the visits
+                    // leaves every pixel's sum as it is.
+                    grid->grid.for_each_near(hit.si->p, cache, [&](uint32_t k, float distance2) {
+                        const uint32_t i = grid->pixel_of[k];
                         const VisiblePoint& vp = (*points)[i];
                         const float r = (*pixels)[i].radius;
-                        if (length_squared(vp.si.p - hit.si->p) > r * r) continue;
+                        if (distance2 > r * r) return;
                         arena.reset();
                         // vp.si already has its final shading frame: no second bump.
                         const Bsdf* bsdf = vp.si.material->bsdf(vp.si, arena);
                         const Spectrum f =
                             bsdf->eval(vp.si.to_local(vp.si.wo), vp.si.to_local(hit.wi));
-                        if (f.is_black()) continue;
+                        if (f.is_black()) return;
                         deposits.push_back({i, vp.beta * f * hit.power});
-                    }
+                    });
                 }
             };
-            return Sink{&points, &pixels, &grid, {}, Arena{4096}};
+            return Sink{&points, &pixels, &grid, {}, {}, Arena{4096}};
         };
         const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass,
                                         photons_per_pass, m_settings.seed, stats.rays, make_sink);
