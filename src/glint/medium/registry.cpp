@@ -1,6 +1,10 @@
 #include <glint/medium/homogeneous_medium.h>
 #include <glint/medium/registry.h>
 
+#include <fmt/format.h>
+
+#include <cmath>
+
 namespace glint {
 namespace {
 
