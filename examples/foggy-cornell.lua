@@ -1,8 +1,8 @@
 -- The Cornell box filled with fog: the measured box (cornell-box.lua) with a homogeneous
 -- medium everywhere, the camera in it too. Light scatters on its way from the lamp, so the
 -- air glows and the walls' colours bleed into it; render with volpath. Units are
--- millimetres: a density of 0.0015 per mm is a mean free path of about 67 cm.
-local fog = glint.medium{ density = 0.0015, albedo = 0.85, g = 0.2 }
+-- millimetres: a density of 0.0008 per mm is a mean free path of 1.25 m.
+local fog = glint.medium{ density = 0.0008, albedo = 0.85, g = 0.2 }
 local white = glint.diffuse{ reflectance = {0.725, 0.71, 0.68} }
 local red   = glint.diffuse{ reflectance = {0.63, 0.065, 0.05} }
 local green = glint.diffuse{ reflectance = {0.14, 0.45, 0.091} }

@@ -4,7 +4,7 @@
 -- a medium); the camera stands outside it, in clear air. volpath finds the beam only by
 -- BSDF and phase sampling hitting the small light through the glass, so it converges
 -- slowly: the light-path methods with media (issue 29 item 3) are the ones to do it fast.
-local fog = glint.medium{ density = 0.25, albedo = 0.9, g = 0.4 }
+local fog = glint.medium{ density = 0.1, albedo = 0.9, g = 0.4 }
 local glass = glint.dielectric{ ior = 1.5 }
 local floor = glint.diffuse{ reflectance = 0.6 }
 local walls = glint.diffuse{ reflectance = {0.5, 0.45, 0.4} }

@@ -48,13 +48,13 @@ TEST(HomogeneousSlab, DeltaTrackingCrossesWithProbabilityOfTransmittance) {
         int crossed = 0;
         for (int i = 0; i < n; ++i) {
             bool collided = false;
-            const Spectrum T_maj =
-                sample_collisions(medium, ray, kDepth, hero, rng,
-                                  [&](float t, const MediumPoint&, const Spectrum&, const Spectrum&) {
-                                      EXPECT_LT(t, kDepth);
-                                      collided = true;
-                                      return false;
-                                  });
+            const Spectrum T_maj = sample_collisions(
+                medium, ray, kDepth, hero, rng,
+                [&](float t, const MediumPoint&, const Spectrum&, const Spectrum&) {
+                    EXPECT_LT(t, kDepth);
+                    collided = true;
+                    return false;
+                });
             if (!collided) {
                 ++crossed;
                 EXPECT_NEAR(T_maj.value(hero), expected(hero), 1e-5);
@@ -100,12 +100,9 @@ TEST(MediumParameters, DensityAndAlbedoGiveTheCoefficients) {
 
 TEST(MediumParameters, BadValuesNameTheLine) {
     const char* cases[] = {
-        "glint.medium{ sigma_s = 1, g = 1 }",
-        "glint.medium{ sigma_a = -1 }",
-        "glint.medium{ sigma_s = 1, density = 2 }",
-        "glint.medium{ density = 1, albedo = 1.5 }",
-        "glint.medium{ sigma_s = 1, scale = 0 }",
-        "glint.medium{ sigma_s = 1, colour = 2 }",
+        "glint.medium{ sigma_s = 1, g = 1 }",       "glint.medium{ sigma_a = -1 }",
+        "glint.medium{ sigma_s = 1, density = 2 }", "glint.medium{ density = 1, albedo = 1.5 }",
+        "glint.medium{ sigma_s = 1, scale = 0 }",   "glint.medium{ sigma_s = 1, colour = 2 }",
     };
     for (const char* line : cases) {
         const std::string scene = std::string("glint.camera{ medium = ") + line + " }\n";

@@ -71,8 +71,8 @@ Spectrum direct_light(const Scene& scene, const Vec3& p, const SurfaceInteractio
     const Spectrum T = transmittance_through_interfaces(scene, shadow, medium, &rng, &passing);
     if (T.is_black()) return Spectrum(0.0f);
     const float light_pdf = point.choice.pmf * ls->pdf;
-    const Spectrum densities = ls->is_delta ? r_u * light_pdf
-                                            : r_u * (Spectrum(light_pdf) + passing * scatter_pdf);
+    const Spectrum densities =
+        ls->is_delta ? r_u * light_pdf : r_u * (Spectrum(light_pdf) + passing * scatter_pdf);
     const float mean = densities.average();
     return mean > 0.0f ? f * T * ls->L / mean : Spectrum(0.0f);
 }
@@ -83,15 +83,16 @@ Spectrum direct_light(const Scene& scene, const Vec3& p, const SurfaceInteractio
 template <typename WalkState, typename LightPdf>
 void add_emission(WalkState& walk, const Spectrum& Le, LightPdf&& light_pdf) {
     if (Le.is_black()) return;
-    const Spectrum densities =
-        walk.specular_bounce ? walk.r_u : walk.r_u + walk.r_l * light_pdf();
+    const Spectrum densities = walk.specular_bounce ? walk.r_u : walk.r_u + walk.r_l * light_pdf();
     const float mean = densities.average();
     if (mean > 0.0f) walk.L += walk.beta * Le / mean;
 }
 
 // A seed for a path's random stream from one sampler draw, so that the stream is the
 // pixel sample's as every other draw is (the same for any thread count).
-uint64_t stream_seed(float u) { return mix_bits(std::bit_cast<uint32_t>(u) + 0x5eedULL); }
+uint64_t stream_seed(float u) {
+    return mix_bits(std::bit_cast<uint32_t>(u) + 0x5eedULL);
+}
 
 }  // namespace
 
@@ -107,8 +108,8 @@ Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
     walk.medium = scene.camera_medium();
     walk.sampler = &sampler;
     walk.aov = aov;
-    walk.hero = std::min(static_cast<int>(sampler.get_1d() * Spectrum::kValues),
-                         Spectrum::kValues - 1);
+    walk.hero =
+        std::min(static_cast<int>(sampler.get_1d() * Spectrum::kValues), Spectrum::kValues - 1);
     walk.rng.seed(stream_seed(sampler.get_1d()));
     for (int crossings = 0; crossings < 1024;) {
         ++counter.rays;
@@ -138,7 +139,8 @@ Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
 // The walk's segment through its medium up to t_hit: the path ends there (absorbed, or at
 // the depth limit), scatters (its ray is the new direction), or reaches t_hit with its
 // throughput and densities carried across.
-VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& scene, Walk& walk, float t_hit) const {
+VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& scene, Walk& walk,
+                                                                   float t_hit) const {
     const Medium& medium = *walk.medium;
     Ray& ray = walk.ray;
     if (!samples_distances(medium)) {
@@ -159,7 +161,8 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
                 const float pdf = sigma_hero * T_hero;
                 const Spectrum r_e = walk.r_u * sigma_maj * T / pdf;
                 if (r_e.average() > 0.0f)
-                    walk.L += walk.beta * T * point.sigma_a * point.emission / (pdf * r_e.average());
+                    walk.L +=
+                        walk.beta * T * point.sigma_a * point.emission / (pdf * r_e.average());
             }
             const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
             const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
@@ -184,12 +187,12 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
                 const Vec3 wo = -glm::normalize(ray.direction);
                 const HenyeyGreenstein phase(medium.phase_asymmetry());
                 Sampler& sampler = *walk.sampler;
-                walk.L += walk.beta * direct_light(scene, p, nullptr, walk.medium, sampler,
-                                                   walk.rng, walk.r_u,
-                                                   [&](const Vec3& wi, float& pdf_wi) {
-                                                       pdf_wi = phase.eval(wo, wi);
-                                                       return Spectrum(pdf_wi);
-                                                   });
+                walk.L +=
+                    walk.beta * direct_light(scene, p, nullptr, walk.medium, sampler, walk.rng,
+                                             walk.r_u, [&](const Vec3& wi, float& pdf_wi) {
+                                                 pdf_wi = phase.eval(wo, wi);
+                                                 return Spectrum(pdf_wi);
+                                             });
                 // Phase sampling is exact: the throughput keeps its value, p / pdf = 1.
                 const PhaseSample ps = phase.sample(wo, sampler.get_2d());
                 walk.r_l = walk.r_u / ps.p;
@@ -200,7 +203,8 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
                 return false;
             }
             // A null collision: the ray goes on, each channel weighted by its null share.
-            const Spectrum sigma_n = (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
+            const Spectrum sigma_n =
+                (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
             const float pdf = T_hero * sigma_n.value(hero);
             if (pdf <= 0.0f) {
                 ended = true;

@@ -21,7 +21,9 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
 
 /// Whether volpath samples distances in `medium` (delta tracking) rather than multiplying
 /// by its transmittance: where it scatters or emits.
-inline bool samples_distances(const Medium& medium) { return medium.scatters() || medium.emits(); }
+inline bool samples_distances(const Medium& medium) {
+    return medium.scatters() || medium.emits();
+}
 
 /// The transmittance of a shadow ray that starts in `medium`: Embree's occlusion query alone
 /// where neither an interface nor a medium can change the answer from 0 or 1.
