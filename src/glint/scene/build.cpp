@@ -101,6 +101,21 @@ private:
         return media;
     }
 
+    // The material of shape `p`: material `index` itself, or, when the shape names its own
+    // `interior`/`exterior` media, a copy of it bounding those.
+    const Material* shape_material(const Params& p, int index) {
+        const MediumInterface media{medium_param(p, "interior"), medium_param(p, "exterior")};
+        if (!media.is_transition()) return m_scene->m_materials.at(index).get();
+        const Params& material_params = m_desc.materials.at(index);
+        if (material_params.has("absorption"))
+            p.fail("a dielectric with 'absorption' takes no 'interior'/'exterior' media");
+        auto copy = make_material(material_params, *m_scene->m_textures);
+        copy->set_media(media);
+        m_scene->m_has_interfaces |= copy->is_interface();
+        m_scene->m_materials.push_back(std::move(copy));
+        return m_scene->m_materials.back().get();
+    }
+
     void build_camera() {
         if (m_desc.camera) m_scene->m_camera_medium = medium_param(*m_desc.camera, "medium");
         const Params fallback("camera", "default camera");
@@ -124,9 +139,9 @@ private:
                     continue;
                 }
                 const ObjectRef ref = p.get_ref("material", "material");
+                const Material* material = shape_material(p, ref.index);
                 auto shape = make_shape(p, {m_desc.directory, &m_desc.meshes, load_mesh_file});
-                m_group_shapes[g].push_back(
-                    {shape.get(), {m_scene->m_materials.at(ref.index).get()}, &p});
+                m_group_shapes[g].push_back({shape.get(), {material}, &p});
                 m_scene->m_shapes.push_back(std::move(shape));
             }
         }

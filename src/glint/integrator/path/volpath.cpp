@@ -101,6 +101,22 @@ std::unique_ptr<Integrator> VolPathIntegrator::create(const RenderSettings& sett
     return std::make_unique<VolPathIntegrator>(settings);
 }
 
+RenderStats VolPathIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
+    if (scene.media().empty()) return m_path.render(scene, film, progress);
+    return TileIntegrator::render(scene, film, progress);
+}
+
+RenderStats VolPathIntegrator::render_pass(const Scene& scene, Film& film, int pass,
+                                           Progress& progress) {
+    if (scene.media().empty()) return m_path.render_pass(scene, film, pass, progress);
+    return TileIntegrator::render_pass(scene, film, pass, progress);
+}
+
+void VolPathIntegrator::scene_changed(SceneChange change) {
+    m_path.scene_changed(change);
+    TileIntegrator::scene_changed(change);
+}
+
 Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                                RayCounter& counter, AovSample* aov) const {
     Walk walk;

@@ -14,16 +14,23 @@
 // phase sampling are combined by the balance heuristic too, with the probability that
 // delta tracking passes a shadow ray's media in the unidirectional density (r_l).
 //
-// Without media the walk is path's with balance instead of power heuristic, and without
-// path's packets (bench/README.md compares the two).
+// A scene without media (no glint.medium) is rendered by path itself, packets and all: the
+// same image bit for bit, at path's speed (the walk here would give the same image up to
+// noise, with balance instead of power heuristic, one path at a time).
+#include <glint/integrator/path/path.h>
 #include <glint/integrator/tile/tile_integrator.h>
 
 namespace glint {
 
 class VolPathIntegrator final : public TileIntegrator {
 public:
-    explicit VolPathIntegrator(const RenderSettings& settings) : TileIntegrator(settings) {}
+    explicit VolPathIntegrator(const RenderSettings& settings)
+        : TileIntegrator(settings), m_path(settings, DirectLighting::kMis) {}
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
+
+    RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    RenderStats render_pass(const Scene& scene, Film& film, int pass, Progress& progress) override;
+    void scene_changed(SceneChange change) override;
 
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;
@@ -34,6 +41,8 @@ private:
     MediumStep scatter_in_medium(const Scene& scene, Walk& walk, float t_hit) const;
     bool scatter_at_surface(const Scene& scene, Walk& walk, Arena& arena) const;
     void escape(const Scene& scene, Walk& walk) const;
+
+    PathIntegrator m_path;  // renders scenes without media
 };
 
 }  // namespace glint
