@@ -166,73 +166,15 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
         return walk.beta.is_black() ? MediumStep::kEnded : MediumStep::kCrossed;
     }
     const int hero = walk.hero;
-    bool scattered = false, ended = false;
+    MediumStep outcome = MediumStep::kCrossed;
     const Spectrum T_maj = sample_collisions(
         medium, ray, t_hit, hero, walk.rng,
         [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
-            const float sigma_hero = sigma_maj.value(hero);
-            const float T_hero = T.value(hero);
-            // The medium's emission, collected at every tentative collision.
-            if (!point.emission.is_black() && walk.depth < m_settings.depth_limit()) {
-                const float pdf = sigma_hero * T_hero;
-                const Spectrum r_e = walk.r_u * sigma_maj * T / pdf;
-                if (r_e.average() > 0.0f)
-                    walk.L +=
-                        walk.beta * T * point.sigma_a * point.emission / (pdf * r_e.average());
-            }
-            const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
-            const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
-            const float u = walk.rng.next_float();
-            if (u < p_absorb) {
-                ended = true;
-                return false;
-            }
-            if (u < p_absorb + p_scatter) {
-                if (walk.depth++ >= m_settings.depth_limit()) {
-                    ended = true;
-                    return false;
-                }
-                const float pdf = T_hero * point.sigma_s.value(hero);
-                walk.beta *= T * point.sigma_s / pdf;
-                walk.r_u *= T * point.sigma_s / pdf;
-                if (walk.beta.is_black() || walk.r_u.is_black()) {
-                    ended = true;
-                    return false;
-                }
-                const Vec3 p = ray.at(t);
-                const Vec3 wo = -glm::normalize(ray.direction);
-                const HenyeyGreenstein phase(medium.phase_asymmetry());
-                Sampler& sampler = *walk.sampler;
-                walk.L +=
-                    walk.beta * direct_light(scene, p, nullptr, walk.medium, sampler, walk.rng,
-                                             walk.r_u, [&](const Vec3& wi, float& pdf_wi) {
-                                                 pdf_wi = phase.eval(wo, wi);
-                                                 return Spectrum(pdf_wi);
-                                             });
-                // Phase sampling is exact: the throughput keeps its value, p / pdf = 1.
-                const PhaseSample ps = phase.sample(wo, sampler.get_2d());
-                walk.r_l = walk.r_u / ps.p;
-                walk.specular_bounce = false;
-                walk.previous_point = p;
-                ray = Ray{p, ps.wi, 0.0f, kInfinity};
-                scattered = true;
-                return false;
-            }
-            // A null collision: the ray goes on, each channel weighted by its null share.
-            const Spectrum sigma_n =
-                (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
-            const float pdf = T_hero * sigma_n.value(hero);
-            if (pdf <= 0.0f) {
-                ended = true;
-                return false;
-            }
-            walk.beta *= T * sigma_n / pdf;
-            walk.r_u *= T * sigma_n / pdf;
-            walk.r_l /= pdf;
-            return !walk.beta.is_black() && !walk.r_u.is_black();
+            outcome = collide(scene, walk, t, point, sigma_maj, T);
+            return outcome == MediumStep::kCrossed;
         });
-    if (ended) return MediumStep::kEnded;
-    if (scattered) {
+    if (outcome == MediumStep::kEnded) return MediumStep::kEnded;
+    if (outcome == MediumStep::kScattered) {
         // Roulette as at a surface, on the throughput the ratios leave.
         float survival;
         if (!survives_throughput_roulette(
@@ -248,6 +190,65 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
     walk.r_u *= T_maj / T_hero;
     walk.r_l /= T_hero;
     return MediumStep::kCrossed;
+}
+
+// A tentative collision at parameter t of the walk's ray, with the medium's coefficients
+// `point` there, majorant sigma_maj, and majorant transmittance T since the last one: the
+// medium's emission, then absorption (kEnded), real scattering (kScattered) or a null
+// collision (kCrossed: the walk goes on), chosen with the hero channel's probabilities.
+VolPathIntegrator::MediumStep VolPathIntegrator::collide(const Scene& scene, Walk& walk, float t,
+                                                         const MediumPoint& point,
+                                                         const Spectrum& sigma_maj,
+                                                         const Spectrum& T) const {
+    const int hero = walk.hero;
+    const float sigma_hero = sigma_maj.value(hero);
+    const float T_hero = T.value(hero);
+    if (!point.emission.is_black() && walk.depth < m_settings.depth_limit()) {
+        // Emission is collected at every tentative collision, weighted over the heroes.
+        const float pdf = sigma_hero * T_hero;
+        const float r_e = (walk.r_u * sigma_maj * T / pdf).average();
+        if (r_e > 0.0f) walk.L += walk.beta * T * point.sigma_a * point.emission / (pdf * r_e);
+    }
+    const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
+    const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
+    const float u = walk.rng.next_float();
+    if (u < p_absorb) return MediumStep::kEnded;
+    if (u < p_absorb + p_scatter) {
+        if (walk.depth++ >= m_settings.depth_limit()) return MediumStep::kEnded;
+        const float pdf = T_hero * point.sigma_s.value(hero);
+        walk.beta *= T * point.sigma_s / pdf;
+        walk.r_u *= T * point.sigma_s / pdf;
+        if (walk.beta.is_black() || walk.r_u.is_black()) return MediumStep::kEnded;
+        scatter_by_phase(scene, walk, walk.ray.at(t));
+        return MediumStep::kScattered;
+    }
+    // A null collision: the ray goes on, each channel weighted by its null share.
+    const Spectrum sigma_n = (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
+    const float pdf = T_hero * sigma_n.value(hero);
+    if (pdf <= 0.0f) return MediumStep::kEnded;
+    walk.beta *= T * sigma_n / pdf;
+    walk.r_u *= T * sigma_n / pdf;
+    walk.r_l /= pdf;
+    return walk.beta.is_black() || walk.r_u.is_black() ? MediumStep::kEnded : MediumStep::kCrossed;
+}
+
+// Scattering at point p of the walk's medium: light sampling with the phase function, then
+// the next direction sampled from it.
+void VolPathIntegrator::scatter_by_phase(const Scene& scene, Walk& walk, const Vec3& p) const {
+    const Vec3 wo = -glm::normalize(walk.ray.direction);
+    const HenyeyGreenstein phase(walk.medium->phase_asymmetry());
+    Sampler& sampler = *walk.sampler;
+    walk.L += walk.beta * direct_light(scene, p, nullptr, walk.medium, sampler, walk.rng, walk.r_u,
+                                       [&](const Vec3& wi, float& pdf_wi) {
+                                           pdf_wi = phase.eval(wo, wi);
+                                           return Spectrum(pdf_wi);
+                                       });
+    // Phase sampling is exact: the throughput keeps its value, p / pdf = 1.
+    const PhaseSample ps = phase.sample(wo, sampler.get_2d());
+    walk.r_l = walk.r_u / ps.p;
+    walk.specular_bounce = false;
+    walk.previous_point = p;
+    walk.ray = Ray{p, ps.wi, 0.0f, kInfinity};
 }
 
 // A path whose ray left the scene: the environment light (weighted against light

@@ -39,6 +39,9 @@ private:
     struct Walk;
     enum class MediumStep { kEnded, kScattered, kCrossed };
     MediumStep scatter_in_medium(const Scene& scene, Walk& walk, float t_hit) const;
+    MediumStep collide(const Scene& scene, Walk& walk, float t, const MediumPoint& point,
+                       const Spectrum& sigma_maj, const Spectrum& T) const;
+    void scatter_by_phase(const Scene& scene, Walk& walk, const Vec3& p) const;
     bool scatter_at_surface(const Scene& scene, Walk& walk, Arena& arena) const;
     void escape(const Scene& scene, Walk& walk) const;
 
