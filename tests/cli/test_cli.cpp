@@ -279,6 +279,17 @@ TEST_F(CliTest, InfoPrintsCounts) {
     EXPECT_NE(result.output.find("bounds:"), std::string::npos) << result.output;
 }
 
+// Media are listed, each with the script line that made it and its coefficients.
+TEST_F(CliTest, InfoListsMedia) {
+    const auto result =
+        run_glint(fmt::format("info {}/examples/foggy-cornell.lua", GLINT_SOURCE_DIR));
+    ASSERT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("media:      1"), std::string::npos) << result.output;
+    EXPECT_NE(result.output.find("foggy-cornell.lua:5: homogeneous"), std::string::npos)
+        << result.output;
+    EXPECT_NE(result.output.find("the camera's"), std::string::npos) << result.output;
+}
+
 TEST_F(CliTest, CompareReportsErrorAgainstReference) {
     ASSERT_EQ(
         run_glint(fmt::format("render {}small.lua -o {} --spp 2 --quiet", kScenes, out("low.exr")))
