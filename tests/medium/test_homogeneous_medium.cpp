@@ -7,6 +7,7 @@
 #include <glint/medium/registry.h>
 
 #include <gtest/gtest.h>
+#include <support/chi_square.h>
 #include <support/render_helpers.h>
 
 #include <cmath>
@@ -63,6 +64,38 @@ TEST(HomogeneousSlab, DeltaTrackingCrossesWithProbabilityOfTransmittance) {
         const double p = expected(hero);
         const double se = std::sqrt(p * (1.0 - p) / n);
         EXPECT_NEAR(crossed / static_cast<double>(n), p, 4.0 * se) << "hero " << hero;
+    }
+}
+
+// Delta tracking's first collision, chi-square against its density sigma exp(-sigma t)
+// (hero channel's sigma) over 20 bins of [0, d), the crossings without one as a 21st bin.
+TEST(HomogeneousSlab, CollisionDistancesFollowTheirDensity) {
+    const HomogeneousMedium medium(kSigmaA, kSigmaS, 0.0f);
+    const Ray ray{Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f)};
+    const int n = 100000, bins = 20;
+    for (int hero = 0; hero < 3; ++hero) {
+        const double sigma = kSigmaA.value(hero) + kSigmaS.value(hero);
+        std::vector<int> counts(bins + 1, 0);
+        Rng rng(11 + hero);
+        for (int i = 0; i < n; ++i) {
+            int bin = bins;
+            sample_collisions(medium, ray, kDepth, hero, rng,
+                              [&](float t, const MediumPoint&, const Spectrum&, const Spectrum&) {
+                                  bin = std::min(bins - 1, static_cast<int>(t / kDepth * bins));
+                                  return false;
+                              });
+            ++counts[bin];
+        }
+        double statistic = 0.0;
+        for (int b = 0; b <= bins; ++b) {
+            const double a = kDepth * b / bins, c = kDepth * (b + 1) / bins;
+            const double p =
+                b == bins ? std::exp(-sigma * kDepth) : std::exp(-sigma * a) - std::exp(-sigma * c);
+            const double expected_count = p * n;
+            statistic +=
+                (counts[b] - expected_count) * (counts[b] - expected_count) / expected_count;
+        }
+        EXPECT_GT(chi_square_upper_tail(statistic, bins), 0.01) << "hero " << hero;
     }
 }
 
