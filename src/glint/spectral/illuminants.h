@@ -8,8 +8,8 @@
 
 namespace glint::spectral {
 
-// "D65", "A", "F1" … "F12" (case-insensitive), normalised to 1 at 560 nm; nullptr for an
-// unknown name.
+// "D65", "A", "F1" … "F12" (case-insensitive), scaled to luminance 1 (their Y equals that of a
+// constant spectrum 1); nullptr for an unknown name.
 const TabulatedSpectrum* named_illuminant(std::string_view name);
 // The names named_illuminant knows, for error messages.
 std::vector<std::string> illuminant_names();

@@ -31,8 +31,8 @@ SigmoidPolynomial uplift_coefficients(const Rgb& rgb);
 // - reflectance: the sigmoid polynomial of rgb clamped to [0, 1] (≤ 1 everywhere);
 // - unbounded: m · s(λ) with m = 2 · max channel, s the polynomial of rgb / m (so any
 //   non-negative Rgb round-trips);
-// - illuminant: the unbounded spectrum times D65 normalised to 1 at 560 nm, so that
-//   rgb = (1,1,1) is the D65 white of sRGB.
+// - illuminant: the unbounded spectrum times D65 scaled to luminance 1, so that rgb = (1,1,1)
+//   is the D65 white of sRGB with luminance 1.
 float uplifted_rgb(const Rgb& rgb, RgbRole role, float nm);
 
 }  // namespace glint::spectral
