@@ -24,7 +24,9 @@ private:
     std::array<float, 3> m_c{0.0f, 0.0f, 0.0f};
 };
 
-// The sigmoid polynomial of a colour in [0, 1]³ (looked up in the fitted table).
+// The sigmoid polynomial of a colour in [0, 1]³: interpolated in the fitted table, then
+// polished by two Gauss–Newton steps (about a microsecond: call it once per colour, not per
+// wavelength).
 SigmoidPolynomial uplift_coefficients(const Rgb& rgb);
 
 // The value at `nm` of the spectrum `rgb` stands for in `role`:

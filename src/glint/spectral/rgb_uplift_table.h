@@ -13,7 +13,8 @@ inline constexpr int kUpliftResolution = 32;
 
 // The z value of each grid index (increasing from 0 to 1).
 extern const std::array<float, kUpliftResolution> kUpliftZ;
-// coefficients[((l · N + zi) · N + yi) · N + xi] = {c0, c1, c2} in nm.
+// coefficients[((l · N + zi) · N + yi) · N + xi] = {c0, c1, c2} of the normalised wavelength
+// (sigmoid_fit.h).
 extern const std::array<std::array<float, 3>,
                         3 * kUpliftResolution * kUpliftResolution * kUpliftResolution>
     kUpliftCoefficients;

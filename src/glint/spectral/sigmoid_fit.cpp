@@ -11,7 +11,6 @@ namespace {
 constexpr double kFirstNm = 360.0;
 constexpr double kRangeNm = 470.0;
 constexpr int kMaxIterations = 200;
-constexpr double kTolerance = 1e-9;
 
 using Vec3 = std::array<double, 3>;
 using Mat3 = std::array<Vec3, 3>;
@@ -87,12 +86,15 @@ double sigmoid(double x) {
     return 0.5 + x / (2.0 * std::sqrt(1.0 + x * x));
 }
 
-SigmoidFit fit_sigmoid_polynomial(const Vec3& target, const NormalisedCoefficients& start) {
+SigmoidFit fit_sigmoid_polynomial(const Vec3& target, const NormalisedCoefficients& start,
+                                  double tolerance, int max_steps) {
     NormalisedCoefficients c = start;
     Evaluation e = evaluate(c, target);
     double error = norm2(e.residual);
     double mu = 1e-3;
-    for (int iteration = 0; iteration < kMaxIterations && error > kTolerance * kTolerance;
+    int accepted = 0;
+    for (int iteration = 0;
+         iteration < kMaxIterations && accepted < max_steps && error > tolerance * tolerance;
          ++iteration) {
         Vec3 step{};
         if (!damped_step(e, mu, step)) break;
@@ -103,6 +105,7 @@ SigmoidFit fit_sigmoid_polynomial(const Vec3& target, const NormalisedCoefficien
             c = trial;
             e = trial_e;
             error = trial_error;
+            ++accepted;
             mu = std::max(mu * 0.1, 1e-12);
         } else {
             mu *= 10.0;

@@ -15,9 +15,11 @@ struct SigmoidFit {
     double residual = 0.0;  // the largest channel error of the fitted colour
 };
 
-// Fits the colour `target` (linear Rec.709, each channel in [0, 1]) from `start`.
+// Fits the colour `target` (linear Rec.709, each channel in [0, 1]) from `start`, until every
+// channel is within `tolerance` or after `max_steps` accepted Gauss–Newton steps.
 SigmoidFit fit_sigmoid_polynomial(const std::array<double, 3>& target,
-                                  const NormalisedCoefficients& start);
+                                  const NormalisedCoefficients& start, double tolerance = 1e-9,
+                                  int max_steps = 200);
 
 // The same polynomial with λ in nm: c0 λ² + c1 λ + c2.
 std::array<double, 3> to_nm_coefficients(const NormalisedCoefficients& c);

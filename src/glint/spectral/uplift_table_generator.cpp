@@ -38,7 +38,7 @@ void fit_column(int l, int yi, int xi, std::vector<std::array<double, 3>>& out, 
         for (int zi = from; zi != to; zi += step) {
             const auto fit = glint::spectral::fit_sigmoid_polynomial(grid_colour(l, zi, yi, xi), c);
             c = fit.coefficients;
-            out[cell(l, zi, yi, xi)] = glint::spectral::to_nm_coefficients(c);
+            out[cell(l, zi, yi, xi)] = c;
             if (zi > 0) worst = std::max(worst, fit.residual);  // black is only approached
         }
     };
