@@ -1,6 +1,7 @@
 #include <glint/spectral/conductors.h>
 
 #include <glint/spectral/conductor_data.h>
+#include <glint/spectral/spectrum_to_rgb.h>
 
 #include <algorithm>
 #include <cctype>
@@ -36,6 +37,8 @@ const std::vector<Entry>& all_conductors() {
 ConductorData::ConductorData(std::string name, std::vector<Sample> samples)
     : m_name(std::move(name)), m_samples(std::move(samples)) {
     if (m_samples.empty()) throw std::invalid_argument("a conductor needs measured samples");
+    m_rgb_eta = quantity_to_rgb([this](double nm) { return eval(float(nm)).eta; });
+    m_rgb_k = quantity_to_rgb([this](double nm) { return eval(float(nm)).k; });
 }
 
 ComplexIor ConductorData::eval(float nm) const {

@@ -1,5 +1,7 @@
 #pragma once
 // Measured optical constants of metals: the complex index η + i k at a wavelength.
+#include <glint/core/rgb.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
@@ -22,9 +24,15 @@ public:
     ComplexIor eval(float nm) const;
     const std::string& name() const { return m_name; }
 
+    // η and k integrated to RGB (quantity_to_rgb: weighted by the observer under D65), what
+    // RGB mode uses; computed once.
+    Rgb rgb_eta() const { return m_rgb_eta; }
+    Rgb rgb_k() const { return m_rgb_k; }
+
 private:
     std::string m_name;
     std::vector<Sample> m_samples;
+    Rgb m_rgb_eta, m_rgb_k;
 };
 
 // "Au", "Ag", "Cu", "Al" and the other names of conductor_names() (case-insensitive; "gold",
