@@ -124,21 +124,24 @@ TEST(SpectralBlackbody, D65sCorrelatedColourTemperatureIs6504K) {
     EXPECT_NEAR(best_distance, 0.0032, 3e-4);
 }
 
-TEST(SpectralTabulated, InterpolatesAndHoldsItsEnds) {
+TEST(SpectralTabulated, InterpolatesAndIsZeroOutside) {
     const TabulatedSpectrum s({{400.0f, 1.0f}, {500.0f, 3.0f}, {600.0f, 2.0f}});
     EXPECT_FLOAT_EQ(s.eval(450.0f), 2.0f);
     EXPECT_FLOAT_EQ(s.eval(550.0f), 2.5f);
-    EXPECT_FLOAT_EQ(s.eval(300.0f), 1.0f);
-    EXPECT_FLOAT_EQ(s.eval(700.0f), 2.0f);
+    EXPECT_FLOAT_EQ(s.eval(400.0f), 1.0f);
+    EXPECT_FLOAT_EQ(s.eval(600.0f), 2.0f);
+    EXPECT_EQ(s.eval(399.0f), 0.0f);
+    EXPECT_EQ(s.eval(601.0f), 0.0f);
 }
 
 TEST(SpectralTabulated, RejectsBadTables) {
     EXPECT_TRUE(TabulatedSpectrum::check({}).has_value());
     EXPECT_TRUE(TabulatedSpectrum::check({{500.0f, 1.0f}, {450.0f, 1.0f}}).has_value());
-    EXPECT_TRUE(TabulatedSpectrum::check({{500.0f, -1.0f}}).has_value());
-    EXPECT_TRUE(TabulatedSpectrum::check({{-5.0f, 1.0f}}).has_value());
-    EXPECT_TRUE(TabulatedSpectrum::check({{500.0f, NAN}}).has_value());
-    EXPECT_FALSE(TabulatedSpectrum::check({{500.0f, 1.0f}}).has_value());
+    EXPECT_TRUE(TabulatedSpectrum::check({{500.0f, 1.0f}}).has_value());
+    EXPECT_TRUE(TabulatedSpectrum::check({{400.0f, 1.0f}, {500.0f, -1.0f}}).has_value());
+    EXPECT_TRUE(TabulatedSpectrum::check({{-5.0f, 1.0f}, {500.0f, 1.0f}}).has_value());
+    EXPECT_TRUE(TabulatedSpectrum::check({{400.0f, 1.0f}, {500.0f, NAN}}).has_value());
+    EXPECT_FALSE(TabulatedSpectrum::check({{400.0f, 1.0f}, {500.0f, 1.0f}}).has_value());
     EXPECT_THROW(TabulatedSpectrum({{500.0f, 1.0f}, {500.0f, 2.0f}}), std::invalid_argument);
 }
 

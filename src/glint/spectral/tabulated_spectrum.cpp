@@ -10,7 +10,7 @@ namespace glint::spectral {
 
 std::optional<std::string> TabulatedSpectrum::check(
     const std::vector<std::pair<float, float>>& samples) {
-    if (samples.empty()) return "a spectrum needs at least one {nm, value} pair";
+    if (samples.size() < 2) return "a spectrum needs at least two {nm, value} pairs";
     for (size_t i = 0; i < samples.size(); ++i) {
         const auto [nm, value] = samples[i];
         if (!std::isfinite(nm) || nm <= 0.0f)
@@ -36,9 +36,8 @@ TabulatedSpectrum::TabulatedSpectrum(std::vector<std::pair<float, float>> sample
 }
 
 float TabulatedSpectrum::eval(float nm) const {
-    if (m_nm.empty()) return 0.0f;
-    if (nm <= m_nm.front()) return m_value.front();
-    if (nm >= m_nm.back()) return m_value.back();
+    if (m_nm.empty() || !(nm >= m_nm.front() && nm <= m_nm.back())) return 0.0f;
+    if (nm == m_nm.back()) return m_value.back();
     const auto hi =
         static_cast<size_t>(std::upper_bound(m_nm.begin(), m_nm.end(), nm) - m_nm.begin());
     const size_t lo = hi - 1;

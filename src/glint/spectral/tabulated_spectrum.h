@@ -1,7 +1,7 @@
 #pragma once
 // A spectrum given as (wavelength nm, value) pairs: measured data, standard illuminants and
-// what a scene states in Lua as { {nm, value}, ... }. Linear between samples, the end values
-// held beyond them.
+// what a scene states in Lua as { {nm, value}, ... }. Linear between samples, 0 outside them
+// (a table says nothing of the light it does not list).
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,7 +13,7 @@ class TabulatedSpectrum {
 public:
     TabulatedSpectrum() = default;
 
-    // Checks the table: at least one pair, wavelengths strictly increasing and positive,
+    // Checks the table: at least two pairs, wavelengths strictly increasing and positive,
     // values finite and non-negative. Returns what is wrong, or nothing if it is valid.
     static std::optional<std::string> check(const std::vector<std::pair<float, float>>& samples);
     // The table, which must pass `check` (throws std::invalid_argument otherwise).
