@@ -50,6 +50,11 @@ public:
           m_coat_albedo(1.5f, clamped_alpha(in.clearcoat_roughness),
                         clamped_alpha(in.clearcoat_roughness)) {}
 
+    // The transmission's index per wavelength where `abbe` gave one; null otherwise.
+    const spectral::DispersiveIor* dispersion() const {
+        return m_in.dispersion ? &*m_in.dispersion : nullptr;
+    }
+
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
         PrincipledParams p;
         p.base_color = m_in.base_color.eval(si);

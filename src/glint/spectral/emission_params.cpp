@@ -5,6 +5,8 @@
 #include <glint/spectral/illuminants.h>
 #include <glint/spectral/spectrum_to_rgb.h>
 
+#include <cmath>
+
 #include <fmt/format.h>
 
 namespace glint::spectral {
@@ -26,7 +28,9 @@ EmissionShape::EmissionShape(double kelvin, TabulatedSpectrum spectrum)
     const double luminance =
         emission_to_rgb([this](double nm) { return unscaled(nm); }).luminance();
     m_scale = luminance > 0.0 ? 1.0 / luminance : 0.0;
-    m_rgb = emission_to_rgb([this](double nm) { return eval(nm); });
+    // A very red black body (below ~2000 K) lies outside the Rec.709 gamut: its blue is a
+    // hair below 0, which RGB mode clips (the spectral mode keeps the spectrum itself).
+    m_rgb = emission_to_rgb([this](double nm) { return eval(nm); }).clamped(0.0f, INFINITY);
 }
 
 EmissionShape EmissionShape::blackbody(double kelvin) {
