@@ -1,6 +1,7 @@
 #include <glint/material/conductor_presets.h>
 #include <glint/material/materials.h>
 #include <glint/material/rough_conductor.h>
+#include <glint/spectral/conductors.h>
 
 #include <fmt/format.h>
 
@@ -10,8 +11,14 @@ namespace {
 class ConductorMaterial final : public Material {
 public:
     ConductorMaterial(const Spectrum& eta, const Spectrum& k, const FloatInput& roughness,
-                      float anisotropy, const SpectrumInput& tint)
-        : m_eta(eta), m_k(k), m_roughness(roughness), m_anisotropy(anisotropy), m_tint(tint) {}
+                      float anisotropy, const SpectrumInput& tint,
+                      const spectral::ConductorData* measured)
+        : m_eta(eta),
+          m_k(k),
+          m_roughness(roughness),
+          m_anisotropy(anisotropy),
+          m_tint(tint),
+          m_measured(measured) {}
 
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
         const float alpha = roughness_to_alpha(m_roughness.eval(si));
@@ -19,6 +26,7 @@ public:
         return arena.make<RoughConductorBsdf>(GgxDistribution::anisotropic(alpha, m_anisotropy),
                                               fresnel);
     }
+    const spectral::ConductorData* measured() const { return m_measured; }
     // The reflectance at normal incidence, the colour one sees in a metal.
     Spectrum albedo(const SurfaceInteraction& si) const override {
         return m_tint.eval(si) * fresnel_conductor(1.0f, m_eta, m_k);
@@ -30,6 +38,9 @@ private:
     FloatInput m_roughness;
     float m_anisotropy;
     SpectrumInput m_tint;
+    // The measured η(λ), k(λ) behind m_eta and m_k when the scene named a `metal` (what a
+    // spectral mode evaluates per wavelength); null for RGB constants.
+    const spectral::ConductorData* m_measured;
 };
 
 std::string preset_names() {
@@ -40,10 +51,19 @@ std::string preset_names() {
     return names;
 }
 
+std::string measured_names() {
+    std::string names;
+    for (const std::string& name : spectral::conductor_names())
+        names += fmt::format("{}'{}'", names.empty() ? "" : ", ", name);
+    return names;
+}
+
 }  // namespace
 
 // glint.conductor{...}: a metal, smooth or rough.
-//   preset      string    "aluminium"  measured metal: "gold", "silver", "copper" or
+//   metal       string    -            measured η(λ), k(λ): "Au", "Ag", "Cu", "Al" (or "gold",
+//                                       ...; spectral/conductors.h), integrated to RGB here
+//   preset      string    "aluminium"  RGB constants of a metal: "gold", "silver", "copper" or
 //                                       "aluminium" (conductor_presets.h); or give both of
 //   eta, k      spectrum  -            the complex index eta + i k per channel (eta > 0, k >= 0)
 //   roughness   float or texture  0.1  in [0, 1], alpha = roughness^2; 0 is a mirror
@@ -55,14 +75,28 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
     if (params.has("preset") && (has_eta || has_k)) {
         params.fail("give either 'preset' or 'eta' and 'k', not both");
     }
+    if (params.has("metal") && (params.has("preset") || has_eta || has_k)) {
+        params.fail("give 'metal' alone, without 'preset', 'eta' or 'k'");
+    }
     if (has_eta != has_k) params.fail("give both 'eta' and 'k' (the complex index eta + i k)");
     Spectrum eta, k;
+    const spectral::ConductorData* measured = nullptr;
     if (has_eta) {
         const Rgb eta_rgb = params.get_rgb("eta"), k_rgb = params.get_rgb("k");
         if (eta_rgb.min_value() <= 0.0f) params.fail("'eta' must be positive");
         if (k_rgb.min_value() < 0.0f) params.fail("'k' must not be negative");
         eta = uplift(eta_rgb, RgbRole::unbounded);
         k = uplift(k_rgb, RgbRole::unbounded);
+    } else if (params.has("metal")) {
+        const std::string name = params.get_string("metal");
+        const spectral::ConductorData* metal = spectral::named_conductor(name);
+        if (!metal) {
+            params.fail(
+                fmt::format("unknown 'metal' '{}'; measured metals: {}", name, measured_names()));
+        }
+        eta = uplift(metal->rgb_eta(), RgbRole::unbounded);
+        k = uplift(metal->rgb_k(), RgbRole::unbounded);
+        measured = metal;
     } else {
         const std::string name = params.get_string("preset", "aluminium");
         const ConductorPreset* preset = find_conductor_preset(name);
@@ -79,7 +113,7 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
         params.fail("'anisotropy' must lie in [-1, 1]");
     }
     const SpectrumInput tint = textures.spectrum(params, "tint", Rgb(1.0f), 0.0f, 1.0f);
-    return std::make_unique<ConductorMaterial>(eta, k, roughness, anisotropy, tint);
+    return std::make_unique<ConductorMaterial>(eta, k, roughness, anisotropy, tint, measured);
 }
 
 }  // namespace glint
