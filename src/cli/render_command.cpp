@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <tuple>
 
 namespace glint::cli {
 

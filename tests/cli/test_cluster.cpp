@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <unistd.h>
+
 using namespace glint;
 using glint::test::run_command;
 using glint::test::run_glint;

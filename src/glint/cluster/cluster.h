@@ -40,7 +40,8 @@ public:
     /// equal as they can be, so that the ranks' results in rank order are the items' order.
     std::pair<uint64_t, uint64_t> share(uint64_t count) const {
         const auto boundary = [&](int r) {
-            return static_cast<uint64_t>(static_cast<unsigned __int128>(count) * r / size());
+            // count * r stays below 2^64 for any count a pass or an image has (< 2^40).
+            return count * static_cast<uint64_t>(r) / static_cast<uint64_t>(size());
         };
         return {boundary(rank()), boundary(rank() + 1)};
     }

@@ -6,9 +6,11 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <thread>
+#include <tuple>
 
 namespace glint {
 
@@ -100,10 +102,18 @@ namespace {
 std::vector<std::string> agree(Cluster& cluster, const std::string& status) {
     const std::vector<std::string> statuses = cluster.all_gather_text(status);
     std::string failures;
+    size_t failed = 0;
     for (size_t r = 0; r < statuses.size(); ++r) {
         if (statuses[r].rfind(kFailed, 0) != 0) continue;
         if (!failures.empty()) failures += "; ";
         failures += fmt::format("rank {}: {}", r, statuses[r].substr(std::string(kFailed).size()));
+        ++failed;
+    }
+    // Every rank failing the same way (a bad flag, a bad scene everywhere) is said once.
+    if (failed == statuses.size() && failed > 1 &&
+        std::all_of(statuses.begin(), statuses.end(),
+                    [&](const std::string& s) { return s == statuses[0]; })) {
+        failures = fmt::format("every rank: {}", statuses[0].substr(std::string(kFailed).size()));
     }
     if (!failures.empty()) throw Error(fmt::format("the cluster render failed: {}", failures));
     return statuses;
@@ -119,11 +129,6 @@ std::string status_of(Work&& work) {
     } catch (const std::exception& e) {
         return kFailed + std::string(e.what());
     }
-}
-
-// Whether the job splits each pixel's samples among the ranks: for tile integrators.
-bool splits_samples(const RenderSettings& settings) {
-    return dynamic_cast<const TileIntegrator*>(make_integrator(settings).get()) != nullptr;
 }
 
 // Rank 0: writes every output of the job or none.
@@ -147,6 +152,7 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
     const int rank = cluster.rank(), ranks = cluster.size();
     SceneDesc desc;
     RenderSettings settings;
+    bool by_samples = true;
     // First every rank loads its scene (a file missing on one machine, a bad script), so that
     // no rank renders for nothing when another cannot start.
     agree(cluster, status_of([&] {
@@ -155,14 +161,21 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
                   throw Error(fmt::format("{}: {} samples per pixel cannot be shared by {} ranks",
                                           settings.where_of("spp"), settings.spp, ranks));
               }
+              // Tile integrators: each rank renders a share of every pixel's samples.
+              // Others share their work themselves (sppm) and every rank ends with the
+              // whole image; the rest cannot be spread.
+              const auto integrator = make_integrator(settings);
+              by_samples = dynamic_cast<const TileIntegrator*>(integrator.get()) != nullptr;
+              if (!by_samples && !integrator->share_work(cluster)) {
+                  throw Error(fmt::format("{}: integrator '{}' cannot be spread over MPI ranks "
+                                          "(tile integrators and sppm can; docs/cluster.md)",
+                                          settings.where_of("integrator"), settings.integrator));
+              }
               // Rank 0 checks where the outputs go before anyone renders for an hour.
               if (rank == 0) OutputBatch::check_targets(settings.outputs);
               return std::string();
           }));
 
-    // Tile integrators: each rank renders a share of every pixel's samples. Others share
-    // their work themselves (sppm) and every rank ends with the whole image.
-    const bool by_samples = splits_samples(settings);
     const uint64_t job_samples = static_cast<uint64_t>(settings.output_width()) *
                                  settings.output_height() * settings.spp *
                                  (by_samples ? 1 : static_cast<uint64_t>(ranks));
