@@ -166,7 +166,18 @@ TEST_P(MpiImageTest, ThreeRanksGiveTheSingleProcessImage) {
     expect_identical(read_image(out("mpi.exr")), read_image(out("single.exr")));
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, MpiImageTest, ::testing::Values("path", "whitted"));
+INSTANTIATE_TEST_SUITE_P(Integrators, MpiImageTest, ::testing::Values("path", "whitted", "sppm"));
+
+// VCM's light subpaths are not exchanged yet (docs/cluster.md): refused before any rendering.
+TEST_F(MpiTest, IntegratorsThatCannotBeSpreadAreRefused) {
+    const auto job = run_command(fmt::format("{} render {} --integrator vcm --spp 6 -o {} 2>&1",
+                                             mpirun(3), kCornell, out("x.exr")));
+    EXPECT_NE(job.exit_code, 0) << job.output;
+    EXPECT_NE(job.output.find("every rank: --integrator: integrator 'vcm' cannot be spread"),
+              std::string::npos)
+        << job.output;
+    EXPECT_FALSE(fs::exists(out("x.exr")));
+}
 
 TEST_F(MpiTest, RankMissingTheSceneIsNamedAndNothingIsWritten) {
     // The scene is in the working directory of every rank but rank 1, as on a cluster where

@@ -96,7 +96,9 @@ TEST(FilmSums, SplitFilmsAddUpToTheWholeFilmExactly) {
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x) {
                 const float scale = std::ldexp(1.0f, static_cast<int>(rng.next_float() * 40.0f) - 20);
-                const Spectrum L(rng.next_float() * scale, rng.next_float(), rng.next_float() * 3.0f);
+                const Spectrum L = uplift(
+                    Rgb(rng.next_float() * scale, rng.next_float(), rng.next_float() * 3.0f),
+                    RgbRole::illuminant);
                 const float weight = 0.25f + rng.next_float();
                 const AovSample aov{Spectrum(rng.next_float()), Vec3(0, 1, 0), rng.next_float() * 9.0f};
                 whole.add_sample({x, y}, L, weight, &aov, index);
