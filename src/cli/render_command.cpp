@@ -151,7 +151,8 @@ int run_render(const RenderOptions& options, Cluster& cluster) {
         }
     }
     if (!options.quiet && cluster.size() > 1) {
-        fmt::print(stderr, "cluster: {} ranks; rank 0 exchanged {} bytes in {:.3f} s of collectives\n",
+        fmt::print(stderr,
+                   "cluster: {} ranks; rank 0 exchanged {} bytes in {:.3f} s of collectives\n",
                    cluster.size(), cluster.bytes_exchanged(), cluster.exchange_seconds());
     }
     if (render.non_finite_samples > 0) {

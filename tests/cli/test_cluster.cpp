@@ -26,9 +26,9 @@ class ClusterTest : public ::testing::Test {
 protected:
     void SetUp() override {
         const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-        m_dir = fs::temp_directory_path() /
-                fmt::format("glint-cluster-{}-{}-{}", info->test_suite_name(), info->name(),
-                            ::getpid());
+        m_dir = fs::temp_directory_path() / fmt::format("glint-cluster-{}-{}-{}",
+                                                        info->test_suite_name(), info->name(),
+                                                        ::getpid());
         fs::remove_all(m_dir);
         fs::create_directories(m_dir);
     }
@@ -63,7 +63,8 @@ class MergeTest : public ClusterTest, public ::testing::WithParamInterface<const
 // Parts of uneven size, given to merge out of order, add up to the whole render exactly.
 TEST_P(MergeTest, UnevenSplitMergesToTheWholeRenderBitForBit) {
     const std::string flags = render_flags(GetParam());
-    const auto whole = run_glint(fmt::format("render {} {} -o {}", kCornell, flags, out("whole.exr")));
+    const auto whole =
+        run_glint(fmt::format("render {} {} -o {}", kCornell, flags, out("whole.exr")));
     ASSERT_EQ(whole.exit_code, 0) << whole.output;
     const char* ranges[] = {"0:3", "3:4", "4:8"};
     std::string parts;
@@ -74,8 +75,7 @@ TEST_P(MergeTest, UnevenSplitMergesToTheWholeRenderBitForBit) {
         ASSERT_EQ(r.exit_code, 0) << r.output;
         parts = part + " " + parts;  // reversed: the order of the parts does not matter
     }
-    const auto merged =
-        run_glint(fmt::format("merge {} -o {} --quiet", parts, out("merged.exr")));
+    const auto merged = run_glint(fmt::format("merge {} -o {} --quiet", parts, out("merged.exr")));
     ASSERT_EQ(merged.exit_code, 0) << merged.output;
     EXPECT_EQ(merged.output.find("warning"), std::string::npos) << merged.output;
     expect_identical(read_image(out("merged.exr")), read_image(out("whole.exr")));
@@ -114,16 +114,16 @@ TEST_F(ClusterTest, MergeRefusesOverlapsAndOtherRendersAndWarnsOfGaps) {
 
 TEST_F(ClusterTest, SamplesFlagIsChecked) {
     for (const char* bad : {"4:2", "3", "a:b", "-1:2"}) {
-        const auto r = run_glint(fmt::format("render {} --samples {} -o {} --quiet", kCornell, bad,
-                                             out("x.exr")));
+        const auto r = run_glint(
+            fmt::format("render {} --samples {} -o {} --quiet", kCornell, bad, out("x.exr")));
         EXPECT_EQ(r.exit_code, 2) << bad << ": " << r.output;
     }
-    auto r = run_glint(fmt::format("render {} --spp 4 --samples 0:8 -o {} --quiet", kCornell,
-                                   out("x.exr")));
+    auto r = run_glint(
+        fmt::format("render {} --spp 4 --samples 0:8 -o {} --quiet", kCornell, out("x.exr")));
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_NE(r.output.find("B <= spp"), std::string::npos) << r.output;
-    r = run_glint(fmt::format("render {} --spp 4 --samples 0:2 -o {} --quiet", kCornell,
-                              out("x.png")));
+    r = run_glint(
+        fmt::format("render {} --spp 4 --samples 0:2 -o {} --quiet", kCornell, out("x.png")));
     EXPECT_EQ(r.exit_code, 1) << r.output;
     EXPECT_NE(r.output.find("EXR files only"), std::string::npos) << r.output;
     r = run_glint(fmt::format("render {} --spp 4 --samples 0:2 --integrator bdpt -o {} --quiet",
@@ -187,8 +187,8 @@ TEST_F(MpiTest, RankMissingTheSceneIsNamedAndNothingIsWritten) {
                  fmt::format("if [ \"$OMPI_COMM_WORLD_RANK\" = 1 ]; then cd /; else cd {}; fi\n"
                              "exec {} render scene.lua --spp 6 --res 24x18 -o {} --quiet\n",
                              m_dir.string(), test::glint_binary(), out("x.exr")));
-    const auto job = run_command(
-        fmt::format("mpirun --oversubscribe -np 3 bash {} 2>&1", out("rank.sh")));
+    const auto job =
+        run_command(fmt::format("mpirun --oversubscribe -np 3 bash {} 2>&1", out("rank.sh")));
     EXPECT_NE(job.exit_code, 0) << job.output;
     EXPECT_NE(job.output.find("rank 1: cannot"), std::string::npos) << job.output;
     EXPECT_EQ(job.output.find("rank 0:"), std::string::npos) << job.output;

@@ -64,7 +64,8 @@ TEST(FixedSum, ValueIsTheSumToWithinTheGridAndOneRounding) {
         reference += t;
     }
     // Each term is rounded to 2^-60 at most; the long double reference has 64-bit mantissas.
-    const double bound = 1000 * std::ldexp(1.0, -61) + std::abs(static_cast<double>(reference)) * 1e-15;
+    const double bound =
+        1000 * std::ldexp(1.0, -61) + std::abs(static_cast<double>(reference)) * 1e-15;
     EXPECT_NEAR(sum.value(), static_cast<double>(reference), bound);
 }
 
@@ -95,12 +96,14 @@ TEST(FilmSums, SplitFilmsAddUpToTheWholeFilmExactly) {
     for (int index = 0; index < n; ++index) {
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x) {
-                const float scale = std::ldexp(1.0f, static_cast<int>(rng.next_float() * 40.0f) - 20);
-                const Spectrum L = uplift(
-                    Rgb(rng.next_float() * scale, rng.next_float(), rng.next_float() * 3.0f),
-                    RgbRole::illuminant);
+                const float scale =
+                    std::ldexp(1.0f, static_cast<int>(rng.next_float() * 40.0f) - 20);
+                const Spectrum L =
+                    uplift(Rgb(rng.next_float() * scale, rng.next_float(), rng.next_float() * 3.0f),
+                           RgbRole::illuminant);
                 const float weight = 0.25f + rng.next_float();
-                const AovSample aov{Spectrum(rng.next_float()), Vec3(0, 1, 0), rng.next_float() * 9.0f};
+                const AovSample aov{Spectrum(rng.next_float()), Vec3(0, 1, 0),
+                                    rng.next_float() * 9.0f};
                 whole.add_sample({x, y}, L, weight, &aov, index);
                 (index < k ? first : second).add_sample({x, y}, L, weight, &aov, index);
             }

@@ -19,7 +19,8 @@ public:
     /// Collective: every rank's `text`, in rank order, on every rank.
     virtual std::vector<std::string> all_gather_text(const std::string& text) = 0;
     /// Collective: every rank's `bytes`, in rank order, on every rank (the counts may differ).
-    virtual std::vector<std::vector<uint8_t>> all_gather_bytes(const std::vector<uint8_t>& bytes) = 0;
+    virtual std::vector<std::vector<uint8_t>> all_gather_bytes(
+        const std::vector<uint8_t>& bytes) = 0;
     /// Ends the whole job at once, after printing "glint: error: rank R: `message`": for a
     /// failure inside a collective exchange, which the other ranks would wait for forever.
     [[noreturn]] virtual void abort(const std::string& message) = 0;

@@ -168,12 +168,15 @@ std::unique_ptr<Cluster> make_cluster(int& argc, char**& argv) {
     if (!started_by_mpirun()) return make_single_process();
     auto cluster = std::make_unique<MpiCluster>(argc, argv);
     if (!cluster->threads_supported()) {
-        cluster->abort("this MPI library lacks MPI_THREAD_MULTIPLE, which glint's progress "
-                       "relay needs (Debian's Open MPI has it)");
+        cluster->abort(
+            "this MPI library lacks MPI_THREAD_MULTIPLE, which glint's progress "
+            "relay needs (Debian's Open MPI has it)");
     }
     return cluster;
 }
 
-bool cluster_has_mpi() { return true; }
+bool cluster_has_mpi() {
+    return true;
+}
 
 }  // namespace glint

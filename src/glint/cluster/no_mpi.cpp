@@ -9,6 +9,8 @@ std::unique_ptr<Cluster> make_cluster(int& argc, char**& argv) {
     return make_single_process();
 }
 
-bool cluster_has_mpi() { return false; }
+bool cluster_has_mpi() {
+    return false;
+}
 
 }  // namespace glint

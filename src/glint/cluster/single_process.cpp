@@ -31,6 +31,8 @@ public:
 
 }  // namespace
 
-std::unique_ptr<Cluster> make_single_process() { return std::make_unique<SingleProcess>(); }
+std::unique_ptr<Cluster> make_single_process() {
+    return std::make_unique<SingleProcess>();
+}
 
 }  // namespace glint

@@ -49,10 +49,12 @@ FixedSum get_sum(const Image& image, int x, int y, int channel) {
     uint16_t words[FixedSum::kWords];
     for (int i = 0; i < FixedSum::kWords; ++i) {
         const float value = image.at(x, y, channel + i);
-        if (!(value >= 0.0f && value <= 65535.0f) || value != static_cast<float>(static_cast<int>(value)))
-            throw Error(fmt::format("partial render: pixel ({}, {}) holds {} where a 16-bit word "
-                                    "was expected (a file not written by glint render --samples?)",
-                                    x, y, value));
+        if (!(value >= 0.0f && value <= 65535.0f) ||
+            value != static_cast<float>(static_cast<int>(value)))
+            throw Error(
+                fmt::format("partial render: pixel ({}, {}) holds {} where a 16-bit word "
+                            "was expected (a file not written by glint render --samples?)",
+                            x, y, value));
         words[i] = static_cast<uint16_t>(value);
     }
     return FixedSum::from_words(words);
@@ -86,9 +88,8 @@ Image Film::sums_image() const {
             sums.at(x, y, count_first + 1) = static_cast<float>(p.non_finite >> 16);
             if (!m_with_aovs) continue;
             const AovPixel& a = m_aovs[i];
-            const FixedSum* aov_sums[8] = {&a.weight_sum, &a.albedo[0], &a.albedo[1],
-                                           &a.albedo[2],  &a.normal[0], &a.normal[1],
-                                           &a.normal[2],  &a.depth};
+            const FixedSum* aov_sums[8] = {&a.weight_sum, &a.albedo[0], &a.albedo[1], &a.albedo[2],
+                                           &a.normal[0],  &a.normal[1], &a.normal[2], &a.depth};
             for (int k = 0; k < 8; ++k)
                 put_sum(sums, x, y, aov_first + k * FixedSum::kWords, *aov_sums[k]);
         }
@@ -103,7 +104,8 @@ void Film::add_sums_image(const Image& sums) {
     }
     if (m_with_halves) throw Error("film: partial renders cannot fill the denoiser's halves");
     int radiance[4];
-    for (int k = 0; k < 4; ++k) radiance[k] = word_channels(sums, kRadianceSums[k], FixedSum::kWords);
+    for (int k = 0; k < 4; ++k)
+        radiance[k] = word_channels(sums, kRadianceSums[k], FixedSum::kWords);
     const int count = word_channels(sums, "nonfinite", kCountWords);
     const bool has_aovs = sums.channel_index("sum.aov_weight.0") >= 0;
     if (has_aovs != m_with_aovs) {
@@ -113,7 +115,8 @@ void Film::add_sums_image(const Image& sums) {
                                "--aovs or none)");
     }
     int aov[8] = {};
-    for (int k = 0; k < 8 && has_aovs; ++k) aov[k] = word_channels(sums, kAovSums[k], FixedSum::kWords);
+    for (int k = 0; k < 8 && has_aovs; ++k)
+        aov[k] = word_channels(sums, kAovSums[k], FixedSum::kWords);
     for (int y = 0; y < m_height; ++y) {
         for (int x = 0; x < m_width; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * m_width + x;

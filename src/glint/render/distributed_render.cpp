@@ -167,9 +167,10 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
               const auto integrator = make_integrator(settings);
               by_samples = dynamic_cast<const TileIntegrator*>(integrator.get()) != nullptr;
               if (!by_samples && !integrator->share_work(cluster)) {
-                  throw Error(fmt::format("{}: integrator '{}' cannot be spread over MPI ranks "
-                                          "(tile integrators and sppm can; docs/cluster.md)",
-                                          settings.where_of("integrator"), settings.integrator));
+                  throw Error(
+                      fmt::format("{}: integrator '{}' cannot be spread over MPI ranks "
+                                  "(tile integrators and sppm can; docs/cluster.md)",
+                                  settings.where_of("integrator"), settings.integrator));
               }
               // Rank 0 checks where the outputs go before anyone renders for an hour.
               if (rank == 0) OutputBatch::check_targets(settings.outputs);
@@ -233,8 +234,8 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
     report.render = std::move(part);
     report.render.image = merge_partial_renders(parts, names, warnings);
     for (const std::string& warning : warnings) warn(control, warning);
-    report.render.stats.samples = static_cast<uint64_t>(settings.output_width()) *
-                                  settings.output_height() * settings.spp;
+    report.render.stats.samples =
+        static_cast<uint64_t>(settings.output_width()) * settings.output_height() * settings.spp;
     return write_report(std::move(report.render), settings, control);
 }
 

@@ -32,9 +32,10 @@ PartInfo read_part_info(const Image& part, const std::string& name) {
     const std::string* spp = part.attribute("spp");
     const std::string* render = part.attribute("render");
     if (!samples || !spp || !render) {
-        throw Error(fmt::format("{}: not a partial render (no glint:samples, glint:spp and "
-                                "glint:render attributes; write it with glint render --samples)",
-                                name));
+        throw Error(
+            fmt::format("{}: not a partial render (no glint:samples, glint:spp and "
+                        "glint:render attributes; write it with glint render --samples)",
+                        name));
     }
     PartInfo info;
     char colon = 0;
@@ -54,9 +55,10 @@ TileIntegrator* partial_render_integrator(Integrator& integrator, const RenderSe
                                           SampleRange samples) {
     auto* tile = dynamic_cast<TileIntegrator*>(&integrator);
     if (!tile) {
-        throw Error(fmt::format("{}: integrator '{}' renders whole images; sample ranges need a "
-                                "tile integrator (path, whitted, photon, ...)",
-                                settings.where_of("integrator"), settings.integrator));
+        throw Error(
+            fmt::format("{}: integrator '{}' renders whole images; sample ranges need a "
+                        "tile integrator (path, whitted, photon, ...)",
+                        settings.where_of("integrator"), settings.integrator));
     }
     if (settings.adaptive != "none")
         throw Error(fmt::format("{}: sample ranges need uniform sampling (adaptive = 'none')",
@@ -65,8 +67,8 @@ TileIntegrator* partial_render_integrator(Integrator& integrator, const RenderSe
         throw Error(fmt::format("{}: a partial render cannot be denoised; denoise the merged image",
                                 settings.where_of("denoise")));
     if (!settings.debug.empty())
-        throw Error(fmt::format("{}: a partial render writes no debug views",
-                                settings.where_of("debug")));
+        throw Error(
+            fmt::format("{}: a partial render writes no debug views", settings.where_of("debug")));
     if (samples.first < 0 || samples.first >= samples.end || samples.end > settings.spp) {
         throw Error(fmt::format("--samples {}:{}: expected 0 <= A < B <= spp ({})", samples.first,
                                 samples.end, settings.spp));
@@ -88,9 +90,10 @@ void check_partial_outputs(const RenderSettings& settings) {
         std::transform(extension.begin(), extension.end(), extension.begin(),
                        [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
         if (extension != ".exr") {
-            throw Error(fmt::format("{}: a partial render writes its sums to EXR files only, not "
-                                    "'{}' (merge the parts with glint merge -o {})",
-                                    settings.where_of("output"), output, output));
+            throw Error(
+                fmt::format("{}: a partial render writes its sums to EXR files only, not "
+                            "'{}' (merge the parts with glint merge -o {})",
+                            settings.where_of("output"), output, output));
         }
     }
 }
@@ -103,19 +106,18 @@ Image merge_partial_renders(const std::vector<Image>& parts, const std::vector<s
     for (size_t i = 1; i < parts.size(); ++i) {
         if (infos[i].render != infos[0].render || infos[i].spp != infos[0].spp ||
             parts[i].width != parts[0].width || parts[i].height != parts[0].height) {
-            throw Error(fmt::format("{} and {} are parts of different renders ({}x{}, {} spp, {}; "
-                                    "{}x{}, {} spp, {})",
-                                    names[0], names[i], parts[0].width, parts[0].height,
-                                    infos[0].spp, infos[0].render, parts[i].width,
-                                    parts[i].height, infos[i].spp, infos[i].render));
+            throw Error(fmt::format(
+                "{} and {} are parts of different renders ({}x{}, {} spp, {}; "
+                "{}x{}, {} spp, {})",
+                names[0], names[i], parts[0].width, parts[0].height, infos[0].spp, infos[0].render,
+                parts[i].width, parts[i].height, infos[i].spp, infos[i].render));
         }
     }
     // Order by range to find overlaps (a sample counted twice) and gaps.
     std::vector<size_t> order(parts.size());
     for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](size_t a, size_t b) {
-        return infos[a].samples.first < infos[b].samples.first;
-    });
+    std::sort(order.begin(), order.end(),
+              [&](size_t a, size_t b) { return infos[a].samples.first < infos[b].samples.first; });
     int covered = 0;
     int missing = 0;
     for (size_t k = 0; k < order.size(); ++k) {

@@ -107,7 +107,8 @@ void append_deposits(const std::vector<uint8_t>& bytes, std::vector<Deposit>& de
 template <typename Sinks>
 std::vector<Deposit> deposits_in_photon_order(const Sinks& sinks, Cluster* cluster) {
     std::vector<Deposit> own;
-    for (const auto& sink : sinks) own.insert(own.end(), sink.deposits.begin(), sink.deposits.end());
+    for (const auto& sink : sinks)
+        own.insert(own.end(), sink.deposits.begin(), sink.deposits.end());
     if (!cluster) return own;
     std::vector<Deposit> all;
     for (const std::vector<uint8_t>& bytes : cluster->all_gather_bytes(deposit_bytes(own)))
@@ -245,8 +246,8 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
             };
             return Sink{&points, &pixels, &grid, {}, {}, Arena{4096}};
         };
-        const auto [first, end] =
-            m_cluster ? m_cluster->share(photons_per_pass) : std::pair<uint64_t, uint64_t>{0, photons_per_pass};
+        const auto [first, end] = m_cluster ? m_cluster->share(photons_per_pass)
+                                            : std::pair<uint64_t, uint64_t>{0, photons_per_pass};
         const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass + first,
                                         end - first, m_settings.seed, stats.rays, make_sink);
 

@@ -149,8 +149,9 @@ RenderStats TileIntegrator::render_pass(const Scene& scene, Film& film, int pass
 RenderStats TileIntegrator::render_samples(const Scene& scene, Film& film, int first, int end,
                                            Progress& progress) {
     if (first < 0 || first > end || end > m_settings.spp) {
-        throw Error(fmt::format("samples [{}, {}) are outside the {} samples per pixel of the sampler",
-                                first, end, m_settings.spp));
+        throw Error(
+            fmt::format("samples [{}, {}) are outside the {} samples per pixel of the sampler",
+                        first, end, m_settings.spp));
     }
     const auto start = std::chrono::steady_clock::now();
     RenderStats stats;
