@@ -157,10 +157,6 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
     // no rank renders for nothing when another cannot start.
     agree(cluster, status_of([&] {
               std::tie(desc, settings) = setup();
-              if (settings.spp < ranks) {
-                  throw Error(fmt::format("{}: {} samples per pixel cannot be shared by {} ranks",
-                                          settings.where_of("spp"), settings.spp, ranks));
-              }
               // Tile integrators: each rank renders a share of every pixel's samples.
               // Others share their work themselves (sppm) and every rank ends with the
               // whole image; the rest cannot be spread.
@@ -171,6 +167,10 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
                       fmt::format("{}: integrator '{}' cannot be spread over MPI ranks "
                                   "(tile integrators and sppm can; docs/cluster.md)",
                                   settings.where_of("integrator"), settings.integrator));
+              }
+              if (by_samples && settings.spp < ranks) {
+                  throw Error(fmt::format("{}: {} samples per pixel cannot be shared by {} ranks",
+                                          settings.where_of("spp"), settings.spp, ranks));
               }
               // Rank 0 checks where the outputs go before anyone renders for an hour.
               if (rank == 0) OutputBatch::check_targets(settings.outputs);
