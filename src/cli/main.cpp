@@ -3,10 +3,12 @@
 #include "compare_command.h"
 #include "flags.h"
 #include "info_command.h"
+#include "merge_command.h"
 #include "render_command.h"
 #include "signals.h"
 #include "view_command.h"
 
+#include <glint/cluster/cluster.h>
 #include <glint/core/error.h>
 #include <glint/geometry/accel.h>
 
@@ -14,10 +16,14 @@
 #include <CLI/CLI.hpp>
 
 #include <csignal>
+#include <memory>
 #include <new>
 
 int main(int argc, char** argv) {
     using namespace glint::cli;
+    // First: MPI_Init may take its own arguments out of argv. A single process unless
+    // started by mpirun.
+    const std::unique_ptr<glint::Cluster> cluster = glint::make_cluster(argc, argv);
     CLI::App app{"glint: a physically based renderer driven by Lua scenes"};
     app.require_subcommand(1);
     app.set_version_flag("--version",
@@ -29,6 +35,8 @@ int main(int argc, char** argv) {
     const CLI::App* info_cmd = add_info_command(app, info);
     CompareOptions compare;
     const CLI::App* compare_cmd = add_compare_command(app, compare);
+    MergeOptions merge;
+    const CLI::App* merge_cmd = add_merge_command(app, merge);
     ViewOptions view;
     const CLI::App* view_cmd = add_view_command(app, view);
 
@@ -41,9 +49,10 @@ int main(int argc, char** argv) {
 
     install_signal_handlers();
     try {
-        if (render_cmd->parsed()) return run_render(render);
+        if (render_cmd->parsed()) return run_render(render, *cluster);
         if (info_cmd->parsed()) return run_info(info);
         if (compare_cmd->parsed()) return run_compare(compare);
+        if (merge_cmd->parsed()) return run_merge(merge);
         if (view_cmd->parsed()) return run_view(view);
     } catch (const CLI::ValidationError& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());

@@ -3,12 +3,14 @@
 #include "flags.h"
 #include "signals.h"
 
+#include <glint/render/distributed_render.h>
 #include <glint/render/render_checks.h>
 #include <glint/render/render_job.h>
 
 #include <fmt/format.h>
 
 #include <filesystem>
+#include <tuple>
 
 namespace glint::cli {
 
@@ -60,6 +62,10 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& render) {
                      "--integrator photon, or whitted with caustics = true), strategies (with "
                      "--integrator bdpt)")
         ->allow_extra_args(false);
+    render_cmd->add_option("--samples", render.samples,
+                           "Render only sample indices [A, B) of every pixel, given as A:B with "
+                           "B <= spp, and write the film's exact sums to an EXR file for glint "
+                           "merge (tile integrators; docs/cluster.md)");
     render_cmd->add_option("--intermediate", render.intermediate,
                            "sppm: also write the image every N passes (NAME.passNNNN.EXT)");
     render_cmd->add_flag("--no-mipmap", render.no_mipmap,
@@ -75,16 +81,52 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& render) {
     return render_cmd;
 }
 
-int run_render(const RenderOptions& options) {
-    const SceneDesc desc =
+namespace {
+
+std::pair<SceneDesc, RenderSettings> load_and_check(const RenderOptions& options) {
+    SceneDesc desc =
         load_scene(options.scene, loader_options(options.trusted_scene, options.script_time_limit));
-    const RenderSettings settings =
+    RenderSettings settings =
         with_flag_errors_as_usage_errors([&] { return settings_for(desc, options); });
     with_flag_errors_as_usage_errors([&] { check_render_settings(settings); });
+    return {std::move(desc), std::move(settings)};
+}
+
+}  // namespace
+
+int run_render(const RenderOptions& options, Cluster& cluster) {
     RenderControl control;
     control.quiet = options.quiet;
     control.cancel = &g_signal;
-    const RenderReport report = render_to_files(desc, settings, control);
+    RenderSettings settings;
+    RenderReport report;
+    if (cluster.size() > 1) {
+        // This rank's part of an MPI job; rank 0 prints the summary, and the error when a
+        // rank fails: the others exit with the same code, quietly.
+        if (!options.samples.empty())
+            bad_flag("--samples", options.samples, "no --samples under mpirun (ranks share them)");
+        std::optional<RenderReport> distributed;
+        try {
+            distributed = render_distributed(
+                cluster,
+                [&] {
+                    auto loaded = load_and_check(options);
+                    settings = loaded.second;
+                    return loaded;
+                },
+                control);
+        } catch (const Error&) {
+            if (cluster.rank() == 0) throw;
+            return kExitInputError;
+        }
+        if (!distributed) return 0;
+        report = std::move(*distributed);
+    } else {
+        const std::optional<SampleRange> samples = parse_samples_flag(options.samples);
+        SceneDesc desc;
+        std::tie(desc, settings) = load_and_check(options);
+        report = render_to_files(desc, settings, control, samples);
+    }
     const RenderedImage& render = report.render;
     const RenderStats& stats = render.stats;
     if (!options.quiet) {
@@ -107,6 +149,11 @@ int run_render(const RenderOptions& options) {
         for (const std::string& path : report.targets) {
             if (std::filesystem::exists(path)) fmt::print(stderr, "wrote {}\n", path);
         }
+    }
+    if (!options.quiet && cluster.size() > 1) {
+        fmt::print(stderr,
+                   "cluster: {} ranks; rank 0 exchanged {} bytes in {:.3f} s of collectives\n",
+                   cluster.size(), cluster.bytes_exchanged(), cluster.exchange_seconds());
     }
     if (render.non_finite_samples > 0) {
         fmt::print(stderr, "warning: {} samples were not finite and were skipped\n",

@@ -60,4 +60,15 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     return settings;
 }
 
+std::optional<SampleRange> parse_samples_flag(const std::string& text) {
+    if (text.empty()) return std::nullopt;
+    const size_t colon = text.find(':');
+    const char* expected = "A:B, sample indices 0 <= A < B <= 2^31 - 1";
+    if (colon == std::string::npos) bad_flag("--samples", text, expected);
+    const auto first = parse_unsigned(text.substr(0, colon), INT_MAX);
+    const auto end = parse_unsigned(text.substr(colon + 1), INT_MAX);
+    if (!first || !end || *first >= *end) bad_flag("--samples", text, expected);
+    return SampleRange{static_cast<int>(*first), static_cast<int>(*end)};
+}
+
 }  // namespace glint::cli

@@ -1,8 +1,10 @@
 #pragma once
 // The render flags, shared by `glint render` and `glint view`, and the settings they make.
+#include <glint/render/render_job.h>
 #include <glint/scene/render_settings.h>
 #include <glint/scene/scene_desc.h>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@ struct RenderOptions {
     std::string denoise_quality;
     std::string adaptive;
     std::string photons;
+    std::string samples;  // --samples A:B, a partial render
     bool no_mipmap = false;
     std::string intermediate;
     std::vector<std::string> debug;
@@ -38,5 +41,9 @@ struct RenderOptions {
 /// each with the flag's name as its location, so that an error about a value names the
 /// flag that gave it and anything else names the scene's line.
 RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options);
+
+/// --samples A:B as a sample range (checked against spp by the render); nothing when the
+/// flag was not given.
+std::optional<SampleRange> parse_samples_flag(const std::string& text);
 
 }  // namespace glint::cli

@@ -90,16 +90,21 @@ void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSam
                           static_cast<std::size_t>(pixel.x);
     const std::size_t half = 2 * i + static_cast<std::size_t>(sample_index & 1);
     Pixel& p = m_pixels[i];
-    if (L.is_finite() && std::isfinite(weight)) {
+    const Rgb rgb = to_rgb(L);
+    // The product of two floats is exact in double.
+    const double terms[3] = {static_cast<double>(weight) * rgb[0],
+                             static_cast<double>(weight) * rgb[1],
+                             static_cast<double>(weight) * rgb[2]};
+    if (L.is_finite() && FixedSum::accepts(weight) && FixedSum::accepts(terms[0]) &&
+        FixedSum::accepts(terms[1]) && FixedSum::accepts(terms[2])) {
         // Dropping the weight too, not only the radiance, keeps one NaN path from
         // darkening the pixel: the mean is over the samples that could be measured.
-        const Rgb rgb = to_rgb(L);
-        p.weight_sum += weight;
-        for (int c = 0; c < 3; ++c) p.rgb[c] += static_cast<double>(weight) * rgb[c];
+        p.weight_sum.add(weight);
+        for (int c = 0; c < 3; ++c) p.rgb[c].add(terms[c]);
         if (m_with_halves) {
             Pixel& h = m_half_pixels[half];
-            h.weight_sum += weight;
-            for (int c = 0; c < 3; ++c) h.rgb[c] += static_cast<double>(weight) * rgb[c];
+            h.weight_sum.add(weight);
+            for (int c = 0; c < 3; ++c) h.rgb[c].add(terms[c]);
         }
     } else {
         ++p.non_finite;
@@ -111,18 +116,20 @@ void Film::add_sample(Vec2i pixel, const Spectrum& L, float weight, const AovSam
 }
 
 void Film::accumulate_aov(AovPixel& a, float weight, const AovSample& aov) {
-    const float w = std::abs(weight);
-    if (!std::isfinite(w) || !aov.albedo.is_finite() || !is_finite(aov.normal) ||
-        !std::isfinite(aov.depth)) {
-        return;
-    }
-    a.weight_sum += w;
+    const double w = std::abs(weight);
     const Rgb albedo = to_rgb(aov.albedo);
-    for (int c = 0; c < 3; ++c) {
-        a.albedo[c] += static_cast<double>(w) * albedo[c];
-        a.normal[c] += static_cast<double>(w) * aov.normal[c];
+    const double terms[7] = {w * albedo[0],     w * albedo[1],     w * albedo[2], w * aov.normal[0],
+                             w * aov.normal[1], w * aov.normal[2], w * aov.depth};
+    if (!FixedSum::accepts(w)) return;
+    for (double term : terms) {
+        if (!FixedSum::accepts(term)) return;  // NaN fails too
     }
-    a.depth += static_cast<double>(w) * aov.depth;
+    a.weight_sum.add(w);
+    for (int c = 0; c < 3; ++c) {
+        a.albedo[c].add(terms[c]);
+        a.normal[c].add(terms[3 + c]);
+    }
+    a.depth.add(terms[6]);
 }
 
 void Film::add_splats(std::span<const Splat> splats) {
@@ -173,20 +180,22 @@ Image Film::resolve_pixels(const Pixel* pixels, std::size_t pixel_stride, const 
             const Pixel& p = pixels[i * pixel_stride];
             // Mitchell's negative lobes can cancel the positive weights exactly; such a
             // pixel has no defined mean and resolves to black rather than infinity.
-            const double inv = p.weight_sum != 0.0 ? 1.0 / p.weight_sum : 0.0;
+            const double weight_sum = p.weight_sum.value();
+            const double inv = weight_sum != 0.0 ? 1.0 / weight_sum : 0.0;
             for (int c = 0; c < 3; ++c) {
-                double value = p.rgb[c] * inv;
+                double value = p.rgb[c].value() * inv;
                 if (with_splats && !m_splats.empty()) value += m_splat_scale * m_splats[3 * i + c];
                 image.at(x, y, c) = static_cast<float>(value);
             }
             if (!m_with_aovs) continue;
             const AovPixel& a = aovs[i * aov_stride];
-            const double ainv = a.weight_sum > 0.0 ? 1.0 / a.weight_sum : 0.0;
+            const double aov_weight = a.weight_sum.value();
+            const double ainv = aov_weight > 0.0 ? 1.0 / aov_weight : 0.0;
             for (int c = 0; c < 3; ++c) {
-                image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c] * ainv);
-                image.at(x, y, 6 + c) = static_cast<float>(a.normal[c] * ainv);
+                image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c].value() * ainv);
+                image.at(x, y, 6 + c) = static_cast<float>(a.normal[c].value() * ainv);
             }
-            image.at(x, y, 9) = static_cast<float>(a.depth * ainv);
+            image.at(x, y, 9) = static_cast<float>(a.depth.value() * ainv);
         }
     }
     return image;

@@ -3,6 +3,7 @@
 // Image. Pixel filtering happens before the film, by filter importance sampling (see
 // filter.h): a sample carries its filter weight and belongs to exactly one pixel.
 #include <glint/core/spectrum.h>
+#include <glint/film/fixed_sum.h>
 #include <glint/film/image.h>
 #include <glint/math/vector.h>
 
@@ -97,17 +98,29 @@ public:
     /// Clears all accumulated samples and splats (not the splat scale).
     void clear();
 
+    /// The film's exact sums (film_sums.cpp documents the channels), for a partial render
+    /// that `glint merge` or the MPI ranks add up: with the resolved mean's R, G, B for a
+    /// viewer. Throws glint::Error for a film with splats or halves, which partial renders
+    /// do not carry.
+    Image sums_image() const;
+    /// Adds the sums of `sums` (from sums_image() of a film of the same size, with or without
+    /// AOVs as this one) to this film's: the film then holds both renders' samples, exactly
+    /// as one film given all of them. Throws glint::Error naming what does not match.
+    void add_sums_image(const Image& sums);
+
 private:
+    // Exact sums (fixed_sum.h): the same samples give the same bits in any order and
+    // any split into sample ranges.
     struct Pixel {
-        double weight_sum = 0.0;
-        double rgb[3] = {0.0, 0.0, 0.0};
+        FixedSum weight_sum;
+        FixedSum rgb[3];
         uint32_t non_finite = 0;
     };
     struct AovPixel {
-        double weight_sum = 0.0;
-        double albedo[3] = {0.0, 0.0, 0.0};
-        double normal[3] = {0.0, 0.0, 0.0};
-        double depth = 0.0;
+        FixedSum weight_sum;
+        FixedSum albedo[3];
+        FixedSum normal[3];
+        FixedSum depth;
     };
 
     static void accumulate_aov(AovPixel& a, float weight, const AovSample& aov);

@@ -8,6 +8,13 @@
 
 namespace glint {
 
+const std::string* Image::attribute(const std::string& name) const {
+    for (const auto& [key, value] : attributes) {
+        if (key == name) return &value;
+    }
+    return nullptr;
+}
+
 int Image::channel_index(const std::string& name) const {
     for (std::size_t i = 0; i < channels.size(); ++i) {
         if (channels[i] == name) return static_cast<int>(i);

@@ -3,6 +3,7 @@
 // and writes. Channel names follow OpenEXR layer naming ("R", "albedo.R", "depth.Z").
 #include <cstddef>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace glint {
@@ -12,6 +13,9 @@ struct Image {
     std::vector<std::string> channels;
     /// Interleaved channels, row-major, top row first: (y * width + x) * channels + c.
     std::vector<float> pixels;
+    /// Text attributes (name, value) kept in an EXR file's header as "glint:<name>", e.g.
+    /// a partial render's sample range; other formats drop them.
+    std::vector<std::pair<std::string, std::string>> attributes;
 
     int num_channels() const { return static_cast<int>(channels.size()); }
     std::size_t index(int x, int y, int c) const {
@@ -24,6 +28,8 @@ struct Image {
     float at(int x, int y, int c) const { return pixels[index(x, y, c)]; }
     /// Position of the channel called `name`, or -1 if the image has none.
     int channel_index(const std::string& name) const;
+    /// The value of attribute `name`, or null if the image has none.
+    const std::string* attribute(const std::string& name) const;
 };
 
 /// A zero-filled image; throws glint::Error for negative sizes or no channels.

@@ -143,6 +143,7 @@ void write_image_file(const std::string& file, const Image& image, const WriteOp
         // OpenEXR stamps files with the current time (capDate) unless told otherwise; a
         // fixed stamp keeps a render's file identical bit for bit, run after run.
         spec.attribute("DateTime", "1970:01:01 00:00:00");
+        for (const auto& [name, value] : image.attributes) spec.attribute("glint:" + name, value);
         write_with_oiio(file, spec, image.pixels.data());
     } else {
         int channels = 0;
@@ -188,6 +189,11 @@ Image read_image(const std::string& path) {
             if (static_cast<int>(i % static_cast<std::size_t>(spec.nchannels)) == alpha) continue;
             image.pixels[i] = srgb_decode(image.pixels[i]);
         }
+    }
+    for (const OIIO::ParamValue& param : spec.extra_attribs) {
+        const std::string name = param.name().string();
+        if (name.rfind("glint:", 0) == 0 && param.type() == OIIO::TypeDesc::STRING)
+            image.attributes.emplace_back(name.substr(6), param.get_string());
     }
     in->close();
     return image;

@@ -16,6 +16,7 @@
 
 namespace glint {
 
+class Cluster;
 class Progress;
 
 /// A debug image an integrator can add (`--debug NAME`; its channel NAME.Y in RenderStats).
@@ -49,6 +50,15 @@ public:
     virtual RenderStats render(const Scene& scene, Film& film, Progress& progress) = 0;
     /// What this integrator can do; nothing beyond plain whole-image rendering by default.
     virtual IntegratorCapabilities capabilities() const { return {}; }
+    /// For an MPI job (docs/cluster.md): an integrator that shares its own work among the
+    /// ranks (sppm: each rank traces a share of every pass's photons, and the ranks exchange
+    /// what they found) keeps `cluster` for render() and returns true; render() then gives
+    /// every rank the film one process would. The default returns false: the job splits
+    /// a tile integrator's samples instead, and refuses other integrators.
+    virtual bool share_work(Cluster& cluster) {
+        (void)cluster;
+        return false;
+    }
 };
 
 // Counts rays per thread without contention; summed once per tile.

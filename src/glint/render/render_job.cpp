@@ -1,11 +1,13 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
+#include <glint/denoise/film_denoiser.h>
 #include <glint/film/film.h>
 #include <glint/film/output_batch.h>
 #include <glint/geometry/accel.h>
 #include <glint/integrator/integrator.h>
-#include <glint/denoise/film_denoiser.h>
+#include <glint/integrator/tile/tile_integrator.h>
 #include <glint/render/denoise_step.h>
+#include <glint/render/partial_render.h>
 #include <glint/render/render_checks.h>
 #include <glint/render/render_job.h>
 #include <glint/render/signal_block.h>
@@ -96,10 +98,16 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings,
-                           const RenderControl& control) {
+                           const RenderControl& control, std::optional<SampleRange> samples) {
     check_film_memory(settings);
     std::vector<std::string> warnings;
     auto integrator = make_integrator(settings, &warnings);
+    TileIntegrator* partial =
+        samples ? partial_render_integrator(*integrator, settings, *samples) : nullptr;
+    if (control.cluster && !integrator->share_work(*control.cluster)) {
+        throw Error(fmt::format("{}: integrator '{}' cannot share its work among MPI ranks",
+                                settings.where_of("integrator"), settings.integrator));
+    }
     check_denoise(settings, integrator->capabilities());
     if (settings.denoise) check_denoiser_ready(settings);
     for (const std::string& warning : warnings) warn(control, warning);
@@ -116,17 +124,24 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
     const bool film_aovs = film_needs_aovs(settings);
     Film film(settings.output_width(), settings.output_height(), film_aovs,
               settings.output_origin(), film_needs_halves(settings));
-    Progress progress("rendering", expected_samples(settings), control.quiet);
+    const uint64_t work = partial ? static_cast<uint64_t>(film.width()) * film.height() *
+                                        (samples->end - samples->first)
+                                  : expected_samples(settings);
+    Progress own_progress("rendering", work, control.quiet || control.progress);
+    Progress& progress = control.progress ? *control.progress : own_progress;
     progress.set_cancel_flag(control.cancel);
     // Processor time of the render (all threads), besides its wall-clock time: a benchmark on
     // a busy machine compares methods by it (bench/bidirectional.sh, CLOCK=cpu).
     const std::clock_t cpu_start = std::clock();
-    result.stats = integrator->render(*scene, film, progress);
+    result.stats =
+        partial ? partial->render_samples(*scene, film, samples->first, samples->end, progress)
+                : integrator->render(*scene, film, progress);
     result.cpu_seconds = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
     throw_if_cancelled(control);
-    progress.finish();
+    own_progress.finish();
 
-    result.image = final_image(film, result.stats);
+    result.image =
+        partial ? partial_sums_image(film, settings, *samples) : final_image(film, result.stats);
     if (film_aovs && !settings.aovs)
         result.image = without_channels(result.image, {"albedo.", "normal.", "depth."});
     if (settings.denoise) {
@@ -141,8 +156,9 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
 }
 
 RenderReport render_to_files(const SceneDesc& desc, const RenderSettings& settings,
-                             const RenderControl& control) {
+                             const RenderControl& control, std::optional<SampleRange> samples) {
     check_debug_views(settings);
+    if (samples) check_partial_outputs(settings);
     // Every output's directory is checked before the work: a bad path fails now, not
     // after an hour of rendering, and writes nothing.
     RenderReport report;
@@ -153,7 +169,7 @@ RenderReport render_to_files(const SceneDesc& desc, const RenderSettings& settin
         // Name where the paths came from: a flag, or the scene's line.
         throw Error(fmt::format("{}: {}", settings.where_of("output"), e.what()));
     }
-    report.render = render_image(desc, settings, control);
+    report.render = render_image(desc, settings, control, samples);
     const RenderedImage& render = report.render;
 
     const WriteOptions write_options{settings.exposure, settings.tonemap};

@@ -48,15 +48,38 @@ struct OutputFile {
 /// path, or Interrupted when control.cancel is set before the renames.
 void write_outputs(const std::vector<OutputFile>& files, const RenderControl& control = {});
 
+/// Sample indices [first, end) of every pixel: a partial render (`glint render --samples`),
+/// or one MPI rank's share. The sampler is made for settings.spp samples, end <= spp.
+struct SampleRange {
+    int first = 0;
+    int end = 0;
+};
+
 /// Renders `desc` with `settings` (settings.threads workers, 0 = all cores) after checking
 /// the film's memory, the integrator and the denoiser's needs. Throws glint::Error, or
 /// Interrupted when control.cancel is set.
+/// With `samples`, renders only that range (tile integrators, uniform sampling, no
+/// denoiser) and the image is the film's exact sums (Film::sums_image) with the attributes
+/// merge_partial_renders() checks: "samples" (A:B), "spp" and "render" (the settings that
+/// must agree).
 RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings,
-                           const RenderControl& control = {});
+                           const RenderControl& control = {},
+                           std::optional<SampleRange> samples = std::nullopt);
+
+/// The image of the partial renders `parts` (render_image with a SampleRange) added up:
+/// exactly what one render of all their samples gives. `names` (one per part, for messages)
+/// name a part that does not belong. Throws glint::Error for parts of different renders or
+/// overlapping ranges; when the ranges leave gaps in [0, spp) a line saying so is appended to
+/// `warnings`.
+Image merge_partial_renders(const std::vector<Image>& parts, const std::vector<std::string>& names,
+                            std::vector<std::string>& warnings);
 
 /// Checks the debug views and every output's path first, then render_image(), then writes
 /// every output (settings.outputs, the denoised images, the debug images) or none.
+/// With `samples`, writes the partial render's sums to every output, each of which must be
+/// an EXR file.
 RenderReport render_to_files(const SceneDesc& desc, const RenderSettings& settings,
-                             const RenderControl& control = {});
+                             const RenderControl& control = {},
+                             std::optional<SampleRange> samples = std::nullopt);
 
 }  // namespace glint

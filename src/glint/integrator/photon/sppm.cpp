@@ -1,3 +1,4 @@
+#include <glint/cluster/cluster.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
@@ -11,6 +12,8 @@
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <array>
+#include <cstring>
 #include <filesystem>
 #include <unordered_map>
 
@@ -71,6 +74,47 @@ struct Deposit {
     uint32_t pixel;
     Spectrum flux;
 };
+
+// Deposits as bytes for the exchange: the pixel, then the flux's stored values.
+constexpr size_t kDepositBytes = sizeof(uint32_t) + Spectrum::kStoredValues * sizeof(float);
+
+std::vector<uint8_t> deposit_bytes(const std::vector<Deposit>& deposits) {
+    std::vector<uint8_t> bytes(deposits.size() * kDepositBytes);
+    uint8_t* out = bytes.data();
+    for (const Deposit& d : deposits) {
+        const auto values = d.flux.stored();
+        std::memcpy(out, &d.pixel, sizeof(uint32_t));
+        std::memcpy(out + sizeof(uint32_t), values.data(), values.size() * sizeof(float));
+        out += kDepositBytes;
+    }
+    return bytes;
+}
+
+void append_deposits(const std::vector<uint8_t>& bytes, std::vector<Deposit>& deposits) {
+    for (size_t at = 0; at + kDepositBytes <= bytes.size(); at += kDepositBytes) {
+        Deposit d;
+        std::array<float, Spectrum::kStoredValues> values;
+        std::memcpy(&d.pixel, bytes.data() + at, sizeof(uint32_t));
+        std::memcpy(values.data(), bytes.data() + at + sizeof(uint32_t),
+                    values.size() * sizeof(float));
+        d.flux = Spectrum::from_stored(values);
+        deposits.push_back(d);
+    }
+}
+
+// Every pass's deposits in photon order: this process's photons, or, in an MPI job, each
+// rank's share (consecutive photon ranges) gathered in rank order.
+template <typename Sinks>
+std::vector<Deposit> deposits_in_photon_order(const Sinks& sinks, Cluster* cluster) {
+    std::vector<Deposit> own;
+    for (const auto& sink : sinks)
+        own.insert(own.end(), sink.deposits.begin(), sink.deposits.end());
+    if (!cluster) return own;
+    std::vector<Deposit> all;
+    for (const std::vector<uint8_t>& bytes : cluster->all_gather_bytes(deposit_bytes(own)))
+        append_deposits(bytes, all);
+    return all;
+}
 
 // The estimate after `passes` passes of `photons_per_pass` photons: the mean direct light
 // plus the photon flux over the disc each pixel's radius has shrunk to.
@@ -202,17 +246,17 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
             };
             return Sink{&points, &pixels, &grid, {}, {}, Arena{4096}};
         };
-        const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass,
-                                        photons_per_pass, m_settings.seed, stats.rays, make_sink);
+        const auto [first, end] = m_cluster ? m_cluster->share(photons_per_pass)
+                                            : std::pair<uint64_t, uint64_t>{0, photons_per_pass};
+        const auto sinks = tracer.trace(static_cast<uint64_t>(pass) * photons_per_pass + first,
+                                        end - first, m_settings.seed, stats.rays, make_sink);
 
         // 4. Progressive update, in a fixed order.
         std::vector<Spectrum> flux(pixel_count);
         std::vector<uint32_t> found(pixel_count, 0);
-        for (const auto& sink : sinks) {
-            for (const Deposit& d : sink.deposits) {
-                flux[d.pixel] += d.flux;
-                ++found[d.pixel];
-            }
+        for (const Deposit& d : deposits_in_photon_order(sinks, m_cluster)) {
+            flux[d.pixel] += d.flux;
+            ++found[d.pixel];
         }
         for (size_t i = 0; i < pixel_count; ++i) {
             PixelState& p = pixels[i];

@@ -31,10 +31,18 @@ public:
         capabilities.crop_windows = true;
         return capabilities;
     }
+    /// Every rank finds all visible points (camera rays are few next to the photons) and
+    /// traces its share of each pass's photons; the ranks all-gather the photons' deposits
+    /// and add them in photon order, so every rank updates every pixel as one process does.
+    bool share_work(Cluster& cluster) override {
+        m_cluster = &cluster;
+        return true;
+    }
 
 private:
     RenderSettings m_settings;
     SppmSettings m_sppm;
+    Cluster* m_cluster = nullptr;
 };
 
 }  // namespace glint

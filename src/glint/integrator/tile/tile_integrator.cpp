@@ -146,6 +146,33 @@ RenderStats TileIntegrator::render_pass(const Scene& scene, Film& film, int pass
     return stats;
 }
 
+RenderStats TileIntegrator::render_samples(const Scene& scene, Film& film, int first, int end,
+                                           Progress& progress) {
+    if (first < 0 || first > end || end > m_settings.spp) {
+        throw Error(
+            fmt::format("samples [{}, {}) are outside the {} samples per pixel of the sampler",
+                        first, end, m_settings.spp));
+    }
+    const auto start = std::chrono::steady_clock::now();
+    RenderStats stats;
+    stats.rays = prepare(scene);
+    m_prepared = false;
+    // Made exactly as render_uniform makes it, for all spp samples: sample i of a pixel is
+    // then the same numbers as in the whole render.
+    const auto sampler = make_sampler(m_settings.sampler, m_settings.spp, m_settings.seed);
+    const int count = end - first;
+    if (count > 0) {
+        stats.rays +=
+            for_each_pixel(film, *sampler, progress, nullptr, [&](Vec2i pixel, Worker& worker) {
+                render_pixel(scene, film, pixel, worker, first, count);
+                return static_cast<uint64_t>(count);
+            });
+    }
+    stats.samples = static_cast<uint64_t>(film.width()) * film.height() * count;
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+}
+
 void TileIntegrator::scene_changed(SceneChange change) {
     // Photon maps live in world space: a camera move keeps them.
     if (change == SceneChange::lights_or_objects) m_prepared = false;

@@ -27,6 +27,13 @@ public:
     /// passes share (photon maps) is made by prepare() before the first pass and again after
     /// scene_changed(SceneChange::lights_or_objects).
     RenderStats render_pass(const Scene& scene, Film& film, int pass, Progress& progress) override;
+    /// Adds samples [first, end) of every pixel of `film`'s window, drawn from the sampler
+    /// render() uses (made for settings.spp samples per pixel), for a partial render: films
+    /// of ranges that cover [0, spp) add up (Film::add_sums_image) to render()'s film bit
+    /// for bit, since the film's sums are exact. Every pixel gets the same samples (no
+    /// adaptive sampling). Throws glint::Error unless 0 <= first <= end <= settings.spp.
+    RenderStats render_samples(const Scene& scene, Film& film, int first, int end,
+                               Progress& progress);
     void scene_changed(SceneChange change) override;
 
     // Radiance arriving along `ray`. When `aov` is not null, fills first-hit features.
