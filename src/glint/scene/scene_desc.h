@@ -23,6 +23,9 @@ struct InstanceDesc {
     int group = -1;
     Transform transform;
     std::string where;  // script location, for errors
+    // Motion keys after `transform` (to_world(time) = parent * transform * motion(time)),
+    // spread evenly over the scene times [0, 1]; empty for a group that stands still.
+    std::vector<Transform> motion{};
 };
 
 struct GroupDesc {
@@ -54,6 +57,8 @@ struct SceneDesc {
     std::vector<std::shared_ptr<const MeshData>> meshes;
     // The camera came from an imported file: a later glint.camera replaces it.
     bool camera_imported = false;
+    // The camera's motion keys (glint.camera{ motion = {...} }); empty when it stands still.
+    std::vector<Transform> camera_motion;
     // Width / height of the imported camera's view (glTF's aspectRatio), when it gives one:
     // `glint render MODEL` sizes its image by it (import.cpp, load_model_scene).
     std::optional<float> camera_aspect;

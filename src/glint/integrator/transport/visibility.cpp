@@ -5,7 +5,7 @@ namespace glint {
 
 Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
                                           const Medium* medium) {
-    const Ray ray{shadow.origin, shadow.direction, 0.0f, kShadowRayEnd};
+    const Ray ray{shadow.origin, shadow.direction, 0.0f, kShadowRayEnd, shadow.time};
     // Scene::intersect passes through interfaces: what it finds blocks the way. The ray
     // keeps the medium it started in, since no interface carries media yet; once they do,
     // this walk stops at each one and takes on the medium beyond it.
