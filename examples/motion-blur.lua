@@ -6,7 +6,7 @@
 local floor_white = glint.diffuse{ reflectance = 0.6 }
 local red         = glint.diffuse{ reflectance = {0.8, 0.15, 0.1} }
 local blue        = glint.plastic{ diffuse = {0.1, 0.25, 0.8}, ior = 1.5 }
-local brass       = glint.conductor{ preset = "gold", roughness = 0.25 }
+local yellow      = glint.diffuse{ reflectance = {0.9, 0.7, 0.15} }
 
 glint.camera{ eye = {0, 2.2, -6.5}, look_at = {0, 0.6, 0}, fov = 40, shutter = {0, 1} }
 glint.render{ width = 320, height = 200, spp = 32, output = {"motion-blur.exr", "motion-blur.png"} }
@@ -30,7 +30,7 @@ glint.sphere{ center = {0, 0, 0}, radius = 0.3, material = blue,
 -- A pinwheel of four boxes, a group turning about its hub by a quarter turn.
 local pinwheel = glint.group()
 for i = 0, 3 do
-    pinwheel:box{ min = {0.1, -0.08, -0.06}, max = {0.9, 0.08, 0.06}, material = brass,
+    pinwheel:box{ min = {0.1, -0.08, -0.06}, max = {0.9, 0.08, 0.06}, material = yellow,
                   transform = glint.rotate(90 * i, {0, 0, 1}) }
 end
 glint.place(pinwheel, { glint.translate(0.3, 1.3, 1.2),

@@ -96,7 +96,7 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
     throw Error(
         fmt::format("{}: the '{}' integrator does not render moving scenes yet (its "
                     "light paths, photons or caches are made at one time); use path, "
-                    "path_light, path_bsdf or whitted",
+                    "path_light, path_bsdf, whitted or sppm",
                     settings.where_of("integrator"), settings.integrator));
 }
 

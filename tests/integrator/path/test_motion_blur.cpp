@@ -114,22 +114,29 @@ TEST(MotionBlur, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
 TEST(MotionBlur, StillSceneWithAShutterIsBitIdentical) {
     const std::string scene = R"(
 glint.camera{ eye = {0, 1, 5}, look_at = {0, 0, 0}, fov = 32 SHUTTER }
-glint.render{ width = 20, height = 16, spp = 8, max_depth = 3 }
+glint.render{ width = 20, height = 16, spp = 8, max_depth = 3, sampler = "SAMPLER" }
 glint.point_light{ position = {1, 4, 3}, intensity = 20 }
+glint.quad{ vertices = {{-1, 3, -1}, {1, 3, -1}, {1, 3, 1}, {-1, 3, 1}},
+            material = glint.emissive{ radiance = 4 } }
 local m = glint.diffuse{ reflectance = {0.8, 0.3, 0.2} }
 local g = glint.group()
 g:sphere{ radius = 0.5, material = m }
 glint.place(g, glint.translate(0.3, 0, 0))
 glint.box{ min = {-2, -1, -2}, max = {2, -0.6, 2}, material = m }
 )";
-    const auto with = [&](const std::string& shutter) {
-        std::string code = scene;
-        code.replace(code.find("SHUTTER"), 7, shutter);
-        return code;
-    };
-    const Image without_shutter = render_lua(with(""));
-    EXPECT_TRUE(same_pixels(render_lua(with(", shutter = {0, 1}")), without_shutter));
-    EXPECT_TRUE(same_pixels(render_lua(with(", shutter = {0.3, 0.8}")), without_shutter));
+    for (const std::string sampler : {"independent", "stratified", "sobol"}) {
+        const auto with = [&](const std::string& shutter) {
+            std::string code = scene;
+            code.replace(code.find("SHUTTER"), 7, shutter);
+            code.replace(code.find("SAMPLER"), 7, sampler);
+            return code;
+        };
+        const Image without_shutter = render_lua(with(""));
+        EXPECT_TRUE(same_pixels(render_lua(with(", shutter = {0, 1}")), without_shutter))
+            << sampler;
+        EXPECT_TRUE(same_pixels(render_lua(with(", shutter = {0.3, 0.8}")), without_shutter))
+            << sampler;
+    }
 }
 
 TEST(MotionBlur, SpinningSquareMatchesTheCoveredFractionOfTheShutter) {
@@ -188,7 +195,7 @@ glint.quad{{ vertices = {{{{0, -1, 0}}, {{1, -1, 0}}, {{1, 1, 0}}, {{0, 1, 0}}}}
 }
 
 TEST(MotionBlur, IntegratorsWithoutTimeRefuseMovingScenes) {
-    for (const char* integrator : {"bdpt", "sppm", "light"}) {
+    for (const char* integrator : {"bdpt", "vcm", "light", "photon"}) {
         try {
             render_lua(moving_sphere(", shutter = {0, 1}", 1, 1, integrator));
             ADD_FAILURE() << integrator << " rendered a moving scene";
