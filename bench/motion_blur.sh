@@ -4,8 +4,8 @@
 #   still    nothing moves, no shutter (the scene as glint rendered it before motion blur)
 #   instant  every group moving (motion BVH), shutter {0, 0}: no time drawn
 #   blurred  every group moving, shutter {0, 1}: a time per camera sample
-# and prints samples/s and rays/s of each (median of RUNS runs, interleaved so that load on
-# a shared machine falls on all three). See bench/README.md.
+# and prints samples/s and rays/s of each, and samples per processor-second (median of RUNS
+# runs, interleaved so that load on a shared machine falls on all three). See bench/README.md.
 #
 # Environment (all optional): BUILD_DIR (build), JOBS (2), THREADS (2), RUNS (3), SPP (32).
 set -euo pipefail
@@ -25,7 +25,7 @@ if [[ "$build_type" != "Release" ]]; then
     echo "warning: $BUILD_DIR is a '$build_type' build; these are not release numbers" >&2
 fi
 ninja -C "$BUILD_DIR" -j "$JOBS" glint_cli >/dev/null
-glint="$BUILD_DIR/src/cli/glint"
+glint="$BUILD_DIR/glint"
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -46,14 +46,18 @@ for run in $(seq "$RUNS"); do
     done
 done
 
-summary() {  # name: "seconds M-samples/s M-rays/s" of the median run by time
+summary() {  # name: "seconds M-samples/s M-rays/s cpu-seconds" of the median run by time
     for log in ${LOGS[$1]}; do
-        sed -nE 's/^.* threads: ([0-9.]+) s, ([0-9.]+) M samples\/s, ([0-9.]+) M rays\/s$/\1 \2 \3/p' \
-            "$log"
+        line=$(sed -nE 's/^.* threads: ([0-9.]+) s, ([0-9.]+) M samples\/s, ([0-9.]+) M rays\/s$/\1 \2 \3/p' "$log")
+        cpu=$(sed -nE 's/^([0-9]+) samples and [0-9]+ rays in all, ([0-9.]+) s of processor time$/\1 \2/p' "$log")
+        echo "$line $cpu"
     done | sort -g | sed -n "$(((RUNS + 1) / 2))p"
 }
-printf '%-8s %8s %14s %12s\n' scene seconds "M samples/s" "M rays/s"
+# On a shared machine wall-clock throughput follows the load; samples per processor-second
+# (all threads) less so.
+printf '%-8s %8s %14s %12s %22s\n' scene seconds "M samples/s" "M rays/s" "M samples/cpu-second"
 for name in still instant blurred; do
-    read -r seconds samples rays <<<"$(summary "$name")"
-    printf '%-8s %8s %14s %12s\n' "$name" "$seconds" "$samples" "$rays"
+    read -r seconds samples rays count cpu <<<"$(summary "$name")"
+    per_cpu=$(awk -v n="$count" -v c="$cpu" 'BEGIN { printf "%.3f", n / c * 1e-6 }')
+    printf '%-8s %8s %14s %12s %22s\n' "$name" "$seconds" "$samples" "$rays" "$per_cpu"
 done

@@ -111,6 +111,12 @@ TEST(MotionBlur, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
     EXPECT_GT(largest_z(blurred_stats, block_stats(at_opening)), 10.0);
 }
 
+TEST(MotionBlur, BlurredImageIsTheSameForAnyThreadCount) {
+    const std::string scene = moving_sphere(", shutter = {0, 1}", 3, 8);
+    EXPECT_TRUE(same_pixels(render_lua(scene, 1), render_lua(scene, 2)));
+    EXPECT_TRUE(same_pixels(render_lua(scene, 1), render_lua(scene, 3)));
+}
+
 TEST(MotionBlur, StillSceneWithAShutterIsBitIdentical) {
     const std::string scene = R"(
 glint.camera{ eye = {0, 1, 5}, look_at = {0, 0, 0}, fov = 32 SHUTTER }
