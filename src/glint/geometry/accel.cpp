@@ -68,6 +68,10 @@ unsigned Accel::add_instance(int prototype, const Transform& to_world) {
 
 unsigned Accel::add_instance(int prototype, const MotionTransform& to_world) {
     if (!to_world.is_moving()) return add_instance(prototype, to_world.key(0));
+    if (to_world.key_count() > RTC_MAX_TIME_STEP_COUNT) {
+        throw Error(fmt::format("a motion has {} keys; Embree takes at most {}",
+                                to_world.key_count(), RTC_MAX_TIME_STEP_COUNT));
+    }
     RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(instance, m_prototypes.at(prototype));
     rtcSetGeometryTimeStepCount(instance, static_cast<unsigned>(to_world.key_count()));

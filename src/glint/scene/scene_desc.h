@@ -17,6 +17,7 @@ namespace glint {
 inline constexpr int kMaxCsgDepth = 1000;       ///< CSG nodes from the root down to a primitive
 inline constexpr size_t kMaxGroupDepth = 1000;  ///< groups placed inside each other
 inline constexpr size_t kMaxPlacements = 1'000'000;  ///< group placements after flattening
+inline constexpr int kMaxMotionKeys = 129;           ///< keys of one motion (Embree's time steps)
 
 // One placement of a group inside another group.
 struct InstanceDesc {

@@ -236,6 +236,11 @@ TEST(MotionBlur, MalformedMotionIsAnErrorNamingTheLine) {
     const std::string not_transform =
         message_of("glint.place(glint.group(), { glint.translate(1, 0, 0), 3 })");
     EXPECT_NE(not_transform.find(":2:"), std::string::npos) << not_transform;
+    const std::string too_many = message_of(
+        "local keys = {} for i = 1, 130 do keys[i] = glint.translate(i, 0, 0) end "
+        "glint.place(glint.group(), keys)");
+    EXPECT_NE(too_many.find(":2:"), std::string::npos) << too_many;
+    EXPECT_NE(too_many.find("129"), std::string::npos) << too_many;
     const std::string emitter = message_of(
         "glint.sphere{ radius = 1, material = glint.emissive{ radiance = 1 }, "
         "motion = { glint.translate(0, 0, 0), glint.translate(1, 0, 0) } }");

@@ -269,12 +269,11 @@ std::vector<Transform> motion_keys(lua_State* L, int index, const std::string& w
     const std::string expected = fmt::format(
         "{}: 'motion' must be a list of 2 to {} transforms {{xf0, xf1, ...}} (keys "
         "spread evenly over the times [0, 1])",
-        what, RTC_MAX_TIME_STEP_COUNT);
+        what, kMaxMotionKeys);
     if (!lua_istable(L, index)) fail(L, expected + ", got " + describe(L, index));
     index = lua_absindex(L, index);
     const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
-    if (n < 2 || n > RTC_MAX_TIME_STEP_COUNT)
-        fail(L, fmt::format("{}, got {} entries", expected, n));
+    if (n < 2 || n > kMaxMotionKeys) fail(L, fmt::format("{}, got {} entries", expected, n));
     std::vector<Transform> keys;
     for (lua_Integer i = 1; i <= n; ++i) {
         lua_rawgeti(L, index, i);
