@@ -331,8 +331,8 @@ TEST(Accel, PacketsMatchSingleRaysLaneByLane) {
         packet_hits.fill(untouched);
         const uint32_t hit_lanes =
             accel.intersect_packet(pointers, active, packet_hits, round % 2 == 0);
-        const uint32_t blocked_lanes =
-            accel.occluded_packet(origins, directions, 1.0f, active, round % 2 == 1);
+        const uint32_t blocked_lanes = accel.occluded_packet(origins, directions, PerLane<float>{},
+                                                             1.0f, active, round % 2 == 1);
         for (int lane = 0; lane < kPacketWidth; ++lane) {
             const bool is_active = (active >> lane) & 1u;
             const HitRecord& got = packet_hits[lane];
@@ -406,11 +406,12 @@ TEST(Accel, RaysEmbreeRefusesAreDroppedAndCounted) {
     PerLane<HitRecord> hits;
     EXPECT_EQ(accel.intersect_packet(pointers, 0xffu, hits, true), 0xedu);
     EXPECT_EQ(accel.dropped_rays(), expected + 2);
-    EXPECT_EQ(accel.occluded_packet(origins, directions, 1.0f, 0xffu, false), 0xedu);
+    EXPECT_EQ(accel.occluded_packet(origins, directions, PerLane<float>{}, 1.0f, 0xffu, false),
+              0xedu);
     EXPECT_EQ(accel.dropped_rays(), expected + 4);
     // A packet of bad lanes only, and a lone bad lane (which goes the single-ray way).
     EXPECT_EQ(accel.intersect_packet(pointers, 0x12u, hits, false), 0u);
-    EXPECT_EQ(accel.occluded_packet(origins, directions, 1.0f, 0x02u, false), 0u);
+    EXPECT_EQ(accel.occluded_packet(origins, directions, PerLane<float>{}, 1.0f, 0x02u, false), 0u);
     EXPECT_EQ(accel.dropped_rays(), expected + 7);
 }
 

@@ -1,5 +1,6 @@
 #include <glint/camera/camera.h>
 #include <glint/camera/orthographic.h>
+#include <glint/core/error.h>
 
 #include <fmt/format.h>
 
@@ -8,7 +9,58 @@
 
 namespace glint {
 
+void Camera::set_shutter(float open, float close) {
+    if (!(open >= 0.0f && close <= 1.0f && open <= close)) {
+        throw Error(
+            fmt::format("the shutter [{:g}, {:g}] must lie within the motion's span "
+                        "[0, 1], opening before it closes",
+                        open, close));
+    }
+    m_shutter_open = open;
+    m_shutter_close = close;
+}
+
+void Camera::move_to_time(Ray& ray, float u) const {
+    ray.time = time_of_sample(u);
+    if (!m_motion.is_moving()) return;
+    const Transform xf = m_motion.at(ray.time);
+    ray.origin = xf.point(ray.origin);
+    ray.direction = glm::normalize(xf.vector(ray.direction));
+    RayDifferentials& d = ray.differentials;
+    d.rx_origin = xf.point(d.rx_origin);
+    d.ry_origin = xf.point(d.ry_origin);
+    d.rx_direction = xf.vector(d.rx_direction);
+    d.ry_direction = xf.vector(d.ry_direction);
+}
+
+namespace {
+
+// glint.camera{ shutter = {open, close} }: two scene times within [0, 1].
+void read_shutter(const Params& params, Camera& camera) {
+    if (!params.has("shutter")) return;
+    const std::vector<double> shutter = params.get_numbers("shutter");
+    if (shutter.size() != 2) params.fail_at("shutter", "'shutter' must be two times {open, close}");
+    try {
+        camera.set_shutter(static_cast<float>(shutter[0]), static_cast<float>(shutter[1]));
+    } catch (const Error& e) {
+        params.fail_at("shutter", e.what());
+    }
+}
+
+std::unique_ptr<Camera> make_camera_of_type(const Params& params, Vec2i resolution);
+
+}  // namespace
+
 std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
+    std::unique_ptr<Camera> camera = make_camera_of_type(params, resolution);
+    read_shutter(params, *camera);
+    params.check_all_used();
+    return camera;
+}
+
+namespace {
+
+std::unique_ptr<Camera> make_camera_of_type(const Params& params, Vec2i resolution) {
     const std::string type = params.get_string("type", "perspective");
     const Vec3 eye = params.get_vec3("eye", Vec3(0, 0, 0));
     const Vec3 look_at = params.get_vec3("look_at", Vec3(0, 0, -1));
@@ -30,7 +82,6 @@ std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
         if (!(scale > 0.0f) || !std::isfinite(scale))
             params.fail_at("scale", "'scale' (the image's height in scene units) must be positive");
         if (scale > kLargest) params.fail(fmt::format("'scale' must be at most {:g}", kLargest));
-        params.check_all_used();
         return std::make_unique<OrthographicCamera>(eye, look_at, up, scale, resolution);
     }
     if (type != "perspective") {
@@ -58,8 +109,9 @@ std::unique_ptr<Camera> make_camera(const Params& params, Vec2i resolution) {
     if (aperture > kLargest) params.fail(fmt::format("'aperture' must be at most {:g}", kLargest));
     if (focus > kLargest)
         params.fail(fmt::format("'focus_distance' must be at most {:g}", kLargest));
-    params.check_all_used();
     return std::make_unique<PerspectiveCamera>(eye, look_at, up, fov, resolution, aperture, focus);
 }
+
+}  // namespace
 
 }  // namespace glint

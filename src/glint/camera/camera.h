@@ -3,6 +3,7 @@
 #include <glint/core/ray.h>
 #include <glint/core/sampler.h>
 #include <glint/core/spectrum.h>
+#include <glint/math/motion_transform.h>
 
 #include <algorithm>
 #include <cmath>
@@ -55,9 +56,38 @@ public:
     // False for a pinhole: its rays ignore `lens`, so integrators need not draw the sample.
     virtual bool needs_lens_sample() const { return true; }
     // generate_ray with the lens sample drawn from `sampler`, only when the camera uses one,
-    // so every integrator consumes the same sample dimensions for its camera rays.
+    // so every integrator consumes the same sample dimensions for its camera rays. Then,
+    // when the scene moves (set_time_sampled), a time drawn from the sampler's next
+    // dimension, uniform over the shutter (stratified as the sampler stratifies), and the
+    // ray carried by the camera's own motion at that time.
     Ray sample_ray(const Vec2& film, Sampler& sampler) const {
-        return generate_ray(film, needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
+        Ray ray = generate_ray(film, needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
+        if (m_time_sampled) [[unlikely]]
+            move_to_time(ray, sampler.get_1d());
+        else
+            ray.time = m_shutter_open;
+        return ray;
+    }
+
+    /// The scene times [open, close] the shutter is open for, within the motion keys' span
+    /// [0, 1]; open == close is an instant (no blur). Throws glint::Error otherwise.
+    void set_shutter(float open, float close);
+    float shutter_open() const { return m_shutter_open; }
+    float shutter_close() const { return m_shutter_close; }
+    /// The camera's own motion over [0, 1], applied to its rays in world space (the eye and
+    /// view it was made with are those of the identity).
+    void set_motion(MotionTransform motion) { m_motion = std::move(motion); }
+    bool is_moving() const { return m_motion.is_moving(); }
+    /// Whether sample_ray draws a time: set by the scene when something moves and the
+    /// shutter stays open for a while; otherwise every ray has the shutter's opening time
+    /// and no sample dimension goes to time, so still scenes keep their images bit for bit.
+    void set_time_sampled(bool sampled) {
+        m_time_sampled = sampled && m_shutter_close > m_shutter_open;
+    }
+    bool time_sampled() const { return m_time_sampled; }
+    /// The scene time of time sample `u` in [0, 1): uniform over the shutter.
+    float time_of_sample(float u) const {
+        return std::min(m_shutter_close, m_shutter_open + u * (m_shutter_close - m_shutter_open));
     }
 
     /// Samples a point on the lens (from `u_lens` as generate_ray maps its lens sample) and
@@ -90,6 +120,15 @@ public:
 
 protected:
     float m_footprint_scale = 1.0f;
+
+private:
+    // Gives `ray` the time of sample `u` and moves it (with its differentials) as the
+    // camera stands at that time.
+    void move_to_time(Ray& ray, float u) const;
+
+    float m_shutter_open = 0.0f, m_shutter_close = 0.0f;
+    bool m_time_sampled = false;
+    MotionTransform m_motion;
 };
 
 // Perspective pinhole or thin-lens camera looking from `eye` at `look_at`.

@@ -27,6 +27,7 @@ struct SurfaceInteraction {
     Vec2 uv{0.0f};
     Vec3 dpdu{0.0f}, dpdv{0.0f};
     float t = 0.0f;          // ray parameter of the hit
+    float time = 0.0f;       // the ray's scene time (Ray::time), which rays leaving here keep
     Vec3 wo{0.0f};           // direction towards the ray origin, unit length
     bool front_face = true;  // the ray arrived on the side ng points to
     int part = 0;  // which part of the shape was hit (CSG primitives have their own materials)
@@ -98,7 +99,7 @@ inline Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& directi
 }
 
 inline Ray spawn_ray(const SurfaceInteraction& si, const Vec3& direction) {
-    return Ray{offset_ray_origin(si.p, si.ng, direction), direction, 0.0f, kInfinity};
+    return Ray{offset_ray_origin(si.p, si.ng, direction), direction, 0.0f, kInfinity, si.time};
 }
 
 // spawn_ray written over `ray` in place, for a path that carries one ray from bounce to
@@ -109,6 +110,7 @@ inline void respawn_ray(Ray& ray, const SurfaceInteraction& si, const Vec3& dire
     ray.direction = direction;
     ray.t_min = 0.0f;
     ray.t_max = kInfinity;
+    ray.time = si.time;
     ray.has_differentials = false;
 }
 

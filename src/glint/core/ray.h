@@ -15,6 +15,9 @@ struct Ray {
     Vec3 direction;
     float t_min = 0.0f;
     float t_max = kInfinity;
+    // Scene time the ray sees moving geometry at (0 at the first motion key, 1 at the last;
+    // see Camera::sample_ray): every ray of a path carries its camera ray's time.
+    float time = 0.0f;
     // Camera rays carry differentials; rays after a bounce do not, and the camera
     // approximates their footprint instead (see SurfaceInteraction::set_footprint).
     bool has_differentials = false;

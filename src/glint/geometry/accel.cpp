@@ -66,6 +66,41 @@ unsigned Accel::add_instance(int prototype, const Transform& to_world) {
     return id;
 }
 
+unsigned Accel::add_instance(int prototype, const MotionTransform& to_world) {
+    if (!to_world.is_moving()) return add_instance(prototype, to_world.key(0));
+    if (to_world.key_count() > RTC_MAX_TIME_STEP_COUNT) {
+        throw Error(fmt::format("a motion has {} keys; Embree takes at most {}",
+                                to_world.key_count(), RTC_MAX_TIME_STEP_COUNT));
+    }
+    RTCGeometry instance = rtcNewGeometry(m_device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(instance, m_prototypes.at(prototype));
+    rtcSetGeometryTimeStepCount(instance, static_cast<unsigned>(to_world.key_count()));
+    for (size_t step = 0; step < to_world.key_count(); ++step) {
+        const TransformParts& parts = to_world.parts(step);
+        RTCQuaternionDecomposition embree_parts;
+        rtcInitQuaternionDecomposition(&embree_parts);
+        embree_parts.scale_x = parts.scale.x;
+        embree_parts.scale_y = parts.scale.y;
+        embree_parts.scale_z = parts.scale.z;
+        embree_parts.skew_xy = parts.shear.x;
+        embree_parts.skew_xz = parts.shear.y;
+        embree_parts.skew_yz = parts.shear.z;
+        embree_parts.quaternion_r = parts.rotation.w;
+        embree_parts.quaternion_i = parts.rotation.x;
+        embree_parts.quaternion_j = parts.rotation.y;
+        embree_parts.quaternion_k = parts.rotation.z;
+        embree_parts.translation_x = parts.translation.x;
+        embree_parts.translation_y = parts.translation.y;
+        embree_parts.translation_z = parts.translation.z;
+        rtcSetGeometryTransformQuaternion(instance, static_cast<unsigned>(step), &embree_parts);
+    }
+    rtcCommitGeometry(instance);
+    const unsigned id = rtcAttachGeometry(m_world, instance);
+    rtcReleaseGeometry(instance);
+    check_device("placing a moving group instance");
+    return id;
+}
+
 void Accel::commit() {
     for (RTCScene scene : m_prototypes) rtcCommitScene(scene);
     rtcCommitScene(m_world);
@@ -100,9 +135,9 @@ EmbreeValid embree_valid(uint32_t active) {
 }
 
 // Lane `lane` of an Embree packet: the segment [t_min, t_max] of origin + t direction, seen
-// by every geometry, at time 0 (as embree_ray() for single rays).
+// by every geometry, at scene time `time` (as embree_ray() for single rays).
 void set_packet_ray(RTCRay8& packet, int lane, const Vec3& origin, const Vec3& direction,
-                    float t_min, float t_max) {
+                    float t_min, float t_max, float time) {
     packet.org_x[lane] = origin.x;
     packet.org_y[lane] = origin.y;
     packet.org_z[lane] = origin.z;
@@ -111,7 +146,7 @@ void set_packet_ray(RTCRay8& packet, int lane, const Vec3& origin, const Vec3& d
     packet.dir_z[lane] = direction.z;
     packet.tnear[lane] = t_min;
     packet.tfar[lane] = t_max;
-    packet.time[lane] = 0.0f;
+    packet.time[lane] = time;
     packet.mask[lane] = 0xffffffffu;
     packet.id[lane] = 0;
     packet.flags[lane] = 0;
@@ -197,7 +232,7 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         // Inactive lanes get a valid ray too, so no lane holds uninitialised floats.
         const Ray& ray = *rays[(active >> lane) & 1u ? lane : first];
-        set_packet_ray(packet.ray, lane, ray.origin, ray.direction, ray.t_min, ray.t_max);
+        set_packet_ray(packet.ray, lane, ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
         packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
@@ -229,16 +264,18 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
 }
 
 uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
-                                float t_max, uint32_t active, bool coherent) const {
+                                const PerLane<float>& times, float t_max, uint32_t active,
+                                bool coherent) const {
     if (is_single_lane(active)) {
         const int lane = std::countr_zero(active);
-        return occluded(origins[lane], directions[lane], 0.0f, t_max) ? active : 0;
+        return occluded(origins[lane], directions[lane], 0.0f, t_max, times[lane]) ? active : 0;
     }
     alignas(32) RTCRay8 packet;
     const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         const int source = (active >> lane) & 1u ? lane : first;
-        set_packet_ray(packet, lane, origins[source], directions[source], 0.0f, t_max);
+        set_packet_ray(packet, lane, origins[source], directions[source], 0.0f, t_max,
+                       times[source]);
     }
     // Lanes Embree would refuse are left out (not blocked) and counted.
     const auto drop = [this](uint64_t count) { drop_ray(count); };

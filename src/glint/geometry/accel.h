@@ -3,6 +3,7 @@
 // Embree instances (one level, which is what Debian's Embree supports), plus the shapes
 // of the root group directly in the world scene.
 #include <glint/geometry/shape.h>
+#include <glint/math/motion_transform.h>
 
 #include <array>
 #include <atomic>
@@ -40,6 +41,9 @@ public:
     unsigned add_shape(int prototype, const Shape& shape);
     // Places a prototype in the world; returns the world geometry id of the instance.
     unsigned add_instance(int prototype, const Transform& to_world);
+    // Places a prototype on a moving transform: Embree interpolates the keys' parts
+    // (TransformParts) over the ray's time as MotionTransform::at does.
+    unsigned add_instance(int prototype, const MotionTransform& to_world);
     // Builds all BVHs. Throws glint::Error when Embree reports a problem.
     void commit();
 
@@ -52,7 +56,7 @@ public:
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
         RTCRayHit rh;
-        rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max);
+        rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
         rtcIntersect1(m_world, &context, &rh);
@@ -74,12 +78,13 @@ public:
     bool occluded(const Ray& ray) const;
     // The same for a segment given by its parts, for shadow rays, which need no Ray (and so
     // no differentials) built and copied. Inline: the path tracer traces one per bounce.
-    bool occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max) const {
+    bool occluded(const Vec3& origin, const Vec3& direction, float t_min, float t_max,
+                  float time = 0.0f) const {
         if (!embree_accepts(origin, direction, t_min, t_max)) [[unlikely]]
             return drop_ray();
         RTCIntersectContext context;
         rtcInitIntersectContext(&context);
-        RTCRay r = embree_ray(origin, direction, t_min, t_max);
+        RTCRay r = embree_ray(origin, direction, t_min, t_max, time);
         rtcOccluded1(m_world, &context, &r);
         return r.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the segment
     }
@@ -93,9 +98,10 @@ public:
     uint32_t intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
                               PerLane<HitRecord>& hits, bool coherent) const;
     // The lanes among `active` whose segment origins[i] + t directions[i], t in
-    // [0, t_max], is blocked; as occluded() per lane.
+    // [0, t_max], at scene time times[i], is blocked; as occluded() per lane.
     uint32_t occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
-                             float t_max, uint32_t active, bool coherent) const;
+                             const PerLane<float>& times, float t_max, uint32_t active,
+                             bool coherent) const;
 
     /// Rays not traced because Embree would reject them (see embree_accepts()): each was
     /// answered as a miss, or as an unblocked shadow ray. Counted over every query so far,
@@ -140,8 +146,10 @@ private:
     [[gnu::cold, gnu::noinline]] bool drop_ray(uint64_t count = 1) const;
 
     // The segment [t_min, t_max] of origin + t direction as Embree takes it: every ray
-    // visible to every geometry, at time 0.
-    static RTCRay embree_ray(const Vec3& origin, const Vec3& direction, float t_min, float t_max) {
+    // visible to every geometry, at scene time `time` (Embree's time: motion keys spread
+    // over [0, 1]; the camera keeps every ray's time there, as Embree requires).
+    static RTCRay embree_ray(const Vec3& origin, const Vec3& direction, float t_min, float t_max,
+                             float time) {
         RTCRay r;
         r.org_x = origin.x;
         r.org_y = origin.y;
@@ -151,7 +159,7 @@ private:
         r.dir_z = direction.z;
         r.tnear = t_min;
         r.tfar = t_max;
-        r.time = 0.0f;
+        r.time = time;
         r.mask = 0xffffffffu;
         r.id = 0;
         r.flags = 0;

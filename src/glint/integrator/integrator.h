@@ -38,6 +38,10 @@ struct IntegratorCapabilities {
     /// Fills the film's two halves (Film::has_halves(), by each sample's index), which the
     /// denoiser needs. Integrators that splat light paths onto the film cannot.
     bool film_halves = false;
+    /// Renders scenes that move: every ray of a path keeps its camera ray's time (Ray::time,
+    /// SurfaceInteraction::time). Integrators whose light paths, photons or caches are
+    /// made at one time cannot yet, and refuse such scenes.
+    bool motion_blur = false;
     /// The debug views it can write, besides those every integrator's settings give.
     std::vector<DebugView> debug_views;
 

@@ -91,6 +91,17 @@ void add_debug_images(const RenderSettings& settings, const RenderStats& stats,
     for (size_t i = 0; i < views.size(); ++i) files.push_back({view_paths[i], &views[i], {}});
 }
 
+// A moving scene needs an integrator that carries each path's time.
+void check_motion(const Scene& scene, const RenderSettings& settings,
+                  const IntegratorCapabilities& capabilities) {
+    if (!scene.has_motion() || capabilities.motion_blur) return;
+    throw Error(
+        fmt::format("{}: the '{}' integrator does not render moving scenes yet (its "
+                    "light paths, photons or caches are made at one time); use path, "
+                    "path_light, path_bsdf, whitted or sppm",
+                    settings.where_of("integrator"), settings.integrator));
+}
+
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
@@ -112,6 +123,7 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
     if (settings.denoise) check_denoiser_ready(settings);
     for (const std::string& warning : warnings) warn(control, warning);
     const auto scene = build_scene(desc, settings);
+    check_motion(*scene, settings, integrator->capabilities());
     for (const std::string& warning : scene->stats().warnings) warn(control, warning);
     throw_if_cancelled(control);
 

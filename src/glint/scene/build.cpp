@@ -47,6 +47,7 @@ public:
         build_groups();
         place_root();
         m_scene->m_accel.commit();
+        set_up_motion();
         for (const auto& shape : m_scene->m_shapes) {
             m_scene->m_stats.unique_triangles += shape->triangle_count();
             m_scene->m_stats.mesh_bytes += shape->memory_bytes();
@@ -122,6 +123,14 @@ private:
         m_scene->m_camera = make_camera(m_desc.camera ? *m_desc.camera : fallback,
                                         Vec2i(m_settings.width, m_settings.height));
         m_scene->m_camera->set_samples_per_pixel(m_settings.spp);
+        if (!m_desc.camera_motion.empty())
+            m_scene->m_camera->set_motion(MotionTransform(m_desc.camera_motion));
+    }
+
+    // Camera rays draw a time only when something moves (Scene::has_motion).
+    void set_up_motion() {
+        m_scene->m_has_motion |= m_scene->m_camera->is_moving();
+        m_scene->m_camera->set_time_sampled(m_scene->m_has_motion);
     }
 
     // Shapes of every group, built once however often the group is placed.
@@ -157,12 +166,28 @@ private:
             count_shape(use, Transform());
         }
         for (const InstanceDesc& instance : m_desc.groups[0].instances)
-            place(instance, Transform(), path);
+            place(instance, MotionTransform(), path);
     }
 
-    // Places group `instance.group` at `parent * instance.transform`, then its own children.
-    // Embree supports one instance level, so nested placements are flattened here.
-    void place(const InstanceDesc& instance, const Transform& parent, std::vector<int>& path) {
+    // Where a placement puts its group: parent * transform * motion keys, keywise.
+    static MotionTransform placement(const InstanceDesc& instance, const MotionTransform& parent) {
+        if (!parent.is_moving() && instance.motion.empty())
+            return MotionTransform(parent.key(0) * instance.transform);
+        std::vector<Transform> keys = instance.motion;
+        if (keys.empty()) keys.push_back(Transform());
+        for (Transform& key : keys) key = instance.transform * key;
+        try {
+            return parent * MotionTransform(std::move(keys));
+        } catch (const Error& e) {
+            throw Error(fmt::format("{}: {}", instance.where, e.what()));
+        }
+    }
+
+    // Places group `instance.group` at `parent * instance.transform` (moving with its motion
+    // keys and its parent's), then its own children. Embree supports one instance level, so
+    // nested placements are flattened here.
+    void place(const InstanceDesc& instance, const MotionTransform& parent,
+               std::vector<int>& path) {
         const int g = instance.group;
         // The walk recurses once per level: a bounded depth keeps it off the stack's end.
         if (path.size() > kMaxGroupDepth) {
@@ -178,20 +203,33 @@ private:
         }
         if (std::find(path.begin(), path.end(), g) != path.end())
             throw Error(fmt::format("{}: a group cannot contain itself", instance.where));
-        const Transform to_world = parent * instance.transform;
+        const MotionTransform motion = placement(instance, parent);
+        const Transform& to_world = motion.key(0);
         if (!m_group_shapes[g].empty()) {
-            const unsigned id = m_scene->m_accel.add_instance(prototype_of(g), to_world);
+            const unsigned id = motion.is_moving()
+                                    ? m_scene->m_accel.add_instance(prototype_of(g), motion)
+                                    : m_scene->m_accel.add_instance(prototype_of(g), to_world);
             Scene::WorldEntry& entry = world_entry(id);
             entry.group = m_prototype[g];
             entry.to_world = to_world;
+            if (motion.is_moving()) {
+                entry.motion = motion;
+                m_scene->m_has_motion = true;
+            }
             for (const ShapeUse& use : m_group_shapes[g]) {
+                if (motion.is_moving() && is_emitter(use)) {
+                    use.params->fail(
+                        fmt::format("an emitting shape cannot move (placed moving at {}): "
+                                    "area lights stand still in glint",
+                                    instance.where));
+                }
                 entry.lights.push_back(make_area_light(use, to_world));
-                count_shape(use, to_world);
+                count_shape(use, motion);
             }
             ++m_scene->m_stats.instances;
         }
         path.push_back(g);
-        for (const InstanceDesc& child : m_desc.groups[g].instances) place(child, to_world, path);
+        for (const InstanceDesc& child : m_desc.groups[g].instances) place(child, motion, path);
         path.pop_back();
     }
 
@@ -218,6 +256,11 @@ private:
     Scene::WorldEntry& world_entry(unsigned id) {
         if (m_scene->m_world.size() <= id) m_scene->m_world.resize(id + 1);
         return m_scene->m_world[id];
+    }
+
+    static bool is_emitter(const ShapeUse& use) {
+        return std::any_of(use.materials.begin(), use.materials.end(),
+                           [](const Material* m) { return m->is_emissive(); });
     }
 
     const Light* make_area_light(const ShapeUse& use, const Transform& to_world) {
@@ -282,6 +325,13 @@ private:
         ++stats.shapes;
         stats.triangles += use.shape->triangle_count();
         stats.bounds.expand(use.shape->bounds().transformed(to_world));
+    }
+    void count_shape(const ShapeUse& use, const MotionTransform& to_world) {
+        if (!to_world.is_moving()) return count_shape(use, to_world.key(0));
+        SceneStats& stats = m_scene->m_stats;
+        ++stats.shapes;
+        stats.triangles += use.shape->triangle_count();
+        stats.bounds.expand(to_world.bounds_of_keys(use.shape->bounds()));
     }
 
     const SceneDesc& m_desc;

@@ -6,17 +6,26 @@ namespace glint {
 
 void Scene::set_camera(std::unique_ptr<Camera> camera) {
     if (!camera) throw Error("a scene needs a camera");
+    camera->set_time_sampled(m_has_motion || camera->is_moving());
     m_camera = std::move(camera);
 }
 
 void Scene::fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
                            SurfaceInteraction& si) const {
+    // A moving group stands where it stood at the ray's time, as Embree saw it there.
+    if (entry.motion.is_moving()) [[unlikely]]
+        fill_instanced_at(ray, hit, entry, entry.motion.at(ray.time), si);
+    else
+        fill_instanced_at(ray, hit, entry, entry.to_world, si);
+}
+
+void Scene::fill_instanced_at(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
+                              const Transform& xf, SurfaceInteraction& si) const {
     const Geometry& geometry = m_group_geometry[entry.group][hit.local_geometry];
-    const Transform to_local = entry.to_world.inverse();
+    const Transform to_local = xf.inverse();
     const Ray local_ray{to_local.point(ray.origin), to_local.vector(ray.direction), ray.t_min,
-                        ray.t_max};
+                        ray.t_max, ray.time};
     geometry.shape->fill_interaction(local_ray, hit, si);
-    const Transform& xf = entry.to_world;
     si.p = xf.point(si.p);
     si.ng = glm::normalize(xf.normal(si.ng));
     si.dpdu = xf.vector(si.dpdu);

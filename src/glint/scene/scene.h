@@ -102,22 +102,24 @@ public:
     // to just short of `target`.
     bool occluded(const SurfaceInteraction& si, const Vec3& target) const {
         const ShadowRay shadow = shadow_ray(si, target);
-        return m_accel.occluded(shadow.origin, shadow.direction, 0.0f, kShadowRayEnd);
+        return m_accel.occluded(shadow.origin, shadow.direction, 0.0f, kShadowRayEnd, shadow.time);
     }
     // The shadow ray occluded(si, target) traces: from the offset origin, with the
-    // direction reaching `target` at t = 1 (it stops at kShadowRayEnd).
+    // direction reaching `target` at t = 1 (it stops at kShadowRayEnd), at the scene time
+    // of the ray that reached si.
     struct ShadowRay {
         Vec3 origin, direction;
+        float time = 0.0f;
     };
     static ShadowRay shadow_ray(const SurfaceInteraction& si, const Vec3& target) {
         const Vec3 origin = offset_ray_origin(si.p, si.ng, target - si.p);
-        return {origin, target - origin};
+        return {origin, target - origin, si.time};
     }
-    // The lanes among `active` whose shadow ray (from shadow_ray()) is blocked, traced as
-    // one packet.
+    // The lanes among `active` whose shadow ray (from shadow_ray(), lane i at scene time
+    // times[i]) is blocked, traced as one packet.
     uint32_t occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
-                             uint32_t active, bool coherent) const {
-        return m_accel.occluded_packet(origins, directions, kShadowRayEnd, active, coherent);
+                             const PerLane<float>& times, uint32_t active, bool coherent) const {
+        return m_accel.occluded_packet(origins, directions, times, kShadowRayEnd, active, coherent);
     }
 
     const Camera& camera() const { return *m_camera; }
@@ -142,6 +144,10 @@ public:
     const std::vector<std::unique_ptr<Medium>>& media() const { return m_media; }
     /// The medium the camera sits in (glint.camera{ medium = ... }); null: vacuum.
     const Medium* camera_medium() const { return m_camera_medium; }
+    /// Whether anything moves over the shutter (a moving group or shape, or the camera):
+    /// only then do camera rays draw a time (Camera::sample_ray), so a still scene renders
+    /// the same bits with a shutter as without.
+    bool has_motion() const { return m_has_motion; }
     /// The folder of the scene's script (or model file): where files the scene names, such
     /// as a radiosity cache, are looked for, and which they must not leave unless trusted().
     const std::string& directory() const { return m_directory; }
@@ -171,6 +177,7 @@ private:
         Geometry geometry;  // root shapes
         int group = -1;     // instances: the prototype
         Transform to_world;
+        MotionTransform motion;            // instances that move: to_world at each ray's time
         std::vector<const Light*> lights;  // instances: area light per local geometry id
         const Light* light = nullptr;      // root shapes
     };
@@ -191,6 +198,7 @@ private:
             si.area_light = entry.light;
         }
         si.t = hit.t;
+        si.time = ray.time;
         si.wo = -glm::normalize(ray.direction);
         si.front_face = glm::dot(si.ng, si.wo) > 0.0f;
     }
@@ -202,6 +210,9 @@ private:
     // group's space, and the result is carried to the world.
     void fill_instanced(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
                         SurfaceInteraction& si) const;
+    // fill_instanced with the group placed by `xf` (where it stands at the ray's time).
+    void fill_instanced_at(const Ray& ray, const HitRecord& hit, const WorldEntry& entry,
+                           const Transform& xf, SurfaceInteraction& si) const;
 
     Accel m_accel;
     std::vector<std::unique_ptr<Shape>> m_shapes;
@@ -220,6 +231,7 @@ private:
     SceneStats m_stats;
     bool m_has_interfaces = false;
     const Medium* m_camera_medium = nullptr;  // one of m_media
+    bool m_has_motion = false;
 };
 
 }  // namespace glint

@@ -17,12 +17,16 @@ namespace glint {
 inline constexpr int kMaxCsgDepth = 1000;       ///< CSG nodes from the root down to a primitive
 inline constexpr size_t kMaxGroupDepth = 1000;  ///< groups placed inside each other
 inline constexpr size_t kMaxPlacements = 1'000'000;  ///< group placements after flattening
+inline constexpr int kMaxMotionKeys = 129;           ///< keys of one motion (Embree's time steps)
 
 // One placement of a group inside another group.
 struct InstanceDesc {
     int group = -1;
     Transform transform;
     std::string where;  // script location, for errors
+    // Motion keys after `transform` (to_world(time) = parent * transform * motion(time)),
+    // spread evenly over the scene times [0, 1]; empty for a group that stands still.
+    std::vector<Transform> motion{};
 };
 
 struct GroupDesc {
@@ -55,6 +59,8 @@ struct SceneDesc {
     std::vector<std::shared_ptr<const MeshData>> meshes;
     // The camera came from an imported file: a later glint.camera replaces it.
     bool camera_imported = false;
+    // The camera's motion keys (glint.camera{ motion = {...} }); empty when it stands still.
+    std::vector<Transform> camera_motion;
     // Width / height of the imported camera's view (glTF's aspectRatio), when it gives one:
     // `glint render MODEL` sizes its image by it (import.cpp, load_model_scene).
     std::optional<float> camera_aspect;

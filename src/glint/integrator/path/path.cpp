@@ -238,6 +238,7 @@ void PathIntegrator::trace_packet_with(const Scene& scene, PerLane<PathState>& p
         active &= hit;
 
         PerLane<Vec3> shadow_origins, shadow_directions;
+        PerLane<float> shadow_times;
         uint32_t shadowed = 0;
         for_each_lane(active, [&](int lane) GLINT_INLINE_LAMBDA {
             PathState& path = paths[lane];
@@ -249,13 +250,14 @@ void PathIntegrator::trace_packet_with(const Scene& scene, PerLane<PathState>& p
                 const Scene::ShadowRay shadow = Scene::shadow_ray(path.si, *target);
                 shadow_origins[lane] = shadow.origin;
                 shadow_directions[lane] = shadow.direction;
+                shadow_times[lane] = shadow.time;
                 shadowed |= 1u << lane;
                 ++counter.rays;
             }
         });
         if (shadowed != 0) {
-            const uint32_t blocked =
-                scene.occluded_packet(shadow_origins, shadow_directions, shadowed, coherent);
+            const uint32_t blocked = scene.occluded_packet(shadow_origins, shadow_directions,
+                                                           shadow_times, shadowed, coherent);
             for_each_lane(shadowed & ~blocked, [&](int lane) {
                 paths[lane].L += paths[lane].beta * paths[lane].direct;
             });
@@ -263,7 +265,9 @@ void PathIntegrator::trace_packet_with(const Scene& scene, PerLane<PathState>& p
             if (scene.has_interfaces()) {
                 for_each_lane(blocked, [&](int lane) {
                     add_direct_through_interfaces(
-                        scene, Scene::ShadowRay{shadow_origins[lane], shadow_directions[lane]},
+                        scene,
+                        Scene::ShadowRay{shadow_origins[lane], shadow_directions[lane],
+                                         shadow_times[lane]},
                         paths[lane]);
                 });
             }

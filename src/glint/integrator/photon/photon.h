@@ -6,8 +6,8 @@
 // caustic map's radiance estimate, and indirect light by final gathering: BSDF-sampled
 // rays whose hits are evaluated in the global map. Estimates use the k nearest photons
 // with a cone filter, within at most `photon_radius`.
-#include <glint/integrator/tile/tile_integrator.h>
 #include <glint/integrator/photon/photon_map.h>
+#include <glint/integrator/tile/tile_integrator.h>
 
 namespace glint {
 
@@ -55,6 +55,7 @@ public:
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
+        capabilities.motion_blur = false;  // its photons or radiosity are made at one time
         capabilities.debug_views.push_back(photons_debug_view());
         return capabilities;
     }

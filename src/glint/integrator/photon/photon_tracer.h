@@ -81,6 +81,10 @@ private:
         u_start.u_position = u1;
         u_start.u_direction = u2;
         u_start.u_select = rng.next_float();
+        // One time per photon path, uniform over the shutter, only when the scene moves (so
+        // still scenes keep their photons bit for bit).
+        if (m_scene.camera().time_sampled())
+            u_start.time = m_scene.camera().time_of_sample(rng.next_float());
         const std::optional<LightPathStart> start =
             m_emitter ? start_light_path(m_scene, u_start, m_emitter)
                       : start_light_path(m_scene, u_start);

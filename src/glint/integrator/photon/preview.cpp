@@ -345,6 +345,7 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
     PerLane<const SurfaceInteraction*> surface{};
     PerLane<const Bsdf*> bsdf_of{};
     PerLane<Vec3> shadow_origins, shadow_directions;
+    PerLane<float> shadow_times;
     uint32_t shading = 0, shadowed = 0;
     for_each_lane(active, [&](int lane) {
         const Ray& ray = lanes.rays[lane];
@@ -390,19 +391,21 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
         const Scene::ShadowRay shadow = Scene::shadow_ray(at, direct->target);
         shadow_origins[lane] = shadow.origin;
         shadow_directions[lane] = shadow.direction;
+        shadow_times[lane] = shadow.time;
         shadowed |= 1u << lane;
         ++counter.rays;
     });
     if (shadowed != 0) {
         const uint32_t blocked =
-            scene.occluded_packet(shadow_origins, shadow_directions, shadowed, true);
+            scene.occluded_packet(shadow_origins, shadow_directions, shadow_times, shadowed, true);
         for_each_lane(blocked, [&](int lane) {
             // A surface that only bounds media may have blocked it: what it lets through.
             reflected[lane] =
                 scene.has_interfaces()
-                    ? reflected[lane] * transmittance_through_interfaces(
-                                            scene, Scene::ShadowRay{shadow_origins[lane],
-                                                                    shadow_directions[lane]})
+                    ? reflected[lane] *
+                          transmittance_through_interfaces(
+                              scene, Scene::ShadowRay{shadow_origins[lane], shadow_directions[lane],
+                                                      shadow_times[lane]})
                     : Spectrum(0.0f);
         });
     }

@@ -29,6 +29,7 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.crop_windows = true;
+        capabilities.motion_blur = true;  // visible points and photons each carry a time
         return capabilities;
     }
     /// Every rank finds all visible points (camera rays are few next to the photons) and

@@ -7,11 +7,11 @@
 // With `hybrid = true` the solution only supplies the diffuse indirect light: a ray-traced
 // second pass adds direct light by next-event estimation (exact soft shadows), follows
 // mirrors and glass, and adds caustics from a caustic photon map.
-#include <glint/integrator/tile/tile_integrator.h>
 #include <glint/integrator/photon/photon.h>
 #include <glint/integrator/photon/photon_map.h>
 #include <glint/integrator/radiosity/radiosity_mesh.h>
 #include <glint/integrator/radiosity/radiosity_solver.h>
+#include <glint/integrator/tile/tile_integrator.h>
 
 #include <string>
 
@@ -45,6 +45,7 @@ public:
     /// A tile integrator's, less the crop window (never offered for radiosity).
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
+        capabilities.motion_blur = false;  // its photons or radiosity are made at one time
         capabilities.crop_windows = false;
         return capabilities;
     }

@@ -385,6 +385,7 @@ IntegratorCapabilities TileIntegrator::capabilities() const {
     return {.crop_windows = true,
             .adaptive_sampling = true,
             .film_halves = true,
+            .motion_blur = true,
             .debug_views = {{"edges", "--adaptive sobel"}}};
 }
 

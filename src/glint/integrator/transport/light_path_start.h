@@ -17,6 +17,9 @@ struct LightPathSamples {
     Vec2 u_position;   ///< the ray's origin (Light::sample_le)
     Vec2 u_direction;  ///< the ray's direction
     float u_select;    ///< the light's part (triangle, side)
+    /// The path's scene time (not a random number of its own: walks that draw one, only in
+    /// scenes that move, map it with Camera::time_of_sample); every ray of the path keeps it.
+    float time = 0.0f;
 };
 
 /// A light path's first ray, and what it carries.
@@ -46,6 +49,7 @@ std::optional<LightPathStart> start_light_path(const Scene& scene, const LightPa
     std::optional<LightEmission> emission =
         emit(*choice.light, u.u_position, u.u_direction, u.u_select);
     if (!emission) return std::nullopt;
+    emission->ray.time = u.time;
     const Spectrum beta = emission->beta() / choice.pmf;
     return LightPathStart{choice.light, choice.pmf, std::move(*emission), beta};
 }

@@ -20,7 +20,7 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
     SurfaceInteraction si;
     for (int crossing = 0; crossing <= kMaxInterfaceCrossings; ++crossing) {
         // Each leg reaches the target at t = 1 and stops short of it, as the first did.
-        const Ray ray{origin, target - origin, 0.0f, kShadowRayEnd};
+        const Ray ray{origin, target - origin, 0.0f, kShadowRayEnd, shadow.time};
         const bool hit = scene.intersect_surface(ray, si);
         if (hit && !si.material->is_interface()) return Spectrum(0.0f);
         if (medium) {

@@ -31,8 +31,8 @@ inline bool samples_distances(const Medium& medium) {
                                                      const Scene::ShadowRay& shadow,
                                                      const Medium* medium = nullptr) {
     if (!scene.has_interfaces() && !medium) {
-        const bool blocked =
-            scene.accel().occluded(shadow.origin, shadow.direction, 0.0f, kShadowRayEnd);
+        const bool blocked = scene.accel().occluded(shadow.origin, shadow.direction, 0.0f,
+                                                    kShadowRayEnd, shadow.time);
         return Spectrum(blocked ? 0.0f : 1.0f);
     }
     return transmittance_through_interfaces(scene, shadow, medium);

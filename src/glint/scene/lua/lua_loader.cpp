@@ -206,8 +206,9 @@ ParamValue to_param(lua_State* L, int index, const std::string& name, const std:
                         luaL_typename(L, index)));
 }
 
-// Reads the table argument at `index` into Params of the given type.
-Params to_params(lua_State* L, int index, const std::string& type) {
+// Reads the table argument at `index` into Params of the given type; a key named `skip`
+// (read apart by the caller, e.g. motion keys) is left out.
+Params to_params(lua_State* L, int index, const std::string& type, const char* skip = nullptr) {
     Params params(type, where(L));
     if (lua_isnoneornil(L, index)) return params;
     if (!lua_istable(L, index)) {
@@ -221,6 +222,10 @@ Params to_params(lua_State* L, int index, const std::string& type) {
             fail(L, fmt::format("{}: parameters must be named (name = value)", type));
         }
         const std::string name = lua_tostring(L, -2);
+        if (skip && name == skip) {
+            lua_pop(L, 1);
+            continue;
+        }
         params.set(name, to_param(L, -1, name, type));
         lua_pop(L, 1);
     }
@@ -267,6 +272,54 @@ int group_index_of(lua_State* L, int index) {
     return h->index;
 }
 
+// Motion keys {xf0, xf1, ...}: two or more transforms, spread evenly over the scene times
+// [0, 1] (see MotionTransform), at most as many as Embree takes.
+std::vector<Transform> motion_keys(lua_State* L, int index, const std::string& what) {
+    const std::string expected = fmt::format(
+        "{}: 'motion' must be a list of 2 to {} transforms {{xf0, xf1, ...}} (keys "
+        "spread evenly over the times [0, 1])",
+        what, kMaxMotionKeys);
+    if (!lua_istable(L, index)) fail(L, expected + ", got " + describe(L, index));
+    index = lua_absindex(L, index);
+    const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+    if (n < 2 || n > kMaxMotionKeys) fail(L, fmt::format("{}, got {} entries", expected, n));
+    std::vector<Transform> keys;
+    for (lua_Integer i = 1; i <= n; ++i) {
+        lua_rawgeti(L, index, i);
+        const Transform* xf = to_transform(L, -1);
+        if (!xf) fail(L, fmt::format("{}; entry {} is {}", expected, i, describe(L, -1)));
+        keys.push_back(*xf);
+        lua_pop(L, 1);
+    }
+    return keys;
+}
+
+// The motion keys of the table argument at `index` (its `motion` entry), or none.
+std::vector<Transform> optional_motion(lua_State* L, int index, const std::string& what) {
+    if (!lua_istable(L, index)) return {};
+    lua_getfield(L, index, "motion");
+    std::vector<Transform> keys;
+    if (!lua_isnil(L, -1)) keys = motion_keys(L, -1, what);
+    lua_pop(L, 1);
+    return keys;
+}
+
+// Adds a shape to `group`; a moving one goes into a group of its own, placed on its motion,
+// since Embree moves whole instances (and analytic shapes are user geometry, which it
+// cannot move itself).
+void add_shape(lua_State* L, int group, Params params, std::vector<Transform> motion) {
+    if (motion.empty()) {
+        desc_of(L).groups[group].shapes.push_back(std::move(params));
+        return;
+    }
+    std::string at = where(L);  // before the groups are looked up (see new_shape)
+    SceneDesc& desc = desc_of(L);
+    desc.groups.push_back(GroupDesc{at, {std::move(params)}, {}});
+    const int holder = static_cast<int>(desc.groups.size()) - 1;
+    desc.groups[group].instances.push_back(
+        InstanceDesc{holder, Transform(), std::move(at), std::move(motion)});
+}
+
 // glint.<shape>{...} adds to the world group; group:<shape>{...} to that group.
 int new_shape(lua_State* L) {
     const std::string type = lua_tostring(L, lua_upvalueindex(1));
@@ -278,8 +331,9 @@ int new_shape(lua_State* L) {
     }
     // Read before the group is looked up: reading may run a script's __gc finaliser, which
     // may add a group and so move every group (a reference taken before would dangle).
-    Params params = to_params(L, args, type);
-    desc_of(L).groups[group].shapes.push_back(std::move(params));
+    std::vector<Transform> motion = optional_motion(L, args, type);
+    Params params = to_params(L, args, type, "motion");
+    add_shape(L, group, std::move(params), std::move(motion));
     return 0;
 }
 
@@ -366,9 +420,11 @@ int add_solid(lua_State* L) {
                             "{{material = m}}, got {}",
                             describe(L, args + 1)));
     }
-    Params params = to_params(L, args + 1, "solid");
-    params.set("solid", ObjectRef{"solid", solid->index});
-    desc_of(L).groups[group].shapes.push_back(std::move(params));
+    const int solid_index = solid->index;
+    std::vector<Transform> motion = optional_motion(L, args + 1, "glint.add");
+    Params params = to_params(L, args + 1, "solid", "motion");
+    params.set("solid", ObjectRef{"solid", solid_index});
+    add_shape(L, group, std::move(params), std::move(motion));
     return 0;
 }
 
@@ -383,11 +439,15 @@ Transform optional_transform(lua_State* L, int index) {
     if (lua_isnoneornil(L, index)) return Transform();
     Transform* xf = to_transform(L, index);
     if (!xf)
-        fail(L, "expected a transform (glint.translate, glint.rotate, glint.scale, glint.matrix)");
+        fail(L,
+             "expected a transform (glint.translate, glint.rotate, glint.scale, glint.matrix) or "
+             "a list of them (motion keys)");
     return *xf;
 }
 
-// glint.place(group [, transform]) or parent:place(group [, transform]).
+// glint.place(group [, transform]) or parent:place(group [, transform]); a list of
+// transforms {xf0, xf1, ...} in place of the transform moves the group through them over
+// the times [0, 1].
 int place_group(lua_State* L) {
     int parent = 0;
     int args = 1;
@@ -399,7 +459,11 @@ int place_group(lua_State* L) {
     if (child == 0) fail(L, "the world group cannot be placed");
     // Both read before the group is looked up (where() allocates, which may run a
     // finaliser that adds a group, see new_shape).
-    InstanceDesc instance{child, optional_transform(L, args + 1), where(L)};
+    const bool moving = lua_istable(L, args + 1) && !to_transform(L, args + 1);
+    std::vector<Transform> motion;
+    if (moving) motion = motion_keys(L, args + 1, "glint.place");
+    InstanceDesc instance{child, moving ? Transform() : optional_transform(L, args + 1), where(L),
+                          std::move(motion)};
     desc_of(L).groups[parent].instances.push_back(std::move(instance));
     return 0;
 }
@@ -522,6 +586,15 @@ int set_single(lua_State* L) {
     }
     if (desc.*Member)
         fail(L, fmt::format("glint.{} was already called at {}", type, (desc.*Member)->where()));
+    if constexpr (Member == &SceneDesc::camera) {
+        // The camera's own motion: keys carrying its rays (Camera::set_motion).
+        std::vector<Transform> motion = optional_motion(L, 1, "glint.camera");
+        Params params = to_params(L, 1, type, "motion");
+        SceneDesc& camera_desc = desc_of(L);
+        camera_desc.camera = std::move(params);
+        camera_desc.camera_motion = std::move(motion);
+        return 0;
+    }
     desc.*Member = to_params(L, 1, type);
     return 0;
 }
