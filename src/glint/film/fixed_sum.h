@@ -19,14 +19,23 @@ public:
     static constexpr double kMaxTerm = 0x1p60;
     /// 16-bit words of the 128-bit value, for storing it exactly in float image channels.
     static constexpr int kWords = 8;
+    /// 2^kFractionBits: what a term is multiplied by before rounding.
+    static constexpr double kScale = 0x1p60;
 
     /// Whether add(term) keeps the sum exact: `term` is finite and below kMaxTerm.
     static bool accepts(double term) { return std::abs(term) < kMaxTerm; }
 
     /// Adds `term`, which must satisfy accepts().
     void add(double term) {
-        const double scaled = std::rint(std::ldexp(term, kFractionBits));
-        m_value += static_cast<Bits>(static_cast<Signed>(scaled));
+        // Scaling by a power of two is exact. Most terms are below 8, so their scaled value
+        // fits 64 bits and one rounding conversion does; only larger ones take the 128-bit
+        // conversion, a library call. Both round to nearest even: the bits are the same.
+        const double scaled = term * kScale;
+        if (std::abs(scaled) < 0x1p62) {
+            m_value += static_cast<Bits>(static_cast<Signed>(std::llrint(scaled)));
+            return;
+        }
+        m_value += static_cast<Bits>(static_cast<Signed>(std::rint(scaled)));
     }
     FixedSum& operator+=(const FixedSum& other) {
         m_value += other.m_value;
