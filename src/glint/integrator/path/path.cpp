@@ -72,7 +72,7 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
     if (const Light* environment = scene.environment()) {
         path.L += path.beta * escaped *
                   bsdf_emission_weight(m_strategy, path.specular_bounce, path.bsdf_pdf, [&] {
-                      return scene.light_sampler().pmf(*environment) *
+                      return scene.light_sampler().pmf(path.previous_point, *environment) *
                              environment->pdf_li_escaped(ray.direction);
                   });
     } else {
@@ -93,7 +93,7 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
         if (!Le.is_black()) {
             path.L += path.beta * Le *
                       bsdf_emission_weight(m_strategy, path.specular_bounce, path.bsdf_pdf, [&] {
-                          return scene.light_sampler().pmf(*si.area_light) *
+                          return scene.light_sampler().pmf(path.previous_point, *si.area_light) *
                                  si.area_light->pdf_li(path.previous_point, si);
                       });
         }
