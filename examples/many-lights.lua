@@ -1,5 +1,5 @@
--- Many lights: a square of streets at night, lit by 1,024 small lamps (768 downward-facing
--- panels on poles' heads and 256 glowing bulbs) in four colours, among blocks of houses.
+-- Many lights: a square of streets at night, lit by 1,024 small lamps (downward-facing
+-- panels) in four colours, among blocks of houses.
 -- Most lamps are far from any given point or face away from it: the light tree
 -- (light_sampler = "tree", the default) sends each shadow ray to a lamp that matters there.
 -- Render with light_sampler = "power" to see what choosing lamps by power alone costs.
@@ -11,7 +11,6 @@ local colours = {
     glint.emissive{ radiance = {55, 30, 35}, two_sided = false },  -- pink
     glint.emissive{ radiance = {30, 50, 35}, two_sided = false },  -- green
 }
-local bulbs = glint.emissive{ radiance = {25, 18, 10}, two_sided = false }
 
 glint.camera{ eye = {-2, 9, -26}, look_at = {0, 0, 0}, up = {0, 1, 0}, fov = 50 }
 glint.render{ width = 320, height = 240, spp = 16, integrator = "path", max_depth = 4,
@@ -28,12 +27,12 @@ for i = -3, 3 do
     end
 end
 
--- Lamps along the streets: a 32 x 24 grid of 0.25 m panels facing down, 2.2 to 3.4 m up.
+-- Lamps: a 32 x 32 grid of 0.25 m panels facing down, 2.2 to 3.4 m up.
 local count = 0
 for i = 0, 31 do
-    for j = 0, 23 do
+    for j = 0, 31 do
         local x = -17.5 + i * (35 / 31)
-        local z = -17.5 + j * (35 / 23)
+        local z = -17.5 + j * (35 / 31)
         local y = 2.2 + ((i * 5 + j * 3) % 7) * 0.2
         local s = 0.125
         glint.quad{ vertices = {{x - s, y, z - s}, {x + s, y, z - s}, {x + s, y, z + s}, {x - s, y, z + s}},
@@ -42,13 +41,4 @@ for i = 0, 31 do
     end
 end
 
--- Bulbs strung above the central square, 16 x 16 small spheres.
-for i = 0, 15 do
-    for j = 0, 15 do
-        local x = -7.5 + i
-        local z = -7.5 + j
-        glint.sphere{ center = {x, 4.5 + 0.3 * math.sin(i + j), z}, radius = 0.06, material = bulbs }
-        count = count + 1
-    end
-end
 assert(count == 1024)

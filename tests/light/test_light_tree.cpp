@@ -62,17 +62,24 @@ std::vector<std::unique_ptr<Light>> mixed_lights(int quads) {
     return lights;
 }
 
-const Vec3 kPoints[] = {Vec3(0.0f), Vec3(3.5f, -3.5f, 3.5f), Vec3(-4.5f, 0.2f, 1.0f),
-                        Vec3(0.1f, 2.0f, -3.9f), Vec3(20.0f, 5.0f, -8.0f)};
+// Receiving points, with a surface's normal or none (zero: a point in a medium).
+struct Receiver {
+    Vec3 p, n;
+};
+const Receiver kPoints[] = {{Vec3(0.0f), Vec3(0.0f)},
+                            {Vec3(3.5f, -3.5f, 3.5f), glm::normalize(Vec3(-1, 1, 0))},
+                            {Vec3(-4.5f, 0.2f, 1.0f), Vec3(1, 0, 0)},
+                            {Vec3(0.1f, 2.0f, -3.9f), Vec3(0.0f)},
+                            {Vec3(20.0f, 5.0f, -8.0f), glm::normalize(Vec3(0.2f, 1, 0.3f))}};
 
 }  // namespace
 
 TEST(LightTree, PmfsOverAllLightsSumToOne) {
     const auto lights = mixed_lights(300);
     const LightSampler sampler(lights, LightSelection::kTree);
-    for (const Vec3& p : kPoints) {
+    for (const auto& [p, n] : kPoints) {
         double sum = 0.0;
-        for (const auto& light : lights) sum += sampler.pmf(p, *light);
+        for (const auto& light : lights) sum += sampler.pmf(p, n, *light);
         EXPECT_NEAR(sum, 1.0, 1e-4) << "at " << p.x << "," << p.y << "," << p.z;
     }
 }
@@ -81,18 +88,18 @@ TEST(LightTree, ChoicesMatchTheStatedPmf) {
     const auto lights = mixed_lights(60);
     const LightSampler sampler(lights, LightSelection::kTree);
     const int kDraws = 400000;
-    for (const Vec3& p : kPoints) {
+    for (const auto& [p, n] : kPoints) {
         std::vector<int> counts(lights.size(), 0);
         int mismatched_pmf = 0, none = 0;
         Rng rng(11);
         for (int i = 0; i < kDraws; ++i) {
-            const LightSampler::Choice c = sampler.sample(p, rng.next_float());
+            const LightSampler::Choice c = sampler.sample(p, n, rng.next_float());
             if (!c.light) {
                 ++none;
                 continue;
             }
             ++counts[c.light->index()];
-            if (c.pmf != sampler.pmf(p, *c.light)) ++mismatched_pmf;
+            if (c.pmf != sampler.pmf(p, n, *c.light)) ++mismatched_pmf;
         }
         EXPECT_EQ(mismatched_pmf, 0);
         EXPECT_EQ(none, 0);
@@ -100,7 +107,7 @@ TEST(LightTree, ChoicesMatchTheStatedPmf) {
         double statistic = 0.0, pooled_expected = 0.0, pooled_observed = 0.0;
         int bins = 0;
         for (const auto& light : lights) {
-            const double expected = kDraws * static_cast<double>(sampler.pmf(p, *light));
+            const double expected = kDraws * static_cast<double>(sampler.pmf(p, n, *light));
             const double observed = counts[light->index()];
             if (expected == 0.0) {
                 EXPECT_EQ(observed, 0.0) << "a light of pmf 0 was chosen";
@@ -135,7 +142,7 @@ TEST(LightTree, PmfIsZeroOnlyForLightsThatCannotReachThePoint) {
     const LightSampler sampler(lights, LightSelection::kTree);
     Rng rng(3);
     int zero = 0, reaching = 0;
-    for (const Vec3& p : kPoints) {
+    for (const auto& [p, n] : kPoints) {
         for (const auto& light : lights) {
             bool reaches = false;
             for (int i = 0; i < 400 && !reaches; ++i) {
@@ -143,7 +150,7 @@ TEST(LightTree, PmfIsZeroOnlyForLightsThatCannotReachThePoint) {
                     light->sample_li(p, Vec2(rng.next_float(), rng.next_float()), rng.next_float());
                 reaches = ls && !ls->L.is_black() && ls->pdf > 0.0f;
             }
-            const float pmf = sampler.pmf(p, *light);
+            const float pmf = sampler.pmf(p, n, *light);
             if (pmf == 0.0f) {
                 ++zero;
                 EXPECT_FALSE(reaches)
@@ -161,7 +168,7 @@ TEST(LightTree, PowerSelectionIsTheSameEverywhere) {
     const auto lights = mixed_lights(20);
     const LightSampler sampler(lights, LightSelection::kPower);
     for (const auto& light : lights) {
-        EXPECT_EQ(sampler.pmf(kPoints[1], *light), sampler.pmf(*light));
+        EXPECT_EQ(sampler.pmf(kPoints[1].p, kPoints[1].n, *light), sampler.pmf(*light));
     }
     EXPECT_EQ(sampler.tree(), nullptr);
 }

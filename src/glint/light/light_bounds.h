@@ -16,12 +16,14 @@ struct LightBounds {
                                ///< (pi / 2 for a surface: 0)
     bool two_sided = false;    ///< emits on both sides of each normal too
 
-    /// An estimate of the light reaching `p` from these emitters: power over squared distance,
-    /// times the cosine of the smallest angle between the direction to `p` and any direction
-    /// the cone allows (Conty Estevez and Kulla's bound). Zero only where no emitter in the
-    /// box can send light to `p`: the angle exceeds the emission spread by a margin that
-    /// covers float rounding.
-    float importance(const Vec3& p) const;
+    /// An estimate of the light reaching `p` (unit surface normal `n`, or zero for none)
+    /// from these emitters: power over squared distance, times the cosine of the smallest
+    /// angle between the direction to `p` and any direction the cone allows, times the
+    /// largest |cos| at the receiver over the box (Conty Estevez and Kulla's bounds; |cos|
+    /// because a surface that transmits takes light from both sides). Zero only where no
+    /// emitter in the box can send light to `p`: the angle exceeds the emission spread by a
+    /// margin that covers float rounding. The receiver's cosine never makes it zero.
+    float importance(const Vec3& p, const Vec3& n) const;
 
     static LightBounds merged(const LightBounds& a, const LightBounds& b);
 };

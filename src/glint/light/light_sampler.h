@@ -39,15 +39,16 @@ public:
     /// The probability that sample(u) returns `light`.
     float pmf(const Light& light) const;
 
-    /// A light for next-event estimation at `p`; no light when none can reach p.
-    Choice sample(const Vec3& p, float u) const {
+    /// A light for next-event estimation at `p`, a point with unit normal `n` (zero for
+    /// none); no light only when the scene has none.
+    Choice sample(const Vec3& p, const Vec3& n, float u) const {
         if (!m_tree) return sample(u);
-        const LightTree::Choice c = m_tree->sample(p, u);
+        const LightTree::Choice c = m_tree->sample(p, n, u);
         return {c.light, c.pmf};
     }
-    /// The probability that sample(p, u) returns `light`.
-    float pmf(const Vec3& p, const Light& light) const {
-        return m_tree ? m_tree->pmf(p, light) : pmf(light);
+    /// The probability that sample(p, n, u) returns `light`.
+    float pmf(const Vec3& p, const Vec3& n, const Light& light) const {
+        return m_tree ? m_tree->pmf(p, n, light) : pmf(light);
     }
 
     bool empty() const { return m_lights.empty(); }

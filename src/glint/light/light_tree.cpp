@@ -15,8 +15,9 @@ constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 // light then keeps a positive probability unless a sibling branch certainly outweighs it, so
 // the probabilities over all lights sum to 1, and a light that gets 0 certainly sends p
 // nothing.
-float first_share(const LightBounds& first, const LightBounds& second, const Vec3& p) {
-    const float a = first.importance(p), b = second.importance(p);
+float first_share(const LightBounds& first, const LightBounds& second, const Vec3& p,
+                  const Vec3& n) {
+    const float a = first.importance(p, n), b = second.importance(p, n);
     if (a + b > 0.0f) return a / (a + b);
     return first.phi / (first.phi + second.phi);
 }
@@ -75,7 +76,7 @@ float LightTree::probability_of_tree() const {
     return 1.0f / static_cast<float>(m_unbounded.size() + 1);
 }
 
-LightTree::Choice LightTree::sample(const Vec3& p, float u) const {
+LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const {
     const float p_tree = probability_of_tree();
     const float p_unbounded = 1.0f - p_tree;
     if (u < p_unbounded) {
@@ -88,7 +89,7 @@ LightTree::Choice LightTree::sample(const Vec3& p, float u) const {
     uint32_t node = 0;
     while (!m_nodes[node].leaf) {
         const uint32_t second = m_nodes[node].second_child_or_light;
-        const float share = first_share(m_nodes[node + 1].bounds, m_nodes[second].bounds, p);
+        const float share = first_share(m_nodes[node + 1].bounds, m_nodes[second].bounds, p, n);
         if (u < share) {
             u = std::min(u / share, kOneMinusEpsilon);
             pmf *= share;
@@ -102,7 +103,7 @@ LightTree::Choice LightTree::sample(const Vec3& p, float u) const {
     return {m_leaf_lights[m_nodes[node].second_child_or_light], pmf};
 }
 
-float LightTree::pmf(const Vec3& p, const Light& light) const {
+float LightTree::pmf(const Vec3& p, const Vec3& n, const Light& light) const {
     const float p_tree = probability_of_tree();
     if (std::find(m_unbounded.begin(), m_unbounded.end(), &light) != m_unbounded.end())
         return (1.0f - p_tree) / static_cast<float>(m_unbounded.size());
@@ -114,7 +115,7 @@ float LightTree::pmf(const Vec3& p, const Light& light) const {
     uint32_t node = 0;
     for (uint32_t level = 0; level < trail.depth; ++level) {
         const uint32_t second = m_nodes[node].second_child_or_light;
-        const float share = first_share(m_nodes[node + 1].bounds, m_nodes[second].bounds, p);
+        const float share = first_share(m_nodes[node + 1].bounds, m_nodes[second].bounds, p, n);
         if ((trail.turns >> level) & 1u) {
             pmf *= 1.0f - share;
             node = second;

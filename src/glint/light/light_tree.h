@@ -30,10 +30,11 @@ public:
         const Light* light = nullptr;
         float pmf = 0.0f;
     };
-    /// A light for the receiving point `p` (no light only when the scene has none).
-    Choice sample(const Vec3& p, float u) const;
-    /// The probability that sample(p, .) returns `light`.
-    float pmf(const Vec3& p, const Light& light) const;
+    /// A light for the receiving point `p` with unit normal `n` (zero: a point without a
+    /// surface); no light only when the scene has none.
+    Choice sample(const Vec3& p, const Vec3& n, float u) const;
+    /// The probability that sample(p, n, .) returns `light`.
+    float pmf(const Vec3& p, const Vec3& n, const Light& light) const;
 
     size_t node_count() const { return m_nodes.size(); }
     size_t memory_bytes() const;

@@ -115,15 +115,16 @@ enum class LightChoice {
     kByPower,
 };
 
-/// Chooses a light with `u_light` and samples a point on it as seen from `p` with (u,
-/// u_select). Both members are built in place (no copy of the light's sample: a copy right
-/// after the light's stores stalls the CPU, see sample_scattering).
+/// Chooses a light with `u_light` and samples a point on it as seen from `p` (shading normal
+/// `n`, zero for a point without a surface) with (u, u_select). Both members are built in
+/// place (no copy of the light's sample: a copy right after the light's stores stalls the
+/// CPU, see sample_scattering).
 [[gnu::always_inline]] inline LightPoint sample_light_point(
-    const Scene& scene, const Vec3& p, const Vec2& u, float u_light, float u_select,
+    const Scene& scene, const Vec3& p, const Vec3& n, const Vec2& u, float u_light, float u_select,
     LightChoice rule = LightChoice::kForPoint) {
     const LightSampler& lights = scene.light_sampler();
     const LightSampler::Choice choice =
-        rule == LightChoice::kForPoint ? lights.sample(p, u_light) : lights.sample(u_light);
+        rule == LightChoice::kForPoint ? lights.sample(p, n, u_light) : lights.sample(u_light);
     if (!choice.light) return LightPoint{choice, std::nullopt};
     return LightPoint{choice, choice.light->sample_li(p, u, u_select)};
 }
@@ -153,7 +154,7 @@ template <typename SamplerType = Sampler>
     const float u_select = sampler.get_1d();
     // The light's sample is read where the light wrote it, never copied as a whole: a copy
     // right after the light's stores stalls the CPU (see sample_scattering).
-    const LightPoint point = sample_light_point(scene, si.p, u, u_light, u_select);
+    const LightPoint point = sample_light_point(scene, si.p, si.shading.n(), u, u_light, u_select);
     const std::optional<LightSample>& ls = point.sample;
     if (!ls || ls->L.is_black()) return std::nullopt;
     const LightSampler::Choice& choice = point.choice;
