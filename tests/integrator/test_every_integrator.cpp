@@ -182,6 +182,13 @@ TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
 TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
     const std::string name = GetParam();
     const Held held = held_to(name);
+    if (name == "photon" || name == "preview")
+        GTEST_SKIP() << "16 renders of this scene take 100 s or more; its direct light is "
+                        "estimate_direct_light, as radiosity's and sppm's, which are held to it";
+    // Light paths start by power, and bdpt, vcm and mlt join camera vertices to lights by
+    // power too (docs/integrators.md): for them light_sampler changes nothing, bit for bit.
+    const bool by_power = name == "light" || name == "bdpt" || name == "vcm" || name == "mlt";
+    const int spp = by_power ? 4 : 64;
     auto scene = [&](const std::string& light_sampler, int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 2.2, 4.5}}, look_at = {{0, 0.4, 0}}, fov = 45 }}
@@ -209,8 +216,12 @@ TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
             glint.spot_light{{ position = {{1, 2.5, 1}}, look_at = {{0, 0, 0}}, intensity = 4,
                               cone_angle = 30, falloff_start = 20 }}
         )",
-                           held.spp, seed, name, light_sampler, with(held.settings));
+                           spp, seed, name, light_sampler, with(held.settings));
     };
+    if (by_power) {
+        EXPECT_TRUE(render_lua(scene("tree", 1)).pixels == render_lua(scene("power", 1)).pixels);
+        return;
+    }
     const int k = 8;  // compare() is calibrated for K = 8
     std::vector<Image> tree, power;
     for (int seed = 0; seed < k; ++seed) {

@@ -56,8 +56,23 @@ double solid_angle_of(const DVec3& o, const std::array<DVec3, 3>& t) {
     return 2.0 * std::atan2(numerator, denominator);
 }
 
-bool solid_angle_sampled(double omega) {
-    return omega >= MeshSampler::kMinSphericalSolidAngle &&
+// MeshSampler's rule: the estimate area |cos| / dist^2 from the part's centre reaches the
+// lower limit, and the exact solid angle stays under the upper one.
+bool solid_angle_sampled(const DVec3& o, const std::vector<std::array<DVec3, 3>>& parts,
+                         double omega) {
+    DVec3 centre(0.0);
+    double area = 0.0;
+    for (const auto& t : parts) {
+        const double a = 0.5 * glm::length(glm::cross(t[1] - t[0], t[2] - t[0]));
+        centre += a * (t[0] + t[1] + t[2]) / 3.0;
+        area += a;
+    }
+    centre /= area;
+    const DVec3 n =
+        glm::normalize(glm::cross(parts[0][1] - parts[0][0], parts[0][2] - parts[0][0]));
+    const DVec3 d = o - centre;
+    const double estimate = area * std::abs(glm::dot(n, d)) / std::pow(glm::length(d), 3.0);
+    return estimate >= MeshSampler::kMinSphericalSolidAngle &&
            omega <= MeshSampler::kMaxSphericalSolidAngle;
 }
 
@@ -88,9 +103,10 @@ struct TriangleEmitter {
         for (const auto& t : triangles) {
             const double hit = ray_triangle(o, d, t[0], t[1], t[2], slack);
             if (hit <= 0.0) continue;
-            if (rectangle && solid_angle_sampled(whole)) return 1.0 / whole;
+            if (rectangle && solid_angle_sampled(o, triangles, whole)) return 1.0 / whole;
             const double omega = solid_angle_of(o, t);
-            if (!rectangle && solid_angle_sampled(omega)) return triangle_area(t) / area() / omega;
+            if (!rectangle && solid_angle_sampled(o, {t}, omega))
+                return triangle_area(t) / area() / omega;
             const DVec3 n = glm::normalize(glm::cross(t[1] - t[0], t[2] - t[0]));
             return hit * hit / (area() * std::abs(glm::dot(n, d)));
         }

@@ -84,8 +84,19 @@ std::optional<MeshSampler::Rectangle> MeshSampler::as_rectangle(const std::vecto
     return std::nullopt;
 }
 
+// The estimate decides the lower limit, the exact solid angle the upper one (and
+// degenerate projections): both sample() and pdf() ask the same questions of the same
+// point, so they always agree on the strategy.
 bool MeshSampler::spherical_pays(double solid_angle) {
-    return solid_angle >= kMinSphericalSolidAngle && solid_angle <= kMaxSphericalSolidAngle;
+    return solid_angle > 1e-9 && solid_angle <= kMaxSphericalSolidAngle;
+}
+
+bool MeshSampler::may_pay(const Vec3& ref, const Vec3& c, const Vec3& n, float area) {
+    const Vec3 d = ref - c;
+    const float dist2 = glm::dot(d, d);
+    const float dist = std::sqrt(dist2);
+    return area * std::abs(glm::dot(n, d)) >=
+           static_cast<float>(kMinSphericalSolidAngle) * dist2 * dist;
 }
 
 ShapeSample MeshSampler::sample_area(const Vec2& u, float u_select) const {
@@ -95,7 +106,7 @@ ShapeSample MeshSampler::sample_area(const Vec2& u, float u_select) const {
 
 ShapeSample MeshSampler::sample(const Vec3& ref, const Vec2& u, float u_select) const {
     ShapeSample s;
-    if (m_rectangle) {
+    if (m_rectangle && may_pay(ref, rectangle_centre(), m_normals[0], m_area)) {
         const SphericalRectangle sr(ref, m_rectangle->corner, m_rectangle->edge_x,
                                     m_rectangle->edge_y);
         if (spherical_pays(sr.solid_angle())) {
@@ -104,11 +115,14 @@ ShapeSample MeshSampler::sample(const Vec3& ref, const Vec2& u, float u_select) 
             s.pdf = static_cast<float>(1.0 / sr.solid_angle());
             return s;
         }
-    } else if (m_normals.size() <= kSolidAngleTriangles) {
+    } else if (!m_rectangle && m_normals.size() <= kSolidAngleTriangles) {
         const size_t tri = pick_triangle(u_select);
         const Vec3* v = &m_vertices[3 * tri];
-        const SphericalTriangle st(ref, v[0], v[1], v[2]);
-        if (spherical_pays(st.solid_angle())) {
+        const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
+        const bool worth = may_pay(ref, centroid, m_normals[tri], triangle_area(tri));
+        const SphericalTriangle st = worth ? SphericalTriangle(ref, v[0], v[1], v[2])
+                                           : SphericalTriangle(ref, v[0], v[0], v[0]);
+        if (worth && spherical_pays(st.solid_angle())) {
             s.p = on_plane(ref, st.sample(u), v[0], m_normals[tri]);
             s.n = m_normals[tri];
             s.pdf = static_cast<float>(triangle_area(tri) / m_area / st.solid_angle());
@@ -127,13 +141,16 @@ ShapeSample MeshSampler::sample(const Vec3& ref, const Vec2& u, float u_select) 
 }
 
 float MeshSampler::pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
-    if (m_rectangle) {
+    if (m_rectangle && may_pay(ref, rectangle_centre(), m_normals[0], m_area)) {
         const SphericalRectangle sr(ref, m_rectangle->corner, m_rectangle->edge_x,
                                     m_rectangle->edge_y);
         if (spherical_pays(sr.solid_angle())) return static_cast<float>(1.0 / sr.solid_angle());
-    } else if (m_normals.size() <= kSolidAngleTriangles) {
+    } else if (!m_rectangle && m_normals.size() <= kSolidAngleTriangles) {
         const size_t tri = triangle_holding(p);
         const Vec3* v = &m_vertices[3 * tri];
+        const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
+        if (!may_pay(ref, centroid, m_normals[tri], triangle_area(tri)))
+            return area_to_solid_angle_pdf(m_inverse_area, ref, p, n);
         const SphericalTriangle st(ref, v[0], v[1], v[2]);
         if (spherical_pays(st.solid_angle()))
             return static_cast<float>(triangle_area(tri) / m_area / st.solid_angle());
