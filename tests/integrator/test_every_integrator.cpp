@@ -186,8 +186,10 @@ TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
         GTEST_SKIP() << "16 renders of this scene take 100 s or more; its direct light is "
                         "estimate_direct_light, as radiosity's and sppm's, which are held to it";
     // Light paths start by power, and bdpt, vcm and mlt join camera vertices to lights by
-    // power too (docs/integrators.md): for them light_sampler changes nothing, bit for bit.
-    const bool by_power = name == "light" || name == "bdpt" || name == "vcm" || name == "mlt";
+    // power too (docs/integrators.md); path_bsdf never samples a light: for them
+    // light_sampler changes nothing, bit for bit.
+    const bool by_power =
+        name == "light" || name == "bdpt" || name == "vcm" || name == "mlt" || name == "path_bsdf";
     const int spp = by_power ? 4 : 64;
     auto scene = [&](const std::string& light_sampler, int seed) {
         return fmt::format(R"(
