@@ -172,6 +172,77 @@ TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
     EXPECT_TRUE(one.pixels == two.pixels);
 }
 
+// The light tree chooses lights by where they can reach, power sampling by power alone:
+// both are unbiased, so each integrator's image with one converges to its image with the
+// other. A floor and a block under a ring of small lamps facing every way (some away from
+// everything they could light), a point light and a spot; K = 8 seeds of each, compared by
+// the relative MSE of 4 x 4 block means against its expectation from the seeds' spread and
+// by the image means. The comparison must also be sharp enough to reject the tree's images
+// scaled by 1.03.
+TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
+    const std::string name = GetParam();
+    const Held held = held_to(name);
+    if (name == "photon" || name == "preview")
+        GTEST_SKIP() << "16 renders of this scene take 100 s or more; its direct light is "
+                        "estimate_direct_light, as radiosity's and sppm's, which are held to it";
+    // Light paths start by power, and bdpt, vcm and mlt join camera vertices to lights by
+    // power too (docs/integrators.md); path_bsdf never samples a light: for them
+    // light_sampler changes nothing, bit for bit.
+    const bool by_power =
+        name == "light" || name == "bdpt" || name == "vcm" || name == "mlt" || name == "path_bsdf";
+    const int spp = by_power ? 4 : 64;
+    auto scene = [&](const std::string& light_sampler, int seed) {
+        return fmt::format(R"(
+            glint.camera{{ eye = {{0, 2.2, 4.5}}, look_at = {{0, 0.4, 0}}, fov = 45 }}
+            glint.render{{ width = 16, height = 16, spp = {}, seed = {}, integrator = '{}',
+                          light_sampler = '{}' {} }}
+            local white = glint.diffuse{{ reflectance = 0.6 }}
+            glint.quad{{ vertices = {{{{-3, 0, -3}}, {{-3, 0, 3}}, {{3, 0, 3}}, {{3, 0, -3}}}},
+                        material = white }}
+            glint.box{{ min = {{-0.5, 0, -0.5}}, max = {{0.5, 0.8, 0.5}}, material = white }}
+            for i = 0, 11 do
+                local a = i * math.pi / 6
+                local x, z, y = 1.6 * math.cos(a), 1.6 * math.sin(a), 1.2 + 0.1 * (i % 3)
+                local s = 0.15
+                local m = glint.emissive{{ radiance = {{2 + i % 4, 3, 1 + i % 3}},
+                                           two_sided = (i % 4 == 0) }}
+                if i % 3 == 0 then  -- facing up, away from the floor
+                    glint.quad{{ vertices = {{{{x - s, y, z - s}}, {{x - s, y, z + s}},
+                                {{x + s, y, z + s}}, {{x + s, y, z - s}}}}, material = m }}
+                else
+                    glint.quad{{ vertices = {{{{x - s, y, z - s}}, {{x + s, y, z - s}},
+                                {{x + s, y, z + s}}, {{x - s, y, z + s}}}}, material = m }}
+                end
+            end
+            glint.point_light{{ position = {{-1, 2, 1}}, intensity = 1.5 }}
+            glint.spot_light{{ position = {{1, 2.5, 1}}, look_at = {{0, 0, 0}}, intensity = 4,
+                              cone_angle = 30, falloff_start = 20 }}
+        )",
+                           spp, seed, name, light_sampler, with(held.settings));
+    };
+    if (by_power) {
+        EXPECT_TRUE(render_lua(scene("tree", 1)).pixels == render_lua(scene("power", 1)).pixels);
+        return;
+    }
+    const int k = 8;  // compare() is calibrated for K = 8
+    std::vector<Image> tree, power;
+    for (int seed = 0; seed < k; ++seed) {
+        tree.push_back(render_lua(scene("tree", seed + 1)));
+        power.push_back(render_lua(scene("power", seed + 101)));
+    }
+    const std::vector<uint8_t> mask(16 * 16, kScattering);
+    const Comparison same = compare(tree, power, mask, 4);
+    EXPECT_TRUE(same.agrees() || held.bias > 0.0) << same.describe();
+    for (int c = 0; c < 3; ++c) {
+        const double se = std::hypot(same.test[c].se, same.reference[c].se);
+        EXPECT_NEAR(same.test[c].mean, same.reference[c].mean,
+                    4.0 * se + held.bias * same.reference[c].mean)
+            << "channel " << c;
+    }
+    const Comparison scaled = compare(tree, power, mask, 4, 1.03);
+    EXPECT_FALSE(scaled.agrees()) << "a 3 % bias would pass: " << scaled.describe();
+}
+
 INSTANTIATE_TEST_SUITE_P(Registered, EveryIntegrator, ::testing::ValuesIn(integrator_names()),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;

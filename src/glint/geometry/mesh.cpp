@@ -1,5 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/geometry/mesh.h>
+#include <glint/geometry/mesh_sampler.h>
 #include <glint/math/warp.h>
 
 #include <fmt/format.h>
@@ -13,82 +14,6 @@ namespace {
 Vec3 triangle_cross(const Vec3& a, const Vec3& b, const Vec3& c) {
     return glm::cross(b - a, c - a);
 }
-
-// Uniform-by-area sampling over the world-space triangles of a placed mesh.
-class MeshSampler final : public ShapeSampler {
-public:
-    MeshSampler(const MeshData& mesh, const Transform& to_world) {
-        // A mirroring placement reverses the winding, so the cross product of the placed
-        // vertices points inwards; flip it to keep the emitting side where the hit sees it.
-        const float orientation = to_world.swaps_handedness() ? -1.0f : 1.0f;
-        const size_t count = mesh.indices.size() / 3;
-        m_vertices.reserve(count * 3);
-        m_cumulative_area.reserve(count);
-        double total = 0.0;
-        for (size_t i = 0; i < count; ++i) {
-            for (int k = 0; k < 3; ++k) {
-                m_vertices.push_back(to_world.point(mesh.positions[mesh.indices[3 * i + k]]));
-            }
-            const Vec3* v = &m_vertices[3 * i];
-            const Vec3 cross = triangle_cross(v[0], v[1], v[2]);
-            total += 0.5 * glm::length(cross);
-            m_normals.push_back(orientation * glm::normalize(cross));
-            m_cumulative_area.push_back(total);
-        }
-        m_area = static_cast<float>(total);
-        m_inverse_area = 1.0f / m_area;
-    }
-
-    ShapeSample sample_area(const Vec2& u, float u_select) const override {
-        const size_t tri = pick_triangle(u_select);
-        return {point_in(tri, u), m_normals[tri], m_inverse_area};
-    }
-
-    ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override {
-        const size_t tri = pick_triangle(u_select);
-        ShapeSample s;
-        s.p = point_in(tri, u);
-        s.n = m_normals[tri];
-        s.pdf = area_to_solid_angle_pdf(m_inverse_area, ref, s.p, s.n);
-        return s;
-    }
-
-    float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override {
-        return area_to_solid_angle_pdf(m_inverse_area, ref, p, n);
-    }
-
-    float area() const override { return m_area; }
-
-private:
-    // A triangle chosen with probability proportional to its area.
-    size_t pick_triangle(float u_select) const {
-        const double target = u_select * static_cast<double>(m_area);
-        const size_t last = m_cumulative_area.size() - 1;
-        // Emitters are often a few triangles (a quad is two): a scan that stops at the first
-        // cumulative area above the target is what upper_bound finds, without its loop setup.
-        if (last < kScanLimit) {
-            size_t tri = 0;
-            while (tri < last && !(target < m_cumulative_area[tri])) ++tri;
-            return tri;
-        }
-        auto it = std::upper_bound(m_cumulative_area.begin(), m_cumulative_area.end(), target);
-        return std::min<size_t>(it - m_cumulative_area.begin(), last);
-    }
-    static constexpr size_t kScanLimit = 8;
-
-    // A point uniformly distributed over triangle `tri`.
-    Vec3 point_in(size_t tri, const Vec2& u) const {
-        const Vec3* v = &m_vertices[3 * tri];
-        const Vec2 b = warp::square_to_uniform_triangle(u);
-        return (1.0f - b.x - b.y) * v[0] + b.x * v[1] + b.y * v[2];
-    }
-
-    std::vector<Vec3> m_vertices;
-    std::vector<Vec3> m_normals;  // unit, per triangle, on the emitting side
-    std::vector<double> m_cumulative_area;
-    float m_area = 0.0f;
-    float m_inverse_area = 0.0f;  // the density per unit area
-};
 
 }  // namespace
 

@@ -4,6 +4,7 @@
 // natively, analytic shapes as Embree user geometry.
 #include <glint/core/interaction.h>
 #include <glint/math/bounds.h>
+#include <glint/math/direction_cone.h>
 
 #include <embree3/rtcore.h>
 
@@ -45,6 +46,9 @@ public:
     virtual float area() const = 0;
     // A point uniform over the surface (pdf = 1 / area), for emitting photons.
     virtual ShapeSample sample_area(const Vec2& u, float u_select) const = 0;
+    // World-space box and the cone holding every outward normal, for the light tree.
+    virtual Bounds3 bounds() const = 0;
+    virtual DirectionCone normal_cone() const { return DirectionCone::whole_sphere(); }
 };
 
 class Shape {

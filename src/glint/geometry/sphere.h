@@ -35,6 +35,12 @@ public:
     float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override;
     float area() const override { return 4.0f * kPi * m_radius * m_radius; }
     ShapeSample sample_area(const Vec2& u, float u_select) const override;
+    Bounds3 bounds() const override {
+        Bounds3 b;
+        b.expand(m_center - Vec3(m_radius));
+        b.expand(m_center + Vec3(m_radius));
+        return b;
+    }
 
 private:
     Vec3 m_center;

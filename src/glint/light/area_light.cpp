@@ -71,4 +71,16 @@ Spectrum AreaLight::power() const {
     return m_radiance * (kPi * m_shape->area() * (m_two_sided ? 2.0f : 1.0f));
 }
 
+// A surface emits over the hemisphere about each normal (pi / 2 past it), on both sides of
+// it when two-sided.
+std::optional<LightBounds> AreaLight::bounds() const {
+    LightBounds b;
+    b.bounds = m_shape->bounds();
+    b.phi = std::max(0.0f, power().luminance());
+    b.normals = m_shape->normal_cone();
+    b.cos_theta_e = 0.0f;
+    b.two_sided = m_two_sided;
+    return b;
+}
+
 }  // namespace glint

@@ -20,6 +20,7 @@ public:
     float pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const override;
     Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
     Spectrum power() const override;
+    std::optional<LightBounds> bounds() const override;
     /// A point uniform by area, a direction cosine-weighted about the normal (on the side
     /// u_select picks, when two-sided); n is the normal of the side the ray leaves.
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,

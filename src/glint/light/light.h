@@ -3,6 +3,7 @@
 // radiance for area lights, intensity (W/sr) for point and spot lights.
 #include <glint/core/interaction.h>
 #include <glint/core/spectrum.h>
+#include <glint/light/light_bounds.h>
 
 #include <cmath>
 #include <optional>
@@ -88,6 +89,10 @@ public:
     virtual Spectrum le(const SurfaceInteraction&, const Vec3&) const { return Spectrum(0.0f); }
     // Total emitted power, for choosing lights in proportion to it.
     virtual Spectrum power() const = 0;
+    /// Where the light is, its power and which way it emits, for the light tree; nullopt for
+    /// lights without a place in the scene (environment, directional), which the tree
+    /// chooses alongside its own.
+    virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
     virtual bool is_delta() const = 0;
     /// Whether the emission is a delta in direction (a directional light): its rays come in
     /// parallel from a disc outside the scene, so bidirectional methods treat its vertex as

@@ -3,8 +3,25 @@
 #include <algorithm>
 
 namespace glint {
+namespace {
 
-LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights) {
+LightTree build_tree(const std::vector<std::unique_ptr<Light>>& lights) {
+    std::vector<LightTree::Entry> bounded;
+    std::vector<const Light*> unbounded;
+    bounded.reserve(lights.size());
+    for (const std::unique_ptr<Light>& light : lights) {
+        if (std::optional<LightBounds> b = light->bounds())
+            bounded.push_back({light.get(), *b});
+        else
+            unbounded.push_back(light.get());
+    }
+    return LightTree(std::move(bounded), std::move(unbounded), lights.size());
+}
+
+}  // namespace
+
+LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights,
+                           LightSelection selection) {
     double total = 0.0;
     std::vector<double> weights;
     for (size_t i = 0; i < lights.size(); ++i) {
@@ -26,6 +43,7 @@ LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights) {
         m_cdf.push_back(static_cast<float>(running));
     }
     if (!m_cdf.empty()) m_cdf.back() = 1.0f;
+    if (selection == LightSelection::kTree) m_tree = build_tree(lights);
 }
 
 LightSampler::Choice LightSampler::sample_among_several(float u) const {
@@ -39,6 +57,10 @@ LightSampler::Choice LightSampler::sample_among_several(float u) const {
 float LightSampler::pmf(const Light& light) const {
     const int i = light.index();
     return (i >= 0 && static_cast<size_t>(i) < m_pmf.size()) ? m_pmf[i] : 0.0f;
+}
+
+LightSelection light_selection_named(const std::string& name) {
+    return name == "power" ? LightSelection::kPower : LightSelection::kTree;
 }
 
 }  // namespace glint

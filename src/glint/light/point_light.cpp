@@ -119,6 +119,26 @@ std::optional<LightSample> SpotLight::sample_li(const Vec3& ref, const Vec2&, fl
     return s;
 }
 
+// Light leaves a point in every direction: a whole-sphere cone, with nothing beyond it.
+std::optional<LightBounds> PointLight::bounds() const {
+    LightBounds b;
+    b.bounds.expand(m_position);
+    b.phi = std::max(0.0f, power().luminance());
+    b.normals = DirectionCone::whole_sphere();
+    b.cos_theta_e = 1.0f;
+    return b;
+}
+
+// The cone is exactly the spot's: no emission past its outer angle.
+std::optional<LightBounds> SpotLight::bounds() const {
+    LightBounds b;
+    b.bounds.expand(m_position);
+    b.phi = std::max(0.0f, power().luminance());
+    b.normals = DirectionCone{m_direction, m_cos_cone, false};
+    b.cos_theta_e = 1.0f;
+    return b;
+}
+
 Spectrum SpotLight::power() const {
     // Full intensity inside the inner cone, and about half of it across the falloff band.
     return m_intensity * 2.0f * kPi *

@@ -14,6 +14,7 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override { return 4.0f * kPi * m_intensity; }
+    std::optional<LightBounds> bounds() const override;
     /// From the position (pdf_pos 1), a direction uniform on the sphere.
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                            float u_select) const override;
@@ -34,6 +35,7 @@ public:
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
     Spectrum power() const override;
+    std::optional<LightBounds> bounds() const override;
     /// From the position (pdf_pos 1), a direction uniform in the cone of `cone_degrees`.
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                            float u_select) const override;

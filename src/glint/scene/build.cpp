@@ -59,7 +59,8 @@ public:
         const float radius =
             bounds.is_empty() ? 1.0f : std::max(1e-3f, 0.5f * glm::length(bounds.extent()));
         for (auto& light : m_scene->m_lights) light->preprocess(center, radius);
-        m_scene->m_light_sampler = LightSampler(m_scene->m_lights);
+        m_scene->m_light_sampler =
+            LightSampler(m_scene->m_lights, light_selection_named(m_settings.light_sampler));
         m_scene->m_stats.lights = m_scene->m_lights.size();
         return std::move(m_scene);
     }

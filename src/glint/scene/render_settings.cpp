@@ -46,6 +46,11 @@ RenderSettings parse_render_settings(const Params* params) {
     s.outputs = p.get_strings("output");
     s.csg_shortcuts = p.get_bool("csg_shortcuts", true);
     s.mipmapping = p.get_bool("mipmapping", true);
+    s.light_sampler = p.get_string("light_sampler", s.light_sampler);
+    if (s.light_sampler != "tree" && s.light_sampler != "power")
+        p.fail_at("light_sampler",
+                  fmt::format("'light_sampler' must be \"tree\" or \"power\", got \"{}\"",
+                              s.light_sampler));
     s.adaptive = p.get_string("adaptive", s.adaptive);
     s.edge_threshold = p.get_float("edge_threshold", s.edge_threshold);
     s.edge_radius = p.get_int("edge_radius", s.edge_radius);

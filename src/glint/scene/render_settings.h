@@ -43,6 +43,9 @@ struct RenderSettings {
     int threads = 0;            // 0 = all cores
     bool csg_shortcuts = true;  // bounding-box pruning inside CSG trees
     bool mipmapping = true;     // image textures filtered from mipmaps (false: full level only)
+    // How next-event estimation chooses a light: "tree" (a light BVH, by each light's
+    // estimated contribution at the receiving point) or "power" (by emitted power alone).
+    std::string light_sampler = "tree";
 
     // Adaptive sampling, for every tile integrator.
     std::string adaptive = "none";   // "none", "sobel" (edge supersampling), "variance"

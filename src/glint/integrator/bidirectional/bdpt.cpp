@@ -220,7 +220,8 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         // Next-event estimation from the camera vertex.
         const PathVertex& pt = camera[t - 1];
         if (!pt.connectible()) return result;
-        const LightPoint point = sample_light_point(scene, pt.p, u_light, u_choice, u_select);
+        const LightPoint point = sample_light_point(scene, pt.p, Vec3(0.0f), u_light, u_choice,
+                                                    u_select, LightChoice::kByPower);
         const LightSampler::Choice& choice = point.choice;
         const std::optional<LightSample>& ls = point.sample;
         if (!ls || ls->L.is_black() || !(ls->pdf > 0.0f)) return result;

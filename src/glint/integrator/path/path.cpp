@@ -72,7 +72,8 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
     if (const Light* environment = scene.environment()) {
         path.L += path.beta * escaped *
                   bsdf_emission_weight(m_strategy, path.specular_bounce, path.bsdf_pdf, [&] {
-                      return scene.light_sampler().pmf(*environment) *
+                      return scene.light_sampler().pmf(path.previous_point, path.previous_normal,
+                                                       *environment) *
                              environment->pdf_li_escaped(ray.direction);
                   });
     } else {
@@ -93,7 +94,8 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
         if (!Le.is_black()) {
             path.L += path.beta * Le *
                       bsdf_emission_weight(m_strategy, path.specular_bounce, path.bsdf_pdf, [&] {
-                          return scene.light_sampler().pmf(*si.area_light) *
+                          return scene.light_sampler().pmf(path.previous_point,
+                                                           path.previous_normal, *si.area_light) *
                                  si.area_light->pdf_li(path.previous_point, si);
                       });
         }
@@ -140,6 +142,7 @@ template <typename SamplerType>
     path.bsdf_pdf = bs.pdf;
     if (bs.is_transmission()) path.eta_scale *= bs.eta * bs.eta;
     path.previous_point = si.p;
+    path.previous_normal = si.shading.n();
     continue_ray(path.ray, si, *scattering);
 
     // Russian roulette on the throughput without the radiance scaling of refraction,

@@ -38,6 +38,7 @@ private:
             specular_bounce = true;
             bsdf_pdf = 0.0f;
             previous_point = Vec3(0.0f);
+            previous_normal = Vec3(0.0f);
             eta_scale = 1.0f;
             sampler = &path_sampler;
             aov = features;
@@ -48,7 +49,8 @@ private:
         Ray ray;
         bool specular_bounce = true;  // the camera "samples" its ray like a delta lobe
         float bsdf_pdf = 0.0f;
-        Vec3 previous_point{0.0f};  // where the last BSDF sample was taken, for MIS
+        Vec3 previous_point{0.0f};   // where the last BSDF sample was taken, for MIS
+        Vec3 previous_normal{0.0f};  // its shading normal (the light tree's pmf needs it)
         float eta_scale = 1.0f;
         SurfaceInteraction si;  // each bounce's hit, written over the last one's
         const Bsdf* bsdf = nullptr;

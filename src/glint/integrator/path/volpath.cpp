@@ -29,6 +29,9 @@ struct VolPathIntegrator::Walk {
     bool specular_bounce = true;  // the camera samples its ray like a delta lobe
     float eta_scale = 1.0f;
     Vec3 previous_point{0.0f};
+    // The shading normal at previous_point (zero at a medium vertex): the light tree's
+    // choice there depends on it, so MIS against light sampling asks with it too.
+    Vec3 previous_normal{0.0f};
     SurfaceInteraction si;
     Sampler* sampler = nullptr;
     Rng rng;  // distances and collision events, whose number varies from path to path
@@ -57,7 +60,8 @@ Spectrum direct_light(const Scene& scene, const Vec3& p, const SurfaceInteractio
     const float u_light = sampler.get_1d();
     const float u_select = sampler.get_1d();
     if (scene.light_sampler().empty()) return Spectrum(0.0f);
-    const LightPoint point = sample_light_point(scene, p, u, u_light, u_select);
+    const LightPoint point = sample_light_point(
+        scene, p, surface ? surface->shading.n() : Vec3(0.0f), u, u_light, u_select);
     const std::optional<LightSample>& ls = point.sample;
     if (!ls || ls->L.is_black() || ls->pdf <= 0.0f) return Spectrum(0.0f);
     float scatter_pdf = 0.0f;
@@ -248,6 +252,7 @@ void VolPathIntegrator::scatter_by_phase(const Scene& scene, Walk& walk, const V
     walk.r_l = walk.r_u / ps.p;
     walk.specular_bounce = false;
     walk.previous_point = p;
+    walk.previous_normal = Vec3(0.0f);
     walk.ray = Ray{p, ps.wi, 0.0f, kInfinity};
 }
 
@@ -259,7 +264,8 @@ void VolPathIntegrator::escape(const Scene& scene, Walk& walk) const {
         *walk.aov = AovSample{escaped, Vec3(0.0f), kInfinity};
     if (const Light* environment = scene.environment()) {
         add_emission(walk, escaped, [&] {
-            return scene.light_sampler().pmf(*environment) *
+            return scene.light_sampler().pmf(walk.previous_point, walk.previous_normal,
+                                             *environment) *
                    environment->pdf_li_escaped(walk.ray.direction);
         });
     } else {
@@ -275,7 +281,8 @@ bool VolPathIntegrator::scatter_at_surface(const Scene& scene, Walk& walk, Arena
     SurfaceInteraction& si = walk.si;
     if (si.area_light) {
         add_emission(walk, emitted_radiance(si), [&] {
-            return scene.light_sampler().pmf(*si.area_light) *
+            return scene.light_sampler().pmf(walk.previous_point, walk.previous_normal,
+                                             *si.area_light) *
                    si.area_light->pdf_li(walk.previous_point, si);
         });
     }
@@ -307,6 +314,7 @@ bool VolPathIntegrator::scatter_at_surface(const Scene& scene, Walk& walk, Arena
     if (!bs.is_delta()) walk.r_l = walk.r_u / bs.pdf;
     if (bs.is_transmission()) walk.eta_scale *= bs.eta * bs.eta;
     walk.previous_point = si.p;
+    walk.previous_normal = si.shading.n();
     walk.medium = medium_beyond(si, scattering->wi, walk.medium);
     continue_ray(walk.ray, si, *scattering);
     float survival;

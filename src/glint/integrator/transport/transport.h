@@ -7,8 +7,9 @@
 //                           inside an absorbing dielectric today; participating media here)
 //   transmittance           what a shadow ray lets pass (visibility.h)
 //   emitted_radiance        emission seen at a hit
-//   sample_light_arrival /  next-event estimation: one light sample, or one light chosen by
-//   sample_direct_light     power and sampled, in one documented order of sample draws
+//   sample_light_arrival /  next-event estimation: one light sample, or one light chosen for
+//   sample_direct_light     the point (light tree) and sampled, in one documented order of
+//                           sample draws
 //   sample_scattering       BSDF sampling of the next direction, with the check that the
 //                           direction agrees with the geometric surface
 //   follow_specular_chain   a ray through mirrors and glass to the first surface that is not
@@ -100,21 +101,35 @@ enum class LightWeighting {
     kMis,   ///< the power heuristic against the BSDF's density (delta lights: weight 1)
 };
 
-/// A point on a light as next-event estimation samples it: the light chosen in proportion
-/// to power, then Light::sample_li's point on it, with the densities of both (choice.pmf,
-/// sample->pdf). Next-event estimation and bdpt's s = 1 strategy both start from it.
+/// A point on a light as next-event estimation samples it: the light chosen (see
+/// LightChoice), then Light::sample_li's point on it, with the densities of both
+/// (choice.pmf, sample->pdf). Next-event estimation and bdpt's s = 1 strategy both start
+/// from it.
 struct LightPoint {
     LightSampler::Choice choice;
     std::optional<LightSample> sample;  ///< empty when no light was chosen or it gave no point
 };
 
-/// Chooses a light with `u_light` and samples a point on it as seen from `p` with (u,
-/// u_select). Both members are built in place (no copy of the light's sample: a copy right
-/// after the light's stores stalls the CPU, see sample_scattering).
-[[gnu::always_inline]] inline LightPoint sample_light_point(const Scene& scene, const Vec3& p,
-                                                            const Vec2& u, float u_light,
-                                                            float u_select) {
-    const LightSampler::Choice choice = scene.light_sampler().sample(u_light);
+/// Which distribution chooses the light of a light point.
+enum class LightChoice {
+    /// The scene's distribution for the receiving point (the light tree unless the scene
+    /// asks for light_sampler = "power"); MIS asks LightSampler::pmf(p, light).
+    kForPoint,
+    /// Power alone, as light paths start: bdpt (and vcm, mlt) weigh the s = 1 light point
+    /// against light subpaths that began there, so both must choose lights alike.
+    kByPower,
+};
+
+/// Chooses a light with `u_light` and samples a point on it as seen from `p` (shading normal
+/// `n`, zero for a point without a surface) with (u, u_select). Both members are built in
+/// place (no copy of the light's sample: a copy right after the light's stores stalls the
+/// CPU, see sample_scattering).
+[[gnu::always_inline]] inline LightPoint sample_light_point(
+    const Scene& scene, const Vec3& p, const Vec3& n, const Vec2& u, float u_light, float u_select,
+    LightChoice rule = LightChoice::kForPoint) {
+    const LightSampler& lights = scene.light_sampler();
+    const LightSampler::Choice choice =
+        rule == LightChoice::kForPoint ? lights.sample(p, n, u_light) : lights.sample(u_light);
     if (!choice.light) return LightPoint{choice, std::nullopt};
     return LightPoint{choice, choice.light->sample_li(p, u, u_select)};
 }
@@ -126,8 +141,8 @@ struct DirectLight {
 };
 
 /// Next-event estimation, the one estimator of direct light that every integrator uses: a
-/// light chosen in proportion to power, a point on it, the BSDF towards it. The sample
-/// draws are, in this order: a 2D value for the point on the light, a 1D value choosing the
+/// light chosen for the point (LightChoice::kForPoint), a point on it, the BSDF towards it. The
+/// sample draws are, in this order: a 2D value for the point on the light, a 1D value choosing the
 /// light, a 1D value choosing a part of it (triangle or side) -- three values that a Sobol
 /// sampler serves from one group. They are drawn even when the estimate turns out empty, so
 /// later draws do not depend on it. nullopt when the sample contributes nothing; the caller
@@ -144,7 +159,7 @@ template <typename SamplerType = Sampler>
     const float u_select = sampler.get_1d();
     // The light's sample is read where the light wrote it, never copied as a whole: a copy
     // right after the light's stores stalls the CPU (see sample_scattering).
-    const LightPoint point = sample_light_point(scene, si.p, u, u_light, u_select);
+    const LightPoint point = sample_light_point(scene, si.p, si.shading.n(), u, u_light, u_select);
     const std::optional<LightSample>& ls = point.sample;
     if (!ls || ls->L.is_black()) return std::nullopt;
     const LightSampler::Choice& choice = point.choice;

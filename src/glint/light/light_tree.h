@@ -1,0 +1,65 @@
+#pragma once
+// A bounding volume hierarchy over lights for next-event estimation (a "light tree"):
+// walking down from the root, each step picks a child in proportion to the light it is
+// estimated to send to the receiving point (LightBounds::importance), so that near, bright
+// lights facing the point get the samples and far or turned-away ones few or none. Lights
+// without bounds (the environment, the sun) are chosen alongside the tree, uniformly.
+// The probability of any light at any point is computed exactly, for MIS.
+#include <glint/light/light_bounds.h>
+
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+namespace glint {
+
+class Light;
+
+class LightTree {
+public:
+    /// A light and its bounds; lights with no bounds go in `unbounded`.
+    struct Entry {
+        const Light* light;
+        LightBounds bounds;
+    };
+    LightTree() = default;
+    /// `light_count` bounds the lights' indices (Light::index), for the pmf look-up.
+    LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbounded, size_t light_count);
+
+    struct Choice {
+        const Light* light = nullptr;
+        float pmf = 0.0f;
+    };
+    /// A light for the receiving point `p` with unit normal `n` (zero: a point without a
+    /// surface); no light only when the scene has none.
+    Choice sample(const Vec3& p, const Vec3& n, float u) const;
+    /// The probability that sample(p, n, .) returns `light`.
+    float pmf(const Vec3& p, const Vec3& n, const Light& light) const;
+
+    size_t node_count() const { return m_nodes.size(); }
+    size_t memory_bytes() const;
+
+private:
+    struct Node {
+        LightBounds bounds;
+        uint32_t second_child_or_light = 0;  // interior: its second child (the first follows
+                                             // it); leaf: the index into m_leaf_lights
+        bool leaf = false;
+    };
+    // Where a light's leaf is: the turns from the root (bit i: 1 = second child at depth i).
+    struct Trail {
+        uint64_t turns = 0;
+        uint32_t depth = 0;
+        bool in_tree = false;
+    };
+    uint32_t build(std::vector<Entry>& entries, size_t begin, size_t end, uint64_t turns,
+                   uint32_t depth);
+    float probability_of_tree() const;
+
+    std::vector<Node> m_nodes;
+    std::vector<const Light*> m_leaf_lights;
+    std::vector<const Light*> m_unbounded;
+    std::vector<Trail> m_trails;  // by Light::index
+};
+
+}  // namespace glint

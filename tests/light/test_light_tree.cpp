@@ -1,0 +1,197 @@
+// The light tree: its choice of light against its stated pmf (chi-square) at several
+// receiving points, pmfs over all lights summing to 1, a pmf of zero only for lights that
+// really cannot light the point, and the cone bounds it is built on.
+#include <glint/core/rng.h>
+#include <glint/geometry/mesh.h>
+#include <glint/geometry/sphere.h>
+#include <glint/light/area_light.h>
+#include <glint/light/light_sampler.h>
+#include <glint/light/point_light.h>
+
+#include <gtest/gtest.h>
+#include <support/chi_square.h>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace glint;
+
+namespace {
+
+Vec3 random_unit(Rng& rng) {
+    const float z = 1.0f - 2.0f * rng.next_float();
+    const float r = std::sqrt(std::max(0.0f, 1.0f - z * z));
+    const float phi = 2.0f * kPi * rng.next_float();
+    return Vec3(r * std::cos(phi), r * std::sin(phi), z);
+}
+
+// A small square quad light at `center` facing `normal`.
+std::unique_ptr<Light> quad_light(const Vec3& center, const Vec3& normal, float size,
+                                  float radiance, bool two_sided) {
+    const Frame frame = Frame::from_normal(normal);
+    const Vec3 s = 0.5f * size * frame.s(), t = 0.5f * size * frame.t();
+    const TriangleMesh mesh(
+        "quad", make_quad_mesh(center - s - t, center + s - t, center + s + t, center - s + t));
+    return std::make_unique<AreaLight>(mesh.make_sampler(Transform()), Spectrum(radiance),
+                                       two_sided);
+}
+
+// A mixed scene of lights: quads facing every way (one- and two-sided), spheres, point and
+// spot lights, a dark quad, and a directional light (no bounds: chosen beside the tree).
+std::vector<std::unique_ptr<Light>> mixed_lights(int quads) {
+    Rng rng(7);
+    std::vector<std::unique_ptr<Light>> lights;
+    for (int i = 0; i < quads; ++i) {
+        const Vec3 c(8.0f * rng.next_float() - 4.0f, 8.0f * rng.next_float() - 4.0f,
+                     8.0f * rng.next_float() - 4.0f);
+        lights.push_back(quad_light(c, random_unit(rng), 0.1f + 0.5f * rng.next_float(),
+                                    0.5f + 4.0f * rng.next_float(), i % 5 == 0));
+    }
+    lights.push_back(std::make_unique<AreaLight>(
+        std::make_unique<SphereSampler>(Vec3(1, 2, 0), 0.3f), Spectrum(2.0f), false));
+    lights.push_back(std::make_unique<PointLight>(Vec3(-2, 1, 3), Spectrum(5.0f)));
+    lights.push_back(std::make_unique<SpotLight>(Vec3(2, -3, 1), Vec3(0, 1, 0.2f), Spectrum(8.0f),
+                                                 25.0f, 15.0f));
+    lights.push_back(quad_light(Vec3(0, 0, 1), Vec3(0, 0, 1), 0.5f, 0.0f, false));
+    auto sun = std::make_unique<DirectionalLight>(Vec3(0.3f, -1, 0.2f), Spectrum(1.0f));
+    sun->preprocess(Vec3(0.0f), 6.0f);
+    lights.push_back(std::move(sun));
+    return lights;
+}
+
+// Receiving points, with a surface's normal or none (zero: a point in a medium).
+struct Receiver {
+    Vec3 p, n;
+};
+const Receiver kPoints[] = {{Vec3(0.0f), Vec3(0.0f)},
+                            {Vec3(3.5f, -3.5f, 3.5f), glm::normalize(Vec3(-1, 1, 0))},
+                            {Vec3(-4.5f, 0.2f, 1.0f), Vec3(1, 0, 0)},
+                            {Vec3(0.1f, 2.0f, -3.9f), Vec3(0.0f)},
+                            {Vec3(20.0f, 5.0f, -8.0f), glm::normalize(Vec3(0.2f, 1, 0.3f))}};
+
+}  // namespace
+
+TEST(LightTree, PmfsOverAllLightsSumToOne) {
+    const auto lights = mixed_lights(300);
+    const LightSampler sampler(lights, LightSelection::kTree);
+    for (const auto& [p, n] : kPoints) {
+        double sum = 0.0;
+        for (const auto& light : lights) sum += sampler.pmf(p, n, *light);
+        EXPECT_NEAR(sum, 1.0, 1e-4) << "at " << p.x << "," << p.y << "," << p.z;
+    }
+}
+
+TEST(LightTree, ChoicesMatchTheStatedPmf) {
+    const auto lights = mixed_lights(60);
+    const LightSampler sampler(lights, LightSelection::kTree);
+    const int kDraws = 400000;
+    for (const auto& [p, n] : kPoints) {
+        std::vector<int> counts(lights.size(), 0);
+        int mismatched_pmf = 0, none = 0;
+        Rng rng(11);
+        for (int i = 0; i < kDraws; ++i) {
+            const LightSampler::Choice c = sampler.sample(p, n, rng.next_float());
+            if (!c.light) {
+                ++none;
+                continue;
+            }
+            ++counts[c.light->index()];
+            if (c.pmf != sampler.pmf(p, n, *c.light)) ++mismatched_pmf;
+        }
+        EXPECT_EQ(mismatched_pmf, 0);
+        EXPECT_EQ(none, 0);
+        // Pearson's statistic over lights with enough expected draws; the rest pooled.
+        double statistic = 0.0, pooled_expected = 0.0, pooled_observed = 0.0;
+        int bins = 0;
+        for (const auto& light : lights) {
+            const double expected = kDraws * static_cast<double>(sampler.pmf(p, n, *light));
+            const double observed = counts[light->index()];
+            if (expected == 0.0) {
+                EXPECT_EQ(observed, 0.0) << "a light of pmf 0 was chosen";
+                continue;
+            }
+            if (expected < 5.0) {
+                pooled_expected += expected;
+                pooled_observed += observed;
+                continue;
+            }
+            statistic += (observed - expected) * (observed - expected) / expected;
+            ++bins;
+        }
+        if (pooled_expected >= 5.0) {
+            statistic += (pooled_observed - pooled_expected) * (pooled_observed - pooled_expected) /
+                         pooled_expected;
+            ++bins;
+        }
+        ASSERT_GT(bins, 5);
+        const double p_value = test::chi_square_upper_tail(statistic, bins - 1);
+        EXPECT_GT(p_value, 0.01 / std::size(kPoints))
+            << "chi-square " << statistic << " over " << bins << " bins at " << p.x << "," << p.y
+            << "," << p.z;
+    }
+}
+
+// A light the tree gives pmf 0 at a point must send it nothing: every sample_li from
+// there comes back empty or black. And the tree does not dismiss everything: most lights
+// that can reach the point keep a positive pmf.
+TEST(LightTree, PmfIsZeroOnlyForLightsThatCannotReachThePoint) {
+    const auto lights = mixed_lights(300);
+    const LightSampler sampler(lights, LightSelection::kTree);
+    Rng rng(3);
+    int zero = 0, reaching = 0;
+    for (const auto& [p, n] : kPoints) {
+        for (const auto& light : lights) {
+            bool reaches = false;
+            for (int i = 0; i < 400 && !reaches; ++i) {
+                const auto ls =
+                    light->sample_li(p, Vec2(rng.next_float(), rng.next_float()), rng.next_float());
+                reaches = ls && !ls->L.is_black() && ls->pdf > 0.0f;
+            }
+            const float pmf = sampler.pmf(p, n, *light);
+            if (pmf == 0.0f) {
+                ++zero;
+                EXPECT_FALSE(reaches)
+                    << "light " << light->index() << " reaches a point where its pmf is 0";
+            }
+            if (reaches) ++reaching;
+        }
+    }
+    // Quads facing away from a point are about half of all: the test must see both kinds.
+    EXPECT_GT(zero, 300);
+    EXPECT_GT(reaching, 300);
+}
+
+TEST(LightTree, PowerSelectionIsTheSameEverywhere) {
+    const auto lights = mixed_lights(20);
+    const LightSampler sampler(lights, LightSelection::kPower);
+    for (const auto& light : lights) {
+        EXPECT_EQ(sampler.pmf(kPoints[1].p, kPoints[1].n, *light), sampler.pmf(*light));
+    }
+    EXPECT_EQ(sampler.tree(), nullptr);
+}
+
+TEST(DirectionCone, MergedHoldsBothCones) {
+    Rng rng(5);
+    int checked = 0;
+    for (int trial = 0; trial < 2000; ++trial) {
+        const DirectionCone a{random_unit(rng), std::cos(3.0f * rng.next_float()), false};
+        const DirectionCone b{random_unit(rng), std::cos(3.0f * rng.next_float()), false};
+        const DirectionCone m = DirectionCone::merged(a, b);
+        for (const DirectionCone& c : {a, b}) {
+            // The cone's edge directions: the axis turned by its full angle.
+            const Frame f = Frame::from_normal(c.axis);
+            const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - c.cos_theta * c.cos_theta));
+            for (int k = 0; k < 8; ++k) {
+                const float phi = 2.0f * kPi * k / 8.0f;
+                const Vec3 w = f.to_world(
+                    Vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), c.cos_theta));
+                EXPECT_GE(glm::dot(w, m.axis), m.cos_theta - 1e-4f);
+                ++checked;
+            }
+        }
+    }
+    EXPECT_EQ(checked, 2000 * 2 * 8);
+}
