@@ -125,10 +125,10 @@ TEST(NetworkDenoiserQuality, GlassAndMirrorSpheres) {
 }
 
 // A checkerboard albedo under a smooth light, with matching features and no noise: the
-// network must give it back within 1 % on average, and all but a few per cent of the values
-// away from the border within 1 % each (it must not invent or remove detail). Within a few
-// pixels of the border, where the convolutions see zeros, it changes more (up to about 45 %
-// in a corner of this image).
+// network must give it back within 1 % on average, all but a few per cent of the values
+// away from the border within 1 % each (it must not invent or remove detail), and every
+// value within 5 %. The last needs the mirrored border margin: with zeros beyond the border,
+// as OIDN feeds, a value in a corner changed by 46 % (docs/denoiser.md).
 TEST(NetworkDenoiserQuality, NoiseFreeImageComesBackWithinOnePercent) {
     const int w = 96, h = 64;
     Image image = make_image(
@@ -178,6 +178,7 @@ TEST(NetworkDenoiserQuality, NoiseFreeImageComesBackWithinOnePercent) {
         mean, worst, wx, wy, 100.0 * far_share);
     EXPECT_LT(mean, 0.01);
     EXPECT_LT(far_share, 0.05);
+    EXPECT_LT(worst, 0.05);
 }
 
 }  // namespace
