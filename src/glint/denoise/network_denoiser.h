@@ -7,10 +7,10 @@
 // The colour is scaled by autoexposure and mapped by the PU curve (denoise/transfer.h), the
 // albedo clamped to [0, 1] and the normal mapped from [-1, 1] to [0, 1]; the network runs
 // tile by tile (denoise/tiling.h) over the image extended by a mirrored border margin; its
-// output is clamped to >= 0, mapped back and divided by
-// the exposure. With clean_aux (always for High) the albedo and normal are first denoised by
-// networks of their own, and the colour network trained on clean features is used, which
-// keeps edges seen through glass, in defocus or in motion from being taken for noise.
+// output is clamped to >= 0, mapped back and divided by the exposure. With clean_aux (always
+// for High) the albedo and normal are first denoised by networks of their own, and the
+// colour network trained on clean features is used, which keeps edges seen through glass,
+// in defocus or in motion from being taken for noise.
 #include <glint/film/image.h>
 
 #include <functional>
