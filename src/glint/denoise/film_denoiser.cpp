@@ -1,7 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/denoise/film_denoiser.h>
-#include <glint/denoise/tiling.h>
 #include <glint/film/denoise.h>
 #include <glint/film/film.h>
 
@@ -31,8 +30,7 @@ int denoise_steps(int width, int height, const RenderSettings& settings) {
     if (settings.denoiser != "network") return 1;
     const NetworkDenoiseSettings network = network_denoise_settings(settings, 1);
     const int passes = network.clean_aux || network.quality == DenoiseQuality::High ? 3 : 1;
-    return passes *
-           static_cast<int>(plan_denoise_tiles(width, height, network.max_tile).tiles.size());
+    return passes * denoise_network_tiles(width, height, network);
 }
 
 Image denoise_film(const Film& film, const RenderSettings& settings, int threads,

@@ -73,15 +73,36 @@ int channel_or_throw(const Image& image, const std::string& name) {
     return index;
 }
 
+// A coordinate outside [0, size) mirrored back into it about the edge pixels (which are
+// not repeated), as often as needed for margins wider than the image.
+int mirrored(int i, int size) {
+    if (size == 1) return 0;
+    const int period = 2 * (size - 1);
+    i %= period;
+    if (i < 0) i += period;
+    return i < size ? i : period - i;
+}
+
+TilePlan plan_with_margins(int width, int height, const NetworkDenoiseSettings& settings) {
+    if (settings.border_margin < 0)
+        throw Error(fmt::format("denoiser border margin of {} pixels: expected 0 or more",
+                                settings.border_margin));
+    return plan_denoise_tiles(width + 2 * settings.border_margin,
+                              height + 2 * settings.border_margin, settings.max_tile);
+}
+
 // Runs one network over the image tile by tile: `fill(x, y, values)` writes a pixel's
-// input channels, `store(x, y, values)` takes its three output channels.
+// input channels, `store(x, y, values)` takes its three output channels. The tiles cover
+// the image extended by the border margin on every side; fill() is asked for the mirrored
+// pixel there, and store() gets the image's own pixels only.
 class TiledPass {
 public:
     TiledPass(int width, int height, const NetworkDenoiseSettings& settings)
         : m_width(width),
           m_height(height),
+          m_margin(settings.border_margin),
           m_settings(settings),
-          m_plan(plan_denoise_tiles(width, height, settings.max_tile)) {}
+          m_plan(plan_with_margins(width, height, settings)) {}
 
     int tiles() const { return static_cast<int>(m_plan.tiles.size()); }
 
@@ -94,21 +115,26 @@ public:
         std::array<float, 16> values{};
         for (const DenoiseTile& tile : m_plan.tiles) {
             std::fill(input.begin(), input.end(), 0.f);
-            const int rows = std::min(m_plan.height, m_height - tile.y);
-            const int columns = std::min(m_plan.width, m_width - tile.x);
+            const int rows = std::min(m_plan.height, m_height + 2 * m_margin - tile.y);
+            const int columns = std::min(m_plan.width, m_width + 2 * m_margin - tile.x);
             for (int j = 0; j < rows; ++j) {
+                const int y = mirrored(tile.y + j - m_margin, m_height);
                 for (int i = 0; i < columns; ++i) {
-                    fill(tile.x + i, tile.y + j, values.data());
+                    fill(mirrored(tile.x + i - m_margin, m_width), y, values.data());
                     const std::size_t at = static_cast<std::size_t>(j) * m_plan.width + i;
                     for (int c = 0; c < channels; ++c) input[c * plane + at] = values[c];
                 }
             }
             network.run(input.data(), output.data());
-            for (int y = tile.keep_y0; y < tile.keep_y1; ++y) {
-                for (int x = tile.keep_x0; x < tile.keep_x1; ++x) {
+            const int y0 = std::max(tile.keep_y0, m_margin),
+                      y1 = std::min(tile.keep_y1, m_margin + m_height);
+            const int x0 = std::max(tile.keep_x0, m_margin),
+                      x1 = std::min(tile.keep_x1, m_margin + m_width);
+            for (int y = y0; y < y1; ++y) {
+                for (int x = x0; x < x1; ++x) {
                     const std::size_t at =
                         static_cast<std::size_t>(y - tile.y) * m_plan.width + (x - tile.x);
-                    store(x, y,
+                    store(x - m_margin, y - m_margin,
                           std::array<float, 3>{output[at], output[plane + at],
                                                output[2 * plane + at]});
                 }
@@ -119,7 +145,7 @@ public:
     }
 
 private:
-    int m_width, m_height;
+    int m_width, m_height, m_margin;
     const NetworkDenoiseSettings& m_settings;
     TilePlan m_plan;
 };
@@ -246,8 +272,12 @@ Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings
     return result;
 }
 
+int denoise_network_tiles(int width, int height, const NetworkDenoiseSettings& settings) {
+    return static_cast<int>(plan_with_margins(width, height, settings).tiles.size());
+}
+
 std::size_t denoise_network_memory(int width, int height, const NetworkDenoiseSettings& settings) {
-    const TilePlan plan = plan_denoise_tiles(width, height, settings.max_tile);
+    const TilePlan plan = plan_with_margins(width, height, settings);
     const NetworkGraph net = load_network(settings, weight_names(settings).color, 9);
     const NetworkExecutor executor(net, plan.height, plan.width, settings.threads);
     const std::size_t plane = static_cast<std::size_t>(plan.width) * plan.height;

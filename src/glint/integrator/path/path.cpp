@@ -23,10 +23,19 @@ float bsdf_emission_weight(DirectLighting strategy, bool specular_bounce, float 
     return power_heuristic(bsdf_pdf, light_pdf());
 }
 
-void record_aov(AovSample* aov, const SurfaceInteraction& si, const Material* material) {
-    aov->albedo = material ? material->albedo(si) : Spectrum(0.0f);
-    aov->normal = si.shading.n();
-    aov->depth = si.t;
+// The features of a hit reached from the camera through delta bounces only (`depth` of
+// them). The depth stays the first hit's: it is what the non-local means filter compares.
+// Past a delta surface the features stay open for the next hit, seen in it or through it;
+// the delta surface's albedo (a mirror's tint, a glass's 1) tints the next one's, and the
+// Fresnel blend of reflection and refraction comes from averaging the pixel's samples.
+template <typename PathState>
+void record_aov(PathState& path, const SurfaceInteraction& si, const Bsdf* bsdf, int depth) {
+    const Spectrum albedo = si.material ? si.material->albedo(si) : Spectrum(0.0f);
+    path.aov->albedo = path.aov_tint * albedo;
+    path.aov->normal = si.shading.n();
+    if (depth == 0) path.aov->depth = si.t;
+    path.aov_open = bsdf && bsdf->is_delta();
+    path.aov_tint *= albedo;
 }
 
 // The direct light of a path whose shadow ray a surface blocked, in a scene where that
@@ -68,7 +77,11 @@ Spectrum PathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& sampler
 void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) const {
     const Ray& ray = path.ray;
     const Spectrum escaped = scene.escaped_radiance(ray.direction);
-    if (path.aov && depth == 0) *path.aov = AovSample{escaped, Vec3(0.0f), kInfinity};
+    if (path.aov_open) {
+        *path.aov = AovSample{path.aov_tint * escaped, Vec3(0.0f),
+                              depth == 0 ? kInfinity : path.aov->depth};
+        path.aov_open = false;
+    }
     if (const Light* environment = scene.environment()) {
         path.L += path.beta * escaped *
                   bsdf_emission_weight(m_strategy, path.specular_bounce, path.bsdf_pdf, [&] {
@@ -102,7 +115,7 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
     }
 
     path.bsdf = shade(scene, path.ray, si, arena);
-    if (path.aov && depth == 0) record_aov(path.aov, si, si.material);
+    if (path.aov_open) record_aov(path, si, path.bsdf, depth);
     if (!path.bsdf) return false;
     if (depth >= m_settings.depth_limit()) return false;
     path.wo_local = si.to_local(si.wo);

@@ -42,6 +42,8 @@ private:
             eta_scale = 1.0f;
             sampler = &path_sampler;
             aov = features;
+            aov_open = features != nullptr;
+            aov_tint = Spectrum(1.0f);
         }
 
         Spectrum L{0.0f};
@@ -58,6 +60,11 @@ private:
         Spectrum direct{0.0f};  // light sampling's contribution, if its shadow ray gets through
         Sampler* sampler = nullptr;
         AovSample* aov = nullptr;
+        // The features follow perfect specular (delta) bounces to the first diffuse or glossy
+        // hit, as OIDN recommends, so that reflections and refractions have features too:
+        // open while only delta surfaces were hit, `aov_tint` their albedos' product.
+        bool aov_open = false;
+        Spectrum aov_tint{1.0f};
     };
 
     // The steps of one bounce, shared by li() and the packet loop. Those that draw samples
