@@ -18,6 +18,7 @@ packages=(
   libglfw3-dev libimgui-dev # the viewer (glint view): window and input, panel
   xvfb libgl1-mesa-dri # the viewer's end-to-end test: a virtual X server, software OpenGL
   libdnnl-dev          # the network denoiser (src/glint/denoise): oneDNN convolutions
+  libnanovdb-dev libopenvdb-dev libboost-dev # media density grids (.nvdb, .vdb); OpenVDB's headers need Boost's
 )
 
 SUDO=""
