@@ -1,33 +1,106 @@
 #pragma once
 // What fills the space between surfaces. A walk carries the medium its ray travels through
-// (null: vacuum), and every segment's throughput is multiplied by the medium's
-// transmittance over it. Today the only medium absorbs and does not scatter (the interior
-// of an absorbing dielectric, Beer-Lambert); scattering media (homogeneous, heterogeneous,
-// null-scattering, issue 29) are further kinds of Medium, and a walk that meets one asks it
-// for a scattering distance as well.
+// (null: vacuum) and asks it two things about each segment:
+//
+//   - where light traveling along it first interacts: distance sampling by delta tracking
+//     against a majorant (medium/delta_tracking.h), which needs the medium's coefficients at
+//     a point (`at`) and an upper bound of its extinction along the ray (`majorants`);
+//   - how much light crosses it: `transmittance` (closed form where the medium has one,
+//     ratio tracking against the same majorants otherwise).
+//
+// Scattering follows the medium's phase function (Henyey-Greenstein with asymmetry g).
+// Coefficients are per unit length in scene units. The interface is pbrt-v4's (base/medium.h:
+// SamplePoint, SampleRay's majorant iterator) written as a plain virtual class with a
+// visitor, so that a grid medium (a DDA over a majorant grid) drives its own loop.
 #include <glint/core/ray.h>
+#include <glint/core/rng.h>
 #include <glint/core/spectrum.h>
 
 #include <glm/geometric.hpp>
 
+#include <type_traits>
+#include <utility>
+
 namespace glint {
+
+/// The coefficients of a medium at one point (per unit length).
+struct MediumPoint {
+    Spectrum sigma_a{0.0f};   ///< absorption
+    Spectrum sigma_s{0.0f};   ///< scattering
+    Spectrum emission{0.0f};  ///< radiance emitted per unit absorption (sigma_a Le is the source)
+};
+
+/// A stretch [t_min, t_max) of a unit-direction ray over which `sigma_maj` bounds the
+/// extinction sigma_a + sigma_s from above, channel by channel.
+struct MajorantSegment {
+    float t_min = 0.0f;
+    float t_max = 0.0f;
+    Spectrum sigma_maj{0.0f};
+};
+
+/// A non-owning reference to a callable `bool(const MajorantSegment&)`: what a medium calls
+/// for each majorant segment, in order along the ray; the callable returns false to stop.
+class MajorantVisitor {
+public:
+    template <typename F,
+              typename = std::enable_if_t<!std::is_same_v<std::decay_t<F>, MajorantVisitor>>>
+    MajorantVisitor(F&& f)  // NOLINT: implicit, so a lambda can be passed directly
+        : m_object(const_cast<void*>(static_cast<const void*>(&f))),
+          m_call([](void* object, const MajorantSegment& segment) {
+              return (*static_cast<std::remove_reference_t<F>*>(object))(segment);
+          }) {}
+    bool operator()(const MajorantSegment& segment) const { return m_call(m_object, segment); }
+
+private:
+    void* m_object;
+    bool (*m_call)(void*, const MajorantSegment&);
+};
 
 class Medium {
 public:
     virtual ~Medium() = default;
+
+    /// The coefficients at world point `p`.
+    virtual MediumPoint at(const Vec3& p) const = 0;
+    /// Calls `visit` with the majorant segments of `ray` (unit direction) over [0, t_max), in
+    /// order, until it returns false or the segments end. Segments may leave gaps (the
+    /// medium is empty there) and need not reach t_max.
+    virtual void majorants(const Ray& ray, float t_max, MajorantVisitor visit) const = 0;
     /// The fraction of light that crosses `ray` from its origin to parameter `t` (the ray's
-    /// direction need not be unit length).
-    virtual Spectrum transmittance(const Ray& ray, float t) const = 0;
+    /// direction need not be unit length): exact where the medium has a closed form, else an
+    /// unbiased estimate drawing from `rng` (ratio tracking, medium/delta_tracking.h).
+    virtual Spectrum transmittance(const Ray& ray, float t, Rng& rng) const = 0;
+
+    /// Asymmetry g in (-1, 1) of the Henyey-Greenstein phase function: 0 scatters evenly,
+    /// g > 0 forwards, g < 0 backwards.
+    virtual float phase_asymmetry() const { return 0.0f; }
+    /// Whether the medium scatters light anywhere; a medium that only absorbs (and maybe
+    /// emits) lets walks multiply by its transmittance instead of sampling distances.
+    virtual bool scatters() const = 0;
+    /// Whether the medium emits light anywhere.
+    virtual bool emits() const { return false; }
+    /// Whether its coefficients are the same everywhere (`at` ignores its point).
+    virtual bool is_homogeneous() const { return false; }
 };
 
 /// A homogeneous medium that absorbs and does not scatter: transmittance exp(-sigma_a d)
-/// over a distance d (Beer-Lambert).
+/// over a distance d (Beer-Lambert). The interior of an absorbing dielectric.
 class AbsorbingMedium final : public Medium {
 public:
     explicit AbsorbingMedium(const Spectrum& sigma_a) : m_sigma_a(sigma_a) {}
-    Spectrum transmittance(const Ray& ray, float t) const override {
+    MediumPoint at(const Vec3&) const override { return MediumPoint{m_sigma_a}; }
+    void majorants(const Ray&, float t_max, MajorantVisitor visit) const override {
+        visit(MajorantSegment{0.0f, t_max, m_sigma_a});
+    }
+    Spectrum transmittance(const Ray& ray, float t, Rng&) const override {
+        return transmittance(ray, t);
+    }
+    /// The closed form; needs no random numbers.
+    Spectrum transmittance(const Ray& ray, float t) const {
         return exp(m_sigma_a * (-t * glm::length(ray.direction)));
     }
+    bool scatters() const override { return false; }
+    bool is_homogeneous() const override { return true; }
     const Spectrum& sigma_a() const { return m_sigma_a; }
 
 private:

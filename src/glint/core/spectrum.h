@@ -89,6 +89,11 @@ public:
     float max_value() const { return std::max(m_r, std::max(m_g, m_b)); }
     float min_value() const { return std::min(m_r, std::min(m_g, m_b)); }
     float average() const { return (m_r + m_g + m_b) / 3.0f; }
+    /// How many values a Spectrum carries (channels in RGB mode): what hero-channel sampling
+    /// (delta tracking in chromatic media) chooses among.
+    static constexpr int kValues = 3;
+    /// Value `i` in [0, kValues): the coefficient hero-channel sampling uses.
+    float value(int i) const { return i == 0 ? m_r : (i == 1 ? m_g : m_b); }
     float luminance() const { return Rgb(m_r, m_g, m_b).luminance(); }
     Spectrum clamped(float lo, float hi) const {
         return {std::clamp(m_r, lo, hi), std::clamp(m_g, lo, hi), std::clamp(m_b, lo, hi)};

@@ -22,7 +22,7 @@ public:
     Spectrum albedo(const SurfaceInteraction&) const override { return Spectrum(1.0f); }
     // Beer-Lambert absorption inside is a medium that only absorbs: the first user of the
     // medium hook. Clear glass separates no media.
-    MediumInterface medium_interface() const override {
+    MediumInterface intrinsic_media() const override {
         if (m_interior.sigma_a().is_black()) return {};
         return MediumInterface{&m_interior, nullptr};
     }

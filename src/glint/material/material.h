@@ -33,9 +33,16 @@ public:
     virtual bool emits_two_sided() const { return false; }
     bool is_emissive() const { return !emission().is_black(); }
 
-    // The media this surface separates (see core/medium.h): an absorbing dielectric's
-    // inside is an AbsorbingMedium; most surfaces separate none.
-    virtual MediumInterface medium_interface() const { return {}; }
+    // The media this surface separates (see core/medium.h): those the scene attached
+    // (`interior`/`exterior`, set_media), else the material's own (an absorbing
+    // dielectric's inside is an AbsorbingMedium); most surfaces separate none.
+    MediumInterface medium_interface() const {
+        return m_media.is_transition() ? m_media : intrinsic_media();
+    }
+    // Media the scene attaches to the two sides (glint.medium handles).
+    void set_media(const MediumInterface& media) { m_media = media; }
+    // The media the material itself brings, when the scene attaches none.
+    virtual MediumInterface intrinsic_media() const { return {}; }
     // Whether the surface only bounds media and does not scatter (glint.interface): shadow
     // rays pass through it (transport/visibility.h), and walks cross it straight on.
     virtual bool is_interface() const { return false; }
@@ -51,6 +58,7 @@ public:
 private:
     bool m_uses_textures = false;
     std::optional<NormalPerturbation> m_perturbation;
+    MediumInterface m_media;
 };
 
 }  // namespace glint

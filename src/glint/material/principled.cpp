@@ -62,7 +62,7 @@ public:
     }
     Spectrum emission() const override { return m_in.emission; }
     // Absorption inside (KHR_materials_volume) is a medium that only absorbs, as for glass.
-    MediumInterface medium_interface() const override {
+    MediumInterface intrinsic_media() const override {
         if (m_interior.sigma_a().is_black()) return {};
         return MediumInterface{&m_interior, nullptr};
     }

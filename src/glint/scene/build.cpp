@@ -4,6 +4,7 @@
 #include <glint/light/registry.h>
 #include <glint/material/registry.h>
 #include <glint/material/texture/registry.h>
+#include <glint/medium/registry.h>
 #include <glint/scene/build.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/solids.h>
@@ -22,13 +23,16 @@ public:
     std::unique_ptr<Scene> build() {
         m_scene->m_directory = m_desc.directory.empty() ? "." : m_desc.directory;
         m_scene->m_trusted = m_desc.trusted;
+        for (const Params& p : m_desc.media) m_scene->m_media.push_back(make_medium(p));
         build_camera();
         m_scene->m_textures =
             std::make_unique<TextureTable>(m_desc.directory, m_settings.mipmapping);
         for (const Params& p : m_desc.textures)
             m_scene->m_textures->add(make_texture(p, *m_scene->m_textures));
         for (const Params& p : m_desc.materials) {
+            const MediumInterface media = attached_media(p);
             m_scene->m_materials.push_back(make_material(p, *m_scene->m_textures));
+            m_scene->m_materials.back()->set_media(media);
             m_scene->m_has_interfaces |= m_scene->m_materials.back()->is_interface();
         }
         build_lights();
@@ -82,7 +86,23 @@ private:
         }
     }
 
+    // The medium a parameter names (a glint.medium handle), or null when it is not given.
+    const Medium* medium_param(const Params& p, const char* name) const {
+        if (!p.has(name)) return nullptr;
+        return m_scene->m_media.at(p.get_ref(name, "medium").index).get();
+    }
+
+    // A surface's `interior` and `exterior` media: the sides its geometric normal points
+    // away from and to. A dielectric's `absorption` is a medium of its own: not both.
+    MediumInterface attached_media(const Params& p) const {
+        const MediumInterface media{medium_param(p, "interior"), medium_param(p, "exterior")};
+        if (media.is_transition() && p.has("absorption"))
+            p.fail("give either 'absorption' or 'interior'/'exterior' media, not both");
+        return media;
+    }
+
     void build_camera() {
+        if (m_desc.camera) m_scene->m_camera_medium = medium_param(*m_desc.camera, "medium");
         const Params fallback("camera", "default camera");
         m_scene->m_camera = make_camera(m_desc.camera ? *m_desc.camera : fallback,
                                         Vec2i(m_settings.width, m_settings.height));

@@ -89,6 +89,14 @@ public:
         if (!intersect(ray, *result)) result.reset();
         return result;
     }
+    // The closest hit along `ray` of any surface, interfaces included: for walks that carry
+    // a medium, which changes where they cross an interface (volpath).
+    bool intersect_surface(const Ray& ray, SurfaceInteraction& si) const {
+        HitRecord hit;
+        if (!m_accel.intersect(ray, hit)) return false;
+        fill_interaction(ray, hit, si);
+        return true;
+    }
     bool occluded(const Ray& ray) const { return m_accel.occluded(ray); }
     // Whether anything blocks the shadow ray from `si` (its origin offset as spawn_ray's)
     // to just short of `target`.
@@ -130,6 +138,10 @@ public:
     /// Whether a material only bounds media (Material::is_interface): shadow rays then
     /// cross such surfaces (transport/visibility.h); otherwise any hit blocks them.
     bool has_interfaces() const { return m_has_interfaces; }
+    /// The participating media (glint.medium) the scene holds, in script order.
+    const std::vector<std::unique_ptr<Medium>>& media() const { return m_media; }
+    /// The medium the camera sits in (glint.camera{ medium = ... }); null: vacuum.
+    const Medium* camera_medium() const { return m_camera_medium; }
     /// The folder of the scene's script (or model file): where files the scene names, such
     /// as a radiosity cache, are looked for, and which they must not leave unless trusted().
     const std::string& directory() const { return m_directory; }
@@ -193,7 +205,8 @@ private:
 
     Accel m_accel;
     std::vector<std::unique_ptr<Shape>> m_shapes;
-    std::unique_ptr<TextureTable> m_textures;  // before the materials that point into it
+    std::unique_ptr<TextureTable> m_textures;      // before the materials that point into it
+    std::vector<std::unique_ptr<Medium>> m_media;  // before the materials that point to them
     std::vector<std::unique_ptr<Material>> m_materials;
     std::vector<std::unique_ptr<Light>> m_lights;
     std::vector<std::vector<Geometry>> m_group_geometry;  // per prototype, by local id
@@ -206,6 +219,7 @@ private:
     const Light* m_environment = nullptr;  // one of m_lights
     SceneStats m_stats;
     bool m_has_interfaces = false;
+    const Medium* m_camera_medium = nullptr;  // one of m_media
 };
 
 }  // namespace glint

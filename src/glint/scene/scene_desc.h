@@ -44,6 +44,7 @@ struct SceneDesc {
     std::optional<Params> background;
     std::vector<Params> textures;                // ObjectRef{"texture", i} indexes this
     std::vector<Params> materials;               // ObjectRef{"material", i} indexes this
+    std::vector<Params> media;                   // ObjectRef{"medium", i} indexes this
     std::vector<Params> lights;                  // non-shape lights: point_light, spot_light
     std::vector<SolidDesc> solids;               // ObjectRef{"solid", i} indexes this
     std::vector<GroupDesc> groups{GroupDesc{}};  // groups[0] is the world (root) group

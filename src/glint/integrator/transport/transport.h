@@ -46,7 +46,12 @@ inline float power_heuristic(float pdf_a, float pdf_b) {
 inline Spectrum segment_transmittance(const Ray& ray, const SurfaceInteraction& si) {
     if (si.front_face) return Spectrum(1.0f);
     const Medium* medium = si.material->medium_interface().arriving(false);
-    return medium ? medium->transmittance(ray, si.t) : Spectrum(1.0f);
+    if (!medium) return Spectrum(1.0f);
+    // Walks that do not sample media (all but volpath) meet only media with a closed-form
+    // transmittance (absorbing glass, homogeneous media), which draw nothing from the Rng;
+    // a medium that must estimate gets a fixed stream, correlated but unbiased per segment.
+    Rng closed_form;
+    return medium->transmittance(ray, si.t, closed_form);
 }
 
 /// Radiance the surface at `si` emits back along the ray that found it (zero when it is not

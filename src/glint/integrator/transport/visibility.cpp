@@ -11,7 +11,8 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
     // this walk stops at each one and takes on the medium beyond it.
     SurfaceInteraction si;
     if (scene.intersect(ray, si)) return Spectrum(0.0f);
-    return medium ? medium->transmittance(ray, kShadowRayEnd) : Spectrum(1.0f);
+    Rng closed_form;  // see segment_transmittance
+    return medium ? medium->transmittance(ray, kShadowRayEnd, closed_form) : Spectrum(1.0f);
 }
 
 }  // namespace glint

@@ -27,12 +27,13 @@ constexpr const char* kHandleMeta = "glint.handle";
 constexpr const char* kLoaderKey = "glint.loader";
 
 struct Handle {
-    int kind;  // 0 = material, 1 = group, 2 = solid, 3 = texture
+    int kind;  // 0 = material, 1 = group, 2 = solid, 3 = texture, 4 = medium
     int index;
 };
-constexpr const char* kHandleKinds[] = {"material", "group", "solid", "texture"};
+constexpr const char* kHandleKinds[] = {"material", "group", "solid", "texture", "medium"};
 constexpr int kSolidHandle = 2;
 constexpr int kTextureHandle = 3;
+constexpr int kMediumHandle = 4;
 
 // What the bindings build, reachable from Lua through the registry (which a sandboxed
 // script cannot see) while the script runs, and unreachable afterwards.
@@ -241,6 +242,14 @@ int new_texture(lua_State* L) {
     SceneDesc& desc = desc_of(L);
     desc.textures.push_back(to_params(L, 1, type));
     push_handle(L, kTextureHandle, static_cast<int>(desc.textures.size()) - 1);
+    return 1;
+}
+
+// glint.medium{...} -> medium handle, for a surface's interior/exterior or the camera.
+int new_medium(lua_State* L) {
+    SceneDesc& desc = desc_of(L);
+    desc.media.push_back(to_params(L, 1, "medium"));
+    push_handle(L, kMediumHandle, static_cast<int>(desc.media.size()) - 1);
     return 1;
 }
 
@@ -561,6 +570,7 @@ int open_glint(lua_State* L) {
     }
     lua_pushcfunction(L, guarded<add_solid>);
     lua_setfield(L, -2, "add");
+    register_closure(L, "medium", guarded<new_medium>);
     register_closure(L, "camera", guarded<set_single<&SceneDesc::camera>>);
     register_closure(L, "render", guarded<set_single<&SceneDesc::render>>);
     register_closure(L, "background", guarded<set_single<&SceneDesc::background>>);
