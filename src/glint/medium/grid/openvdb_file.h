@@ -1,8 +1,8 @@
 #pragma once
 // OpenVDB files (.vdb): the only file that uses the OpenVDB API.
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
-#include <glint/media/nanovdb_file.h>
+#include <glint/medium/grid/nanovdb_file.h>
 
 #include <string>
 #include <vector>

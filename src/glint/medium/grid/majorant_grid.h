@@ -5,7 +5,7 @@
 // grid) would make it take the densest voxel's small steps everywhere. (The idea is
 // pbrt-v4's MajorantGrid; see Novák et al. 2018, "Monte Carlo methods for volumetric light
 // transport simulation", section 5.)
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
 #include <vector>
 

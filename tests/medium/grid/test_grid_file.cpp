@@ -1,12 +1,12 @@
 // Grid files: a round trip through each format, and every kind of bad file a clear error that
 // names the file, never a crash or a huge allocation.
 #include <glint/core/error.h>
-#include <glint/media/grid_file.h>
+#include <glint/medium/grid/grid_file.h>
 #ifdef GLINT_HAVE_NANOVDB
-#include <glint/media/nanovdb_file.h>
+#include <glint/medium/grid/nanovdb_file.h>
 #endif
 #ifdef GLINT_HAVE_OPENVDB
-#include <glint/media/openvdb_file.h>
+#include <glint/medium/grid/openvdb_file.h>
 #endif
 #include <support/test_util.h>
 

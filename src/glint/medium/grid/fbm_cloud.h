@@ -2,7 +2,7 @@
 // A procedural cloud: fractal noise (fbm of Perlin noise) shaped by a soft sphere inside a
 // box, baked into a VoxelGrid. It needs no file, so examples and tests use it; its empty
 // corners and thin wisps are what a majorant grid makes cheap.
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
 namespace glint {
 

@@ -1,5 +1,5 @@
 #include <glint/core/error.h>
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #pragma once
 // What the grid file readers share: checking a file's index box before densifying it.
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
 #include <array>
 #include <string>

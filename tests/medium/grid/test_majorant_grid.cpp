@@ -1,8 +1,8 @@
 // The majorant grid must bound the density everywhere in each cell, or tracking is biased.
 #include <glint/core/error.h>
 #include <glint/core/rng.h>
-#include <glint/media/fbm_cloud.h>
-#include <glint/media/majorant_grid.h>
+#include <glint/medium/grid/fbm_cloud.h>
+#include <glint/medium/grid/majorant_grid.h>
 
 #include <gtest/gtest.h>
 

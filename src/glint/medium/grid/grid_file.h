@@ -2,7 +2,7 @@
 // Density grids from files: NanoVDB (.nvdb) and OpenVDB (.vdb), each an optional part of the
 // build (libnanovdb-dev, libopenvdb-dev). The grid's active bounding box is densified into a
 // VoxelGrid whose box is the grid's index box mapped to its world space.
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
 #include <string>
 

@@ -1,7 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/core/file_access.h>
-#include <glint/media/grid_box.h>
-#include <glint/media/nanovdb_file.h>
+#include <glint/medium/grid/grid_box.h>
+#include <glint/medium/grid/nanovdb_file.h>
 
 #include <fmt/format.h>
 #include <nanovdb/NanoVDB.h>

@@ -1,6 +1,6 @@
 #include <glint/core/error.h>
-#include <glint/media/grid_box.h>
-#include <glint/media/openvdb_file.h>
+#include <glint/medium/grid/grid_box.h>
+#include <glint/medium/grid/openvdb_file.h>
 
 #include <fmt/format.h>
 #include <openvdb/io/File.h>

@@ -1,6 +1,6 @@
 #include <glint/core/error.h>
-#include <glint/media/grid_box.h>
-#include <glint/media/grid_file.h>
+#include <glint/medium/grid/grid_box.h>
+#include <glint/medium/grid/grid_file.h>
 
 #include <fmt/format.h>
 
@@ -8,10 +8,10 @@
 #include <system_error>
 
 #ifdef GLINT_HAVE_NANOVDB
-#include <glint/media/nanovdb_file.h>
+#include <glint/medium/grid/nanovdb_file.h>
 #endif
 #ifdef GLINT_HAVE_OPENVDB
-#include <glint/media/openvdb_file.h>
+#include <glint/medium/grid/openvdb_file.h>
 #endif
 
 namespace glint {

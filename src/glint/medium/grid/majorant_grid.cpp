@@ -1,5 +1,5 @@
 #include <glint/core/error.h>
-#include <glint/media/majorant_grid.h>
+#include <glint/medium/grid/majorant_grid.h>
 
 #include <algorithm>
 

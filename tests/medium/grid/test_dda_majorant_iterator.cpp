@@ -1,6 +1,6 @@
 // The DDA must visit, in order, exactly the majorant cells a ray segment passes through.
 #include <glint/core/rng.h>
-#include <glint/media/dda_majorant_iterator.h>
+#include <glint/medium/grid/dda_majorant_iterator.h>
 
 #include <gtest/gtest.h>
 
@@ -69,13 +69,13 @@ TEST(DdaMajorantIterator, VisitsExactlyTheCellsARayCrosses) {
         std::vector<CellVisit> visited;
         DdaMajorantIterator dda(majorants, o, d, 0.0f, t_max);
         float previous_end = -1.0f;
-        while (const auto segment = dda.next()) {
+        while (const auto crossing = dda.next()) {
             // Segments are contiguous and never empty-backwards.
-            ASSERT_LE(segment->t_min, segment->t_max);
-            if (previous_end >= 0.0f) ASSERT_EQ(segment->t_min, previous_end);
-            previous_end = segment->t_max;
-            if (segment->t_max - segment->t_min > eps) {
-                visited.push_back({segment->cell, segment->t_min, segment->t_max});
+            ASSERT_LE(crossing->t_min, crossing->t_max);
+            if (previous_end >= 0.0f) ASSERT_EQ(crossing->t_min, previous_end);
+            previous_end = crossing->t_max;
+            if (crossing->t_max - crossing->t_min > eps) {
+                visited.push_back({crossing->cell, crossing->t_min, crossing->t_max});
             }
         }
         ASSERT_EQ(visited.size(), expected.size()) << "trial " << trial;

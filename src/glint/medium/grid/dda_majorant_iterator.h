@@ -1,14 +1,14 @@
 #pragma once
 // Walks a ray through the cells of a MajorantGrid in order with a 3D DDA (Amanatides and Woo
 // 1987), giving for each cell the stretch of the ray inside it and the cell's majorant.
-#include <glint/media/majorant_grid.h>
+#include <glint/medium/grid/majorant_grid.h>
 
 #include <optional>
 
 namespace glint {
 
 /// A stretch [t_min, t_max] of a ray inside one majorant cell, with the cell's density bound.
-struct MajorantSegment {
+struct CellCrossing {
     float t_min = 0.0f;
     float t_max = 0.0f;
     float max_density = 0.0f;
@@ -24,7 +24,7 @@ public:
                         float t_max);
 
     /// The next cell along the ray, or nothing once the ray has left the grid or t_max.
-    std::optional<MajorantSegment> next();
+    std::optional<CellCrossing> next();
 
 private:
     const MajorantGrid* m_grid;
@@ -36,7 +36,7 @@ private:
     int m_step[3] = {0, 0, 0};
     float m_next_crossing[3] = {0, 0, 0};
 
-    float crossing(int axis) const;
+    float far_face_t(int axis) const;
 };
 
 }  // namespace glint

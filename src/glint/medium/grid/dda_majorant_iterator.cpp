@@ -1,4 +1,4 @@
-#include <glint/media/dda_majorant_iterator.h>
+#include <glint/medium/grid/dda_majorant_iterator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -37,34 +37,34 @@ DdaMajorantIterator::DdaMajorantIterator(const MajorantGrid& grid, const Vec3& o
     m_cell = grid.cell_of(o + t_min * d);
     for (int axis = 0; axis < 3; ++axis) {
         m_step[axis] = d[axis] > 0.0f ? 1 : d[axis] < 0.0f ? -1 : 0;
-        m_next_crossing[axis] = crossing(axis);
+        m_next_crossing[axis] = far_face_t(axis);
     }
 }
 
 // The parameter where the ray crosses the current cell's far face along `axis`, computed
 // from the face's position each time, so that no error accumulates over long walks.
-float DdaMajorantIterator::crossing(int axis) const {
+float DdaMajorantIterator::far_face_t(int axis) const {
     if (m_step[axis] == 0) return kInfinity;
     const int face = m_cell[axis] + (m_step[axis] > 0 ? 1 : 0);
     const float n = static_cast<float>(m_grid->resolution()[axis]);
     return (static_cast<float>(face) / n - m_origin[axis]) / m_direction[axis];
 }
 
-std::optional<MajorantSegment> DdaMajorantIterator::next() {
+std::optional<CellCrossing> DdaMajorantIterator::next() {
     if (!(m_t < m_t_end)) return std::nullopt;
     int axis = 0;
     if (m_next_crossing[1] < m_next_crossing[axis]) axis = 1;
     if (m_next_crossing[2] < m_next_crossing[axis]) axis = 2;
     const float t_exit = std::min(m_next_crossing[axis], m_t_end);
-    MajorantSegment segment{m_t, t_exit, m_grid->cell(m_cell.x, m_cell.y, m_cell.z), m_cell};
+    CellCrossing crossing{m_t, t_exit, m_grid->cell(m_cell.x, m_cell.y, m_cell.z), m_cell};
     m_t = t_exit;
     int* cell = axis == 0 ? &m_cell.x : axis == 1 ? &m_cell.y : &m_cell.z;
     *cell += m_step[axis];
-    m_next_crossing[axis] = crossing(axis);
+    m_next_crossing[axis] = far_face_t(axis);
     // Leaving the last cell on an axis means leaving the grid (rounding may put the clipped
     // exit a hair beyond the last face).
     if (*cell < 0 || *cell >= m_grid->resolution()[axis]) m_t_end = m_t;
-    return segment;
+    return crossing;
 }
 
 }  // namespace glint

@@ -1,6 +1,6 @@
 #pragma once
 // NanoVDB files (.nvdb): the only file that uses the NanoVDB API.
-#include <glint/media/voxel_grid.h>
+#include <glint/medium/grid/voxel_grid.h>
 
 #include <string>
 #include <vector>

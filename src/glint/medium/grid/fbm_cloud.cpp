@@ -1,6 +1,6 @@
 #include <glint/core/error.h>
 #include <glint/material/texture/noise.h>
-#include <glint/media/fbm_cloud.h>
+#include <glint/medium/grid/fbm_cloud.h>
 
 #include <algorithm>
 #include <cmath>
