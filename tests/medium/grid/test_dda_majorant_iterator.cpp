@@ -72,7 +72,9 @@ TEST(DdaMajorantIterator, VisitsExactlyTheCellsARayCrosses) {
         while (const auto crossing = dda.next()) {
             // Segments are contiguous and never empty-backwards.
             ASSERT_LE(crossing->t_min, crossing->t_max);
-            if (previous_end >= 0.0f) ASSERT_EQ(crossing->t_min, previous_end);
+            if (previous_end >= 0.0f) {
+                ASSERT_EQ(crossing->t_min, previous_end);
+            }
             previous_end = crossing->t_max;
             if (crossing->t_max - crossing->t_min > eps) {
                 visited.push_back({crossing->cell, crossing->t_min, crossing->t_max});

@@ -13,8 +13,8 @@ namespace glint {
 namespace {
 
 // The cloud over the unit box, moved and stretched into the scene, so that the map from
-// the scene to the grid is exercised. Extinction 6 per unit at density 1, albedo 0.5.
-HeterogeneousMedium test_medium(int majorant_resolution, Spectrum sigma_t = Spectrum(6.0f)) {
+// the scene to the grid is exercised. Extinction 1.5 per unit at density 1, albedo 0.5.
+HeterogeneousMedium test_medium(int majorant_resolution, Spectrum sigma_t = Spectrum(1.5f)) {
     VoxelGrid cloud = make_fbm_cloud({.resolution = 24, .frequency = 4.0f, .coverage = 0.8f},
                                      Bounds3{Vec3(0.0f), Vec3(1.0f)});
     const Transform grid_to_world =

@@ -55,7 +55,9 @@ std::optional<CellCrossing> DdaMajorantIterator::next() {
     int axis = 0;
     if (m_next_crossing[1] < m_next_crossing[axis]) axis = 1;
     if (m_next_crossing[2] < m_next_crossing[axis]) axis = 2;
-    const float t_exit = std::min(m_next_crossing[axis], m_t_end);
+    // Clamped below as well: rounding can put the entry point's cell a hair beyond a face
+    // the ray has in fact already crossed.
+    const float t_exit = std::clamp(m_next_crossing[axis], m_t, m_t_end);
     CellCrossing crossing{m_t, t_exit, m_grid->cell(m_cell.x, m_cell.y, m_cell.z), m_cell};
     m_t = t_exit;
     int* cell = axis == 0 ? &m_cell.x : axis == 1 ? &m_cell.y : &m_cell.z;

@@ -56,7 +56,8 @@ VoxelGrid read_nanovdb_grid(const std::string& path, const std::string& grid_nam
         stream.seekg(0);
         const auto handle = nanovdb::io::readGrid(stream, index);
         const nanovdb::NanoGrid<float>* grid = handle.grid<float>();
-        if (grid == nullptr || !nanovdb::isValid(*grid, true)) {
+        if (grid == nullptr || !has_sound_layout(*grid, handle.size()) ||
+            !nanovdb::isValid(*grid, true)) {
             throw Error(
                 fmt::format("grid file '{}': grid '{}' is corrupt (its checksum or "
                             "structure does not hold)",
@@ -87,8 +88,10 @@ VoxelGrid read_nanovdb_grid(const std::string& path, const std::string& grid_nam
             bounds.expand(Vec3(world[0], world[1], world[2]));
         }
         return VoxelGrid(dims, std::move(values), bounds);
-    } catch (const Error&) {
-        throw;
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        if (message.find(path) != std::string::npos) throw;
+        throw Error(fmt::format("grid file '{}': {}", path, message));
     } catch (const std::exception& e) {
         throw Error(fmt::format("grid file '{}': not a readable NanoVDB file: {}", path, e.what()));
     }
@@ -98,12 +101,19 @@ void write_nanovdb_grid(const std::string& path, const std::string& grid_name,
                         const std::vector<SparseVoxel>& voxels, double voxel_size) {
     try {
         nanovdb::GridBuilder<float> builder(0.0f, nanovdb::GridClass::FogVolume);
+        // A checksum over every node, leaves included, so that readers find any corruption.
+        builder.setChecksum(nanovdb::ChecksumMode::Full);
         auto accessor = builder.getAccessor();
         for (const SparseVoxel& v : voxels) {
             accessor.setValue(nanovdb::Coord(v.index.x, v.index.y, v.index.z), v.value);
         }
         const auto handle = builder.getHandle<>(voxel_size, nanovdb::Vec3d(0.0), grid_name);
-        std::ostringstream stream;
+        // NanoVDB writes the grid first, past room for the header, then seeks back: the
+        // stream must already be as long as the file, since a string stream cannot seek
+        // beyond its end.
+        nanovdb::io::Segment segment(nanovdb::io::Codec::NONE);
+        segment.add(handle);
+        std::ostringstream stream(std::string(segment.memUsage() + handle.size(), '\0'));
         nanovdb::io::writeGrid(stream, handle, nanovdb::io::Codec::NONE);
         write_file_atomically(path, stream.str(), "grid file");
     } catch (const Error&) {

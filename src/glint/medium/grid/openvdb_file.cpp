@@ -74,8 +74,10 @@ VoxelGrid read_openvdb_grid(const std::string& path, const std::string& grid_nam
             bounds.expand(Vec3(world.x(), world.y(), world.z()));
         }
         return VoxelGrid(dims, std::move(values), bounds);
-    } catch (const Error&) {
-        throw;
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        if (message.find(path) != std::string::npos) throw;
+        throw Error(fmt::format("grid file '{}': {}", path, message));
     } catch (const std::exception& e) {
         throw Error(fmt::format("grid file '{}': not a readable OpenVDB file: {}", path, e.what()));
     }
