@@ -9,6 +9,27 @@
 #include <algorithm>
 
 namespace glint::cli {
+namespace {
+
+// One line per participating medium: where the script made it and its coefficients (at the
+// origin, for a medium that varies), and which one the camera sits in.
+void print_media(const SceneDesc& desc, const Scene& scene) {
+    fmt::print("media:      {}\n", scene.media().size());
+    for (size_t i = 0; i < scene.media().size(); ++i) {
+        const Medium& medium = *scene.media()[i];
+        const MediumPoint point = medium.at(Vec3(0.0f));
+        const auto values = [](const Spectrum& s) {
+            return fmt::format("({:g}, {:g}, {:g})", s.value(0), s.value(1), s.value(2));
+        };
+        fmt::print("  medium {} at {}: {}sigma_a {} sigma_s {} g {:g}{}{}\n", i + 1,
+                   desc.media[i].where(), medium.is_homogeneous() ? "homogeneous, " : "",
+                   values(point.sigma_a), values(point.sigma_s), medium.phase_asymmetry(),
+                   medium.emits() ? ", emits" : "",
+                   &medium == scene.camera_medium() ? ", the camera's" : "");
+    }
+}
+
+}  // namespace
 
 CLI::App* add_info_command(CLI::App& app, InfoOptions& options) {
     CLI::App* info_cmd =
@@ -38,6 +59,7 @@ int run_info(const InfoOptions& options) {
     fmt::print("lights:     {}\n", s.lights);
     fmt::print("groups:     {} ({} instances)\n", s.groups, s.instances);
     fmt::print("materials:  {}\n", desc.materials.size());
+    print_media(desc, *scene);
     // Memory of the geometry: glint's own arrays (positions, normals, uvs, indices and the
     // per-triangle frames) and Embree's (BVH and its copies of vertices and indices), per
     // triangle built (a group placed many times is built once).

@@ -4,6 +4,7 @@
 #include <glint/integrator/bidirectional/mlt.h>
 #include <glint/integrator/bidirectional/vcm.h>
 #include <glint/integrator/path/path.h>
+#include <glint/integrator/path/volpath.h>
 #include <glint/integrator/path/whitted.h>
 #include <glint/integrator/photon/photon.h>
 #include <glint/integrator/photon/preview.h>
@@ -38,6 +39,7 @@ const std::vector<Factory>& factories() {
         {"path", create_path<DirectLighting::kMis>},
         {"path_light", create_path<DirectLighting::kLightOnly>},
         {"path_bsdf", create_path<DirectLighting::kBsdfOnly>},
+        {"volpath", VolPathIntegrator::create},
         {"whitted", WhittedIntegrator::create},
         {"photon", PhotonIntegrator::create},
         {"sppm", SppmIntegrator::create},

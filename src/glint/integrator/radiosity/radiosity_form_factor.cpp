@@ -1,4 +1,5 @@
 #include <glint/integrator/radiosity/radiosity_form_factor.h>
+#include <glint/integrator/transport/visibility.h>
 #include <glint/math/warp.h>
 #include <glint/scene/scene.h>
 
@@ -74,7 +75,8 @@ double point_to_triangle_form_factor(const Vec3& x, const Vec3& n_x, const Shoot
         ++rays;
         const Vec3 from = offset_ray_origin(x, n_x, d);
         const Vec3 to = offset_ray_origin(y, t.n, -d);
-        if (!scene->accel().occluded(from, to - from, 0.0f, kShadowRayEnd)) visible += w;
+        // Surfaces that only bound media (interfaces) let the exchange through.
+        if (!transmittance(*scene, from, to).is_black()) visible += w;
     }
     if (!scene) return exact;
     return weight > 0.0 ? exact * (visible / weight) : 0.0;

@@ -9,10 +9,21 @@
 namespace glint {
 
 /// The transmittance along `shadow` (Scene::shadow_ray: reaching its target at t = 1,
-/// traced to kShadowRayEnd) through interface surfaces, in `medium` (null: vacuum); 0 when
-/// a surface that is not an interface stands in the way.
+/// traced to kShadowRayEnd) through interface surfaces, starting in `medium` (null: vacuum)
+/// and taking on the medium beyond each interface that bounds one; 0 when a surface that is
+/// not an interface stands in the way. Media without a closed form draw from `rng` (a fixed
+/// stream when null). `passing`, when not null, receives per channel the probability that
+/// volpath's delta tracking crosses the same way without a collision (the transmittance of
+/// the media it samples, those that scatter or emit; 1 elsewhere), for its MIS weights.
 Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
-                                          const Medium* medium = nullptr);
+                                          const Medium* medium = nullptr, Rng* rng = nullptr,
+                                          Spectrum* passing = nullptr);
+
+/// Whether volpath samples distances in `medium` (delta tracking) rather than multiplying
+/// by its transmittance: where it scatters or emits.
+inline bool samples_distances(const Medium& medium) {
+    return medium.scatters() || medium.emits();
+}
 
 /// The transmittance of a shadow ray that starts in `medium`: Embree's occlusion query alone
 /// where neither an interface nor a medium can change the answer from 0 or 1.
