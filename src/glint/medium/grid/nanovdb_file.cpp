@@ -34,6 +34,31 @@ std::array<int64_t, 3> as_array(const nanovdb::Coord& c) {
     return {c[0], c[1], c[2]};
 }
 
+// Whether the grid's root and node arrays lie inside its buffer, checked before NanoVDB's own
+// validation, whose checksum walks them: a corrupt offset or count must be an error, not a
+// read beyond the buffer. Nodes of one level are stored one after another (breadth-first).
+bool has_sound_layout(const nanovdb::NanoGrid<float>& grid, uint64_t buffer_size) {
+    using Tree = nanovdb::NanoTree<float>;
+    using Root = nanovdb::NanoRoot<float>;
+    if (grid.gridSize() > buffer_size || !grid.isBreadthFirst()) return false;
+    const auto* end = reinterpret_cast<const uint8_t*>(&grid) + grid.gridSize();
+    const Tree& tree = grid.tree();
+    const auto* tree_begin = reinterpret_cast<const uint8_t*>(&tree);
+    const uint64_t available = static_cast<uint64_t>(end - tree_begin);
+    const auto* offsets = tree.data()->mNodeOffset;
+    const auto fits = [&](uint64_t offset, uint64_t bytes) {
+        return offset <= available && bytes <= available - offset;
+    };
+    if (!fits(offsets[3], sizeof(Root::DataType))) return false;
+    const uint64_t tiles = tree.root().data()->mTableSize;
+    if (!fits(offsets[3], sizeof(Root::DataType) + tiles * sizeof(Root::DataType::Tile))) {
+        return false;
+    }
+    return fits(offsets[0], tree.nodeCount(0) * sizeof(nanovdb::NanoLeaf<float>)) &&
+           fits(offsets[1], tree.nodeCount(1) * sizeof(nanovdb::NanoLower<float>)) &&
+           fits(offsets[2], tree.nodeCount(2) * sizeof(nanovdb::NanoUpper<float>));
+}
+
 }  // namespace
 
 VoxelGrid read_nanovdb_grid(const std::string& path, const std::string& grid_name) {
@@ -50,6 +75,15 @@ VoxelGrid read_nanovdb_grid(const std::string& path, const std::string& grid_nam
                 fmt::format("grid file '{}': truncated (grid '{}' needs {} bytes, the "
                             "file has {})",
                             path, meta.gridName, meta.gridSize, bytes.size()));
+        }
+        // Smaller than the grid's and tree's headers, the buffer could not even be inspected.
+        constexpr uint64_t kHeaders =
+            sizeof(nanovdb::GridData) + sizeof(nanovdb::NanoTree<float>::DataType);
+        if (meta.gridSize < kHeaders) {
+            throw Error(
+                fmt::format("grid file '{}': grid '{}' is corrupt (its size, {} bytes, "
+                            "is less than its headers')",
+                            path, meta.gridName, meta.gridSize));
         }
         checked_grid_dims(path, as_array(meta.indexBBox.min()), as_array(meta.indexBBox.max()));
         stream.clear();

@@ -1,14 +1,31 @@
 #include <glint/core/error.h>
+#include <glint/core/file_access.h>
 #include <glint/medium/grid/grid_box.h>
 #include <glint/medium/grid/openvdb_file.h>
 
 #include <fmt/format.h>
 #include <openvdb/io/File.h>
+#include <openvdb/io/Stream.h>
 #include <openvdb/openvdb.h>
+
+#include <sstream>
 
 namespace glint {
 
 namespace {
+
+// A library's message made fit to print: OpenVDB quotes bytes from a corrupt file verbatim,
+// so control characters become spaces, runs of spaces one, and the length is capped.
+std::string printable(const std::string& message) {
+    std::string result;
+    for (const char c : message) {
+        const char shown = (c >= 32 && c < 127) ? c : ' ';
+        if (shown == ' ' && (result.empty() || result.back() == ' ')) continue;
+        result += shown;
+        if (result.size() >= 200) return result + "...";
+    }
+    return result;
+}
 
 // The name of the grid to read, from the file's metadata alone (no voxels are loaded).
 openvdb::GridBase::ConstPtr choose_grid(const std::string& path, openvdb::io::File& file,
@@ -50,9 +67,22 @@ VoxelGrid read_openvdb_grid(const std::string& path, const std::string& grid_nam
         file.open(false);
         const openvdb::GridBase::ConstPtr meta = choose_grid(path, file, grid_name);
         check_recorded_box(path, *meta);
-        const auto grid = openvdb::gridPtrCast<openvdb::FloatGrid>(file.readGrid(meta->getName()));
+        const std::string name = meta->getName();
         file.close();
-        if (!grid) throw Error(fmt::format("grid file '{}': cannot read its float grid", path));
+        // The voxels are read through a stream over the file's bytes rather than by
+        // io::File, which reads a grid's last block leniently: a file cut short by a byte or
+        // two would give garbage voxels there. The stream fails instead.
+        std::istringstream stream(read_regular_file(path, "grid file"));
+        openvdb::io::Stream reader(stream);
+        const openvdb::GridPtrVecPtr grids = reader.getGrids();
+        if (!stream) throw Error(fmt::format("grid file '{}': truncated", path));
+        openvdb::FloatGrid::Ptr grid;
+        for (const openvdb::GridBase::Ptr& candidate : *grids) {
+            if (candidate->getName() == name)
+                grid = openvdb::gridPtrCast<openvdb::FloatGrid>(candidate);
+        }
+        if (!grid)
+            throw Error(fmt::format("grid file '{}': cannot read its float grid '{}'", path, name));
         const openvdb::CoordBBox box = grid->evalActiveVoxelBoundingBox();
         const GridIndex dims = checked_grid_dims(path, as_array(box.min()), as_array(box.max()));
         std::vector<float> values(voxel_count(dims));
@@ -79,7 +109,8 @@ VoxelGrid read_openvdb_grid(const std::string& path, const std::string& grid_nam
         if (message.find(path) != std::string::npos) throw;
         throw Error(fmt::format("grid file '{}': {}", path, message));
     } catch (const std::exception& e) {
-        throw Error(fmt::format("grid file '{}': not a readable OpenVDB file: {}", path, e.what()));
+        throw Error(fmt::format("grid file '{}': not a readable OpenVDB file: {}", path,
+                                printable(e.what())));
     }
 }
 
