@@ -9,8 +9,8 @@
 namespace glint {
 
 /// The medium `params` describes; `directory` is the scene's folder, which relative grid
-/// file names start from. Throws glint::Error naming the script line for a bad or unknown
-/// parameter, or a grid file that cannot be read.
-std::unique_ptr<Medium> make_medium(const Params& params, const std::string& directory);
+/// file names start from (default: the working folder). Throws glint::Error naming the
+/// script line for a bad or unknown parameter, or a grid file that cannot be read.
+std::unique_ptr<Medium> make_medium(const Params& params, const std::string& directory = ".");
 
 }  // namespace glint
