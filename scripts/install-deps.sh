@@ -19,6 +19,7 @@ packages=(
   xvfb libgl1-mesa-dri # the viewer's end-to-end test: a virtual X server, software OpenGL
   libdnnl-dev          # the network denoiser (src/glint/denoise): oneDNN convolutions
   libopenmpi-dev openmpi-bin # MPI: one image rendered by many processes (docs/cluster.md)
+  libnanovdb-dev libopenvdb-dev libboost-dev # media density grids (.nvdb, .vdb); OpenVDB's headers need Boost's
 )
 
 SUDO=""

@@ -23,7 +23,8 @@ public:
     std::unique_ptr<Scene> build() {
         m_scene->m_directory = m_desc.directory.empty() ? "." : m_desc.directory;
         m_scene->m_trusted = m_desc.trusted;
-        for (const Params& p : m_desc.media) m_scene->m_media.push_back(make_medium(p));
+        for (const Params& p : m_desc.media)
+            m_scene->m_media.push_back(make_medium(p, m_desc.directory));
         build_camera();
         m_scene->m_textures =
             std::make_unique<TextureTable>(m_desc.directory, m_settings.mipmapping);
