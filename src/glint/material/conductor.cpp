@@ -9,24 +9,25 @@ namespace {
 
 class ConductorMaterial final : public Material {
 public:
-    ConductorMaterial(const Spectrum& eta, const Spectrum& k, const FloatInput& roughness,
+    ConductorMaterial(const SceneColor& eta, const SceneColor& k, const FloatInput& roughness,
                       float anisotropy, const SpectrumInput& tint)
         : m_eta(eta), m_k(k), m_roughness(roughness), m_anisotropy(anisotropy), m_tint(tint) {}
 
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
         const float alpha = roughness_to_alpha(m_roughness.eval(si));
-        const ConductorFresnel fresnel{m_eta, m_k, m_tint.eval(si), false};
+        const ConductorFresnel fresnel{m_eta.spectrum(), m_k.spectrum(), m_tint.eval(si), false};
         return arena.make<RoughConductorBsdf>(GgxDistribution::anisotropic(alpha, m_anisotropy),
                                               fresnel);
     }
     // The reflectance at normal incidence, the colour one sees in a metal.
     Spectrum albedo(const SurfaceInteraction& si) const override {
-        return m_tint.eval(si) * fresnel_conductor(1.0f, m_eta, m_k);
+        return m_tint.eval(si) * fresnel_conductor(1.0f, m_eta.spectrum(), m_k.spectrum());
     }
 
 private:
-    Spectrum m_eta;
-    Spectrum m_k;
+    // Colours, read at each path's wavelengths in spectral mode.
+    SceneColor m_eta;
+    SceneColor m_k;
     FloatInput m_roughness;
     float m_anisotropy;
     SpectrumInput m_tint;
@@ -56,13 +57,13 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
         params.fail("give either 'preset' or 'eta' and 'k', not both");
     }
     if (has_eta != has_k) params.fail("give both 'eta' and 'k' (the complex index eta + i k)");
-    Spectrum eta, k;
+    SceneColor eta, k;
     if (has_eta) {
         const Rgb eta_rgb = params.get_rgb("eta"), k_rgb = params.get_rgb("k");
         if (eta_rgb.min_value() <= 0.0f) params.fail("'eta' must be positive");
         if (k_rgb.min_value() < 0.0f) params.fail("'k' must not be negative");
-        eta = uplift(eta_rgb, RgbRole::unbounded);
-        k = uplift(k_rgb, RgbRole::unbounded);
+        eta = SceneColor(eta_rgb, RgbRole::unbounded);
+        k = SceneColor(k_rgb, RgbRole::unbounded);
     } else {
         const std::string name = params.get_string("preset", "aluminium");
         const ConductorPreset* preset = find_conductor_preset(name);
@@ -70,8 +71,8 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
             params.fail(
                 fmt::format("unknown 'preset' '{}'; known presets: {}", name, preset_names()));
         }
-        eta = uplift(preset->eta, RgbRole::unbounded);
-        k = uplift(preset->k, RgbRole::unbounded);
+        eta = SceneColor(preset->eta, RgbRole::unbounded);
+        k = SceneColor(preset->k, RgbRole::unbounded);
     }
     const FloatInput roughness = textures.scalar(params, "roughness", 0.1f, 0.0f, 1.0f);
     const float anisotropy = params.get_float("anisotropy", 0.0f);

@@ -5,6 +5,7 @@
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/vcm.h>
 #include <glint/integrator/transport/hash_grid.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/material/material.h>
 
 #include <fmt/format.h>
@@ -181,6 +182,13 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     return stats;
 }
 
+// Spectral mode: every path of an iteration carries the same wavelengths, since each camera
+// subpath joins light vertices traced by other threads and merges with many of them; the
+// iterations' wavelengths differ, so the image still integrates over the spectrum.
+uint64_t VcmIntegrator::iteration_wavelength_key(int iteration) const {
+    return hash_combine(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint64_t>(iteration));
+}
+
 // The light subpaths of one chunk, and their joins to the lens (t = 1). Light subpath i draws
 // from the light sampler at (pixel (i mod width, i div width), iteration) -- rows past the
 // image's last stand for the subpaths beyond one per pixel; the sampler keys on the pixel
@@ -193,6 +201,7 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
     const size_t begin = static_cast<size_t>(chunk) * kChunkPaths;
     const size_t end = std::min(n_light, begin + kChunkPaths);
     const int max_depth = m_settings.max_depth;
+    const PathWavelengths wavelengths(m_settings.spectral, iteration_wavelength_key(it.index));
     auto sampler = it.light_sampler->clone();
     Arena& arena = it.arenas[chunk];
     arena.reset();  // the BSDFs of this chunk's subpaths live until the camera pass is done
@@ -233,6 +242,7 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
     const int x1 = std::min(x0 + kTileSize, film.width());
     const int y1 = std::min(y0 + kTileSize, film.height());
     const int max_depth = m_settings.max_depth;
+    const PathWavelengths wavelengths(m_settings.spectral, iteration_wavelength_key(it.index));
     auto sampler = it.camera_sampler->clone();
     HashGrid::Cache cache;  // a tile's camera vertices are near each other
     Arena arena;

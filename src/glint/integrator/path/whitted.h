@@ -19,7 +19,7 @@ inline constexpr int kWhittedRayBudget = 1024;
 
 /// The settings of "whitted", from glint.render{...}.
 struct WhittedSettings {
-    Spectrum ambient{0.0f};          ///< ambient light, times the surface albedo (>= 0)
+    SceneColor ambient;              ///< ambient light, times the surface albedo (>= 0)
     int shadow_samples = 4;          ///< N in [1, 64]: area lights get N x N stratified shadow rays
     bool penumbra_shortcut = false;  ///< test 4 rays first; full set only in the penumbra
     bool caustics = false;           ///< add photon-mapped caustics (see CausticSettings)

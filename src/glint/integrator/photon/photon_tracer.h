@@ -16,6 +16,7 @@
 #include <tbb/parallel_for.h>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace glint {
@@ -45,6 +46,10 @@ public:
           m_emitter(std::move(emitter)),
           m_caustic_paths_only(caustic_paths_only) {}
 
+    // Spectral mode: the photons traced from now on carry `wavelengths` (those of the camera
+    // points they will meet); nullptr for RGB mode. The context must outlive the tracing.
+    void use_wavelengths(const WavelengthContext* wavelengths) { m_wavelengths = wavelengths; }
+
     // Traces photons [first, first + count); photon i is keyed by (seed, i). `make_sink()`
     // makes the sink of each chunk; the sinks come back in chunk order.
     template <typename MakeSink>
@@ -58,6 +63,8 @@ public:
         std::atomic<uint64_t> total_rays{0};
         tbb::parallel_for(uint64_t{0}, chunks, [&](uint64_t chunk) {
             throw_if_cancelled();  // emission reports no progress: SIGINT stops it here
+            std::optional<WavelengthScope> wavelengths;
+            if (m_wavelengths != nullptr) wavelengths.emplace(*m_wavelengths);
             Arena arena;
             uint64_t chunk_rays = 0;
             const uint64_t end = std::min(count, (chunk + 1) * kChunk);
@@ -128,6 +135,7 @@ private:
     int m_max_bounces;
     PhotonEmitter m_emitter;
     bool m_caustic_paths_only;
+    const WavelengthContext* m_wavelengths = nullptr;
 };
 
 }  // namespace glint
