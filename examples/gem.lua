@@ -24,5 +24,5 @@ glint.mesh{ vertices = {{1, 0, 0}, {-1, 0, 0}, {0, 1.3, 0}, {0, -1.3, 0}, {0, 0,
                         * glint.rotate(12, {1, 0, 1}) * glint.scale(0.8) }
 
 -- A small, bright light above and behind: the crystal's fire is its image, split.
-glint.sphere{ center = {-1.5, 4, -2}, radius = 0.12,
-              material = glint.emissive{ radiance = 900 } }
+glint.sphere{ center = {-1.5, 4, -2}, radius = 0.2,
+              material = glint.emissive{ radiance = 300 } }

@@ -13,7 +13,7 @@ local flint = glint.dielectric{ sellmeier = { 1.73759695, 0.313747346, 1.8987810
                                               0.013188707, 0.0623068142, 155.23629 } }
 local wall = glint.diffuse{ reflectance = 0.8 }
 
-glint.camera{ eye = {-0.6, 1.0, 1.6}, look_at = {2.6, 0.45, -1.4}, fov = 40 }
+glint.camera{ eye = {-0.6, 1.0, 1.6}, look_at = {2.7, 0.5, -1.45}, fov = 16 }
 glint.render{ width = 320, height = 240, spp = 16, integrator = "light", spectral = true,
               output = {"prism.exr", "prism.png"} }
 
@@ -27,7 +27,7 @@ glint.mesh{ vertices = {{0, 0, 0.6}, {-0.52, 0, -0.3}, {0.52, 0, -0.3},
 -- (at n ≈ 1.78) is the angle of minimum deviation: inside, the light runs parallel to the
 -- base, and it leaves falling 33°, red least and violet most.
 glint.spot_light{ position = {-3.61, 0.5, -2.04}, look_at = {-0.26, 0.5, 0.15},
-                  intensity = 4000, cone_angle = 0.4, falloff_start = 0.3 }
+                  intensity = 600, cone_angle = 0.4, falloff_start = 0.3 }
 
 -- The wall, 3 units from the prism across the beam's way out, facing it.
 glint.quad{ vertices = {{1.95, -0.5, -2.75}, {3.59, -0.5, -0.24}, {3.59, 1.5, -0.24},
