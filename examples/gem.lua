@@ -5,8 +5,8 @@
 --   build/glint render examples/gem.lua                 (bdpt, a few seconds)
 --   build/glint render examples/gem.lua --spp 64        (less colour noise)
 
--- Diamond by its Sellmeier formula (Peter 1923): B = 0.3306, 4.3356, C = 0.175², 0.106² µm².
-local diamond = glint.dielectric{ sellmeier = { 0.3306, 4.3356, 0, 0.030625, 0.011236, 0 } }
+-- Diamond: glint's preset (Sellmeier, Peter 1923; n_d = 2.4175).
+local diamond = glint.dielectric{ ior = "diamond" }
 local cloth = glint.diffuse{ reflectance = {0.05, 0.05, 0.06} }
 
 glint.camera{ eye = {0, 2.2, 4.2}, look_at = {0, 0.9, 0}, fov = 32 }

@@ -9,8 +9,8 @@
 
 -- Schott N-SF11, a dense flint glass (n_d = 1.785, Abbe number 25.7): its spread of about
 -- four degrees between red and blue is easy to see. Sellmeier B1..B3, C1..C3 (µm²).
-local flint = glint.dielectric{ sellmeier = { 1.73759695, 0.313747346, 1.89878101,
-                                              0.013188707, 0.0623068142, 155.23629 } }
+local flint = glint.dielectric{ sellmeier_b = { 1.73759695, 0.313747346, 1.89878101 },
+                                sellmeier_c = { 0.013188707, 0.0623068142, 155.23629 } }
 local wall = glint.diffuse{ reflectance = 0.8 }
 
 glint.camera{ eye = {-0.6, 1.0, 1.6}, look_at = {2.7, 0.5, -1.45}, fov = 16 }

@@ -277,3 +277,19 @@ TEST(GltfExtensions, CameraAspectRatioSizesAModelRender) {
     std::ofstream(dir.file("square.gltf")) << json;
     EXPECT_FALSE(load_model_scene(dir.file("square.gltf")).render.has_value());
 }
+
+// KHR_materials_dispersion's `dispersion` is 20 / V_d: the principled material's Abbe number.
+TEST(GltfExtensions, DispersionBecomesTheAbbeNumber) {
+    test::TempDir dir;
+    const std::string material = R"({"extensions": {
+        "KHR_materials_ior": {"ior": 1.6},
+        "KHR_materials_transmission": {"transmissionFactor": 1},
+        "KHR_materials_dispersion": {"dispersion": 0.5}}})";
+    const SceneDesc desc = import(dir, gltf(material));
+    ASSERT_EQ(desc.materials.size(), 1u);
+    EXPECT_NEAR(desc.materials[0].get_float("abbe"), 40.0, 1e-6);
+    EXPECT_NEAR(desc.materials[0].get_float("ior"), 1.6, 1e-6);
+    const SceneDesc plain = import(dir, gltf(R"({"extensions": {
+        "KHR_materials_dispersion": {"dispersion": 0}}})"));
+    EXPECT_FALSE(plain.materials[0].has("abbe"));
+}

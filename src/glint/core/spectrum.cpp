@@ -50,7 +50,7 @@ namespace detail {
 
 Spectrum uplift_at_wavelengths(const Rgb& rgb, RgbRole role, const WavelengthContext& c) {
     Spectrum s;
-    for (int i = 0; i < Spectrum::kValues; ++i) s.m_v[i] = c.model->uplift(rgb, role, c.lambda.nm[i]);
+    s.m_v = c.model->uplift(rgb, role, c.lambda.nm);
     return s;
 }
 

@@ -36,12 +36,14 @@ struct SampledWavelengths {
 };
 
 // How spectral mode turns colours into values at a wavelength and back: the spectral data
-// module supplies it (core cannot depend on that module). `uplift` is the value at `nm` of
-// the spectrum an Rgb stands for; `observer` is what one unit of radiance at `nm` adds to
-// the film's linear Rec.709, per nm (so that ∫ observer(λ) uplift(white, illuminant, λ) dλ
-// is white).
+// module supplies it (core cannot depend on that module). `uplift` gives the values at the
+// wavelengths `nm` of the spectrum an Rgb stands for (all at once: finding a colour's
+// spectrum costs more than evaluating it); `observer` is what one unit of radiance at `nm`
+// adds to the film's linear Rec.709, per nm (so that ∫ observer(λ) uplift(white,
+// illuminant, λ) dλ is white).
 struct SpectralModel {
-    float (*uplift)(const Rgb& rgb, RgbRole role, float nm) = nullptr;
+    using Values = std::array<float, SampledWavelengths::kCount>;
+    Values (*uplift)(const Rgb& rgb, RgbRole role, const Values& nm) = nullptr;
     Rgb (*observer)(float nm) = nullptr;
 };
 
@@ -145,6 +147,16 @@ public:
     friend Spectrum map(const Spectrum& a, const Spectrum& b, F f) {
         return combine(a, b, f);
     }
+    // A quantity defined per wavelength (a measured index, a tabulated emitter): f(nm) at
+    // each active wavelength. Spectral mode only: call it where spectral_mode_active().
+    template <typename F>
+    static Spectrum at_wavelengths(F f) {
+        const WavelengthContext* c = detail::t_active_wavelengths;
+        Spectrum r;
+        for (int i = 0; i < kValues; ++i) r.m_v[i] = f(c->lambda.nm[i]);
+        return r;
+    }
+
     // What a dispersive event leaves: the hero wavelength alone carries the path on, the
     // others are 0. The hero's value is multiplied by their count, so that the film's mean
     // over the wavelengths is the hero's own estimate: a path that went through the event

@@ -1,6 +1,7 @@
 #include <glint/light/point_light.h>
 #include <glint/math/frame.h>
 #include <glint/math/warp.h>
+#include <glint/spectral/emission_params.h>
 
 #include <algorithm>
 
@@ -126,11 +127,10 @@ Spectrum SpotLight::power() const {
 
 namespace {
 
-// A light's colour parameter `name` (intensity or irradiance), checked and uplifted.
+// A light's colour parameter `name` (intensity or irradiance), checked, shaped by a
+// `blackbody` or `spectrum` if the table gives one, and uplifted.
 Spectrum read_emission(const Params& params, const char* name) {
-    const Rgb rgb = params.get_rgb(name);
-    if (rgb.min_value() < 0.0f) params.fail(std::string("'") + name + "' must not be negative");
-    return uplift(rgb, RgbRole::illuminant);
+    return uplift(spectral::read_emission_rgb(params, name), RgbRole::illuminant);
 }
 
 }  // namespace

@@ -1,4 +1,5 @@
 #include <glint/material/materials.h>
+#include <glint/spectral/emission_params.h>
 
 namespace glint {
 namespace {
@@ -20,8 +21,8 @@ private:
 }  // namespace
 
 std::unique_ptr<Material> make_emissive_material(const Params& params, TextureTable&) {
-    const Rgb radiance = params.get_rgb("radiance");
-    if (radiance.min_value() < 0.0f) params.fail("'radiance' must not be negative");
+    // `radiance` may be shaped by `blackbody = T` or `spectrum = ...` (emission_params.h).
+    const Rgb radiance = spectral::read_emission_rgb(params, "radiance");
     return std::make_unique<EmissiveMaterial>(SceneColor(radiance, RgbRole::illuminant),
                                               params.get_bool("two_sided", false));
 }

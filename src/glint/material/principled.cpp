@@ -1,5 +1,8 @@
 #include <glint/material/materials.h>
 #include <glint/material/principled_bsdf.h>
+#include <glint/spectral/dispersion.h>
+
+#include <optional>
 
 #include <fmt/format.h>
 
@@ -29,6 +32,9 @@ struct PrincipledInputs {
     float sheen = 0.0f, sheen_tint = 0.5f;
     SceneColor emission;
     Spectrum absorption{0.0f};
+    // The transmission's index per wavelength, from `abbe` (glTF KHR_materials_dispersion);
+    // RGB mode renders `ior`, its value at 587.56 nm.
+    std::optional<spectral::DispersiveIor> dispersion;
 };
 
 class PrincipledMaterial final : public Material {
@@ -43,6 +49,11 @@ public:
                             textured_roughness() ? 1.0f : constant_alpha()),
           m_coat_albedo(1.5f, clamped_alpha(in.clearcoat_roughness),
                         clamped_alpha(in.clearcoat_roughness)) {}
+
+    // The transmission's index per wavelength where `abbe` gave one; null otherwise.
+    const spectral::DispersiveIor* dispersion() const {
+        return m_in.dispersion ? &*m_in.dispersion : nullptr;
+    }
 
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
         PrincipledParams p;
@@ -101,6 +112,8 @@ float number_in(const Params& params, const std::string& name, float fallback, f
 //                                                   metallic, multiplying the two above
 //   ior                  float                1.5   in [1, 10], of the transmission (and of the
 //                                                   specular reflection without `specular`)
+//   abbe                 float                -     in [5, 1000]: Abbe number V_d of the
+//                                                   transmission's dispersion around n_d = ior
 //   specular             float                -     in [0, 1]: a dielectric's reflectance at
 //                                                   normal incidence is 0.08 specular (0.5 gives
 //                                                   0.04, i.e. ior 1.5); when given it wins
@@ -126,6 +139,9 @@ std::unique_ptr<Material> make_principled_material(const Params& params, Texture
         in.packed_metallic = FloatInput::channel(packed, 2, 0.0f, 1.0f);
     }
     in.ior = number_in(params, "ior", 1.5f, 1.0f, 10.0f);
+    if (params.has("abbe"))
+        in.dispersion = spectral::DispersiveIor::from_abbe(
+            in.ior, number_in(params, "abbe", 64.0f, 5.0f, 1000.0f));
     in.specular_eta = in.ior;
     if (params.has("specular"))
         in.specular_eta = eta_from_f0(0.08f * number_in(params, "specular", 0.5f, 0.0f, 1.0f));

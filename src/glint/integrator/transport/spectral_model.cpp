@@ -1,114 +1,103 @@
 #include <glint/integrator/transport/spectral_model.h>
+#include <glint/spectral/cie.h>
+#include <glint/spectral/illuminants.h>
+#include <glint/spectral/rgb_uplift.h>
 
 #include <array>
+#include <bit>
 #include <cmath>
 
 namespace glint {
 
 namespace {
 
-// A stand-in until the spectral data module's tables land: the CIE 1931 2° observer by
-// the multi-lobe Gaussian fit of Wyman, Sloan and Shirley (JCGT 2013, their eq. 2), within
-// about 1 % of the tabulated functions.
-double lobe(double nm, double mean, double sigma_below, double sigma_above) {
-    const double t = (nm - mean) / (nm < mean ? sigma_below : sigma_above);
-    return std::exp(-0.5 * t * t);
+using Values = SpectralModel::Values;
+
+// D65 at luminance 1: the shape of an illuminant Rgb's spectrum (rgb_uplift.h).
+float d65(float nm) {
+    static const spectral::TabulatedSpectrum* const table = spectral::named_illuminant("D65");
+    return table->eval(nm);
 }
 
-Rgb observer_xyz_to_rec709(double nm) {
-    const double x = 1.056 * lobe(nm, 599.8, 37.9, 31.0) + 0.362 * lobe(nm, 442.0, 16.0, 26.7) -
-                     0.065 * lobe(nm, 501.1, 20.4, 26.2);
-    const double y = 0.821 * lobe(nm, 568.8, 46.9, 40.5) + 0.286 * lobe(nm, 530.9, 16.3, 31.1);
-    const double z = 1.217 * lobe(nm, 437.0, 11.8, 36.0) + 0.681 * lobe(nm, 459.0, 26.0, 13.8);
-    // CIE XYZ to linear Rec.709 (IEC 61966-2-1).
-    return {static_cast<float>(3.2404542 * x - 1.5371385 * y - 0.4985314 * z),
-            static_cast<float>(-0.9692660 * x + 1.8760108 * y + 0.0415560 * z),
-            static_cast<float>(0.0556434 * x - 0.2040259 * y + 1.0572252 * z)};
-}
-
-// The white of an illuminant Rgb (1, 1, 1): a black body at D65's correlated colour
-// temperature, 6504 K, normalised to 1 at 560 nm; its small tint from D65 is removed by
-// the observer's normalisation below.
-float white_illuminant(float nm) {
-    auto planck = [](double lambda_nm) {
-        const double l = lambda_nm * 1e-9;
-        return 1.0 / (l * l * l * l * l * (std::exp(1.4387769e-2 / (l * 6504.0)) - 1.0));
-    };
-    return static_cast<float>(planck(nm) / planck(560.0));
-}
-
-// Three smooth bands that sum to 1 at every wavelength: blue below ~490 nm, red above
-// ~585 nm, green between. A colour is the mix of them whose film colour under the white
-// illuminant is that colour (a 3×3 solve), so the round trip is exact and white is 1.
-std::array<float, 3> bands(float nm) {
-    auto rise = [](float x) { return 1.0f / (1.0f + std::exp(-x)); };
-    const float blue = 1.0f - rise((nm - 490.0f) / 12.0f);
-    const float red = rise((nm - 585.0f) / 12.0f);
-    return {red, 1.0f - red - blue, blue};
-}
-
-constexpr float kMin = 360.0f, kMax = 830.0f;
-
-struct Calibration {
-    std::array<float, 3> white;                 // ∫ W(λ) observer(λ) dλ per channel
-    std::array<std::array<float, 3>, 3> solve;  // band weights from an Rgb
+// What a colour stands for in a role, found once: scale · S(polynomial(λ)), times D65 for
+// an illuminant (the roles of spectral::uplifted_rgb).
+struct UpliftedColour {
+    spectral::SigmoidPolynomial polynomial;
+    float scale = 0.0f;
 };
 
-Calibration calibrate() {
-    Calibration c{};
-    std::array<std::array<double, 3>, 3> a{};  // a[channel][band]
-    std::array<double, 3> white{};
-    for (float nm = kMin; nm <= kMax; nm += 0.5f) {
-        const Rgb o = observer_xyz_to_rec709(nm);
-        const double w = white_illuminant(nm) * 0.5;
-        const std::array<float, 3> b = bands(nm);
-        for (int ch = 0; ch < 3; ++ch) {
-            white[ch] += w * o[ch];
-            for (int k = 0; k < 3; ++k) a[ch][k] += w * o[ch] * b[k];
-        }
-    }
-    for (int ch = 0; ch < 3; ++ch) {
-        c.white[ch] = static_cast<float>(white[ch]);
-        for (int k = 0; k < 3; ++k) a[ch][k] /= white[ch];
-    }
-    // The inverse of a by cofactors.
-    const double det = a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) -
-                       a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
-                       a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            const int i1 = (j + 1) % 3, i2 = (j + 2) % 3, j1 = (i + 1) % 3, j2 = (i + 2) % 3;
-            c.solve[i][j] =
-                static_cast<float>((a[i1][j1] * a[i2][j2] - a[i1][j2] * a[i2][j1]) / det);
-        }
-    }
-    return c;
+UpliftedColour find_uplift(const Rgb& rgb, RgbRole role) {
+    if (role == RgbRole::reflectance) return {spectral::uplift_coefficients(rgb), 1.0f};
+    // A scale times a spectrum in [0, 1] whose brightest channel is ½.
+    const float scale = 2.0f * std::max(rgb.max_value(), 0.0f);
+    if (!(scale > 0.0f)) return {};
+    return {spectral::uplift_coefficients(rgb / scale), scale};
 }
 
-const Calibration& calibration() {
-    static const Calibration c = calibrate();
-    return c;
+// Finding a colour's polynomial takes a table lookup and Gauss–Newton steps (about a
+// microsecond); a path reads the same few colours (its materials' constants, its lights) at
+// every bounce. A small direct-mapped cache per thread keeps them; a texture's many texels
+// replace each other in it.
+struct UpliftCache {
+    static constexpr int kSize = 256;
+    struct Entry {
+        Rgb rgb{-1.0f};
+        RgbRole role = RgbRole::reflectance;
+        UpliftedColour colour;
+    };
+    std::array<Entry, kSize> entries;
+
+    const UpliftedColour& get(const Rgb& rgb, RgbRole role) {
+        uint32_t h = std::bit_cast<uint32_t>(rgb.r) * 0x9e3779b1u;
+        h ^= std::bit_cast<uint32_t>(rgb.g) * 0x85ebca77u;
+        h ^= std::bit_cast<uint32_t>(rgb.b) * 0xc2b2ae3du;
+        h ^= static_cast<uint32_t>(role) * 0x27d4eb2fu;
+        Entry& e = entries[(h ^ (h >> 15)) % kSize];
+        if (!(e.rgb == rgb) || e.role != role) {
+            e.rgb = rgb;
+            e.role = role;
+            e.colour = find_uplift(rgb, role);
+        }
+        return e.colour;
+    }
+};
+
+Values uplift_values(const Rgb& rgb, RgbRole role, const Values& nm) {
+    thread_local UpliftCache cache;
+    const UpliftedColour& c = cache.get(rgb, role);
+    Values v{};
+    if (c.scale == 0.0f) return v;
+    for (size_t i = 0; i < v.size(); ++i) {
+        v[i] = c.scale * c.polynomial.eval(nm[i]);
+        if (role == RgbRole::illuminant) v[i] *= d65(nm[i]);
+    }
+    return v;
 }
 
-float uplift_value(const Rgb& rgb, RgbRole role, float nm) {
-    const Calibration& c = calibration();
-    const std::array<float, 3> b = bands(nm);
-    float value = 0.0f;
-    for (int k = 0; k < 3; ++k) {
-        const float weight = c.solve[k][0] * rgb.r + c.solve[k][1] * rgb.g + c.solve[k][2] * rgb.b;
-        value += weight * b[k];
+Rgb observer_rec709(double nm) {
+    return spectral::xyz_to_rec709(spectral::cie_xyz(nm));
+}
+
+// ∫ observer(λ) · white(λ) dλ per channel, for the white emitter (1, 1, 1): the film divides
+// by it so that white light is exactly (1, 1, 1). Midpoint rule at 0.05 nm, finer than the
+// tables' 5 nm steps between which everything is linear.
+std::array<double, 3> white_response() {
+    constexpr double step = 0.05;
+    std::array<double, 3> sum{};
+    for (double nm = 360.0 + 0.5 * step; nm < 830.0; nm += step) {
+        const Rgb o = observer_rec709(nm);
+        // The white emitter's spectrum is D65 itself (a constant ½ scaled by 2, times D65).
+        const double w = d65(static_cast<float>(nm)) * step;
+        for (int c = 0; c < 3; ++c) sum[c] += w * o[c];
     }
-    // Saturated colours near the gamut's edge ask for slightly negative bands.
-    value = std::max(value, 0.0f);
-    if (role == RgbRole::reflectance) value = std::min(value, 1.0f);
-    if (role == RgbRole::illuminant) value *= white_illuminant(nm);
-    return value;
+    return sum;
 }
 
 Rgb observer(float nm) {
-    const Calibration& c = calibration();
-    const Rgb o = observer_xyz_to_rec709(nm);
-    return {o.r / c.white[0], o.g / c.white[1], o.b / c.white[2]};
+    static const std::array<double, 3> white = white_response();
+    const Rgb o = observer_rec709(nm);
+    return {static_cast<float>(o.r / white[0]), static_cast<float>(o.g / white[1]),
+            static_cast<float>(o.b / white[2])};
 }
 
 uint64_t mix(uint64_t z) {
@@ -120,7 +109,7 @@ uint64_t mix(uint64_t z) {
 }  // namespace
 
 const SpectralModel& spectral_model() {
-    static const SpectralModel model{&uplift_value, &observer};
+    static const SpectralModel model{&uplift_values, &observer};
     return model;
 }
 

@@ -171,7 +171,7 @@ bool is_supported_extension(const std::string& name) {
         "KHR_materials_specular",     "KHR_materials_ior",
         "KHR_materials_transmission", "KHR_materials_volume",
         "KHR_materials_clearcoat",    "KHR_materials_sheen",
-        "KHR_texture_transform"};
+        "KHR_materials_dispersion",   "KHR_texture_transform"};
     return supported.count(name) > 0;
 }
 
@@ -779,6 +779,14 @@ private:
                 warn(fmt::format("{}: {}.{} is ignored (its factor is used)", where, name, key));
     }
 
+    // KHR_materials_dispersion: `dispersion` is 20 / V_d (0: none), the Abbe number of the
+    // transmission around n_d = ior; the principled material's `abbe` takes V_d.
+    void read_dispersion(const tinygltf::Material& m, Params& params, const std::string& where) {
+        const tinygltf::Value* ext = extension(m, "KHR_materials_dispersion");
+        const double dispersion = number(ext, "dispersion", 0.0, 0.0, 4.0, where);
+        if (dispersion > 0.0) params.set("abbe", std::max(20.0 / dispersion, 5.0));
+    }
+
     // KHR_materials_specular and _ior: a dielectric's reflectance at normal incidence is
     // F0 = min(((ior - 1) / (ior + 1))^2 specularColor, 1) specular. glint's `specular`
     // gives F0 = 0.08 specular (a grey F0 up to 0.08); `ior` stays the transmission's.
@@ -792,6 +800,7 @@ private:
             ior = 1.0;
         }
         if (ior_ext != nullptr) params.set("ior", ior);
+        read_dispersion(m, params, where);
         const tinygltf::Value* ext = extension(m, "KHR_materials_specular");
         if (ext == nullptr) return;
         const double factor = number(ext, "specularFactor", 1.0, 0.0, 1.0, where);
@@ -1027,7 +1036,8 @@ private:
         const std::string where = fmt::format("{}: light {}", origin(), light_index);
         Vec3 colour(1.0f);
         if (light.color.size() == 3) colour = Vec3(light.color[0], light.color[1], light.color[2]);
-        const Vec3 power = colour * static_cast<float>(light.intensity) * m_target.light_scale.value_or(kWattsPerLumen);
+        const Vec3 power = colour * static_cast<float>(light.intensity) *
+                           m_target.light_scale.value_or(kWattsPerLumen);
         const Vec3 position(world * glm::vec4(0, 0, 0, 1));
         const Vec3 direction = glm::normalize(Vec3(world * glm::vec4(0, 0, -1, 0)));
         Params params;
