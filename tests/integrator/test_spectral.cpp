@@ -166,16 +166,17 @@ TEST(SpectralModel, ReflectancesStayAtMostOne) {
 }
 
 // Colours of the sRGB cube come back as themselves under the white light, through the
-// model the film uses (the data module's own test checks its 5 nm sums; this one the
-// continuous integral that the film's estimate converges to).
+// model the film uses. The data module fits its polynomials to 5 nm sums (its own test holds
+// them to 1e-5 there); the film's estimate converges to the continuous integral, which
+// differs from those sums by up to 1.1e-3 at the gamut's edge (measured: r = 0 and 1).
 TEST(SpectralModel, ReflectanceRoundTrip) {
     for (float r = 0.0f; r <= 1.01f; r += 0.25f) {
         for (float g = 0.0f; g <= 1.01f; g += 0.25f) {
             for (float b = 0.0f; b <= 1.01f; b += 0.25f) {
                 const Rgb back = film_colour_of(Rgb(r, g, b), RgbRole::reflectance);
-                EXPECT_NEAR(back.r, r, 1e-3f);
-                EXPECT_NEAR(back.g, g, 1e-3f);
-                EXPECT_NEAR(back.b, b, 1e-3f);
+                EXPECT_NEAR(back.r, r, 2e-3f);
+                EXPECT_NEAR(back.g, g, 2e-3f);
+                EXPECT_NEAR(back.b, b, 2e-3f);
             }
         }
     }
@@ -207,8 +208,8 @@ TEST(SpectralModel, FilmEstimateIsUnbiased) {
 
 // The white furnace in spectral mode, as in test_every_integrator.cpp: the inner sphere of
 // reflectance 1 disappears in the emitter's white, now carried as four wavelengths per path
-// (per iteration in vcm, per pass in sppm). Four standard errors over six seeds, plus vcm's
-// kernel bias.
+// (per iteration in vcm, per pass in sppm, stratified over them). Four standard errors over
+// six seeds, plus vcm's kernel bias; the bound must see a 3 % bias.
 class SpectralFurnace : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpectralFurnace, InnerSphereDisappears) {
@@ -216,7 +217,7 @@ TEST_P(SpectralFurnace, InnerSphereDisappears) {
     const std::string extra = name == "vcm"    ? ", vcm_radius = 0.05"
                               : name == "sppm" ? ", photons = 5000"
                                                : "";
-    const int spp = name == "path" ? 64 : 32;
+    const int spp = name == "sppm" ? 48 : 64;
     auto scene = [&](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
@@ -232,7 +233,7 @@ TEST_P(SpectralFurnace, InnerSphereDisappears) {
     const double bias = name == "vcm" ? 0.003 : 0.0;
     for (int c = 0; c < 3; ++c) {
         const Estimate e = image_mean(scene, 6, c);
-        EXPECT_LT(4.0 * e.se, 0.02 * 2.0) << "channel " << c;
+        EXPECT_LT(4.0 * e.se, 0.03 * 2.0) << "channel " << c;
         EXPECT_NEAR(e.mean, 2.0, 4.0 * e.se + (bias + 2e-3) * 2.0) << "channel " << c;
     }
 }
@@ -272,8 +273,7 @@ Vec3 refracted_direction(const Scene& scene, Ray ray, int refractions) {
         if (!scene.intersect(ray, si)) return Vec3(0.0f);
         const Bsdf* bsdf = shade(scene, ray, si, arena);
         // u_lobe near 1 picks refraction over Fresnel reflection.
-        const std::optional<BsdfSample> s =
-            bsdf->sample(si.to_local(si.wo), Vec2(0.5f), 0.9999f);
+        const std::optional<BsdfSample> s = bsdf->sample(si.to_local(si.wo), Vec2(0.5f), 0.9999f);
         if (!s || !s->is_transmission()) return Vec3(0.0f);
         ray = spawn_ray(si, si.to_world(s->wi));
     }
@@ -305,7 +305,8 @@ TEST(SpectralDispersion, SphereExitAnglesFollowSnellWithSellmeier) {
         const Vec3 out = refracted_direction(*built.scene, ray, 2);
         ASSERT_NE(out, Vec3(0.0f)) << nm << " nm";
         // The ray bends towards the axis (-y) after passing above the centre.
-        const double deviation = std::atan2(-static_cast<double>(out.y), -static_cast<double>(out.z));
+        const double deviation =
+            std::atan2(-static_cast<double>(out.y), -static_cast<double>(out.z));
         EXPECT_NEAR(deviation, sphere_deviation(b, bk7_index(nm)), 2e-5) << nm << " nm";
         EXPECT_GT(deviation, previous) << "shorter wavelengths bend more";
         previous = deviation;
@@ -327,11 +328,13 @@ TEST(SpectralDispersion, HeroOnlyKeepsTheFilmEstimate) {
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(hero[c], expected[c], 1e-5f * std::abs(expected[c]));
 }
 
-// Spectral against RGB on the Cornell box (path, 32 x 32): image means per channel. They
-// differ where light bounces between coloured walls: RGB multiplies the three channels'
-// reflectances, spectral mode multiplies spectra, whose product's colour is not the product
-// of the colours. The bound is that difference (measured: see docs/spectral.md) with the
-// noise of the two renders on top.
+// Spectral against RGB on the Cornell box (path, 32 x 32, 32 spp, four seeds each). Its light
+// is a saturated orange, (17, 12, 4): RGB multiplies that colour by the walls' colours
+// channel by channel, spectral mode multiplies their spectra, and the colour of a product of
+// spectra is not the product of the colours. Measured (docs/spectral.md): luminance 1.6 %
+// lower in spectral mode, red 7.9 % lower, green 0.8 % higher, blue 16 % higher (blue is the
+// smallest channel, 0.036, and the one the orange light's spectrum leaks most into). Held:
+// the luminance within 3 %, each channel within 20 %, plus four standard errors of the two.
 TEST(SpectralCornell, MeansAgreeWithRgbWithinAFewPercent) {
     auto scene = [](bool spectral) {
         return [spectral](int seed) {
@@ -341,16 +344,24 @@ TEST(SpectralCornell, MeansAgreeWithRgbWithinAFewPercent) {
                             spectral ? "true" : "false"));
         };
     };
+    const double weights[3] = {0.2126, 0.7152, 0.0722};
+    double luminance_rgb = 0.0, luminance_spectral = 0.0, luminance_error = 0.0;
     for (int c = 0; c < 3; ++c) {
         const Estimate rgb = image_mean(scene(false), 4, c);
         const Estimate spectral = image_mean(scene(true), 4, c);
         const double noise = 4.0 * std::sqrt(rgb.se * rgb.se + spectral.se * spectral.se);
-        EXPECT_NEAR(spectral.mean, rgb.mean, 0.04 * rgb.mean + noise)
+        EXPECT_NEAR(spectral.mean, rgb.mean, 0.2 * rgb.mean + noise)
             << "channel " << c << ": rgb " << rgb.mean << ", spectral " << spectral.mean;
-        RecordProperty(fmt::format("channel{}_ratio", c), fmt::format("{:.4f}", spectral.mean / rgb.mean));
         std::printf("channel %d: rgb %.5f ± %.5f, spectral %.5f ± %.5f, ratio %.4f\n", c, rgb.mean,
                     rgb.se, spectral.mean, spectral.se, spectral.mean / rgb.mean);
+        luminance_rgb += weights[c] * rgb.mean;
+        luminance_spectral += weights[c] * spectral.mean;
+        // Channels of one render are correlated; adding their errors bounds the sum's.
+        luminance_error += weights[c] * (rgb.se + spectral.se);
     }
+    std::printf("luminance: rgb %.5f, spectral %.5f, ratio %.4f\n", luminance_rgb,
+                luminance_spectral, luminance_spectral / luminance_rgb);
+    EXPECT_NEAR(luminance_spectral, luminance_rgb, 0.03 * luminance_rgb + 4.0 * luminance_error);
 }
 
 // Same seed, same bits for one and two threads, in spectral mode: the wavelengths are keyed

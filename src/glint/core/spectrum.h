@@ -179,12 +179,8 @@ public:
                std::isfinite(m_v[3]);
     }
     bool is_non_negative() const { return min_value() >= 0.0f; }
-    float max_value() const {
-        return std::max(std::max(m_v[0], m_v[1]), std::max(m_v[2], m_v[3]));
-    }
-    float min_value() const {
-        return std::min(std::min(m_v[0], m_v[1]), std::min(m_v[2], m_v[3]));
-    }
+    float max_value() const { return std::max(std::max(m_v[0], m_v[1]), std::max(m_v[2], m_v[3])); }
+    float min_value() const { return std::min(std::min(m_v[0], m_v[1]), std::min(m_v[2], m_v[3])); }
     float average() const {
         if (spectral_mode_active()) return (m_v[0] + m_v[1] + m_v[2] + m_v[3]) / 4.0f;
         return (m_v[0] + m_v[1] + m_v[2]) / 3.0f;

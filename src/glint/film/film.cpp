@@ -127,7 +127,8 @@ void Film::accumulate_aov(AovPixel& a, float weight, const AovSample& aov) {
 
 void Film::add_splats(std::span<const Splat> splats) {
     for (const Splat& splat : splats) {
-        if (!splat.rgb.is_finite() || !std::isfinite(splat.film.x) || !std::isfinite(splat.film.y)) {
+        if (!splat.rgb.is_finite() || !std::isfinite(splat.film.x) ||
+            !std::isfinite(splat.film.y)) {
             ++m_non_finite_splats;
             continue;
         }

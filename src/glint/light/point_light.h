@@ -18,7 +18,9 @@ public:
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                            float u_select) const override;
     EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
-    Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override { return m_intensity.spectrum(); }
+    Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override {
+        return m_intensity.spectrum();
+    }
     bool is_delta() const override { return true; }
 
 private:
@@ -72,7 +74,9 @@ public:
     Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override {
         return Spectrum(0.0f);
     }
-    Spectrum power() const override { return m_irradiance.spectrum() * (kPi * m_radius * m_radius); }
+    Spectrum power() const override {
+        return m_irradiance.spectrum() * (kPi * m_radius * m_radius);
+    }
     bool is_delta() const override { return true; }
     bool is_delta_direction() const override { return true; }
 

@@ -36,7 +36,7 @@ struct RenderSettings {
     // Spectral mode: paths carry four wavelengths (hero wavelength sampling) instead of RGB,
     // the film turns them into colour (integrator/transport/spectral_model.h).
     bool spectral = false;
-    bool denoise = false;             // also write NAME.denoised.EXT
+    bool denoise = false;  // also write NAME.denoised.EXT
     // Which denoiser: "network" (OIDN's trained U-Net, denoise/network_denoiser.h) or "nlm"
     // (glint's non-local means filter, film/denoise.h).
     std::string denoiser = "network";

@@ -3,9 +3,9 @@
 #include <glint/core/rng.h>
 #include <glint/integrator/bidirectional/light_tracer.h>
 #include <glint/integrator/transport/camera_connection.h>
-#include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/light_path_start.h>
 #include <glint/integrator/transport/roulette.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 
 #include <fmt/format.h>

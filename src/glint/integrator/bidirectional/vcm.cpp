@@ -184,10 +184,8 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
 
 // Spectral mode: every path of an iteration carries the same wavelengths, since each camera
 // subpath joins light vertices traced by other threads and merges with many of them; the
-// iterations' wavelengths differ, so the image still integrates over the spectrum.
-uint64_t VcmIntegrator::iteration_wavelength_key(int iteration) const {
-    return hash_combine(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint64_t>(iteration));
-}
+// iterations' wavelengths differ and stratify the spectrum (pass_wavelengths), so the image
+// still integrates over it.
 
 // The light subpaths of one chunk, and their joins to the lens (t = 1). Light subpath i draws
 // from the light sampler at (pixel (i mod width, i div width), iteration) -- rows past the
@@ -201,7 +199,10 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
     const size_t begin = static_cast<size_t>(chunk) * kChunkPaths;
     const size_t end = std::min(n_light, begin + kChunkPaths);
     const int max_depth = m_settings.max_depth;
-    const PathWavelengths wavelengths(m_settings.spectral, iteration_wavelength_key(it.index));
+    const WavelengthContext iteration_wavelengths =
+        pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));
+    std::optional<WavelengthScope> wavelengths;
+    if (m_settings.spectral) wavelengths.emplace(iteration_wavelengths);
     auto sampler = it.light_sampler->clone();
     Arena& arena = it.arenas[chunk];
     arena.reset();  // the BSDFs of this chunk's subpaths live until the camera pass is done
@@ -242,7 +243,10 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
     const int x1 = std::min(x0 + kTileSize, film.width());
     const int y1 = std::min(y0 + kTileSize, film.height());
     const int max_depth = m_settings.max_depth;
-    const PathWavelengths wavelengths(m_settings.spectral, iteration_wavelength_key(it.index));
+    const WavelengthContext iteration_wavelengths =
+        pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));
+    std::optional<WavelengthScope> wavelengths;
+    if (m_settings.spectral) wavelengths.emplace(iteration_wavelengths);
     auto sampler = it.camera_sampler->clone();
     HashGrid::Cache cache;  // a tile's camera vertices are near each other
     Arena arena;

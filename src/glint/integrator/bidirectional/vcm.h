@@ -64,7 +64,6 @@ private:
     struct Iteration;
     void trace_light_chunk(const Scene& scene, const Film& film, Iteration& it, int chunk) const;
     void render_tile(const Scene& scene, Film& film, const Iteration& it, int tile) const;
-    uint64_t iteration_wavelength_key(int iteration) const;
 
     RenderSettings m_settings;
     VcmSettings m_vcm;

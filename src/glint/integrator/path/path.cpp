@@ -179,7 +179,8 @@ TileIntegrator::PixelMoments PathIntegrator::render_pixel(const Scene& scene, Fi
                                                           int count) const {
     // A thread follows one path at a time in spectral mode (its wavelengths are the thread's
     // while it lives): the plain loop of li().
-    if (m_settings.spectral) return TileIntegrator::render_pixel(scene, film, pixel, worker, first, count);
+    if (m_settings.spectral)
+        return TileIntegrator::render_pixel(scene, film, pixel, worker, first, count);
     auto& packet_worker = static_cast<PacketWorker&>(worker);
     auto lane_sampler = [&](int lane) -> Sampler& {
         return lane == 0 ? *worker.sampler : *packet_worker.lane_samplers[lane];

@@ -7,9 +7,9 @@
 // Glass branches in two at every hit, so a closed glass object would cost 2^max_depth rays per
 // camera sample: each camera sample may trace kWhittedRayBudget rays through mirrors and glass,
 // after which every hit follows its strongest lobe only (see whitted.cpp).
-#include <glint/integrator/tile/tile_integrator.h>
 #include <glint/integrator/photon/photon.h>
 #include <glint/integrator/photon/photon_map.h>
+#include <glint/integrator/tile/tile_integrator.h>
 
 namespace glint {
 

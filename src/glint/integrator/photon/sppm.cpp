@@ -152,11 +152,12 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
 
     for (int pass = 0; pass < passes; ++pass) {
         // Spectral mode: the camera points and the photons of a pass carry the same
-        // wavelengths (a photon's flux is read at the points it meets); each pass draws
-        // its own, and what a pass adds to a pixel is resolved to RGB before it is summed.
-        const WavelengthContext pass_wavelengths = path_wavelengths(
-            hash_combine(mix_bits(m_settings.seed ^ 0x59b3u), static_cast<uint64_t>(pass)));
-        const WavelengthContext* spectral = m_settings.spectral ? &pass_wavelengths : nullptr;
+        // wavelengths (a photon's flux is read at the points it meets); the passes'
+        // wavelengths stratify the spectrum (pass_wavelengths), and what a pass adds to a pixel is
+        // resolved to RGB before it is summed.
+        const WavelengthContext this_pass =
+            pass_wavelengths(mix_bits(m_settings.seed ^ 0x59b3u), static_cast<uint32_t>(pass));
+        const WavelengthContext* spectral = m_settings.spectral ? &this_pass : nullptr;
         tracer.use_wavelengths(spectral);
 
         // 1. Visible points, one per pixel, keyed by (seed, pixel, pass).

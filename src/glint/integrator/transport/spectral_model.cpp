@@ -106,6 +106,13 @@ uint64_t mix(uint64_t z) {
     return z ^ (z >> 31);
 }
 
+// A uniform number in [0, 1) from `key`; a salt keeps this draw apart from every other use
+// of the same key.
+float key_to_unit(uint64_t key) {
+    const uint64_t bits = mix(key ^ 0x5eec7a1c0ffee123ULL);
+    return static_cast<float>(bits >> 40) * 0x1p-24f;
+}
+
 }  // namespace
 
 const SpectralModel& spectral_model() {
@@ -114,9 +121,20 @@ const SpectralModel& spectral_model() {
 }
 
 WavelengthContext path_wavelengths(uint64_t key) {
-    // A salt keeps this draw apart from every other use of the same key.
-    const uint64_t bits = mix(key ^ 0x5eec7a1c0ffee123ULL);
-    const float u = static_cast<float>(bits >> 40) * 0x1p-24f;
+    return {SampledWavelengths::sample_visible(key_to_unit(key)), &spectral_model()};
+}
+
+WavelengthContext pass_wavelengths(uint64_t key, uint32_t index) {
+    // Van der Corput: the bits of the index mirrored about the binary point.
+    uint32_t bits = index;
+    bits = (bits << 16) | (bits >> 16);
+    bits = ((bits & 0x00ff00ffu) << 8) | ((bits & 0xff00ff00u) >> 8);
+    bits = ((bits & 0x0f0f0f0fu) << 4) | ((bits & 0xf0f0f0f0u) >> 4);
+    bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
+    bits = ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
+    const float radical_inverse = static_cast<float>(bits >> 8) * 0x1p-24f;
+    float u = key_to_unit(key) + 0.25f * radical_inverse;
+    if (u >= 1.0f) u -= 1.0f;
     return {SampledWavelengths::sample_visible(u), &spectral_model()};
 }
 

@@ -21,6 +21,13 @@ const SpectralModel& spectral_model();
 /// dimensions, and so RGB mode's images, are untouched.
 WavelengthContext path_wavelengths(uint64_t key);
 
+/// The wavelengths of pass `index` of a progressive method whose passes each share one set
+/// (vcm's iterations, sppm's passes): a random offset from `key`, plus the radical inverse
+/// of the index spread over a quarter of the unit interval, so that the passes' hero draws,
+/// with their rotated lanes, fill the visible range evenly. With the few passes such a
+/// method takes, independent draws would leave the whole image's colour noisy.
+WavelengthContext pass_wavelengths(uint64_t key, uint32_t index);
+
 }  // namespace glint
 
 namespace glint {
