@@ -302,6 +302,7 @@ TEST(SpectralDispersion, SphereExitAnglesFollowSnellWithSellmeier) {
         WavelengthContext context = path_wavelengths(0);
         context.lambda.nm = {nm, nm, nm, nm};
         const WavelengthScope scope(context);
+        const SecondaryWavelengthsScope fresh;  // the glass ends the other wavelengths
         const Vec3 out = refracted_direction(*built.scene, ray, 2);
         ASSERT_NE(out, Vec3(0.0f)) << nm << " nm";
         // The ray bends towards the axis (-y) after passing above the centre.
@@ -316,16 +317,34 @@ TEST(SpectralDispersion, SphereExitAnglesFollowSnellWithSellmeier) {
     EXPECT_NEAR(std::atan2(-out.y, -out.z), sphere_deviation(b, bk7_index(587.56)), 2e-5);
 }
 
-// A dispersive event leaves the hero wavelength alone, carrying the whole estimate.
-TEST(SpectralDispersion, HeroOnlyKeepsTheFilmEstimate) {
-    const WavelengthContext context = path_wavelengths(3);
-    const WavelengthScope scope(context);
+// After a dispersive event the film reads the path at its hero alone: the single-wavelength
+// estimate, not a quarter of it. Both ways a path says so: its state (the glass set it), and
+// a value whose other wavelengths are 0 (a light path's, met by another path).
+TEST(SpectralDispersion, TerminatedPathsAreReadAtTheHeroAlone) {
+    const PathWavelengths path(true, 3);
+    const SampledWavelengths& lambda = *active_wavelengths();
     const Spectrum s = uplift(Rgb(0.5f), RgbRole::unbounded);
-    const Rgb hero = to_rgb(s.hero_only());
-    const Rgb expected =
-        spectral_model().observer(context.lambda.nm[0]) *
-        (uplift_at(Rgb(0.5f), RgbRole::unbounded, context.lambda.nm[0]) / context.lambda.pdf[0]);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(hero[c], expected[c], 1e-5f * std::abs(expected[c]));
+    const Rgb expected = spectral_model().observer(lambda.nm[0]) *
+                         (uplift_at(Rgb(0.5f), RgbRole::unbounded, lambda.nm[0]) / lambda.pdf[0]);
+    const Rgb from_value = to_rgb(s.hero_only() / static_cast<float>(Spectrum::kValues));
+    EXPECT_FALSE(secondary_wavelengths_terminated());
+    terminate_secondary_wavelengths();
+    const Rgb from_state = to_rgb(s);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(from_value[c], expected[c], 1e-5f * std::abs(expected[c]));
+        EXPECT_NEAR(from_state[c], expected[c], 1e-5f * std::abs(expected[c]));
+    }
+}
+
+// Each path starts with all four wavelengths, whatever the one before went through.
+TEST(SpectralDispersion, EachPathStartsWithFourWavelengths) {
+    {
+        const PathWavelengths first(true, 1);
+        terminate_secondary_wavelengths();
+        EXPECT_TRUE(secondary_wavelengths_terminated());
+    }
+    const PathWavelengths second(true, 2);
+    EXPECT_FALSE(secondary_wavelengths_terminated());
 }
 
 // Spectral against RGB on the Cornell box (path, 32 x 32, 32 spp, four seeds each). Its light

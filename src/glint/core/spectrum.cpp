@@ -1,3 +1,4 @@
+#include <glint/core/secondary_wavelengths.h>
 #include <glint/core/spectrum.h>
 
 #include <cmath>
@@ -35,6 +36,23 @@ float sample_visible_wavelength(float u) {
 }
 }  // namespace
 
+namespace {
+thread_local bool t_secondary_terminated = false;
+}  // namespace
+
+void terminate_secondary_wavelengths() {
+    t_secondary_terminated = true;
+}
+bool secondary_wavelengths_terminated() {
+    return t_secondary_terminated;
+}
+SecondaryWavelengthsScope::SecondaryWavelengthsScope() : m_previous(t_secondary_terminated) {
+    t_secondary_terminated = false;
+}
+SecondaryWavelengthsScope::~SecondaryWavelengthsScope() {
+    t_secondary_terminated = m_previous;
+}
+
 SampledWavelengths SampledWavelengths::sample_visible(float u) {
     SampledWavelengths w;
     for (int i = 0; i < kCount; ++i) {
@@ -55,10 +73,15 @@ Spectrum uplift_at_wavelengths(const Rgb& rgb, RgbRole role, const WavelengthCon
 }
 
 // The film's colour is ∫ L(λ) o(λ) dλ with o the model's observer; each wavelength, drawn
-// by pdf, gives the estimate L(λ_i) o(λ_i) / pdf(λ_i), and the path's four are averaged
-// (after a dispersive event the hero's value holds the whole estimate: hero_only()).
+// by pdf, gives the estimate L(λ_i) o(λ_i) / pdf(λ_i), and the path's four are averaged.
+// After a dispersive event only the hero's estimate is valid and it stands alone (as
+// pbrt-v4's TerminateSecondary): for the current path when it went through one, and for a
+// value whose other wavelengths are exactly 0 (a light path's that did, met by another path,
+// as vcm and sppm join them; an uplifted colour is never exactly 0 at some wavelengths only).
 Rgb spectral_to_rgb(const std::array<float, Spectrum::kValues>& v, const WavelengthContext& c) {
-    constexpr int count = Spectrum::kValues;
+    const bool hero_alone =
+        secondary_wavelengths_terminated() || (v[1] == 0.0f && v[2] == 0.0f && v[3] == 0.0f);
+    const int count = hero_alone ? 1 : Spectrum::kValues;
     Rgb sum;
     for (int i = 0; i < count; ++i) {
         if (v[i] == 0.0f || c.lambda.pdf[i] <= 0.0f) continue;

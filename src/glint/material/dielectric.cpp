@@ -1,3 +1,4 @@
+#include <glint/core/secondary_wavelengths.h>
 #include <glint/material/materials.h>
 #include <glint/material/rough_dielectric.h>
 #include <glint/material/smooth_dielectric.h>
@@ -47,6 +48,7 @@ private:
     float index(const SurfaceInteraction& si) const {
         const SampledWavelengths* lambda = m_dispersion ? active_wavelengths() : nullptr;
         if (lambda == nullptr) return m_ior.eval(si);
+        terminate_secondary_wavelengths();
         return static_cast<float>(m_dispersion->eval(lambda->hero()));
     }
 

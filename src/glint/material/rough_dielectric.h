@@ -88,7 +88,12 @@ protected:
     }
 
 private:
-    Spectrum carried(float f) const { return m_hero_only ? Spectrum(f).hero_only() : Spectrum(f); }
+    // The value at the hero alone (the others 0): the film reads a path that went
+    // through here at its hero (core/secondary_wavelengths.h).
+    Spectrum carried(float f) const {
+        return m_hero_only ? Spectrum(f).hero_only() / static_cast<float>(Spectrum::kValues)
+                           : Spectrum(f);
+    }
 
     // The pair (wo, wi) mirrored so that wo is in the upper hemisphere, with the relative
     // index of the lower side and the microfacet normal that connects them.

@@ -71,7 +71,12 @@ private:
                           kBsdfTransmission | kBsdfDelta, eta};
     }
 
-    Spectrum carried(float f) const { return m_hero_only ? Spectrum(f).hero_only() : Spectrum(f); }
+    // The value at the hero alone (the others 0): the film reads a path that went
+    // through here at its hero (core/secondary_wavelengths.h).
+    Spectrum carried(float f) const {
+        return m_hero_only ? Spectrum(f).hero_only() / static_cast<float>(Spectrum::kValues)
+                           : Spectrum(f);
+    }
 
     float m_eta;
     bool m_hero_only;

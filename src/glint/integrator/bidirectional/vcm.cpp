@@ -215,6 +215,8 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
     for (size_t i = begin; i < end; ++i) {
         const Vec2i pixel(static_cast<int>(i % w), static_cast<int>(i / w));
         sampler->start_pixel_sample(pixel, it.index);
+        std::optional<SecondaryWavelengthsScope> terminated;  // this light path's
+        if (m_settings.spectral) terminated.emplace();
         std::vector<PathVertex>& light = it.light_paths[i];
         generate_light_subpath(scene, *sampler, arena, counter, it.light_limits, light);
         for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
@@ -257,6 +259,12 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
         for (int x = x0; x < x1; ++x) {
             const Vec2i pixel(x, y);
             sampler->start_pixel_sample(pixel, it.index);
+            // This camera path's. Joins with a light path that went through dispersive glass
+            // carry that path's hero alone; summed with the camera path's other joins, the
+            // film reads them at all four wavelengths: with dispersion, vcm in spectral mode
+            // is biased (docs/spectral.md).
+            std::optional<SecondaryWavelengthsScope> terminated;
+            if (m_settings.spectral) terminated.emplace();
             const FilterSample filter = m_filter->sample(sampler->get_pixel_2d());
             const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
             const Ray ray = scene.camera().sample_ray(film_point, *sampler);

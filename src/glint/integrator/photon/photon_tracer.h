@@ -6,6 +6,7 @@
 #include <glint/core/arena.h>
 #include <glint/core/cancel.h>
 #include <glint/core/rng.h>
+#include <glint/core/secondary_wavelengths.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/transport/light_path_start.h>
 #include <glint/integrator/transport/roulette.h>
@@ -80,6 +81,8 @@ public:
 private:
     template <typename Sink>
     void trace_one(uint64_t index, uint64_t seed, Arena& arena, Sink& sink, uint64_t& rays) const {
+        std::optional<SecondaryWavelengthsScope> terminated;  // this photon's, in spectral mode
+        if (m_wavelengths != nullptr) terminated.emplace();
         Rng rng(hash_combine(mix_bits(seed ^ 0x5bd1e995u), index));
         LightPathSamples u_start;
         u_start.u_light = rng.next_float();

@@ -176,6 +176,8 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
                 const Ray ray = scene.camera().sample_ray(film_point, *sampler);
                 const size_t i = static_cast<size_t>(y) * w + x;
                 arena.reset();
+                std::optional<SecondaryWavelengthsScope> terminated;  // this pixel's path's
+                if (spectral != nullptr) terminated.emplace();
                 if (spectral == nullptr) {
                     points[i] =
                         find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, counter);

@@ -4,6 +4,7 @@
 // An integrator in spectral mode opens a WavelengthScope over each path (camera sample,
 // light particle, photon, subpath pair) with `path_wavelengths(key)`, where the key is what
 // already names that path's random numbers, so the image is the same for any thread count.
+#include <glint/core/secondary_wavelengths.h>
 #include <glint/core/spectrum.h>
 
 #include <cstdint>
@@ -40,6 +41,7 @@ public:
         if (!spectral) return;
         m_context = path_wavelengths(key);
         m_scope.emplace(m_context);
+        m_terminated.emplace();
     }
     PathWavelengths(const PathWavelengths&) = delete;
     PathWavelengths& operator=(const PathWavelengths&) = delete;
@@ -47,6 +49,7 @@ public:
 private:
     WavelengthContext m_context;
     std::optional<WavelengthScope> m_scope;
+    std::optional<SecondaryWavelengthsScope> m_terminated;
 };
 
 }  // namespace glint
