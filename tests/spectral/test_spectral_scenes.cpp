@@ -127,7 +127,7 @@ TEST(SpectralScenes, BadValuesFailWithFileAndLine) {
         {"glint.sphere{ material = glint.conductor{ metal = 'Pt' } }",
          "unknown 'metal' 'Pt'; measured metals: 'Au', 'gold', 'Ag'"},
         {"glint.sphere{ material = glint.conductor{ metal = 'Au', preset = 'gold' } }",
-         "give one of 'metal', 'preset' or 'eta' and 'k'"},
+         "give 'metal' alone, without 'preset', 'eta' or 'k'"},
         {"glint.sphere{ material = glint.dielectric{ ior = 'flint' } }",
          "unknown 'ior' preset 'flint'; known: 'BK7', 'fused silica', 'diamond', 'water'"},
         {"glint.sphere{ material = glint.dielectric{ sellmeier_b = {1}, "

@@ -87,8 +87,11 @@ std::string measured_names() {
 //   tint        spectrum or texture 1  in [0, 1], multiplies the Fresnel reflectance
 std::unique_ptr<Material> make_conductor_material(const Params& params, TextureTable& textures) {
     const bool has_eta = params.has("eta"), has_k = params.has("k");
-    if (int(params.has("preset")) + int(params.has("metal")) + int(has_eta || has_k) > 1) {
-        params.fail("give one of 'metal', 'preset' or 'eta' and 'k'");
+    if (params.has("preset") && (has_eta || has_k)) {
+        params.fail("give either 'preset' or 'eta' and 'k', not both");
+    }
+    if (params.has("metal") && (params.has("preset") || has_eta || has_k)) {
+        params.fail("give 'metal' alone, without 'preset', 'eta' or 'k'");
     }
     if (has_eta != has_k) params.fail("give both 'eta' and 'k' (the complex index eta + i k)");
     SceneColor eta, k;
