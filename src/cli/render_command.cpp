@@ -49,6 +49,9 @@ CLI::App* add_render_command(CLI::App& app, RenderOptions& render) {
         ->add_option("--denoise-quality", render.denoise_quality,
                      "The network's size: fast, balanced (default), high")
         ->check(CLI::IsMember({"fast", "balanced", "high"}));
+    render_cmd->add_flag("--spectral", render.spectral,
+                         "Spectral mode: each path carries four wavelengths (hero wavelength "
+                         "sampling) instead of RGB; needed for dispersion");
     render_cmd->add_flag("--aovs", render.aovs,
                          "Add albedo, normal and depth channels to EXR output");
     render_cmd->add_option(

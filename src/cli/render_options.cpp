@@ -30,6 +30,7 @@ RenderSettings settings_for(const SceneDesc& desc, const RenderOptions& options)
     }
     if (!options.tonemap.empty()) table.set("tonemap", options.tonemap, "--tonemap");
     if (options.aovs) table.set("aovs", true, "--aovs");
+    if (options.spectral) table.set("spectral", true, "--spectral");
     if (options.denoise) table.set("denoise", true, "--denoise");
     if (!options.denoiser.empty()) table.set("denoiser", options.denoiser, "--denoise");
     if (!options.denoise_quality.empty())

@@ -32,6 +32,7 @@ struct RenderOptions {
     std::string intermediate;
     std::vector<std::string> debug;
     bool aovs = false;
+    bool spectral = false;
     bool quiet = false;
     bool trusted_scene = false;
     std::string script_time_limit;

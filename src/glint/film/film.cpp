@@ -134,7 +134,8 @@ void Film::accumulate_aov(AovPixel& a, float weight, const AovSample& aov) {
 
 void Film::add_splats(std::span<const Splat> splats) {
     for (const Splat& splat : splats) {
-        if (!splat.L.is_finite() || !std::isfinite(splat.film.x) || !std::isfinite(splat.film.y)) {
+        if (!splat.rgb.is_finite() || !std::isfinite(splat.film.x) ||
+            !std::isfinite(splat.film.y)) {
             ++m_non_finite_splats;
             continue;
         }
@@ -148,7 +149,7 @@ void Film::add_splats(std::span<const Splat> splats) {
         if (m_splats.empty()) m_splats.assign(3 * m_pixels.size(), 0.0);
         const std::size_t i = static_cast<std::size_t>(fy) * static_cast<std::size_t>(m_width) +
                               static_cast<std::size_t>(fx);
-        const Rgb rgb = to_rgb(splat.L);
+        const Rgb& rgb = splat.rgb;
         for (int c = 0; c < 3; ++c) m_splats[3 * i + c] += static_cast<double>(rgb[c]);
     }
 }

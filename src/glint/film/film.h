@@ -22,8 +22,13 @@ struct AovSample {
 
 /// A light path's contribution to the film (light tracing, bidirectional methods).
 struct Splat {
-    Vec2 film;   ///< film position in pixels (origin top-left, y down, as Camera::generate_ray)
-    Spectrum L;  ///< its contribution, before the film's splat scale
+    Splat() = default;
+    /// Turns L into the film's colour now, while the path's wavelengths are active (spectral
+    /// mode): splats are merged later, after the path has ended.
+    Splat(Vec2 film_position, const Spectrum& L) : film(film_position), rgb(to_rgb(L)) {}
+
+    Vec2 film;  ///< film position in pixels (origin top-left, y down, as Camera::generate_ray)
+    Rgb rgb;    ///< its contribution, before the film's splat scale
 };
 
 class Film {

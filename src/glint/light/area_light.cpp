@@ -14,7 +14,7 @@ std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
     if (!emits_towards(s.n, -wi)) return result;
     LightSample& ls = result.emplace();
     ls.wi = wi;
-    ls.L = m_radiance;
+    ls.L = m_radiance.spectrum();
     ls.pdf = s.pdf;
     ls.p = s.p;
     ls.n = s.n;
@@ -45,7 +45,7 @@ std::optional<LightEmission> AreaLight::sample_le(const Vec2& u_position, const 
     LightEmission e;
     e.ray = Ray{offset_ray_origin(s.p, n, w), w};
     e.n = n;
-    e.Le = m_radiance;
+    e.Le = m_radiance.spectrum();
     e.pdf_pos = s.pdf;
     // Each side is chosen half the time.
     e.pdf_dir = warp::cosine_hemisphere_pdf(local) * (m_two_sided ? 0.5f : 1.0f);
@@ -68,7 +68,7 @@ EmissionPdf AreaLight::pdf_le(const Ray& ray, const Vec3& n) const {
 }
 
 Spectrum AreaLight::power() const {
-    return m_radiance * (kPi * m_shape->area() * (m_two_sided ? 2.0f : 1.0f));
+    return m_radiance.spectrum() * (kPi * m_shape->area() * (m_two_sided ? 2.0f : 1.0f));
 }
 
 // A surface emits over the hemisphere about each normal (pi / 2 past it), on both sides of

@@ -9,7 +9,7 @@ namespace glint {
 
 class AreaLight final : public Light {
 public:
-    AreaLight(std::unique_ptr<ShapeSampler> shape, const Spectrum& radiance, bool two_sided)
+    AreaLight(std::unique_ptr<ShapeSampler> shape, const SceneColor& radiance, bool two_sided)
         : m_shape(std::move(shape)),
           m_radiance(radiance),
           m_two_sided(two_sided),
@@ -33,7 +33,7 @@ public:
 
     // Radiance leaving a surface point with normal `n` towards `w`.
     Spectrum radiance_towards(const Vec3& n, const Vec3& w) const {
-        return emits_towards(n, w) ? m_radiance : Spectrum(0.0f);
+        return emits_towards(n, w) ? m_radiance.spectrum() : Spectrum(0.0f);
     }
     // Whether radiance_towards(n, w) is non-zero, without building the spectrum.
     bool emits_towards(const Vec3& n, const Vec3& w) const {
@@ -42,7 +42,7 @@ public:
 
 private:
     std::unique_ptr<ShapeSampler> m_shape;
-    Spectrum m_radiance;
+    SceneColor m_radiance;
     bool m_two_sided;
     bool m_dark;  // zero radiance: emits nothing anywhere
 };

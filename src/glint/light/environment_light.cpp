@@ -150,8 +150,13 @@ Spectrum EnvironmentLight::lookup(const Vec2& uv) const {
     const int x0 = wrap(static_cast<int>(x_floor)), x1 = wrap(static_cast<int>(x_floor) + 1);
     const int y0 = clamp_row(static_cast<int>(y_floor)),
               y1 = clamp_row(static_cast<int>(y_floor) + 1);
-    return (pixel(x0, y0) * (1.0f - tx) + pixel(x1, y0) * tx) * (1.0f - ty) +
-           (pixel(x0, y1) * (1.0f - tx) + pixel(x1, y1) * tx) * ty;
+    const Spectrum rgb = (pixel(x0, y0) * (1.0f - tx) + pixel(x1, y0) * tx) * (1.0f - ty) +
+                         (pixel(x0, y1) * (1.0f - tx) + pixel(x1, y1) * tx) * ty;
+    if (!spectral_mode_active()) return rgb;
+    // The pixels were uplifted when no wavelengths were active: they hold RGB, which spectral
+    // mode reads at the path's wavelengths.
+    const auto v = rgb.stored();
+    return uplift(Rgb(v[0], v[1], v[2]), RgbRole::illuminant);
 }
 
 Vec3 EnvironmentLight::direction_of(const Vec2& uv) const {

@@ -28,7 +28,7 @@ std::optional<LightEmission> PointLight::sample_le(const Vec2&, const Vec2& u_di
                                                    float) const {
     LightEmission e;
     e.ray = Ray{m_position, warp::square_to_uniform_sphere(u_direction)};
-    e.Le = m_intensity;
+    e.Le = m_intensity.spectrum();
     e.pdf_pos = 1.0f;
     e.pdf_dir = warp::uniform_sphere_pdf();
     return e;
@@ -48,7 +48,7 @@ std::optional<LightEmission> SpotLight::sample_le(const Vec2&, const Vec2& u_dir
     if (falloff_value <= 0.0f) return std::nullopt;
     LightEmission e;
     e.ray = Ray{m_position, w};
-    e.Le = m_intensity * falloff_value;
+    e.Le = m_intensity.spectrum() * falloff_value;
     e.pdf_pos = 1.0f;
     e.pdf_dir = warp::uniform_cone_pdf(local, m_cos_cone);
     return e;
@@ -63,7 +63,7 @@ EmissionPdf SpotLight::pdf_le(const Ray& ray, const Vec3&) const {
 std::optional<LightSample> DirectionalLight::sample_li(const Vec3& ref, const Vec2&, float) const {
     LightSample s;
     s.wi = -m_direction;
-    s.L = m_irradiance;
+    s.L = m_irradiance.spectrum();
     s.pdf = 1.0f;
     s.p = ref + s.wi * (2.0f * m_radius + glm::length(ref - m_center));  // beyond the scene
     s.is_delta = true;
@@ -78,7 +78,7 @@ std::optional<LightEmission> DirectionalLight::sample_le(const Vec2& u_position,
     LightEmission e;
     e.ray = Ray{m_center - m_direction * m_radius + m_radius * (d.x * frame.s() + d.y * frame.t()),
                 m_direction};
-    e.Le = m_irradiance;
+    e.Le = m_irradiance.spectrum();
     e.pdf_pos = 1.0f / (kPi * m_radius * m_radius);
     e.pdf_dir = 1.0f;
     return e;
@@ -91,7 +91,7 @@ EmissionPdf DirectionalLight::pdf_le(const Ray&, const Vec3&) const {
 }
 
 std::optional<LightSample> PointLight::sample_li(const Vec3& ref, const Vec2&, float) const {
-    return sample_point(m_position, ref, m_intensity);
+    return sample_point(m_position, ref, m_intensity.spectrum());
 }
 
 SpotLight::SpotLight(const Vec3& position, const Vec3& direction, const Spectrum& intensity,
@@ -111,7 +111,7 @@ float SpotLight::falloff(const Vec3& w) const {
 }
 
 std::optional<LightSample> SpotLight::sample_li(const Vec3& ref, const Vec2&, float) const {
-    auto s = sample_point(m_position, ref, m_intensity);
+    auto s = sample_point(m_position, ref, m_intensity.spectrum());
     if (!s) return s;
     const float f = falloff(-s->wi);
     if (f <= 0.0f) return std::nullopt;
@@ -141,7 +141,7 @@ std::optional<LightBounds> SpotLight::bounds() const {
 
 Spectrum SpotLight::power() const {
     // Full intensity inside the inner cone, and about half of it across the falloff band.
-    return m_intensity * 2.0f * kPi *
+    return m_intensity.spectrum() * 2.0f * kPi *
            ((1.0f - m_cos_falloff_start) + 0.5f * (m_cos_falloff_start - m_cos_cone));
 }
 

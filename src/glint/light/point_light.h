@@ -13,18 +13,20 @@ public:
         : m_position(position), m_intensity(intensity) {}
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
-    Spectrum power() const override { return 4.0f * kPi * m_intensity; }
+    Spectrum power() const override { return 4.0f * kPi * m_intensity.spectrum(); }
     std::optional<LightBounds> bounds() const override;
     /// From the position (pdf_pos 1), a direction uniform on the sphere.
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
                                            float u_select) const override;
     EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
-    Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override { return m_intensity; }
+    Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override {
+        return m_intensity.spectrum();
+    }
     bool is_delta() const override { return true; }
 
 private:
     Vec3 m_position;
-    Spectrum m_intensity;
+    SceneColor m_intensity;
 };
 
 // Point light restricted to a cone, with a smooth falloff between two half-angles.
@@ -41,7 +43,7 @@ public:
                                            float u_select) const override;
     EmissionPdf pdf_le(const Ray& ray, const Vec3& n) const override;
     Spectrum emitted(const Vec3&, const Vec3&, const Vec3& w) const override {
-        return m_intensity * falloff(w);
+        return m_intensity.spectrum() * falloff(w);
     }
     bool is_delta() const override { return true; }
     // Fraction of the intensity emitted in direction `w` (unit, away from the light).
@@ -50,7 +52,7 @@ public:
 private:
     Vec3 m_position;
     Vec3 m_direction;
-    Spectrum m_intensity;
+    SceneColor m_intensity;
     float m_cos_cone;
     float m_cos_falloff_start;
 };
@@ -74,13 +76,15 @@ public:
     Spectrum emitted(const Vec3&, const Vec3&, const Vec3&) const override {
         return Spectrum(0.0f);
     }
-    Spectrum power() const override { return m_irradiance * (kPi * m_radius * m_radius); }
+    Spectrum power() const override {
+        return m_irradiance.spectrum() * (kPi * m_radius * m_radius);
+    }
     bool is_delta() const override { return true; }
     bool is_delta_direction() const override { return true; }
 
 private:
     Vec3 m_direction;  // the way the light travels
-    Spectrum m_irradiance;
+    SceneColor m_irradiance;
     Vec3 m_center{0.0f};
     float m_radius = 1.0f;
 };

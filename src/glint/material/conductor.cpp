@@ -10,7 +10,7 @@ namespace {
 
 class ConductorMaterial final : public Material {
 public:
-    ConductorMaterial(const Spectrum& eta, const Spectrum& k, const FloatInput& roughness,
+    ConductorMaterial(const SceneColor& eta, const SceneColor& k, const FloatInput& roughness,
                       float anisotropy, const SpectrumInput& tint,
                       const spectral::ConductorData* measured)
         : m_eta(eta),
@@ -22,19 +22,33 @@ public:
 
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
         const float alpha = roughness_to_alpha(m_roughness.eval(si));
-        const ConductorFresnel fresnel{m_eta, m_k, m_tint.eval(si), false};
+        const ConductorFresnel fresnel{eta(), k(), m_tint.eval(si), false};
         return arena.make<RoughConductorBsdf>(GgxDistribution::anisotropic(alpha, m_anisotropy),
                                               fresnel);
     }
     const spectral::ConductorData* measured() const { return m_measured; }
     // The reflectance at normal incidence, the colour one sees in a metal.
     Spectrum albedo(const SurfaceInteraction& si) const override {
-        return m_tint.eval(si) * fresnel_conductor(1.0f, m_eta, m_k);
+        return m_tint.eval(si) * fresnel_conductor(1.0f, eta(), k());
     }
 
 private:
-    Spectrum m_eta;
-    Spectrum m_k;
+    // The index at the path's wavelengths: measured values where the scene named a metal and
+    // spectral mode is on, the colours' uplift otherwise (RGB mode: the colours).
+    Spectrum eta() const {
+        if (m_measured && spectral_mode_active())
+            return Spectrum::at_wavelengths([this](float nm) { return m_measured->eval(nm).eta; });
+        return m_eta.spectrum();
+    }
+    Spectrum k() const {
+        if (m_measured && spectral_mode_active())
+            return Spectrum::at_wavelengths([this](float nm) { return m_measured->eval(nm).k; });
+        return m_k.spectrum();
+    }
+
+    // Colours, read at each path's wavelengths in spectral mode.
+    SceneColor m_eta;
+    SceneColor m_k;
     FloatInput m_roughness;
     float m_anisotropy;
     SpectrumInput m_tint;
@@ -62,7 +76,8 @@ std::string measured_names() {
 
 // glint.conductor{...}: a metal, smooth or rough.
 //   metal       string    -            measured η(λ), k(λ): "Au", "Ag", "Cu", "Al" (or "gold",
-//                                       ...; spectral/conductors.h), integrated to RGB here
+//                                       ...; spectral/conductors.h), integrated to RGB in RGB mode,
+//                                       evaluated per wavelength in spectral mode
 //   preset      string    "aluminium"  RGB constants of a metal: "gold", "silver", "copper" or
 //                                       "aluminium" (conductor_presets.h); or give both of
 //   eta, k      spectrum  -            the complex index eta + i k per channel (eta > 0, k >= 0)
@@ -79,14 +94,14 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
         params.fail("give 'metal' alone, without 'preset', 'eta' or 'k'");
     }
     if (has_eta != has_k) params.fail("give both 'eta' and 'k' (the complex index eta + i k)");
-    Spectrum eta, k;
+    SceneColor eta, k;
     const spectral::ConductorData* measured = nullptr;
     if (has_eta) {
         const Rgb eta_rgb = params.get_rgb("eta"), k_rgb = params.get_rgb("k");
         if (eta_rgb.min_value() <= 0.0f) params.fail("'eta' must be positive");
         if (k_rgb.min_value() < 0.0f) params.fail("'k' must not be negative");
-        eta = uplift(eta_rgb, RgbRole::unbounded);
-        k = uplift(k_rgb, RgbRole::unbounded);
+        eta = SceneColor(eta_rgb, RgbRole::unbounded);
+        k = SceneColor(k_rgb, RgbRole::unbounded);
     } else if (params.has("metal")) {
         const std::string name = params.get_string("metal");
         const spectral::ConductorData* metal = spectral::named_conductor(name);
@@ -94,8 +109,8 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
             params.fail(
                 fmt::format("unknown 'metal' '{}'; measured metals: {}", name, measured_names()));
         }
-        eta = uplift(metal->rgb_eta(), RgbRole::unbounded);
-        k = uplift(metal->rgb_k(), RgbRole::unbounded);
+        eta = SceneColor(metal->rgb_eta(), RgbRole::unbounded);
+        k = SceneColor(metal->rgb_k(), RgbRole::unbounded);
         measured = metal;
     } else {
         const std::string name = params.get_string("preset", "aluminium");
@@ -104,8 +119,8 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
             params.fail(
                 fmt::format("unknown 'preset' '{}'; known presets: {}", name, preset_names()));
         }
-        eta = uplift(preset->eta, RgbRole::unbounded);
-        k = uplift(preset->k, RgbRole::unbounded);
+        eta = SceneColor(preset->eta, RgbRole::unbounded);
+        k = SceneColor(preset->k, RgbRole::unbounded);
     }
     const FloatInput roughness = textures.scalar(params, "roughness", 0.1f, 0.0f, 1.0f);
     const float anisotropy = params.get_float("anisotropy", 0.0f);

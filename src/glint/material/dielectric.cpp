@@ -1,3 +1,4 @@
+#include <glint/core/secondary_wavelengths.h>
 #include <glint/material/materials.h>
 #include <glint/material/rough_dielectric.h>
 #include <glint/material/smooth_dielectric.h>
@@ -22,13 +23,14 @@ public:
         return m_dispersion ? &*m_dispersion : nullptr;
     }
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
-        const float ior = m_ior.eval(si);
+        const float ior = index(si);
+        const bool hero_only = m_dispersion.has_value() && spectral_mode_active();
         const GgxDistribution distribution(roughness_to_alpha(m_roughness.eval(si)));
         // An index-matched interface is invisible however rough: light passes straight on.
         if (distribution.effectively_smooth() || ior == 1.0f) {
-            return arena.make<SmoothDielectricBsdf>(ior);
+            return arena.make<SmoothDielectricBsdf>(ior, hero_only);
         }
-        return arena.make<RoughDielectricBsdf>(ior, distribution);
+        return arena.make<RoughDielectricBsdf>(ior, distribution, hero_only);
     }
     Spectrum albedo(const SurfaceInteraction&) const override { return Spectrum(1.0f); }
     // Beer-Lambert absorption inside is a medium that only absorbs: the first user of the
@@ -39,6 +41,17 @@ public:
     }
 
 private:
+    // A dispersive glass bends each wavelength its own way: in spectral mode it scatters by
+    // the hero wavelength's index and its BSDF ends the other wavelengths (their directions
+    // would differ; Spectrum::hero_only), which keeps the estimate unbiased at the cost of
+    // colour noise after the glass. RGB mode uses m_ior, the index at 587.56 nm.
+    float index(const SurfaceInteraction& si) const {
+        const SampledWavelengths* lambda = m_dispersion ? active_wavelengths() : nullptr;
+        if (lambda == nullptr) return m_ior.eval(si);
+        terminate_secondary_wavelengths();
+        return static_cast<float>(m_dispersion->eval(lambda->hero()));
+    }
+
     FloatInput m_ior;
     AbsorbingMedium m_interior;
     FloatInput m_roughness;

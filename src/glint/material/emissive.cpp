@@ -7,14 +7,14 @@ namespace {
 // A light source surface: emits, does not reflect.
 class EmissiveMaterial final : public Material {
 public:
-    EmissiveMaterial(const Spectrum& radiance, bool two_sided)
+    EmissiveMaterial(const SceneColor& radiance, bool two_sided)
         : m_radiance(radiance), m_two_sided(two_sided) {}
     const Bsdf* bsdf(const SurfaceInteraction&, Arena&) const override { return nullptr; }
-    Spectrum emission() const override { return m_radiance; }
+    SceneColor emission() const override { return m_radiance; }
     bool emits_two_sided() const override { return m_two_sided; }
 
 private:
-    Spectrum m_radiance;
+    SceneColor m_radiance;
     bool m_two_sided;
 };
 
@@ -23,7 +23,7 @@ private:
 std::unique_ptr<Material> make_emissive_material(const Params& params, TextureTable&) {
     // `radiance` may be shaped by `blackbody = T` or `spectrum = ...` (emission_params.h).
     const Rgb radiance = spectral::read_emission_rgb(params, "radiance");
-    return std::make_unique<EmissiveMaterial>(uplift(radiance, RgbRole::illuminant),
+    return std::make_unique<EmissiveMaterial>(SceneColor(radiance, RgbRole::illuminant),
                                               params.get_bool("two_sided", false));
 }
 

@@ -29,7 +29,9 @@ public:
     virtual Spectrum albedo(const SurfaceInteraction&) const { return Spectrum(0.0f); }
 
     // Radiance leaving the front side (and the back too when two-sided).
-    virtual Spectrum emission() const { return Spectrum(0.0f); }
+    // A colour, not a Spectrum: it is fixed when the scene is built, and spectral mode reads
+    // it at each path's wavelengths.
+    virtual SceneColor emission() const { return {}; }
     virtual bool emits_two_sided() const { return false; }
     bool is_emissive() const { return !emission().is_black(); }
 

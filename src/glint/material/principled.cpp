@@ -30,7 +30,7 @@ struct PrincipledInputs {
     float specular_eta = 1.5f;
     float clearcoat = 0.0f, clearcoat_roughness = 0.03f;
     float sheen = 0.0f, sheen_tint = 0.5f;
-    Spectrum emission{0.0f};
+    SceneColor emission;
     Spectrum absorption{0.0f};
     // The transmission's index per wavelength, from `abbe` (glTF KHR_materials_dispersion);
     // RGB mode renders `ior`, its value at 587.56 nm.
@@ -71,7 +71,7 @@ public:
     Spectrum albedo(const SurfaceInteraction& si) const override {
         return m_in.base_color.eval(si);
     }
-    Spectrum emission() const override { return m_in.emission; }
+    SceneColor emission() const override { return m_in.emission; }
     // Absorption inside (KHR_materials_volume) is a medium that only absorbs, as for glass.
     MediumInterface intrinsic_media() const override {
         if (m_interior.sigma_a().is_black()) return {};
@@ -164,7 +164,7 @@ std::unique_ptr<Material> make_principled_material(const Params& params, Texture
     const float strength = params.get_float("emission_strength", 1.0f);
     if (!(strength >= 0.0f) || !std::isfinite(strength))
         params.fail("'emission_strength' must be a finite number >= 0");
-    in.emission = uplift(emission, RgbRole::illuminant) * strength;
+    in.emission = SceneColor(emission * strength, RgbRole::illuminant);
     const Rgb absorption = params.get_rgb("absorption", Rgb(0.0f));
     if (!(absorption.min_value() >= 0.0f) || !absorption.is_finite())
         params.fail("'absorption' must be finite and not negative");

@@ -30,10 +30,13 @@ class RoughDielectricBsdf final : public Bsdf {
 public:
     // `eta` = index inside / index outside. The distribution must not be effectively smooth
     // (use SmoothDielectricBsdf then: the material chooses).
-    RoughDielectricBsdf(float eta, const GgxDistribution& distribution)
+    // `hero_only`: the index is that of the hero wavelength of a dispersive glass, so f is
+    // carried by the hero alone (Spectrum::hero_only).
+    RoughDielectricBsdf(float eta, const GgxDistribution& distribution, bool hero_only = false)
         : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfGlossy, eta),
           m_eta(eta),
-          m_distribution(distribution) {}
+          m_distribution(distribution),
+          m_hero_only(hero_only) {}
 
 protected:
     Spectrum eval_unscaled(const Vec3& wo, const Vec3& wi) const override {
@@ -42,11 +45,11 @@ protected:
         const float g2 = m_distribution.g2(c.o, c.i);
         const float d = m_distribution.d(c.wm);
         const float fresnel = facet_fresnel(c);
-        if (c.reflection) return Spectrum(fresnel * d * g2 / (4.0f * c.o.z * c.i.z));
+        if (c.reflection) return carried(fresnel * d * g2 / (4.0f * c.o.z * c.i.z));
         const float cos_om = glm::dot(c.o, c.wm), cos_im = glm::dot(c.i, c.wm);
         const float denominator = sqr(cos_im + cos_om / c.eta) * c.o.z * std::abs(c.i.z);
         const float f = (1.0f - fresnel) * d * g2 * std::abs(cos_im * cos_om) / denominator;
-        return Spectrum(f);  // the wrappers add 1/eta^2 for radiance (bsdf.h)
+        return carried(f);  // the wrappers add 1/eta^2 for radiance (bsdf.h)
     }
 
     float pdf_unscaled(const Vec3& wo, const Vec3& wi) const override {
@@ -85,6 +88,13 @@ protected:
     }
 
 private:
+    // The value at the hero alone (the others 0): the film reads a path that went
+    // through here at its hero (core/secondary_wavelengths.h).
+    Spectrum carried(float f) const {
+        return m_hero_only ? Spectrum(f).hero_only() / static_cast<float>(Spectrum::kValues)
+                           : Spectrum(f);
+    }
+
     // The pair (wo, wi) mirrored so that wo is in the upper hemisphere, with the relative
     // index of the lower side and the microfacet normal that connects them.
     struct Config {
@@ -125,6 +135,7 @@ private:
 
     float m_eta;
     GgxDistribution m_distribution;
+    bool m_hero_only;
 };
 
 }  // namespace glint

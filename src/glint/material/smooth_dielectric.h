@@ -11,8 +11,12 @@ namespace glint {
 class SmoothDielectricBsdf final : public Bsdf {
 public:
     // `eta` = index inside / index outside (outside is the side the normal points to).
-    explicit SmoothDielectricBsdf(float eta)
-        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfDelta, eta), m_eta(eta) {}
+    // `hero_only`: the index is that of the hero wavelength of a dispersive glass, so f is
+    // carried by the hero alone (Spectrum::hero_only).
+    explicit SmoothDielectricBsdf(float eta, bool hero_only = false)
+        : Bsdf(kBsdfReflection | kBsdfTransmission | kBsdfDelta, eta),
+          m_eta(eta),
+          m_hero_only(hero_only) {}
 
 protected:
     Spectrum eval_unscaled(const Vec3&, const Vec3&) const override { return Spectrum(0.0f); }
@@ -49,9 +53,9 @@ protected:
 
 private:
     // The mirror lobe of weight `weight`, chosen with probability `pdf`.
-    static BsdfSample reflection(const Vec3& wo, float weight, float pdf) {
+    BsdfSample reflection(const Vec3& wo, float weight, float pdf) const {
         const Vec3 wi(-wo.x, -wo.y, wo.z);
-        return BsdfSample{Spectrum(weight / abs_cos_theta(wi)), wi, pdf,
+        return BsdfSample{carried(weight / abs_cos_theta(wi)), wi, pdf,
                           kBsdfReflection | kBsdfDelta, 1.0f};
     }
 
@@ -63,11 +67,19 @@ private:
         const Vec3 n(0.0f, 0.0f, cos_o > 0.0f ? 1.0f : -1.0f);
         Vec3 wi;
         if (!refract(wo, n, eta, wi)) return std::nullopt;
-        return BsdfSample{Spectrum(weight / abs_cos_theta(wi)), wi, pdf,
+        return BsdfSample{carried(weight / abs_cos_theta(wi)), wi, pdf,
                           kBsdfTransmission | kBsdfDelta, eta};
     }
 
+    // The value at the hero alone (the others 0): the film reads a path that went
+    // through here at its hero (core/secondary_wavelengths.h).
+    Spectrum carried(float f) const {
+        return m_hero_only ? Spectrum(f).hero_only() / static_cast<float>(Spectrum::kValues)
+                           : Spectrum(f);
+    }
+
     float m_eta;
+    bool m_hero_only;
 };
 
 }  // namespace glint

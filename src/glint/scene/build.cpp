@@ -42,7 +42,7 @@ public:
             if (radiance.min_value() < 0.0f) {
                 m_desc.background->fail("'radiance' must not be negative");
             }
-            m_scene->m_background = uplift(radiance, RgbRole::illuminant);
+            m_scene->m_background = SceneColor(radiance, RgbRole::illuminant);
             m_desc.background->check_all_used();
         }
         build_groups();

@@ -30,6 +30,7 @@ RenderSettings parse_render_settings(const Params* params) {
         p.fail_at("tonemap", e.what());
     }
     s.aovs = p.get_bool("aovs", false);
+    s.spectral = p.get_bool("spectral", false);
     s.denoise = p.get_bool("denoise", false);
     s.denoiser = p.get_string("denoiser", s.denoiser);
     if (s.denoiser != "network" && s.denoiser != "nlm")

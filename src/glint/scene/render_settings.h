@@ -33,7 +33,10 @@ struct RenderSettings {
     float exposure = 0.0f;            // stops, applied to PNG output
     Tonemap tonemap = Tonemap::clip;  // display curve of PNG output (film/tonemap.h)
     bool aovs = false;                // albedo/normal/depth channels in EXR output
-    bool denoise = false;             // also write NAME.denoised.EXT
+    // Spectral mode: paths carry four wavelengths (hero wavelength sampling) instead of RGB,
+    // the film turns them into colour (integrator/transport/spectral_model.h).
+    bool spectral = false;
+    bool denoise = false;  // also write NAME.denoised.EXT
     // Which denoiser: "network" (OIDN's trained U-Net, denoise/network_denoiser.h) or "nlm"
     // (glint's non-local means filter, film/denoise.h).
     std::string denoiser = "network";

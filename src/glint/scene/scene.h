@@ -128,13 +128,13 @@ public:
     void set_camera(std::unique_ptr<Camera> camera);
     const std::vector<std::unique_ptr<Light>>& lights() const { return m_lights; }
     const LightSampler& light_sampler() const { return m_light_sampler; }
-    const Spectrum& background() const { return m_background; }
+    Spectrum background() const { return m_background.spectrum(); }
     // The scene's light at infinity (an environment map), or nullptr: at most one.
     const Light* environment() const { return m_environment; }
     // Radiance a ray receives when it leaves the scene along `direction` (need not be
     // unit): the environment light's if there is one, else the constant background.
     Spectrum escaped_radiance(const Vec3& direction) const {
-        return m_environment ? m_environment->le_escaped(direction) : m_background;
+        return m_environment ? m_environment->le_escaped(direction) : m_background.spectrum();
     }
     const SceneStats& stats() const { return m_stats; }
     /// Whether a material only bounds media (Material::is_interface): shadow rays then
@@ -224,7 +224,7 @@ private:
     std::vector<WorldEntry> m_world;
     std::unique_ptr<Camera> m_camera;
     LightSampler m_light_sampler;
-    Spectrum m_background;
+    SceneColor m_background;
     std::string m_directory = ".";
     bool m_trusted = false;
     const Light* m_environment = nullptr;  // one of m_lights

@@ -2,6 +2,7 @@
 #include <glint/core/progress.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/transport/camera_connection.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/material/material.h>
 
@@ -388,6 +389,8 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
         for (int x = x0; x < x1; ++x) {
             const Vec2i pixel(x, y);
             for (int index = 0; index < m_settings.spp; ++index) {
+                const PathWavelengths wavelengths(
+                    m_settings.spectral, detail::pixel_sample_key(m_settings.seed, pixel, index));
                 sampler.start_pixel_sample(pixel, index);
                 const FilterSample filter = m_filter->sample(sampler.get_pixel_2d());
                 const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;

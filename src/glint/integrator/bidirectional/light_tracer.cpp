@@ -5,6 +5,7 @@
 #include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/light_path_start.h>
 #include <glint/integrator/transport/roulette.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 
 #include <fmt/format.h>
@@ -89,6 +90,8 @@ RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progre
 // sample (2D + 1D) and roulette (1D).
 void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const {
     chunk.rng.seed(hash_combine(mix_bits(m_settings.seed ^ 0x4c54u), index));
+    const PathWavelengths wavelengths(m_settings.spectral,
+                                      hash_combine(mix_bits(m_settings.seed ^ 0x4c54u), index));
     chunk.arena.reset();
     LightPathSamples u_start;
     u_start.u_light = chunk.rng.next_float();

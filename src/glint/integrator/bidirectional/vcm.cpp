@@ -5,6 +5,7 @@
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/vcm.h>
 #include <glint/integrator/transport/hash_grid.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/material/material.h>
 
 #include <fmt/format.h>
@@ -181,6 +182,11 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     return stats;
 }
 
+// Spectral mode: every path of an iteration carries the same wavelengths, since each camera
+// subpath joins light vertices traced by other threads and merges with many of them; the
+// iterations' wavelengths differ and stratify the spectrum (pass_wavelengths), so the image
+// still integrates over it.
+
 // The light subpaths of one chunk, and their joins to the lens (t = 1). Light subpath i draws
 // from the light sampler at (pixel (i mod width, i div width), iteration) -- rows past the
 // image's last stand for the subpaths beyond one per pixel; the sampler keys on the pixel
@@ -193,6 +199,10 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
     const size_t begin = static_cast<size_t>(chunk) * kChunkPaths;
     const size_t end = std::min(n_light, begin + kChunkPaths);
     const int max_depth = m_settings.max_depth;
+    const WavelengthContext iteration_wavelengths =
+        pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));
+    std::optional<WavelengthScope> wavelengths;
+    if (m_settings.spectral) wavelengths.emplace(iteration_wavelengths);
     auto sampler = it.light_sampler->clone();
     Arena& arena = it.arenas[chunk];
     arena.reset();  // the BSDFs of this chunk's subpaths live until the camera pass is done
@@ -205,6 +215,8 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
     for (size_t i = begin; i < end; ++i) {
         const Vec2i pixel(static_cast<int>(i % w), static_cast<int>(i / w));
         sampler->start_pixel_sample(pixel, it.index);
+        std::optional<SecondaryWavelengthsScope> terminated;  // this light path's
+        if (m_settings.spectral) terminated.emplace();
         std::vector<PathVertex>& light = it.light_paths[i];
         generate_light_subpath(scene, *sampler, arena, counter, it.light_limits, light);
         for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
@@ -233,6 +245,10 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
     const int x1 = std::min(x0 + kTileSize, film.width());
     const int y1 = std::min(y0 + kTileSize, film.height());
     const int max_depth = m_settings.max_depth;
+    const WavelengthContext iteration_wavelengths =
+        pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));
+    std::optional<WavelengthScope> wavelengths;
+    if (m_settings.spectral) wavelengths.emplace(iteration_wavelengths);
     auto sampler = it.camera_sampler->clone();
     HashGrid::Cache cache;  // a tile's camera vertices are near each other
     Arena arena;
@@ -243,6 +259,12 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
         for (int x = x0; x < x1; ++x) {
             const Vec2i pixel(x, y);
             sampler->start_pixel_sample(pixel, it.index);
+            // This camera path's. Joins with a light path that went through dispersive glass
+            // carry that path's hero alone; summed with the camera path's other joins, the
+            // film reads them at all four wavelengths: with dispersion, vcm in spectral mode
+            // is biased (docs/spectral.md).
+            std::optional<SecondaryWavelengthsScope> terminated;
+            if (m_settings.spectral) terminated.emplace();
             const FilterSample filter = m_filter->sample(sampler->get_pixel_2d());
             const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
             const Ray ray = scene.camera().sample_ray(film_point, *sampler);

@@ -193,6 +193,10 @@ std::unique_ptr<TileIntegrator::Worker> PathIntegrator::make_worker(
 TileIntegrator::PixelMoments PathIntegrator::render_pixel(const Scene& scene, Film& film,
                                                           Vec2i pixel, Worker& worker, int first,
                                                           int count) const {
+    // A thread follows one path at a time in spectral mode (its wavelengths are the thread's
+    // while it lives): the plain loop of li().
+    if (m_settings.spectral)
+        return TileIntegrator::render_pixel(scene, film, pixel, worker, first, count);
     auto& packet_worker = static_cast<PacketWorker&>(worker);
     auto lane_sampler = [&](int lane) -> Sampler& {
         return lane == 0 ? *worker.sampler : *packet_worker.lane_samplers[lane];

@@ -53,8 +53,8 @@ const Medium* medium_beyond(const SurfaceInteraction& si, const Vec3& direction,
 // walk would sample wi. The draws are sample_direct_light's, in its order.
 // `surface` is the surface point scattering, or null for a point `p` in `medium`.
 template <typename Scatter>
-Spectrum direct_light(const Scene& scene, const Vec3& p, const SurfaceInteraction* surface,
-                      const Medium* medium, Sampler& sampler, Rng& rng, const Spectrum& r_u,
+Spectrum direct_light(const Scene& scene, const Vec3& p, float time,
+                      const SurfaceInteraction* surface, const Medium* medium, Sampler& sampler, Rng& rng, const Spectrum& r_u,
                       Scatter&& scatter) {
     const Vec2 u = sampler.get_2d();
     const float u_light = sampler.get_1d();
@@ -69,7 +69,7 @@ Spectrum direct_light(const Scene& scene, const Vec3& p, const SurfaceInteractio
     if (f.is_black()) return Spectrum(0.0f);
     // From a surface the shadow ray starts off it, in the medium on the light's side.
     const Scene::ShadowRay shadow =
-        surface ? Scene::shadow_ray(*surface, ls->p) : Scene::ShadowRay{p, ls->p - p};
+        surface ? Scene::shadow_ray(*surface, ls->p) : Scene::ShadowRay{p, ls->p - p, time};
     if (surface) medium = medium_beyond(*surface, ls->wi, medium);
     Spectrum passing(1.0f);
     const Spectrum T = transmittance_through_interfaces(scene, shadow, medium, &rng, &passing);
@@ -129,7 +129,8 @@ Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
     walk.sampler = &sampler;
     walk.aov = aov;
     walk.hero =
-        std::min(static_cast<int>(sampler.get_1d() * Spectrum::kValues), Spectrum::kValues - 1);
+        std::min(static_cast<int>(sampler.get_1d() * Spectrum::active_values()),
+                 Spectrum::active_values() - 1);
     walk.rng.seed(stream_seed(sampler.get_1d()));
     for (int crossings = 0; crossings < 1024;) {
         ++counter.rays;
@@ -242,7 +243,7 @@ void VolPathIntegrator::scatter_by_phase(const Scene& scene, Walk& walk, const V
     const Vec3 wo = -glm::normalize(walk.ray.direction);
     const HenyeyGreenstein phase(walk.medium->phase_asymmetry());
     Sampler& sampler = *walk.sampler;
-    walk.L += walk.beta * direct_light(scene, p, nullptr, walk.medium, sampler, walk.rng, walk.r_u,
+    walk.L += walk.beta * direct_light(scene, p, walk.ray.time, nullptr, walk.medium, sampler, walk.rng, walk.r_u,
                                        [&](const Vec3& wi, float& pdf_wi) {
                                            pdf_wi = phase.eval(wo, wi);
                                            return Spectrum(pdf_wi);
@@ -253,7 +254,7 @@ void VolPathIntegrator::scatter_by_phase(const Scene& scene, Walk& walk, const V
     walk.specular_bounce = false;
     walk.previous_point = p;
     walk.previous_normal = Vec3(0.0f);
-    walk.ray = Ray{p, ps.wi, 0.0f, kInfinity};
+    walk.ray = Ray{p, ps.wi, 0.0f, kInfinity, walk.ray.time};
 }
 
 // A path whose ray left the scene: the environment light (weighted against light
@@ -297,7 +298,7 @@ bool VolPathIntegrator::scatter_at_surface(const Scene& scene, Walk& walk, Arena
     const Vec3 wo_local = si.to_local(si.wo);
     Sampler& sampler = *walk.sampler;
     if (!bsdf->is_delta()) {
-        walk.L += walk.beta * direct_light(scene, si.p, &si, walk.medium, sampler, walk.rng,
+        walk.L += walk.beta * direct_light(scene, si.p, si.time, &si, walk.medium, sampler, walk.rng,
                                            walk.r_u, [&](const Vec3& wi, float& pdf_wi) {
                                                const Vec3 wi_local = si.to_local(wi);
                                                return bsdf->eval_pdf(wo_local, wi_local, pdf_wi) *

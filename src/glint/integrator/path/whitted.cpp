@@ -66,13 +66,13 @@ std::array<int, 4> extreme_samples(const std::vector<ShadowSample>& samples, con
 
 WhittedSettings WhittedSettings::read(const Params& p) {
     WhittedSettings s;
-    const Rgb ambient = p.get_rgb("ambient", to_rgb(s.ambient));
+    const Rgb ambient = p.get_rgb("ambient", s.ambient.rgb());
     s.shadow_samples = p.get_int("shadow_samples", s.shadow_samples);
     s.penumbra_shortcut = p.get_bool("penumbra_shortcut", s.penumbra_shortcut);
     s.caustics = p.get_bool("caustics", s.caustics);
     s.caustic = CausticSettings::read(p);
     if (ambient.min_value() < 0.0f) p.fail_at("ambient", "'ambient' must not be negative");
-    s.ambient = uplift(ambient, RgbRole::illuminant);
+    s.ambient = SceneColor(ambient, RgbRole::illuminant);
     if (s.shadow_samples < 1 || s.shadow_samples > 64)
         p.fail_at("shadow_samples", "'shadow_samples' must be in [1, 64]");
     return s;
@@ -171,7 +171,7 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
                                    m_caustic_radius2);
         } else if (!bsdf->is_delta()) {
             L += direct(scene, si, *bsdf, sampler, counter);
-            L += m_whitted.ambient * si.material->albedo(si);
+            L += m_whitted.ambient.spectrum() * si.material->albedo(si);
             if (m_caustics.size() > 0) {
                 L += radiance_estimate(m_caustics, si, *bsdf, m_whitted.caustic.photon_neighbours,
                                        m_caustic_radius2);

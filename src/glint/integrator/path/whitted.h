@@ -7,9 +7,9 @@
 // Glass branches in two at every hit, so a closed glass object would cost 2^max_depth rays per
 // camera sample: each camera sample may trace kWhittedRayBudget rays through mirrors and glass,
 // after which every hit follows its strongest lobe only (see whitted.cpp).
-#include <glint/integrator/tile/tile_integrator.h>
 #include <glint/integrator/photon/photon.h>
 #include <glint/integrator/photon/photon_map.h>
+#include <glint/integrator/tile/tile_integrator.h>
 
 namespace glint {
 
@@ -19,7 +19,7 @@ inline constexpr int kWhittedRayBudget = 1024;
 
 /// The settings of "whitted", from glint.render{...}.
 struct WhittedSettings {
-    Spectrum ambient{0.0f};          ///< ambient light, times the surface albedo (>= 0)
+    SceneColor ambient;              ///< ambient light, times the surface albedo (>= 0)
     int shadow_samples = 4;          ///< N in [1, 64]: area lights get N x N stratified shadow rays
     bool penumbra_shortcut = false;  ///< test 4 rays first; full set only in the penumbra
     bool caustics = false;           ///< add photon-mapped caustics (see CausticSettings)

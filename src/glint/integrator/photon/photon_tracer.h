@@ -6,6 +6,7 @@
 #include <glint/core/arena.h>
 #include <glint/core/cancel.h>
 #include <glint/core/rng.h>
+#include <glint/core/secondary_wavelengths.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/transport/light_path_start.h>
 #include <glint/integrator/transport/roulette.h>
@@ -16,6 +17,7 @@
 #include <tbb/parallel_for.h>
 
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace glint {
@@ -45,6 +47,10 @@ public:
           m_emitter(std::move(emitter)),
           m_caustic_paths_only(caustic_paths_only) {}
 
+    // Spectral mode: the photons traced from now on carry `wavelengths` (those of the camera
+    // points they will meet); nullptr for RGB mode. The context must outlive the tracing.
+    void use_wavelengths(const WavelengthContext* wavelengths) { m_wavelengths = wavelengths; }
+
     // Traces photons [first, first + count); photon i is keyed by (seed, i). `make_sink()`
     // makes the sink of each chunk; the sinks come back in chunk order.
     template <typename MakeSink>
@@ -58,6 +64,8 @@ public:
         std::atomic<uint64_t> total_rays{0};
         tbb::parallel_for(uint64_t{0}, chunks, [&](uint64_t chunk) {
             throw_if_cancelled();  // emission reports no progress: SIGINT stops it here
+            std::optional<WavelengthScope> wavelengths;
+            if (m_wavelengths != nullptr) wavelengths.emplace(*m_wavelengths);
             Arena arena;
             uint64_t chunk_rays = 0;
             const uint64_t end = std::min(count, (chunk + 1) * kChunk);
@@ -73,6 +81,8 @@ public:
 private:
     template <typename Sink>
     void trace_one(uint64_t index, uint64_t seed, Arena& arena, Sink& sink, uint64_t& rays) const {
+        std::optional<SecondaryWavelengthsScope> terminated;  // this photon's, in spectral mode
+        if (m_wavelengths != nullptr) terminated.emplace();
         Rng rng(hash_combine(mix_bits(seed ^ 0x5bd1e995u), index));
         LightPathSamples u_start;
         u_start.u_light = rng.next_float();
@@ -132,6 +142,7 @@ private:
     int m_max_bounces;
     PhotonEmitter m_emitter;
     bool m_caustic_paths_only;
+    const WavelengthContext* m_wavelengths = nullptr;
 };
 
 }  // namespace glint

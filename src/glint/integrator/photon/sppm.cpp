@@ -7,6 +7,7 @@
 #include <glint/integrator/photon/sppm.h>
 #include <glint/integrator/transport/hash_grid.h>
 #include <glint/integrator/transport/shading.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 
 #include <fmt/format.h>
@@ -189,14 +190,25 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
     for (PixelState& p : pixels) p.radius = initial_radius;
     std::vector<VisiblePoint> points(pixel_count);
     const auto prototype = make_sampler(m_settings.sampler, passes, m_settings.seed);
-    const PhotonTracer tracer(scene, m_settings.max_depth >= 0 ? m_settings.max_depth : 32);
+    PhotonTracer tracer(scene, m_settings.max_depth >= 0 ? m_settings.max_depth : 32);
     RenderStats stats;
     int stats_intermediate = 0;
 
     for (int pass = 0; pass < passes; ++pass) {
+        // Spectral mode: the camera points and the photons of a pass carry the same
+        // wavelengths (a photon's flux is read at the points it meets); the passes'
+        // wavelengths stratify the spectrum (pass_wavelengths), and what a pass adds to a pixel is
+        // resolved to RGB before it is summed.
+        const WavelengthContext this_pass =
+            pass_wavelengths(mix_bits(m_settings.seed ^ 0x59b3u), static_cast<uint32_t>(pass));
+        const WavelengthContext* spectral = m_settings.spectral ? &this_pass : nullptr;
+        tracer.use_wavelengths(spectral);
+
         // 1. Visible points, one per pixel, keyed by (seed, pixel, pass).
         std::atomic<uint64_t> camera_rays{0};
         tbb::parallel_for(0, h, [&](int y) {
+            std::optional<WavelengthScope> wavelengths;
+            if (spectral != nullptr) wavelengths.emplace(*spectral);
             auto sampler = prototype->clone();
             Arena arena;
             RayCounter counter;
@@ -208,8 +220,16 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
                 const Ray ray = scene.camera().sample_ray(film_point, *sampler);
                 const size_t i = static_cast<size_t>(y) * w + x;
                 arena.reset();
-                points[i] =
-                    find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, counter);
+                std::optional<SecondaryWavelengthsScope> terminated;  // this pixel's path's
+                if (spectral != nullptr) terminated.emplace();
+                if (spectral == nullptr) {
+                    points[i] =
+                        find_visible_point(scene, ray, *sampler, arena, pixels[i].direct, counter);
+                } else {
+                    Spectrum direct(0.0f);
+                    points[i] = find_visible_point(scene, ray, *sampler, arena, direct, counter);
+                    pixels[i].direct += resolved_to_rgb(direct);
+                }
             }
             camera_rays += counter.rays;
         });
@@ -240,7 +260,7 @@ RenderStats SppmIntegrator::render(const Scene& scene, Film& film, Progress& pro
                         const Spectrum f =
                             bsdf->eval(vp.si.to_local(vp.si.wo), vp.si.to_local(hit.wi));
                         if (f.is_black()) return;
-                        deposits.push_back({i, vp.beta * f * hit.power});
+                        deposits.push_back({i, resolved_to_rgb(vp.beta * f * hit.power)});
                     });
                 }
             };

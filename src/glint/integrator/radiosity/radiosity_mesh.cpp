@@ -107,7 +107,7 @@ RadiosityMesh RadiosityMesh::build(const Scene& scene, float patch_size, size_t 
             mesh.meshed_lights.push_back(placement.light);
         mesh.m_surfaces[surface_key(placement.top_geometry, placement.local_geometry)] = {
             static_cast<uint32_t>(mesh.triangles.size())};
-        const Spectrum emission = kPi * material.emission();
+        const Spectrum emission = kPi * material.emission().spectrum();
         const bool two_sided = material.emits_two_sided();
 
         const MeshData& data = triangle_mesh->data();

@@ -4,6 +4,7 @@
 #include <glint/core/progress.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/tile/tile_integrator.h>
+#include <glint/integrator/transport/spectral_model.h>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range2d.h>
@@ -371,6 +372,8 @@ TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Fi
     PixelMoments moments;
     Sampler& sampler = *worker.sampler;
     for (int index = first; index < first + count; ++index) {
+        const PathWavelengths wavelengths(m_settings.spectral,
+                                          detail::pixel_sample_key(m_settings.seed, pixel, index));
         const CameraSample sample = start_camera_sample(scene, pixel, index, sampler);
         AovSample aov{};
         AovSample* features = film.has_aovs() ? &aov : nullptr;
