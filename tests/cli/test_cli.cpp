@@ -178,6 +178,25 @@ TEST_F(CliTest, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run_glint("--help").exit_code, 0);
 }
 
+// spectral = true on an integrator that renders in RGB is one warning naming the
+// setting's line; on a spectral integrator, none.
+TEST_F(CliTest, SpectralOnAnRgbIntegratorWarns) {
+    const std::string scene = settings_scene(m_dir, "spectral = true");
+    auto result = run_glint(fmt::format("render {} --integrator photon --photons 100 -o {} --quiet",
+                                        scene, out("a.exr")));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(count_of(result.output, "warning:"), 1u) << result.output;
+    EXPECT_NE(result.output.find("settings.lua:5: the 'photon' integrator renders in RGB"),
+              std::string::npos)
+        << result.output;
+    for (const char* integrator : {"path", "light", "bdpt"}) {
+        result = run_glint(fmt::format("render {} --integrator {} -o {} --quiet", scene, integrator,
+                                       out("a.exr")));
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(count_of(result.output, "warning"), 0u) << integrator << ": " << result.output;
+    }
+}
+
 TEST_F(CliTest, MissingSceneAndBadOutputFormatExitWithOne) {
     auto result = run_glint(fmt::format("render {} --quiet", out("absent.lua")));
     EXPECT_EQ(result.exit_code, 1) << result.output;

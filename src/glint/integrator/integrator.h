@@ -42,6 +42,9 @@ struct IntegratorCapabilities {
     /// SurfaceInteraction::time). Integrators whose light paths, photons or caches are
     /// made at one time cannot yet, and refuse such scenes.
     bool motion_blur = false;
+    /// Follows hero wavelengths when the scene asks for `spectral = true`
+    /// (docs/spectral.md); the others render in RGB, and the render says so.
+    bool spectral = false;
     /// The debug views it can write, besides those every integrator's settings give.
     std::vector<DebugView> debug_views;
 

@@ -106,9 +106,20 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
 // wavelengths, and multiplying the two would give wrong colours without a word.
 void check_spectral_media(const Scene& scene, const RenderSettings& settings) {
     if (!settings.spectral || scene.media().empty()) return;
-    throw Error(fmt::format("{}: participating media (glint.medium) are not spectral yet; "
-                            "render this scene without spectral = true",
-                            settings.where_of("spectral")));
+    throw Error(
+        fmt::format("{}: participating media (glint.medium) are not spectral yet; "
+                    "render this scene without spectral = true",
+                    settings.where_of("spectral")));
+}
+
+// Integrators without wavelengths render in RGB; the user asked for spectra, so say so.
+void warn_if_not_spectral(const RenderSettings& settings,
+                          const IntegratorCapabilities& capabilities,
+                          const RenderControl& control) {
+    if (!settings.spectral || capabilities.spectral) return;
+    warn(control, fmt::format("{}: the '{}' integrator renders in RGB; spectral = true has no "
+                              "effect on it (docs/spectral.md lists the spectral integrators)",
+                              settings.where_of("spectral"), settings.integrator));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -134,6 +145,7 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
     const auto scene = build_scene(desc, settings);
     check_motion(*scene, settings, integrator->capabilities());
     check_spectral_media(*scene, settings);
+    warn_if_not_spectral(settings, integrator->capabilities(), control);
     for (const std::string& warning : scene->stats().warnings) warn(control, warning);
     throw_if_cancelled(control);
 

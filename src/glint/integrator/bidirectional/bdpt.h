@@ -89,6 +89,7 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.debug_views = {{"strategies", "--integrator bdpt"}};
+        capabilities.spectral = true;
         return capabilities;
     }
 

@@ -25,6 +25,11 @@ public:
     // Reads no settings of its own: spp, seed and max_depth are the common ones.
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities;
+        capabilities.spectral = true;
+        return capabilities;
+    }
 
 private:
     struct Chunk;

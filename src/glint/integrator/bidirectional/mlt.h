@@ -21,9 +21,9 @@
 // c); chains run in parallel, each into its own splat buffer, and the buffers reach the film
 // in chain order, so the image is the same for any thread count.
 #include <glint/integrator/bidirectional/bdpt_mis.h>
-#include <glint/integrator/integrator.h>
 #include <glint/integrator/bidirectional/pss_sampler.h>
 #include <glint/integrator/bidirectional/subpath.h>
+#include <glint/integrator/integrator.h>
 
 #include <vector>
 

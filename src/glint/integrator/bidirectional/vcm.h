@@ -56,6 +56,11 @@ public:
     VcmIntegrator(const RenderSettings& settings, const VcmSettings& vcm);
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities;
+        capabilities.spectral = true;
+        return capabilities;
+    }
 
     /// The merging radius of iteration `iteration` (0-based) from r_0 and alpha.
     static float radius_at(float r0, float alpha, int iteration);

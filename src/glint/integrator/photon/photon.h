@@ -56,6 +56,7 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
         capabilities.motion_blur = false;  // its photons or radiosity are made at one time
+        capabilities.spectral = false;  // its photon map is built once, for one set of wavelengths
         capabilities.debug_views.push_back(photons_debug_view());
         return capabilities;
     }

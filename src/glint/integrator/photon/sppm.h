@@ -30,6 +30,7 @@ public:
         IntegratorCapabilities capabilities;
         capabilities.crop_windows = true;
         capabilities.motion_blur = true;  // visible points and photons each carry a time
+        capabilities.spectral = true;     // each pass has its own wavelengths
         return capabilities;
     }
     /// Every rank finds all visible points (camera rays are few next to the photons) and

@@ -47,6 +47,7 @@ public:
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
         capabilities.motion_blur = false;  // its photons or radiosity are made at one time
         capabilities.crop_windows = false;
+        capabilities.spectral = false;  // its solution is stored per patch as RGB
         return capabilities;
     }
     /// At the first surface that is not a mirror or glass (followed through them): meshed

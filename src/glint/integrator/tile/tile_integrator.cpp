@@ -389,6 +389,7 @@ IntegratorCapabilities TileIntegrator::capabilities() const {
             .adaptive_sampling = true,
             .film_halves = true,
             .motion_blur = true,
+            .spectral = true,
             .debug_views = {{"edges", "--adaptive sobel"}}};
 }
 
