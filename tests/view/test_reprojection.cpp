@@ -154,8 +154,11 @@ TEST(Reprojection, RotationReusesEveryPixelStillInTheFrame) {
             EXPECT_EQ(taps[i].valid(), margin > 0.0f) << "pixel " << x << ", " << y;
             if (taps[i].valid()) {
                 ++reused;
-                // Wall x is linear across the previous film: bilinear taps give it back.
-                EXPECT_NEAR(fetched[i], p.x, 1e-3f);
+                // Wall x is linear across the previous film: bilinear taps give it back
+                // (within half a pixel of the edge the outer taps are missing: clamped).
+                if (margin >= 0.5f) {
+                    EXPECT_NEAR(fetched[i], p.x, 1e-3f);
+                }
             }
         }
     }

@@ -25,7 +25,7 @@ GeometryBuffer trace_geometry_buffer(const Scene& scene, const Camera& camera, i
             for (int x = 0; x < width; ++x) {
                 const std::size_t i = static_cast<std::size_t>(y) * width + x;
                 const Ray ray = camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
-                HitRecord hit;
+                HitRecord hit{};
                 if (!scene.accel().intersect(ray, hit) || !scene.intersect(ray, si)) continue;
                 buffer.depth[i] = si.t;
                 const Vec3 n = si.shading.n();
