@@ -19,8 +19,8 @@ constexpr float kSquareZ = -6.0f;  // pixels 1/8 wide
 constexpr float kSquareHalf = 1.0f;
 
 PerspectiveCamera camera_at(const Vec3& eye, const Vec3& forward) {
-    return PerspectiveCamera(eye, eye + forward, Vec3(0, 1, 0), kFov, Vec2i(kWidth, kHeight),
-                             0.0f, 1.0f);
+    return PerspectiveCamera(eye, eye + forward, Vec3(0, 1, 0), kFov, Vec2i(kWidth, kHeight), 0.0f,
+                             1.0f);
 }
 
 enum Surface : uint32_t { kWall = 0, kSquare = 1 };
@@ -134,7 +134,8 @@ TEST(Reprojection, RotationReusesEveryPixelStillInTheFrame) {
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x) {
             const Ray ray = previous_camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
-            wall_x[y * kWidth + x] = (ray.origin + previous.depth[y * kWidth + x] * ray.direction).x;
+            wall_x[y * kWidth + x] =
+                (ray.origin + previous.depth[y * kWidth + x] * ray.direction).x;
         }
     }
     const std::vector<float> fetched = fetch_history<float>(taps, wall_x, NAN);

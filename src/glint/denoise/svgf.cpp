@@ -97,15 +97,16 @@ void estimate_variance(Planes& p, const SvgfSettings& s) {
                     const std::size_t j = p.at(nx, ny);
                     if (!p.surface(j)) continue;
                     const float distance = std::sqrt(static_cast<float>(dx * dx + dy * dy));
-                    const float w = depth_weight(p, i, j, distance, s) *
-                                    normal_weight(glm::dot(in.normal[i], in.normal[j]),
-                                                  s.normal_power);
+                    const float w =
+                        depth_weight(p, i, j, distance, s) *
+                        normal_weight(glm::dot(in.normal[i], in.normal[j]), s.normal_power);
                     sum_w += w;
                     sum_m += w * in.moments[j];
                 }
             }
             const Vec2 m = sum_m / sum_w;  // sum_w > 0: the pixel itself has weight 1
-            p.variance[i] = std::max(0.0f, m.y - m.x * m.x) * (s.min_temporal_history / std::max(1.0f, h));
+            p.variance[i] =
+                std::max(0.0f, m.y - m.x * m.x) * (s.min_temporal_history / std::max(1.0f, h));
         }
     });
 }
@@ -151,8 +152,8 @@ void atrous_pass(const Planes& p, int step, const SvgfSettings& s, std::vector<R
                     if (!p.surface(j)) continue;
                     float w = kKernel[std::abs(kx)] * kKernel[std::abs(ky)];
                     if (j != i) {
-                        const float distance =
-                            static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
+                        const float distance = static_cast<float>(step) *
+                                               std::sqrt(static_cast<float>(kx * kx + ky * ky));
                         w *= depth_weight(p, i, j, distance, s) *
                              normal_weight(glm::dot(ni, in.normal[j]), s.normal_power) *
                              std::exp(-std::abs(li - p.luminance[j]) / luminance_scale);
@@ -188,15 +189,15 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
         input.albedo.size() != count || input.normal.size() != count ||
         input.depth.size() != count || input.moments.size() != count ||
         input.history_length.size() != count) {
-        throw Error(fmt::format("SVGF: every input must hold {}x{} pixels", input.width,
-                                input.height));
+        throw Error(
+            fmt::format("SVGF: every input must hold {}x{} pixels", input.width, input.height));
     }
     Planes p{input.width, input.height, {}, {}, {}, {}, &input};
     p.illumination.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
         const Rgb d = svgf_demodulation(input.albedo[i]);
-        p.illumination[i] = Rgb(input.colour[i].r / d.r, input.colour[i].g / d.g,
-                                input.colour[i].b / d.b);
+        p.illumination[i] =
+            Rgb(input.colour[i].r / d.r, input.colour[i].g / d.g, input.colour[i].b / d.b);
     }
     estimate_depth_gradient(p);
     estimate_variance(p, settings);
@@ -210,7 +211,8 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
         std::swap(p.variance, next_var);
     }
     std::vector<Rgb> result(count);
-    for (std::size_t i = 0; i < count; ++i) result[i] = p.illumination[i] * svgf_demodulation(input.albedo[i]);
+    for (std::size_t i = 0; i < count; ++i)
+        result[i] = p.illumination[i] * svgf_demodulation(input.albedo[i]);
     return result;
 }
 

@@ -16,10 +16,10 @@
 namespace glint {
 
 struct SvgfSettings {
-    int levels = 5;                 ///< à-trous passes (hole 2^i at pass i)
-    float sigma_luminance = 4.0f;   ///< luminance stopping, in standard deviations
-    float normal_power = 128.0f;    ///< normal stopping: max(0, n_p . n_q)^power
-    float sigma_depth = 1.0f;       ///< depth stopping, in units of the local depth gradient
+    int levels = 5;                ///< à-trous passes (hole 2^i at pass i)
+    float sigma_luminance = 4.0f;  ///< luminance stopping, in standard deviations
+    float normal_power = 128.0f;   ///< normal stopping: max(0, n_p . n_q)^power
+    float sigma_depth = 1.0f;      ///< depth stopping, in units of the local depth gradient
     /// Pixels with a shorter history estimate their variance from a 7x7 neighbourhood.
     float min_temporal_history = 4.0f;
 };
@@ -27,8 +27,8 @@ struct SvgfSettings {
 /// One frame's inputs, one value per pixel, row-major, top row first.
 struct SvgfInput {
     int width = 0, height = 0;
-    std::span<const Rgb> colour;  ///< temporally accumulated linear radiance
-    std::span<const Rgb> albedo;  ///< first-hit albedo (1 where there is nothing to demodulate)
+    std::span<const Rgb> colour;   ///< temporally accumulated linear radiance
+    std::span<const Rgb> albedo;   ///< first-hit albedo (1 where there is nothing to demodulate)
     std::span<const Vec3> normal;  ///< first-hit world normal
     std::span<const float> depth;  ///< distance along the camera ray; 0 where the ray escaped
     /// Accumulated means of the demodulated luminance Y and of Y^2 (moments()), and how many

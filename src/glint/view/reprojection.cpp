@@ -26,8 +26,7 @@ HistoryTaps taps_of(const GeometryBuffer& current, std::size_t i, const Ray& ray
                     const GeometryBuffer& previous, const Camera& previous_camera,
                     const ReprojectionTolerances& tol) {
     HistoryTaps taps;
-    const Vec3 point =
-        ray.origin + (current.hit(i) ? current.depth[i] : kFarAway) * ray.direction;
+    const Vec3 point = ray.origin + (current.hit(i) ? current.depth[i] : kFarAway) * ray.direction;
     const std::optional<FilmProjection> projected = previous_camera.project(point);
     if (!projected) return taps;
     // Pixel centres sit at half-integers: the taps are the four centres around the position.
@@ -58,19 +57,17 @@ std::vector<HistoryTaps> reproject(const GeometryBuffer& current, const Camera& 
                                    const GeometryBuffer& previous, const Camera& previous_camera,
                                    const ReprojectionTolerances& tolerances) {
     std::vector<HistoryTaps> result(current.size());
-    tbb::parallel_for(tbb::blocked_range<int>(0, current.height),
-                      [&](const tbb::blocked_range<int>& rows) {
-                          for (int y = rows.begin(); y < rows.end(); ++y) {
-                              for (int x = 0; x < current.width; ++x) {
-                                  const std::size_t i =
-                                      static_cast<std::size_t>(y) * current.width + x;
-                                  const Ray ray = current_camera.generate_ray(
-                                      Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
-                                  result[i] = taps_of(current, i, ray, previous, previous_camera,
-                                                      tolerances);
-                              }
-                          }
-                      });
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, current.height), [&](const tbb::blocked_range<int>& rows) {
+            for (int y = rows.begin(); y < rows.end(); ++y) {
+                for (int x = 0; x < current.width; ++x) {
+                    const std::size_t i = static_cast<std::size_t>(y) * current.width + x;
+                    const Ray ray =
+                        current_camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
+                    result[i] = taps_of(current, i, ray, previous, previous_camera, tolerances);
+                }
+            }
+        });
     return result;
 }
 
