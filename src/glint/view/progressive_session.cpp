@@ -128,7 +128,9 @@ void ProgressiveSession::record_pass() {
     const Image image = m_film.resolve();
     const float k = static_cast<float>(m_passes);
     for (std::size_t i = 0; i < m_mean.size(); ++i) {
-        const Rgb mean(image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]);
+        // R, G, B come first, then the AOVs when the film has them.
+        const float* rgb = &image.pixels[i * image.channels.size()];
+        const Rgb mean(rgb[0], rgb[1], rgb[2]);
         // The pass's own value, from the means before and after it.
         const Rgb pass = mean * k - m_mean[i] * (k - 1.0f);
         m_moment_sums[i] += svgf_moments(pass, m_geometry->albedo[i]);
@@ -224,7 +226,8 @@ Image ProgressiveSession::svgf_image() const {
     std::vector<float> lengths(pixels);
     const float inverse = m_passes > 0 ? 1.0f / static_cast<float>(m_passes) : 0.0f;
     for (std::size_t i = 0; i < pixels; ++i) {
-        colour[i] = Rgb(image.pixels[3 * i], image.pixels[3 * i + 1], image.pixels[3 * i + 2]);
+        const float* rgb = &image.pixels[i * image.channels.size()];
+        colour[i] = Rgb(rgb[0], rgb[1], rgb[2]);
         const Vec2 frame_moments = m_moment_sums[i] * inverse;
         moments[i] =
             has_history() ? m_history.blend_moments(i, frame_moments, m_passes) : frame_moments;
@@ -241,9 +244,10 @@ Image ProgressiveSession::svgf_image() const {
     input.moments = moments;
     input.history_length = lengths;
     const std::vector<Rgb> filtered = svgf_filter(input);
+    Image result = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
     for (std::size_t i = 0; i < pixels; ++i)
-        for (int ch = 0; ch < 3; ++ch) image.pixels[3 * i + ch] = filtered[i][ch];
-    return image;
+        for (int ch = 0; ch < 3; ++ch) result.pixels[3 * i + ch] = filtered[i][ch];
+    return result;
 }
 
 std::vector<std::string> ProgressiveSession::progressive_integrators(
