@@ -40,12 +40,14 @@ TEST(CameraProject, OrthographicInvertsGenerateRay) {
     expect_round_trip(camera);
 }
 
-TEST(CameraProject, PointsBehindOrOutsideTheFrameHaveNoFilmPosition) {
+TEST(CameraProject, PointsBehindHaveNoFilmPositionAndOutsideTheFrameLieOffIt) {
     const PerspectiveCamera perspective(Vec3(0), Vec3(0, 0, -1), Vec3(0, 1, 0), 90.0f, kResolution,
                                         0.0f, 1.0f);
-    EXPECT_FALSE(perspective.project(Vec3(0, 0, 1)).has_value());      // behind
-    EXPECT_FALSE(perspective.project(Vec3(0, 0, 0)).has_value());      // at the eye
-    EXPECT_FALSE(perspective.project(Vec3(0, 1.5f, -1)).has_value());  // above the frame
+    EXPECT_FALSE(perspective.project(Vec3(0, 0, 1)).has_value());  // behind
+    EXPECT_FALSE(perspective.project(Vec3(0, 0, 0)).has_value());  // at the eye
+    const auto above = perspective.project(Vec3(0, 1.5f, -1));
+    ASSERT_TRUE(above.has_value());
+    EXPECT_FLOAT_EQ(above->film.y, 24.0f - 1.5f * 24.0f);  // above the frame: y < 0
     const auto centre = perspective.project(Vec3(0, 0, -2));
     ASSERT_TRUE(centre.has_value());
     EXPECT_FLOAT_EQ(centre->film.x, 32.0f);
@@ -55,7 +57,9 @@ TEST(CameraProject, PointsBehindOrOutsideTheFrameHaveNoFilmPosition) {
     const OrthographicCamera orthographic(Vec3(0), Vec3(0, 0, -1), Vec3(0, 1, 0), 2.0f,
                                           kResolution);
     EXPECT_FALSE(orthographic.project(Vec3(0, 0, 1)).has_value());
-    EXPECT_FALSE(orthographic.project(Vec3(0, 1.5f, -1)).has_value());
+    const auto off = orthographic.project(Vec3(0, 1.5f, -1));
+    ASSERT_TRUE(off.has_value());
+    EXPECT_FLOAT_EQ(off->film.y, -12.0f);
     const auto corner = orthographic.project(Vec3(-4.0f / 3.0f, 1.0f, -5.0f));
     ASSERT_TRUE(corner.has_value());
     EXPECT_NEAR(corner->film.x, 0.0f, 1e-4f);

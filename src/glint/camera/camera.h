@@ -114,8 +114,9 @@ public:
 
     /// generate_ray backwards for the centre of the lens: the film position whose ray from
     /// the lens centre (the pinhole; for an orthographic camera its film rectangle) passes
-    /// through `p`, and the distance along that ray. nullopt when `p` is behind the camera
-    /// or lands outside the frame [0, width] x [0, height]. For reprojecting earlier frames
+    /// through `p`, and the distance along that ray. nullopt when `p` is behind the camera;
+    /// the position may lie outside the frame [0, width] x [0, height] (a caller that warps
+    /// whole triangles needs their corners off the frame too). For reprojecting earlier frames
     /// (view/reprojection.h) and warping images by their depth (view/image_warp.h).
     virtual std::optional<FilmProjection> project(const Vec3& p) const = 0;
 

@@ -55,7 +55,6 @@ std::optional<FilmProjection> OrthographicCamera::project(const Vec3& p) const {
     if (!(depth > 0.0f)) return std::nullopt;
     const float sx = glm::dot(p - m_eye, m_right) / m_half_width;
     const float sy = glm::dot(p - m_eye, m_up) / m_half_height;
-    if (!(sx >= -1.0f && sx <= 1.0f && sy >= -1.0f && sy <= 1.0f)) return std::nullopt;
     const Vec2 film(0.5f * (sx + 1.0f) * m_resolution.x, 0.5f * (1.0f - sy) * m_resolution.y);
     return FilmProjection{film, depth};
 }

@@ -97,7 +97,6 @@ std::optional<FilmProjection> PerspectiveCamera::project(const Vec3& p) const {
     // pinhole_direction inverted: the screen coordinates of to_p / z (forward part 1).
     const float sx = glm::dot(to_p, m_right) / (z * m_tan_half_fov * m_aspect);
     const float sy = glm::dot(to_p, m_up) / (z * m_tan_half_fov);
-    if (!(sx >= -1.0f && sx <= 1.0f && sy >= -1.0f && sy <= 1.0f)) return std::nullopt;
     const Vec2 film(0.5f * (sx + 1.0f) * m_resolution.x, 0.5f * (1.0f - sy) * m_resolution.y);
     return FilmProjection{film, glm::length(to_p)};
 }

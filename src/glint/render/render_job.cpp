@@ -1,3 +1,4 @@
+#include <glint/camera/camera_attributes.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/denoise/film_denoiser.h>
@@ -106,9 +107,10 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
 // wavelengths, and multiplying the two would give wrong colours without a word.
 void check_spectral_media(const Scene& scene, const RenderSettings& settings) {
     if (!settings.spectral || scene.media().empty()) return;
-    throw Error(fmt::format("{}: participating media (glint.medium) are not spectral yet; "
-                            "render this scene without spectral = true",
-                            settings.where_of("spectral")));
+    throw Error(
+        fmt::format("{}: participating media (glint.medium) are not spectral yet; "
+                    "render this scene without spectral = true",
+                    settings.where_of("spectral")));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
@@ -166,6 +168,13 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
         partial ? partial_sums_image(film, settings, *samples) : final_image(film, result.stats);
     if (film_aovs && !settings.aovs)
         result.image = without_channels(result.image, {"albedo.", "normal.", "depth."});
+    // An image with depth records its camera, so that `glint warp` can show it from a
+    // nearby viewpoint without the scene.
+    if (settings.aovs && !partial) {
+        for (auto& attribute : camera_attributes(desc.camera ? &*desc.camera : nullptr,
+                                                 Vec2i(settings.width, settings.height)))
+            result.image.attributes.push_back(std::move(attribute));
+    }
     if (settings.denoise) {
         const auto start = std::chrono::steady_clock::now();
         result.denoised = denoise_film(film, settings, control);
