@@ -34,7 +34,8 @@ public:
           m_height(height),
           m_settings(settings),
           m_depth(static_cast<std::size_t>(width) * height, std::numeric_limits<float>::infinity()),
-          m_colour(m_depth.size(), settings.hole_colour) {}
+          m_colour(m_depth.size(), settings.hole_colour),
+          m_point(m_depth.size(), 0) {}
 
     void triangle(const Vertex& a, const Vertex& b, const Vertex& c) {
         if (!a.valid || !b.valid || !c.valid) return;
@@ -72,6 +73,22 @@ public:
         }
     }
 
+    // A vertex on its own into the pixel it lands in, where no triangle is (the nearest
+    // point wins): fills the pixels along an edge, whose depth, a blend of both sides, joins
+    // no triangle.
+    void point(const Vertex& v) {
+        if (!v.valid) return;
+        const int x = static_cast<int>(std::floor(v.film.x));
+        const int y = static_cast<int>(std::floor(v.film.y));
+        if (x < 0 || y < 0 || x >= m_width || y >= m_height) return;
+        const std::size_t i = static_cast<std::size_t>(y) * m_width + x;
+        const bool free = std::isinf(m_depth[i]) || (m_point[i] && v.depth < m_depth[i]);
+        if (!free) return;
+        m_depth[i] = v.depth;
+        m_colour[i] = v.colour;
+        m_point[i] = 1;
+    }
+
     WarpResult result() const {
         WarpResult r;
         r.image = make_image(m_width, m_height, {"R", "G", "B"});
@@ -89,6 +106,7 @@ private:
     const WarpSettings& m_settings;
     std::vector<float> m_depth;
     std::vector<Rgb> m_colour;
+    std::vector<uint8_t> m_point;  // 1 where a point, not a triangle, drew the pixel
 };
 
 }  // namespace
@@ -128,6 +146,7 @@ WarpResult warp_image(const Image& source, const Camera& source_camera, const Ca
             raster.triangle(vertex(x + 1, y), vertex(x + 1, y + 1), vertex(x, y + 1));
         }
     }
+    for (const Vertex& v : vertices) raster.point(v);
     return raster.result();
 }
 

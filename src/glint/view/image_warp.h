@@ -5,7 +5,8 @@
 // the new image with a depth buffer (nearer wins), its colour interpolated. A triangle
 // across a depth discontinuity would stretch a foreground edge over what lies behind it: it
 // is dropped instead, and the new pixels nothing covers are disocclusions, which the source
-// never saw, painted a flat colour and counted.
+// never saw, painted a flat colour and counted. Each source pixel is also drawn as a point
+// (behind the triangles) so that edge pixels, whose depth blends both sides, are kept.
 #include <glint/core/rgb.h>
 #include <glint/film/image.h>
 
@@ -18,7 +19,7 @@ class Camera;
 
 struct WarpSettings {
     /// Neighbouring depths further apart than this fraction are a discontinuity.
-    float depth_discontinuity = 0.05f;
+    float depth_discontinuity = 0.1f;
     /// Projected triangles wider or taller than this many pixels are dropped (a point that
     /// came close to the new eye).
     float max_triangle_pixels = 32.0f;
