@@ -114,8 +114,13 @@ int run_warp(const WarpOptions& options) {
     Params target_params = original.params;
     apply_camera_flag(options.camera, target_params);
     const auto source_camera = make_camera(original.params, original.resolution);
-    const auto target_camera = with_flag_errors_as_usage_errors(
-        [&] { return make_camera(target_params, original.resolution); });
+    std::unique_ptr<Camera> target_camera;
+    try {
+        target_camera = make_camera(target_params, original.resolution);
+    } catch (const Error& e) {
+        // The original camera was fine: what --camera changed is not.
+        throw CLI::ValidationError(fmt::format("--camera '{}': {}", options.camera, e.what()));
+    }
 
     const WarpResult warped =
         warp_image(source, *source_camera, *target_camera, source.width, source.height);
