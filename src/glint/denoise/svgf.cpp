@@ -7,18 +7,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 
 namespace glint {
 namespace {
 
 constexpr float kAlbedoFloor = 1e-3f;
-constexpr float kKernel[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};  // B3 spline, |offset|
+// The à-trous kernels' weights by |offset|: the B3 spline (5x5, as the paper) and its 3x3
+// counterpart (as A-SVGF, Schied et al. 2018, for speed).
+constexpr float kKernel5[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
+constexpr float kKernel3[2] = {1.0f / 2.0f, 1.0f / 4.0f};
 
 template <typename Body>
 void for_rows(int height, const Body& body) {
     tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
         for (int y = rows.begin(); y < rows.end(); ++y) body(y);
     });
+}
+
+// exp(-x) for x >= 0 to about 1e-5 relative: 2^-t as an exponent in the float's bits times
+// a polynomial for the fraction. The filter's weights need no more, and std::exp is most of
+// an à-trous tap's time.
+float exp_negative(float x) {
+    const float t = std::min(x * 1.44269504f, 126.0f);  // -x in powers of two, clamped
+    const float n = std::floor(t);
+    const float f = n - t;  // in (-1, 0]
+    // 2^f on (-1, 0], a degree-5 fit.
+    const float p =
+        1.0f +
+        f * (0.693147182f +
+             f * (0.240226507f + f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
+    const int exponent = 127 - static_cast<int>(n);
+    uint32_t bits = static_cast<uint32_t>(exponent) << 23;
+    float scale;
+    std::memcpy(&scale, &bits, sizeof scale);
+    return p * scale;
 }
 
 // max(0, c)^power for the integer powers of two the normal test uses, by squaring.
@@ -112,9 +136,19 @@ void estimate_variance(Planes& p, const SvgfSettings& s) {
 }
 
 // One à-trous pass with holes `step` pixels apart: illumination and variance into `out`.
+// The three stopping functions multiply into one exponential per tap (the normal's power by
+// squaring), and each tap's distance comes from a table: the pass is most of the filter's
+// time.
 void atrous_pass(const Planes& p, int step, const SvgfSettings& s, std::vector<Rgb>& out_illum,
                  std::vector<float>& out_var) {
     const SvgfInput& in = *p.input;
+    const int r = s.kernel_radius;
+    float distance[5][5] = {};
+    for (int ky = -r; ky <= r; ++ky)
+        for (int kx = -r; kx <= r; ++kx)
+            distance[ky + 2][kx + 2] =
+                static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
+    const float* kernel = r == 1 ? kKernel3 : kKernel5;
     for_rows(p.height, [&](int y) {
         for (int x = 0; x < p.width; ++x) {
             const std::size_t i = p.at(x, y);
@@ -126,9 +160,11 @@ void atrous_pass(const Planes& p, int step, const SvgfSettings& s, std::vector<R
             // The luminance test's scale: the standard deviation, blurred 3x3 (less noisy).
             float blurred_var = 0.0f, blur_w = 0.0f;
             for (int dy = -1; dy <= 1; ++dy) {
+                const int ny = y + dy;
+                if (ny < 0 || ny >= p.height) continue;
                 for (int dx = -1; dx <= 1; ++dx) {
-                    const int nx = x + dx, ny = y + dy;
-                    if (nx < 0 || ny < 0 || nx >= p.width || ny >= p.height) continue;
+                    const int nx = x + dx;
+                    if (nx < 0 || nx >= p.width) continue;
                     const std::size_t j = p.at(nx, ny);
                     if (!p.surface(j)) continue;
                     const float w = (dx == 0 ? 0.5f : 0.25f) * (dy == 0 ? 0.5f : 0.25f);
@@ -136,27 +172,36 @@ void atrous_pass(const Planes& p, int step, const SvgfSettings& s, std::vector<R
                     blur_w += w;
                 }
             }
-            const float luminance_scale =
-                s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) + 1e-6f;
+            const float inv_luminance_scale =
+                1.0f /
+                (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) + 1e-6f);
             const float li = p.luminance[i];
+            const float zi = in.depth[i];
+            // 1 / the depth test's scale at each tap's distance.
+            const float depth_slope = s.sigma_depth * p.depth_gradient[i];
+            float inv_depth_scale[5][5];
+            for (int ky = -r; ky <= r; ++ky)
+                for (int kx = -r; kx <= r; ++kx)
+                    inv_depth_scale[ky + 2][kx + 2] =
+                        1.0f / (depth_slope * distance[ky + 2][kx + 2] + 1e-3f * zi);
             const Vec3 ni = in.normal[i];
             Rgb sum(0.0f);
             float sum_w = 0.0f, sum_var = 0.0f;
-            for (int ky = -2; ky <= 2; ++ky) {
+            for (int ky = -r; ky <= r; ++ky) {
                 const int ny = y + ky * step;
                 if (ny < 0 || ny >= p.height) continue;
-                for (int kx = -2; kx <= 2; ++kx) {
+                for (int kx = -r; kx <= r; ++kx) {
                     const int nx = x + kx * step;
                     if (nx < 0 || nx >= p.width) continue;
                     const std::size_t j = p.at(nx, ny);
                     if (!p.surface(j)) continue;
-                    float w = kKernel[std::abs(kx)] * kKernel[std::abs(ky)];
+                    float w = kernel[std::abs(kx)] * kernel[std::abs(ky)];
                     if (j != i) {
-                        const float distance = static_cast<float>(step) *
-                                               std::sqrt(static_cast<float>(kx * kx + ky * ky));
-                        w *= depth_weight(p, i, j, distance, s) *
-                             normal_weight(glm::dot(ni, in.normal[j]), s.normal_power) *
-                             std::exp(-std::abs(li - p.luminance[j]) / luminance_scale);
+                        const float exponent =
+                            std::abs(zi - in.depth[j]) * inv_depth_scale[ky + 2][kx + 2] +
+                            std::abs(li - p.luminance[j]) * inv_luminance_scale;
+                        w *= normal_weight(glm::dot(ni, in.normal[j]), s.normal_power) *
+                             exp_negative(exponent);
                     }
                     sum += p.illumination[j] * w;
                     sum_w += w;

@@ -16,7 +16,10 @@
 namespace glint {
 
 struct SvgfSettings {
-    int levels = 5;                ///< à-trous passes (hole 2^i at pass i)
+    int levels = 5;  ///< à-trous passes (hole 2^i at pass i)
+    /// 2: the 5x5 B3-spline kernel of the paper; 1: a 3x3 kernel (A-SVGF's), about 2.5 times
+    /// faster, a little less smooth.
+    int kernel_radius = 2;
     float sigma_luminance = 4.0f;  ///< luminance stopping, in standard deviations
     float normal_power = 128.0f;   ///< normal stopping: max(0, n_p . n_q)^power
     float sigma_depth = 1.0f;      ///< depth stopping, in units of the local depth gradient
@@ -45,7 +48,8 @@ Vec2 svgf_moments(const Rgb& colour, const Rgb& albedo);
 
 /// The filtered colour. Pixels whose ray escaped (depth 0) pass through unchanged and are
 /// nobody's neighbour. Runs in parallel (TBB); the same result for any thread count. Throws
-/// glint::Error when the inputs' sizes do not match width x height.
+/// glint::Error when the inputs' sizes do not match width x height or the settings are out of
+/// range.
 std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& settings = {});
 
 }  // namespace glint

@@ -26,7 +26,7 @@ GeometryBuffer trace_geometry_buffer(const Scene& scene, const Camera& camera, i
                 const std::size_t i = static_cast<std::size_t>(y) * width + x;
                 const Ray ray = camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
                 HitRecord hit{};
-                if (!scene.accel().intersect(ray, hit) || !scene.intersect(ray, si)) continue;
+                if (!scene.intersect(ray, si, hit)) continue;
                 buffer.depth[i] = si.t;
                 const Vec3 n = si.shading.n();
                 buffer.normal[i] = glm::dot(n, ray.direction) > 0.0f ? -n : n;

@@ -243,7 +243,7 @@ Image ProgressiveSession::svgf_image() const {
     input.depth = m_geometry->depth;
     input.moments = moments;
     input.history_length = lengths;
-    const std::vector<Rgb> filtered = svgf_filter(input);
+    const std::vector<Rgb> filtered = svgf_filter(input, m_options.svgf);
     Image result = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
     for (std::size_t i = 0; i < pixels; ++i)
         for (int ch = 0; ch < 3; ++ch) result.pixels[3 * i + ch] = filtered[i][ch];

@@ -10,6 +10,7 @@
 // since (temporal_history.h), which, once the camera stops, fade it out, leaving the film's
 // image exactly. svgf_image() filters what is shown with the real-time denoiser.
 #include <glint/core/params.h>
+#include <glint/denoise/svgf.h>
 #include <glint/film/film.h>
 #include <glint/film/image.h>
 #include <glint/integrator/integrator.h>
@@ -43,6 +44,8 @@ struct SessionOptions {
     /// The longest history in frames (TemporalHistory): after a stop, the image is the
     /// film's again after at most this many passes plus one.
     int temporal_max_length = 32;
+    /// The real-time denoiser's settings (svgf_image()).
+    SvgfSettings svgf;
 };
 
 /// What render_next() did.

@@ -28,7 +28,11 @@ HistoryTaps taps_of(const GeometryBuffer& current, std::size_t i, const Ray& ray
     HistoryTaps taps;
     const Vec3 point = ray.origin + (current.hit(i) ? current.depth[i] : kFarAway) * ray.direction;
     const std::optional<FilmProjection> projected = previous_camera.project(point);
-    if (!projected) return taps;
+    // Off the previous frame there is no history, even where a tap at its edge would reach.
+    if (!projected || !(projected->film.x >= 0.0f && projected->film.y >= 0.0f &&
+                        projected->film.x <= static_cast<float>(previous.width) &&
+                        projected->film.y <= static_cast<float>(previous.height)))
+        return taps;
     // Pixel centres sit at half-integers: the taps are the four centres around the position.
     const float fx = projected->film.x - 0.5f, fy = projected->film.y - 0.5f;
     const int x0 = static_cast<int>(std::floor(fx)), y0 = static_cast<int>(std::floor(fy));
