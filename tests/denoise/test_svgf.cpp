@@ -5,6 +5,7 @@
 #include <glint/denoise/svgf.h>
 
 #include <gtest/gtest.h>
+#include <tbb/global_control.h>
 
 #include <cmath>
 #include <cstdio>
@@ -132,6 +133,20 @@ TEST(Svgf, EscapedPixelsPassThrough) {
     for (float& d : s.depth) d = 0.0f;
     const std::vector<Rgb> filtered = filter(s);
     for (std::size_t i = 0; i < filtered.size(); ++i) EXPECT_EQ(filtered[i], s.noisy[i]);
+}
+
+TEST(Svgf, SameBitsForOneAndTwoThreads) {
+    const Scene s = noisy_edge(Rgb(0.5f), Rgb(1.0f), 0.3f, 0.7f, 2);
+    std::vector<Rgb> one, two;
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 1);
+        one = filter(s);
+    }
+    {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, 2);
+        two = filter(s);
+    }
+    for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << "pixel " << i;
 }
 
 TEST(Svgf, SizesMustMatch) {
