@@ -432,7 +432,9 @@ private:
             } else {
                 write_outputs({{path, &m_frame.image, {}}});
             }
-            m_ui.message = fmt::format("wrote {} ({} spp)", path, m_frame.passes);
+            m_ui.message = fmt::format("wrote {} ({} spp{}{})", path, m_frame.passes,
+                                       m_frame.svgf ? ", SVGF" : "",
+                                       m_frame.temporal ? ", with reprojected history" : "");
         } catch (const Error& e) {
             m_ui.message = e.what();
         }
