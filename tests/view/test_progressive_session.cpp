@@ -336,6 +336,34 @@ TEST(ProgressiveSession, TemporalModeBlendsHistoryThenConvergesToTheFilm) {
     EXPECT_FALSE(session.has_history()) << "a light edit resets the history";
 }
 
+TEST(ProgressiveSession, TemporalModeAndSvgfGiveTheSameBitsForOneAndTwoThreads) {
+    const std::string code = test::example_with_settings(
+        "cornell-box.lua", "width = 24, height = 18, spp = 64, seed = 3, integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    auto run = [&](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        SessionOptions options;
+        options.realtime = true;
+        options.temporal = true;
+        options.reduced_scale = 1;
+        ProgressiveSession session(desc, parse_render_settings(&*desc.render), options);
+        Progress progress("test", 1, true);
+        CameraController controller(&*desc.camera);
+        for (int move = 0; move < 3; ++move) {
+            for (int pass = 0; pass < 2; ++pass) session.render_next(progress);
+            controller.orbit(3.0f, 1.0f);
+            session.set_camera(controller.params());
+        }
+        session.render_next(progress);
+        EXPECT_TRUE(session.has_history());
+        return std::pair{session.image(), session.svgf_image()};
+    };
+    const auto [one, one_svgf] = run(1);
+    const auto [two, two_svgf] = run(2);
+    expect_same_bits(one, two);
+    expect_same_bits(one_svgf, two_svgf);
+}
+
 TEST(ProgressiveSession, TemporalModeNeedsRealtimeBuffers) {
     const SceneDesc desc = load_scene_string(cornell(""), "cornell.lua");
     SessionOptions options;
