@@ -6,9 +6,11 @@
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <type_traits>
 
 namespace glint {
 namespace {
@@ -26,23 +28,49 @@ void for_rows(int height, const Body& body) {
     });
 }
 
+// Four floats or ints in one SSE register (GCC's vector extensions): an à-trous pass
+// computes four pixels' taps at once. Every operation is the IEEE one its scalar form does,
+// so the four lanes give the bits the scalar loop gives.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = int32_t __attribute__((vector_size(16)));
+
+Float4 load4(const float* p) {
+    Float4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+void store4(float* p, Float4 v) {
+    std::memcpy(p, &v, sizeof v);
+}
+Float4 abs4(Float4 v) {
+    return reinterpret_cast<Float4>(reinterpret_cast<Int4>(v) & 0x7fffffff);
+}
+
+// 2^f on (-1, 0], a degree-5 fit, for floats and Float4 alike.
+template <typename T>
+T exp2_fraction(T f) {
+    return 1.0f + f * (0.693147182f +
+                       f * (0.240226507f +
+                            f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
+}
+
 // exp(-x) for x >= 0 to about 1e-5 relative: 2^-t as an exponent in the float's bits times
 // a polynomial for the fraction. The filter's weights need no more, and std::exp is most of
-// an à-trous tap's time.
+// an à-trous tap's time. -x in powers of two is clamped (NaN too, from pixels whose result
+// is thrown away).
 float exp_negative(float x) {
-    const float t = std::min(x * 1.44269504f, 126.0f);  // -x in powers of two, clamped
-    const float n = std::floor(t);
-    const float f = n - t;  // in (-1, 0]
-    // 2^f on (-1, 0], a degree-5 fit.
-    const float p =
-        1.0f +
-        f * (0.693147182f +
-             f * (0.240226507f + f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
-    const int exponent = 127 - static_cast<int>(n);
-    uint32_t bits = static_cast<uint32_t>(exponent) << 23;
-    float scale;
-    std::memcpy(&scale, &bits, sizeof scale);
-    return p * scale;
+    const float scaled = x * 1.44269504f;
+    const float t = scaled < 126.0f ? scaled : 126.0f;
+    const int whole = static_cast<int>(t);  // floor: t >= 0
+    const float p = exp2_fraction(static_cast<float>(whole) - t);
+    return p * std::bit_cast<float>(static_cast<uint32_t>(127 - whole) << 23);
+}
+Float4 exp_negative(Float4 x) {
+    const Float4 scaled = x * 1.44269504f;
+    const Float4 t = scaled < 126.0f ? scaled : 126.0f;
+    const Int4 whole = __builtin_convertvector(t, Int4);
+    const Float4 p = exp2_fraction(__builtin_convertvector(whole, Float4) - t);
+    return p * reinterpret_cast<Float4>((127 - whole) << 23);
 }
 
 // max(0, c)^power for the integer powers of two the normal test uses, by squaring.
@@ -135,81 +163,184 @@ void estimate_variance(Planes& p, const SvgfSettings& s) {
     });
 }
 
-// One à-trous pass with holes `step` pixels apart: illumination and variance into `out`.
-// The three stopping functions multiply into one exponential per tap (the normal's power by
-// squaring), and each tap's distance comes from a table: the pass is most of the filter's
-// time.
-void atrous_pass(const Planes& p, int step, const SvgfSettings& s, std::vector<Rgb>& out_illum,
-                 std::vector<float>& out_var) {
-    const SvgfInput& in = *p.input;
-    const int r = s.kernel_radius;
-    float distance[5][5] = {};
-    for (int ky = -r; ky <= r; ++ky)
-        for (int kx = -r; kx <= r; ++kx)
-            distance[ky + 2][kx + 2] =
-                static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
+// The planes an à-trous pass reads and writes, one float per pixel each, so that a pass can
+// run along a row with every tap's arithmetic in SIMD lanes.
+struct Signal {
+    std::vector<float> r, g, b, variance, luminance;
+    explicit Signal(std::size_t count)
+        : r(count), g(count), b(count), variance(count), luminance(count) {}
+};
+
+// What the passes compare, constant over the levels.
+struct Guide {
+    int width, height;
+    const float* depth;
+    std::vector<float> nx, ny, nz;  // normals as planes
+    const float* depth_gradient;
+};
+
+// One à-trous pass with holes `step` pixels apart. Row by row, tap by tap: each tap's
+// weights for a whole row in one loop without branches (the compiler's SIMD lanes), the
+// stopping functions' exponents summed into one exponential, the normal's power by squaring.
+void atrous_pass(const Guide& g, const Signal& in, int step, const SvgfSettings& s, Signal& out) {
+    const int width = g.width, r = s.kernel_radius;
     const float* kernel = r == 1 ? kKernel3 : kKernel5;
-    for_rows(p.height, [&](int y) {
-        for (int x = 0; x < p.width; ++x) {
-            const std::size_t i = p.at(x, y);
-            if (!p.surface(i)) {
-                out_illum[i] = p.illumination[i];
-                out_var[i] = p.variance[i];
-                continue;
-            }
+    const bool square_normal = s.normal_power == 128.0f;
+    for_rows(g.height, [&](int y) {
+        const std::size_t row = static_cast<std::size_t>(y) * width;
+        std::vector<float> inv_luminance_scale(width), slope(width), floor_scale(width);
+        std::vector<float> sum_r(width), sum_g(width), sum_b(width), sum_w(width), sum_var(width);
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = row + x;
             // The luminance test's scale: the standard deviation, blurred 3x3 (less noisy).
             float blurred_var = 0.0f, blur_w = 0.0f;
             for (int dy = -1; dy <= 1; ++dy) {
                 const int ny = y + dy;
-                if (ny < 0 || ny >= p.height) continue;
+                if (ny < 0 || ny >= g.height) continue;
                 for (int dx = -1; dx <= 1; ++dx) {
                     const int nx = x + dx;
-                    if (nx < 0 || nx >= p.width) continue;
-                    const std::size_t j = p.at(nx, ny);
-                    if (!p.surface(j)) continue;
+                    if (nx < 0 || nx >= width) continue;
+                    const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
+                    if (!(g.depth[j] > 0.0f)) continue;
                     const float w = (dx == 0 ? 0.5f : 0.25f) * (dy == 0 ? 0.5f : 0.25f);
-                    blurred_var += w * p.variance[j];
+                    blurred_var += w * in.variance[j];
                     blur_w += w;
                 }
             }
-            const float inv_luminance_scale =
-                1.0f /
-                (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) + 1e-6f);
-            const float li = p.luminance[i];
-            const float zi = in.depth[i];
-            // 1 / the depth test's scale at each tap's distance.
-            const float depth_slope = s.sigma_depth * p.depth_gradient[i];
-            float inv_depth_scale[5][5];
-            for (int ky = -r; ky <= r; ++ky)
-                for (int kx = -r; kx <= r; ++kx)
-                    inv_depth_scale[ky + 2][kx + 2] =
-                        1.0f / (depth_slope * distance[ky + 2][kx + 2] + 1e-3f * zi);
-            const Vec3 ni = in.normal[i];
-            Rgb sum(0.0f);
-            float sum_w = 0.0f, sum_var = 0.0f;
-            for (int ky = -r; ky <= r; ++ky) {
-                const int ny = y + ky * step;
-                if (ny < 0 || ny >= p.height) continue;
-                for (int kx = -r; kx <= r; ++kx) {
-                    const int nx = x + kx * step;
-                    if (nx < 0 || nx >= p.width) continue;
-                    const std::size_t j = p.at(nx, ny);
-                    if (!p.surface(j)) continue;
-                    float w = kernel[std::abs(kx)] * kernel[std::abs(ky)];
-                    if (j != i) {
-                        const float exponent =
-                            std::abs(zi - in.depth[j]) * inv_depth_scale[ky + 2][kx + 2] +
-                            std::abs(li - p.luminance[j]) * inv_luminance_scale;
-                        w *= normal_weight(glm::dot(ni, in.normal[j]), s.normal_power) *
-                             exp_negative(exponent);
+            inv_luminance_scale[x] =
+                blur_w > 0.0f
+                    ? 1.0f / (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) +
+                              1e-6f)
+                    : 0.0f;
+            slope[x] = s.sigma_depth * g.depth_gradient[i];
+            floor_scale[x] = 1e-3f * g.depth[i];
+            // The pixel itself, with the kernel's weight alone.
+            const float w = kernel[0] * kernel[0];
+            sum_r[x] = w * in.r[i];
+            sum_g[x] = w * in.g[i];
+            sum_b[x] = w * in.b[i];
+            sum_w[x] = w;
+            sum_var[x] = w * w * in.variance[i];
+        }
+        const float* zi = g.depth + row;
+        const float* li = in.luminance.data() + row;
+        const float* nxi = g.nx.data() + row;
+        const float* nyi = g.ny.data() + row;
+        const float* nzi = g.nz.data() + row;
+        for (int ky = -r; ky <= r; ++ky) {
+            const int ty = y + ky * step;
+            if (ty < 0 || ty >= g.height) continue;
+            for (int kx = -r; kx <= r; ++kx) {
+                if (kx == 0 && ky == 0) continue;
+                const int dx = kx * step;
+                const int x0 = std::max(0, -dx), x1 = std::min(width, width - dx);
+                if (x0 >= x1) continue;
+                const float kernel_w = kernel[std::abs(kx)] * kernel[std::abs(ky)];
+                const float distance =
+                    static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
+                // Tap j of pixel x is element x of these.
+                const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(ty) * width + dx;
+                const float* zj = g.depth + shift;
+                const float* lj = in.luminance.data() + shift;
+                const float* nxj = g.nx.data() + shift;
+                const float* nyj = g.ny.data() + shift;
+                const float* nzj = g.nz.data() + shift;
+                const float* rj = in.r.data() + shift;
+                const float* gj = in.g.data() + shift;
+                const float* bj = in.b.data() + shift;
+                const float* vj = in.variance.data() + shift;
+                // The loop twice, so that the usual power of 128 needs no branch inside. Local
+                // restrict pointers tell the compiler the sums alias no input: it can then run
+                // the loop in SIMD lanes.
+                auto taps = [&](auto normal_of) {
+                    const float* __restrict czi = zi;
+                    const float* __restrict cli = li;
+                    const float* __restrict cnx = nxi;
+                    const float* __restrict cny = nyi;
+                    const float* __restrict cnz = nzi;
+                    const float* __restrict tz = zj;
+                    const float* __restrict tl = lj;
+                    const float* __restrict tnx = nxj;
+                    const float* __restrict tny = nyj;
+                    const float* __restrict tnz = nzj;
+                    const float* __restrict tr = rj;
+                    const float* __restrict tg = gj;
+                    const float* __restrict tb = bj;
+                    const float* __restrict tv = vj;
+                    const float* __restrict sl = slope.data();
+                    const float* __restrict fl = floor_scale.data();
+                    const float* __restrict il = inv_luminance_scale.data();
+                    float* __restrict sr = sum_r.data();
+                    float* __restrict sg = sum_g.data();
+                    float* __restrict sb = sum_b.data();
+                    float* __restrict sw = sum_w.data();
+                    float* __restrict sv = sum_var.data();
+                    const float kw = kernel_w, dist = distance;
+                    int x = x0;
+                    for (; x + 4 <= x1; x += 4) {
+                        const Float4 cosine = load4(cnx + x) * load4(tnx + x) +
+                                              load4(cny + x) * load4(tny + x) +
+                                              load4(cnz + x) * load4(tnz + x);
+                        const Float4 z = load4(tz + x);
+                        const Float4 exponent =
+                            abs4(load4(czi + x) - z) / (load4(sl + x) * dist + load4(fl + x)) +
+                            abs4(load4(cli + x) - load4(tl + x)) * load4(il + x);
+                        const Float4 zero{};
+                        const Float4 weight =
+                            kw * normal_of(cosine > 0.0f ? cosine : zero) * exp_negative(exponent);
+                        const Float4 w = z > 0.0f ? weight : zero;  // escaped: no part
+                        store4(sr + x, load4(sr + x) + w * load4(tr + x));
+                        store4(sg + x, load4(sg + x) + w * load4(tg + x));
+                        store4(sb + x, load4(sb + x) + w * load4(tb + x));
+                        store4(sw + x, load4(sw + x) + w);
+                        store4(sv + x, load4(sv + x) + w * w * load4(tv + x));
                     }
-                    sum += p.illumination[j] * w;
-                    sum_w += w;
-                    sum_var += w * w * p.variance[j];
+                    for (; x < x1; ++x) {
+                        const float cosine = cnx[x] * tnx[x] + cny[x] * tny[x] + cnz[x] * tnz[x];
+                        const float exponent = std::abs(czi[x] - tz[x]) / (sl[x] * dist + fl[x]) +
+                                               std::abs(cli[x] - tl[x]) * il[x];
+                        const float weight =
+                            kw * normal_of(cosine > 0.0f ? cosine : 0.0f) * exp_negative(exponent);
+                        const float w = tz[x] > 0.0f ? weight : 0.0f;  // escaped: no part
+                        sr[x] += w * tr[x];
+                        sg[x] += w * tg[x];
+                        sb[x] += w * tb[x];
+                        sw[x] += w;
+                        sv[x] += w * w * tv[x];
+                    }
+                };
+                if (square_normal) {
+                    taps([](auto c) {
+                        c *= c, c *= c, c *= c, c *= c, c *= c, c *= c;
+                        return c * c;  // c^128
+                    });
+                } else {
+                    taps([&](auto c) {
+                        // Any other power lane by lane (slower; the settings' default is 128).
+                        if constexpr (std::is_same_v<decltype(c), float>) {
+                            return std::pow(c, s.normal_power);
+                        } else {
+                            for (int k = 0; k < 4; ++k) c[k] = std::pow(c[k], s.normal_power);
+                            return c;
+                        }
+                    });
                 }
             }
-            out_illum[i] = sum / sum_w;
-            out_var[i] = sum_var / (sum_w * sum_w);
+        }
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = row + x;
+            if (!(g.depth[i] > 0.0f)) {  // escaped: passes through
+                out.r[i] = in.r[i];
+                out.g[i] = in.g[i];
+                out.b[i] = in.b[i];
+                out.variance[i] = in.variance[i];
+                continue;
+            }
+            const float inv = 1.0f / sum_w[x];
+            out.r[i] = sum_r[x] * inv;
+            out.g[i] = sum_g[x] * inv;
+            out.b[i] = sum_b[x] * inv;
+            out.variance[i] = sum_var[x] * inv * inv;
         }
     });
 }
@@ -246,18 +377,29 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
     }
     estimate_depth_gradient(p);
     estimate_variance(p, settings);
-    std::vector<Rgb> next_illum(count);
-    std::vector<float> next_var(count);
-    p.luminance.resize(count);
+    Guide guide{input.width, input.height, input.depth.data(), {}, {}, {}, p.depth_gradient.data()};
+    guide.nx.resize(count);
+    guide.ny.resize(count);
+    guide.nz.resize(count);
+    Signal signal(count), next(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        guide.nx[i] = input.normal[i].x;
+        guide.ny[i] = input.normal[i].y;
+        guide.nz[i] = input.normal[i].z;
+        signal.r[i] = p.illumination[i].r;
+        signal.g[i] = p.illumination[i].g;
+        signal.b[i] = p.illumination[i].b;
+        signal.variance[i] = p.variance[i];
+    }
     for (int level = 0; level < settings.levels; ++level) {
-        for (std::size_t i = 0; i < count; ++i) p.luminance[i] = p.illumination[i].luminance();
-        atrous_pass(p, 1 << level, settings, next_illum, next_var);
-        std::swap(p.illumination, next_illum);
-        std::swap(p.variance, next_var);
+        for (std::size_t i = 0; i < count; ++i)
+            signal.luminance[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]).luminance();
+        atrous_pass(guide, signal, 1 << level, settings, next);
+        std::swap(signal, next);
     }
     std::vector<Rgb> result(count);
     for (std::size_t i = 0; i < count; ++i)
-        result[i] = p.illumination[i] * svgf_demodulation(input.albedo[i]);
+        result[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]) * svgf_demodulation(input.albedo[i]);
     return result;
 }
 
