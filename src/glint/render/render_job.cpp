@@ -107,10 +107,9 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
 // wavelengths, and multiplying the two would give wrong colours without a word.
 void check_spectral_media(const Scene& scene, const RenderSettings& settings) {
     if (!settings.spectral || scene.media().empty()) return;
-    throw Error(
-        fmt::format("{}: participating media (glint.medium) are not spectral yet; "
-                    "render this scene without spectral = true",
-                    settings.where_of("spectral")));
+    throw Error(fmt::format("{}: participating media (glint.medium) are not spectral yet; "
+                            "render this scene without spectral = true",
+                            settings.where_of("spectral")));
 }
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
