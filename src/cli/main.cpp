@@ -1,5 +1,5 @@
-// The `glint` command: render, info, compare and view, one file each (*_command.cpp). The
-// only place that catches glint::Error and turns it into an exit code.
+// The `glint` command: render, info, compare, merge, view and warp, one file each
+// (*_command.cpp). The only place that catches glint::Error and turns it into an exit code.
 #include "compare_command.h"
 #include "flags.h"
 #include "info_command.h"
@@ -7,6 +7,7 @@
 #include "render_command.h"
 #include "signals.h"
 #include "view_command.h"
+#include "warp_command.h"
 
 #include <glint/cluster/cluster.h>
 #include <glint/core/error.h>
@@ -39,6 +40,8 @@ int main(int argc, char** argv) {
     const CLI::App* merge_cmd = add_merge_command(app, merge);
     ViewOptions view;
     const CLI::App* view_cmd = add_view_command(app, view);
+    WarpOptions warp;
+    const CLI::App* warp_cmd = add_warp_command(app, warp);
 
     try {
         app.parse(argc, argv);
@@ -54,6 +57,7 @@ int main(int argc, char** argv) {
         if (compare_cmd->parsed()) return run_compare(compare);
         if (merge_cmd->parsed()) return run_merge(merge);
         if (view_cmd->parsed()) return run_view(view);
+        if (warp_cmd->parsed()) return run_warp(warp);
     } catch (const CLI::ValidationError& e) {
         fmt::print(stderr, "glint: error: {}\n", e.what());
         return kExitUsageError;

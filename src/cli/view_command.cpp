@@ -15,6 +15,7 @@
 #include <tbb/task_arena.h>
 
 #include <cmath>
+#include <optional>
 
 namespace glint::cli {
 
@@ -49,6 +50,12 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& view) {
     view_cmd->add_option("--orbit-after", view.orbit_after, "Frames before the --orbit move");
     view_cmd->add_option("--reduced-scale", view.reduced_scale,
                          "The first pass after a change renders at 1/N size (1 to 64, default 4)");
+    view_cmd->add_option("--temporal", view.temporal,
+                         "on|off: blend the reprojected history of earlier views after a camera "
+                         "move (default: on for the preview integrator)");
+    view_cmd->add_option("--svgf", view.svgf,
+                         "on|off: filter every frame with the real-time denoiser (default off; "
+                         "the viewer only, never `glint render`)");
     view_cmd->add_flag("--hide-panel", view.hide_panel, "Start with the panel hidden (key H)");
     view_cmd->add_flag("--trusted-scene", view.render.trusted_scene, trusted_scene_help());
     view_cmd->add_option("--script-time-limit", view.render.script_time_limit,
@@ -86,6 +93,15 @@ int run_view(const ViewOptions& view) {
     }
     options.reduced_scale = int_flag("--reduced-scale", view.reduced_scale, 1, 64).value_or(4);
     options.hide_panel = view.hide_panel;
+    auto on_off = [](const char* flag, const std::string& value) -> std::optional<bool> {
+        if (value.empty()) return std::nullopt;
+        if (value == "on") return true;
+        if (value == "off") return false;
+        bad_flag(flag, value, "on or off");
+        return std::nullopt;
+    };
+    options.temporal = on_off("--temporal", view.temporal);
+    options.svgf = on_off("--svgf", view.svgf).value_or(false);
     options.interrupt = &g_signal;
 
     // A model file (.glb, .obj, ...) is shown as `glint render MODEL` renders it, not read

@@ -18,6 +18,8 @@ struct ViewOptions {
     std::string orbit_after;
     std::string reduced_scale;
     bool hide_panel = false;
+    std::string temporal;
+    std::string svgf;
 };
 
 /// Adds the subcommand and its flags, which fill `options` when parsed.

@@ -57,6 +57,24 @@ void RenderThread::set_denoise(bool on) {
     m_wake.notify_all();
 }
 
+void RenderThread::set_temporal(bool on) {
+    const std::lock_guard lock(m_mutex);
+    m_temporal = on;
+    cancel_locked();
+    m_wake.notify_all();
+}
+
+void RenderThread::set_svgf(bool on) {
+    const std::lock_guard lock(m_mutex);
+    m_svgf = on;
+    m_republish = true;
+    m_wake.notify_all();
+}
+
+Image RenderThread::shown_image(bool svgf) const {
+    return svgf ? m_session.svgf_image() : m_session.image();
+}
+
 namespace {
 
 // Denoise after 4, 16, 64, ... passes (powers of 4) and at the target.
@@ -69,10 +87,11 @@ bool denoise_due(int passes, int target) {
 }  // namespace
 
 bool RenderThread::publish_still() {
-    bool denoise = false;
+    bool denoise = false, svgf = false;
     {
         const std::lock_guard lock(m_mutex);
         denoise = m_denoise;
+        svgf = m_svgf;
     }
     Image image;
     if (denoise && m_session.passes() > 0) {
@@ -89,11 +108,12 @@ bool RenderThread::publish_still() {
             return true;
         }
     } else {
-        image = m_session.image();
+        image = shown_image(svgf);
     }
     const std::lock_guard lock(m_mutex);
     m_frame.image = std::move(image);
     m_frame.denoised = denoise && m_session.passes() > 0;
+    m_frame.svgf = svgf && !m_frame.denoised;
     m_frame.passes = m_session.passes();
     ++m_frame.version;
     return true;
@@ -116,7 +136,7 @@ void RenderThread::run() {
     for (;;) {
         {
             std::unique_lock lock(m_mutex);
-            auto changes = [&] { return m_camera || m_lights || m_integrator; };
+            auto changes = [&] { return m_camera || m_lights || m_integrator || m_temporal; };
             // Nothing to do until a change, more budget, or the end. A change may always
             // render its reduced pass: the budget counts full passes only.
             m_wake.wait(lock, [&] {
@@ -129,6 +149,7 @@ void RenderThread::run() {
             } catch (const Error& e) {
                 m_frame.error = e.what();
             }
+            if (m_temporal) m_session.set_temporal(*m_temporal);
             if (m_camera) m_session.set_camera(*m_camera);
             if (m_lights) m_session.set_lights(*m_lights);
             const bool changed = changes();
@@ -136,6 +157,7 @@ void RenderThread::run() {
             m_camera.reset();
             m_lights.reset();
             m_integrator.reset();
+            m_temporal.reset();
             m_cancel.store(0);
             // The denoise toggle changed: show the still image again, denoised or not
             // (nothing to show before the first pass; a change renders anew anyway).
@@ -151,7 +173,9 @@ void RenderThread::run() {
         Progress progress("view", 1, true);
         // The reduced pass is short and runs to its end: while the user drags, changes
         // arrive every frame, and cancelling it too would leave the window without a view.
-        if (!m_session.next_pass_reduced()) progress.set_cancel_flag(&m_cancel);
+        // So does the first full pass after a move in temporal mode, which shows the move.
+        if (!m_session.next_pass_reduced() && !m_session.next_pass_shows_move())
+            progress.set_cancel_flag(&m_cancel);
         PassKind kind = PassKind::none;
         try {
             kind = m_session.render_next(progress);
@@ -168,10 +192,17 @@ void RenderThread::run() {
             idle = true;
             continue;
         }
-        Image image = m_session.image();
+        bool svgf = false;
+        {
+            const std::lock_guard lock(m_mutex);
+            svgf = m_svgf;
+        }
+        Image image = shown_image(svgf);
         bool denoise_now = false;
         {
             const std::lock_guard lock(m_mutex);
+            m_frame.svgf = svgf;
+            m_frame.temporal = m_session.has_history();
             if (kind == PassKind::full && m_budget > 0) --m_budget;
             m_frame.image = std::move(image);
             m_frame.passes = m_session.passes();

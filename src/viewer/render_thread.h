@@ -23,6 +23,8 @@ struct Frame {
     int passes = 0;         ///< full passes in the image (samples per pixel)
     bool reduced = false;   ///< the reduced-resolution pass after a change
     bool denoised = false;  ///< denoised by the network (the camera had stopped)
+    bool svgf = false;      ///< filtered by the real-time denoiser
+    bool temporal = false;  ///< blended with the reprojected history of earlier views
     uint64_t version = 0;   ///< grows with every frame published
     double pass_seconds = 0.0;
     uint64_t pass_samples = 0;
@@ -52,6 +54,13 @@ public:
     /// session made with SessionOptions::aovs. The current image is republished at once.
     void set_denoise(bool on);
 
+    /// Turns temporal mode (reprojected history) on or off; needs a session made with
+    /// SessionOptions::realtime. Takes effect before the next pass.
+    void set_temporal(bool on);
+    /// Turns the real-time denoiser (SVGF) on or off for every frame shown; needs a session
+    /// made with SessionOptions::realtime. The current image is republished at once.
+    void set_svgf(bool on);
+
     /// Copies the latest frame into `frame` when it is newer than frame.version.
     bool latest(Frame& frame) const;
     /// The version of the latest frame (see Frame::version).
@@ -63,6 +72,8 @@ private:
     // Publishes the session's image, denoised when denoising is on; false when a change
     // cancelled the denoiser.
     bool publish_still();
+    // The session's image as shown: filtered by SVGF when it is on.
+    Image shown_image(bool svgf) const;
 
     ProgressiveSession m_session;
     mutable std::mutex m_mutex;
@@ -74,6 +85,8 @@ private:
     std::optional<LightEdits> m_lights;
     std::optional<std::string> m_integrator;
     bool m_denoise = false;
+    std::optional<bool> m_temporal;  // a requested change of temporal mode
+    bool m_svgf = false;
     bool m_republish = false;  // set_denoise() asks for the still image again
     Frame m_frame;
     std::thread m_thread;  // last: starts once everything above exists

@@ -124,7 +124,9 @@ struct UiState {
     bool show_panel = true;
     int integrator = 0;
     int light = 0;
-    bool denoise = false;  // the network denoises the image while the camera stands still
+    bool denoise = false;   // the network denoises the image while the camera stands still
+    bool temporal = false;  // reprojected history blended in after a camera move
+    bool svgf = false;      // the real-time denoiser on every frame
     std::array<char, 512> save_path{};
     std::string message;  // the last save, camera line or error, shown in the panel
 };
@@ -150,12 +152,17 @@ public:
         SessionOptions session_options;
         session_options.reduced_scale = options.reduced_scale;
         session_options.aovs = true;  // for the denoiser
+        session_options.realtime = true;
+        session_options.temporal = options.temporal.value_or(settings.integrator == "preview");
+        m_ui.temporal = session_options.temporal;
+        m_ui.svgf = options.svgf;
         ProgressiveSession session(desc, settings, session_options);
         const Bounds3 bounds = session.scene().stats().bounds;
         m_scene_size = bounds.is_empty() ? 1.0f : glm::length(bounds.max - bounds.min);
         m_thread = std::make_unique<RenderThread>(std::move(session), options.frames > 0 ? 0 : -1);
         m_ui.denoise = settings.denoise;
         if (m_ui.denoise) m_thread->set_denoise(true);
+        if (m_ui.svgf) m_thread->set_svgf(true);
     }
 
     int run() {
@@ -246,8 +253,10 @@ private:
             if (!m_frame.error.empty()) throw Error(m_frame.error);
             if (!fresh || m_frame.reduced) continue;
             ++frames;
-            fmt::print(stderr, "frame {}: {} spp, {} pass {:.1f} ms\n", frames, m_frame.passes,
-                       m_frame.integrator, m_frame.pass_seconds * 1e3);
+            fmt::print(stderr, "frame {}: {} spp, {} pass {:.1f} ms{}{}\n", frames, m_frame.passes,
+                       m_frame.integrator, m_frame.pass_seconds * 1e3,
+                       m_frame.temporal ? ", with reprojected history" : "",
+                       m_frame.svgf ? ", SVGF" : "");
             if (m_options.orbit_degrees != 0.0f && frames == m_options.orbit_after) {
                 m_controller.orbit(m_options.orbit_degrees, 0.0f);
                 m_thread->request_camera(m_controller.params());
@@ -362,10 +371,15 @@ private:
         restyle |= ImGui::Combo("tone mapping", &m_ui.tone_map, kToneMaps, 3);
         if (ImGui::Checkbox("denoise when still", &m_ui.denoise))
             m_thread->set_denoise(m_ui.denoise);
-        ImGui::Text("%d / %d spp%s", m_frame.passes, m_settings.spp,
+        if (ImGui::Checkbox("temporal reprojection", &m_ui.temporal))
+            m_thread->set_temporal(m_ui.temporal);
+        if (ImGui::Checkbox("denoise (SVGF)", &m_ui.svgf)) m_thread->set_svgf(m_ui.svgf);
+        ImGui::Text("%d / %d spp%s%s", m_frame.passes, m_settings.spp,
                     m_frame.reduced    ? " (reduced preview)"
                     : m_frame.denoised ? " (denoised)"
-                                       : "");
+                    : m_frame.svgf     ? " (SVGF)"
+                                       : "",
+                    m_frame.temporal ? " + history" : "");
         const double rate =
             m_frame.pass_seconds > 0.0 ? m_frame.pass_samples / m_frame.pass_seconds : 0.0;
         ImGui::Text("%.2f M samples/s, pass %.1f ms", rate * 1e-6, m_frame.pass_seconds * 1e3);
@@ -418,7 +432,9 @@ private:
             } else {
                 write_outputs({{path, &m_frame.image, {}}});
             }
-            m_ui.message = fmt::format("wrote {} ({} spp)", path, m_frame.passes);
+            m_ui.message = fmt::format("wrote {} ({} spp{}{})", path, m_frame.passes,
+                                       m_frame.svgf ? ", SVGF" : "",
+                                       m_frame.temporal ? ", with reprojected history" : "");
         } catch (const Error& e) {
             m_ui.message = e.what();
         }

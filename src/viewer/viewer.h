@@ -5,6 +5,7 @@
 #include <glint/scene/scene_desc.h>
 
 #include <atomic>
+#include <optional>
 #include <string>
 
 namespace glint::viewer {
@@ -15,6 +16,11 @@ struct ViewerOptions {
     std::string tone_map = "clip";
     int reduced_scale = 4;  ///< the first pass after a change at 1/reduced_scale size
     bool hide_panel = false;
+    /// Temporal mode (reprojected history after a camera move); unset: on for the preview
+    /// integrator, off for the others.
+    std::optional<bool> temporal;
+    /// The real-time denoiser (SVGF) on every frame shown.
+    bool svgf = false;
     // Headless use (tests, screenshots): render `frames` full passes in all, then write
     // what the window shows to `screenshot` and exit. 0: interactive.
     int frames = 0;

@@ -276,3 +276,100 @@ TEST(ProgressiveSession, DenoisedImageIsTheNetworkOnTheFilm) {
 
 }  // namespace
 }  // namespace glint
+
+namespace glint {
+namespace {
+
+// Temporal mode: after a move the reprojected history fills the view (no reduced pass); once
+// the camera stops, the image becomes the film's again, bit for bit, after the history's
+// length plus one passes; a light edit drops the history.
+TEST(ProgressiveSession, TemporalModeBlendsHistoryThenConvergesToTheFilm) {
+    const int max_length = 4;
+    const std::string code = test::example_with_settings(
+        "cornell-box.lua", "width = 20, height = 16, spp = 64, seed = 3, integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    SessionOptions options;
+    options.realtime = true;
+    options.temporal = true;
+    options.temporal_max_length = max_length;
+    ProgressiveSession session(desc, parse_render_settings(&*desc.render), options);
+    Progress progress("test", 1, true);
+    EXPECT_EQ(session.render_next(progress), PassKind::reduced);  // nothing to reproject yet
+    for (int i = 0; i < 3; ++i) EXPECT_EQ(session.render_next(progress), PassKind::full);
+    EXPECT_FALSE(session.has_history());
+
+    CameraController controller(&*desc.camera);
+    controller.orbit(2.0f, 0.0f);
+    session.set_camera(controller.params());
+    EXPECT_FALSE(session.next_pass_reduced());
+    EXPECT_TRUE(session.next_pass_shows_move());
+    EXPECT_EQ(session.render_next(progress), PassKind::full);
+    EXPECT_TRUE(session.has_history());
+    EXPECT_FALSE(session.next_pass_shows_move());
+    auto differing = [&] {
+        const Image shown = session.image(), film = session.film_image();
+        int count = 0;
+        for (std::size_t i = 0; i < shown.pixels.size(); ++i)
+            count += shown.pixels[i] != film.pixels[i];
+        return count;
+    };
+    EXPECT_GT(differing(), 0) << "the history is blended in";
+    // The first pass after the move blends a history of 3 passes; it fades out by one per
+    // pass, so the shown image is the film's from pass 3 + 1 on (lengths are capped at 4).
+    for (int pass = 2; pass <= max_length + 1; ++pass) {
+        EXPECT_EQ(session.render_next(progress), PassKind::full);
+        if (pass <= 3) {
+            EXPECT_GT(differing(), 0) << "pass " << pass;
+        }
+    }
+    EXPECT_EQ(differing(), 0) << "after the stop, exactly the plain average of the still passes";
+
+    // The denoiser filters what is shown, keeping its size and leaving the history alone.
+    const Image filtered = session.svgf_image();
+    EXPECT_EQ(filtered.width, 20);
+    EXPECT_EQ(filtered.num_channels(), 3);
+
+    LightEdits lights(desc);
+    lights.lights()[0].power_scale = 2.0f;
+    session.set_lights(lights);
+    session.render_next(progress);
+    EXPECT_FALSE(session.has_history()) << "a light edit resets the history";
+}
+
+TEST(ProgressiveSession, TemporalModeAndSvgfGiveTheSameBitsForOneAndTwoThreads) {
+    const std::string code = test::example_with_settings(
+        "cornell-box.lua", "width = 24, height = 18, spp = 64, seed = 3, integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    auto run = [&](int threads) {
+        tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        SessionOptions options;
+        options.realtime = true;
+        options.temporal = true;
+        options.reduced_scale = 1;
+        ProgressiveSession session(desc, parse_render_settings(&*desc.render), options);
+        Progress progress("test", 1, true);
+        CameraController controller(&*desc.camera);
+        for (int move = 0; move < 3; ++move) {
+            for (int pass = 0; pass < 2; ++pass) session.render_next(progress);
+            controller.orbit(3.0f, 1.0f);
+            session.set_camera(controller.params());
+        }
+        session.render_next(progress);
+        EXPECT_TRUE(session.has_history());
+        return std::pair{session.image(), session.svgf_image()};
+    };
+    const auto [one, one_svgf] = run(1);
+    const auto [two, two_svgf] = run(2);
+    expect_same_bits(one, two);
+    expect_same_bits(one_svgf, two_svgf);
+}
+
+TEST(ProgressiveSession, TemporalModeNeedsRealtimeBuffers) {
+    const SceneDesc desc = load_scene_string(cornell(""), "cornell.lua");
+    SessionOptions options;
+    options.temporal = true;
+    EXPECT_THROW(ProgressiveSession(desc, parse_render_settings(&*desc.render), options), Error);
+}
+
+}  // namespace
+}  // namespace glint

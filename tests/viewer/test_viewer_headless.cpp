@@ -128,6 +128,31 @@ TEST(ViewerHeadless, ScriptedOrbitRestartsAccumulation) {
     fs::remove(moved);
 }
 
+TEST(ViewerHeadless, TemporalModeAndSvgfAfterAnOrbit) {
+    std::string why_not;
+    const std::string xvfb = xvfb_prefix(why_not);
+    if (xvfb.empty()) GTEST_SKIP() << why_not;
+    const fs::path shot = temp("viewer_temporal.png");
+    const test::CommandResult r = test::run_command(
+        xvfb + test::glint_binary() + " view " + kCornell +
+        " --res 48x48 --spp 64 --threads 2 --frames 6 --orbit 5 --orbit-after 3 --temporal on "
+        "--svgf on --screenshot " +
+        shot.string());
+    ASSERT_EQ(r.exit_code, 0) << r.output;
+    // No reduced pass after the move: the reprojected history fills the view.
+    EXPECT_EQ(spp_by_frame(r.output), (std::vector<int>{1, 2, 3, 1, 2, 3})) << r.output;
+    EXPECT_NE(r.output.find("frame 4: 1 spp, path pass"), std::string::npos) << r.output;
+    EXPECT_NE(r.output.find("with reprojected history, SVGF"), std::string::npos) << r.output;
+    EXPECT_TRUE(fs::exists(shot));
+    fs::remove(shot);
+#ifdef GLINT_HAVE_VIEWER
+    const test::CommandResult bad =
+        test::run_glint("view " + kCornell + " --frames 2 --temporal maybe");
+    EXPECT_EQ(bad.exit_code, 2) << bad.output;
+    EXPECT_NE(bad.output.find("--temporal"), std::string::npos) << bad.output;
+#endif
+}
+
 TEST(ViewerHeadless, NoDisplayIsAClearError) {
 #ifndef GLINT_HAVE_VIEWER
     GTEST_SKIP() << "glint was built without the viewer";

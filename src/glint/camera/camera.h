@@ -23,6 +23,13 @@ struct CameraWiSample {
                        ///< takes it) the ray from p_lens through the reference point lands on
 };
 
+/// Where a scene point lands on the film (Camera::project).
+struct FilmProjection {
+    Vec2 film;    ///< film position (pixels, origin top-left, y down, as generate_ray takes it)
+    float depth;  ///< distance along the camera ray from its origin to the point: what the
+                  ///< film's depth AOV (AovSample::depth) holds for a hit there
+};
+
 /// Densities with which generate_ray produces a ray (Camera::pdf_we).
 struct CameraPdf {
     float pos = 0.0f;  ///< of the origin, per unit lens area
@@ -105,6 +112,14 @@ public:
     /// The lens normal (the viewing direction), unit, for cosines at the lens.
     virtual Vec3 forward() const = 0;
 
+    /// generate_ray backwards for the centre of the lens: the film position whose ray from
+    /// the lens centre (the pinhole; for an orthographic camera its film rectangle) passes
+    /// through `p`, and the distance along that ray. nullopt when `p` is behind the camera;
+    /// the position may lie outside the frame [0, width] x [0, height] (a caller that warps
+    /// whole triangles needs their corners off the frame too). For reprojecting earlier frames
+    /// (view/reprojection.h) and warping images by their depth (view/image_warp.h).
+    virtual std::optional<FilmProjection> project(const Vec3& p) const = 0;
+
     // How far a point p on a surface with normal n moves per pixel step, for hits that
     // carry no ray differentials (after a bounce): pbrt-v4's approximation, which sees the
     // point from the camera as a camera ray would.
@@ -144,6 +159,7 @@ public:
     Spectrum we(const Ray& ray, Vec2* film = nullptr) const override;
     CameraPdf pdf_we(const Ray& ray) const override;
     Vec3 forward() const override { return m_forward; }
+    std::optional<FilmProjection> project(const Vec3& p) const override;
 
 private:
     // Where a ray leaving the lens comes from on the film, with cos theta to the forward

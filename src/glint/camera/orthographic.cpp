@@ -50,6 +50,15 @@ std::optional<CameraWiSample> OrthographicCamera::sample_wi(const Vec3& ref, con
     return s;
 }
 
+std::optional<FilmProjection> OrthographicCamera::project(const Vec3& p) const {
+    const float depth = glm::dot(p - m_eye, m_forward);
+    if (!(depth > 0.0f)) return std::nullopt;
+    const float sx = glm::dot(p - m_eye, m_right) / m_half_width;
+    const float sy = glm::dot(p - m_eye, m_up) / m_half_height;
+    const Vec2 film(0.5f * (sx + 1.0f) * m_resolution.x, 0.5f * (1.0f - sy) * m_resolution.y);
+    return FilmProjection{film, depth};
+}
+
 Spectrum OrthographicCamera::we(const Ray&, Vec2*) const {
     return Spectrum(0.0f);
 }

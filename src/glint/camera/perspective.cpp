@@ -90,6 +90,17 @@ std::optional<PerspectiveCamera::FilmHit> PerspectiveCamera::film_hit(const Ray&
     return FilmHit{film, cos_theta};
 }
 
+std::optional<FilmProjection> PerspectiveCamera::project(const Vec3& p) const {
+    const Vec3 to_p = p - m_eye;
+    const float z = glm::dot(to_p, m_forward);
+    if (!(z > 0.0f)) return std::nullopt;
+    // pinhole_direction inverted: the screen coordinates of to_p / z (forward part 1).
+    const float sx = glm::dot(to_p, m_right) / (z * m_tan_half_fov * m_aspect);
+    const float sy = glm::dot(to_p, m_up) / (z * m_tan_half_fov);
+    const Vec2 film(0.5f * (sx + 1.0f) * m_resolution.x, 0.5f * (1.0f - sy) * m_resolution.y);
+    return FilmProjection{film, glm::length(to_p)};
+}
+
 Spectrum PerspectiveCamera::we(const Ray& ray, Vec2* film) const {
     const std::optional<FilmHit> hit = film_hit(ray);
     if (!hit) return Spectrum(0.0f);

@@ -1,3 +1,4 @@
+#include <glint/camera/camera_attributes.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/denoise/film_denoiser.h>
@@ -178,6 +179,13 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
         partial ? partial_sums_image(film, settings, *samples) : final_image(film, result.stats);
     if (film_aovs && !settings.aovs)
         result.image = without_channels(result.image, {"albedo.", "normal.", "depth."});
+    // An image with depth records its camera, so that `glint warp` can show it from a
+    // nearby viewpoint without the scene.
+    if (settings.aovs && !partial) {
+        for (auto& attribute : camera_attributes(desc.camera ? &*desc.camera : nullptr,
+                                                 Vec2i(settings.width, settings.height)))
+            result.image.attributes.push_back(std::move(attribute));
+    }
     if (settings.denoise) {
         const auto start = std::chrono::steady_clock::now();
         result.denoised = denoise_film(film, settings, control);

@@ -2,6 +2,7 @@
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/denoise/film_denoiser.h>
+#include <glint/denoise/svgf.h>
 #include <glint/scene/build.h>
 #include <glint/view/progressive_session.h>
 
@@ -32,10 +33,26 @@ ProgressiveSession::ProgressiveSession(SceneDesc desc, RenderSettings settings,
       m_settings(std::move(settings)),
       m_options(options),
       m_camera(m_desc.camera ? *m_desc.camera : Params("camera", "default camera")),
-      m_film(m_settings.width, m_settings.height, options.aovs) {
+      m_film(m_settings.width, m_settings.height, options.aovs),
+      m_history(options.temporal_max_length) {
     if (m_options.reduced_scale < 1) throw Error("the reduced scale must be at least 1");
     std::tie(m_integrator, m_progressive) = make_progressive(m_settings);
     m_scene = build_scene(m_desc, m_settings);
+    if (m_options.realtime) {
+        m_view_camera = make_camera_for(Vec2i(m_settings.width, m_settings.height));
+        const std::size_t pixels = static_cast<std::size_t>(m_settings.width) * m_settings.height;
+        m_mean.assign(pixels, Rgb(0.0f));
+        m_moment_sums.assign(pixels, Vec2(0.0f));
+        set_temporal(m_options.temporal);
+    } else if (m_options.temporal) {
+        throw Error("temporal mode needs the session's realtime buffers");
+    }
+}
+
+void ProgressiveSession::set_temporal(bool on) {
+    if (!m_options.realtime) throw Error("temporal mode needs the session's realtime buffers");
+    m_temporal = on;
+    m_history.reset();
 }
 
 void ProgressiveSession::set_camera(Params camera) {
@@ -56,6 +73,7 @@ void ProgressiveSession::set_integrator(const std::string& name) {
     m_integrator = std::move(integrator);
     m_progressive = progressive;
     m_restart = true;
+    m_history.reset();
 }
 
 std::unique_ptr<Camera> ProgressiveSession::make_camera_for(Vec2i resolution) const {
@@ -69,6 +87,55 @@ void ProgressiveSession::restart() {
     m_passes = 0;
     m_reduced.reset();
     m_reduced_due = m_options.reduced_scale > 1;
+    std::fill(m_mean.begin(), m_mean.end(), Rgb(0.0f));
+    std::fill(m_moment_sums.begin(), m_moment_sums.end(), Vec2(0.0f));
+}
+
+void ProgressiveSession::ensure_geometry() {
+    if (!m_options.realtime || m_geometry) return;
+    m_geometry =
+        trace_geometry_buffer(*m_scene, *m_view_camera, m_settings.width, m_settings.height);
+}
+
+void ProgressiveSession::move_history(std::unique_ptr<Camera> camera) {
+    if (!m_options.realtime) return;
+    if (!m_temporal || !m_geometry) {
+        m_view_camera = std::move(camera);
+        m_geometry.reset();
+        return;
+    }
+    const std::size_t pixels = m_mean.size();
+    std::vector<Rgb> shown(pixels);
+    std::vector<Vec2> moments(pixels);
+    std::vector<float> lengths(pixels);
+    const float inverse = m_passes > 0 ? 1.0f / static_cast<float>(m_passes) : 0.0f;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        shown[i] = m_history.blend(i, m_mean[i], m_passes);
+        moments[i] = m_history.blend_moments(i, m_moment_sums[i] * inverse, m_passes);
+        lengths[i] = m_history.blended_length(i, m_passes);
+    }
+    GeometryBuffer geometry =
+        trace_geometry_buffer(*m_scene, *camera, m_settings.width, m_settings.height);
+    const std::vector<HistoryTaps> taps = reproject(geometry, *camera, *m_geometry, *m_view_camera);
+    m_history.move(taps, shown, moments, lengths);
+    m_geometry = std::move(geometry);
+    m_view_camera = std::move(camera);
+}
+
+void ProgressiveSession::record_pass() {
+    if (!m_options.realtime) return;
+    ensure_geometry();
+    const Image image = m_film.resolve();
+    const float k = static_cast<float>(m_passes);
+    for (std::size_t i = 0; i < m_mean.size(); ++i) {
+        // R, G, B come first, then the AOVs when the film has them.
+        const float* rgb = &image.pixels[i * image.channels.size()];
+        const Rgb mean(rgb[0], rgb[1], rgb[2]);
+        // The pass's own value, from the means before and after it.
+        const Rgb pass = mean * k - m_mean[i] * (k - 1.0f);
+        m_moment_sums[i] += svgf_moments(pass, m_geometry->albedo[i]);
+        m_mean[i] = mean;
+    }
 }
 
 PassKind ProgressiveSession::render_next(Progress& progress) {
@@ -78,13 +145,21 @@ PassKind ProgressiveSession::render_next(Progress& progress) {
         m_scene = build_scene(desc, m_settings);
         m_progressive->scene_changed(SceneChange::lights_or_objects);
         m_rebuild = m_camera_changed = false;
+        m_history.reset();
+        m_geometry.reset();
+        if (m_options.realtime)
+            m_view_camera = make_camera_for(Vec2i(m_settings.width, m_settings.height));
         restart();
     }
     if (m_camera_changed) {
-        m_scene->set_camera(make_camera_for(Vec2i(m_settings.width, m_settings.height)));
+        const Vec2i size(m_settings.width, m_settings.height);
+        m_scene->set_camera(make_camera_for(size));
         m_progressive->scene_changed(SceneChange::camera);
         m_camera_changed = false;
+        move_history(make_camera_for(size));
         restart();
+        // The reprojected history fills the new view at once: no reduced pass.
+        if (has_history()) m_reduced_due = false;
     }
     if (m_restart) {
         m_restart = false;
@@ -111,6 +186,7 @@ PassKind ProgressiveSession::render_next(Progress& progress) {
         if (m_passes >= m_settings.spp) return PassKind::none;
         m_last = m_progressive->render_pass(*m_scene, m_film, m_passes, progress);
         ++m_passes;
+        record_pass();
         return PassKind::full;
     } catch (...) {
         // A pass cut short leaves some pixels with one sample more than others.
@@ -120,6 +196,14 @@ PassKind ProgressiveSession::render_next(Progress& progress) {
 }
 
 Image ProgressiveSession::image() const {
+    if (has_history() && !showing_reduced()) {
+        Image image = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
+        for (std::size_t i = 0; i < m_mean.size(); ++i) {
+            const Rgb c = m_history.blend(i, m_mean[i], m_passes);
+            for (int ch = 0; ch < 3; ++ch) image.pixels[3 * i + ch] = c[ch];
+        }
+        return image;
+    }
     if (!showing_reduced()) return m_film.resolve();
     const int scale = m_options.reduced_scale;
     Image image = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
@@ -129,6 +213,41 @@ Image ProgressiveSession::image() const {
         }
     }
     return image;
+}
+
+Image ProgressiveSession::svgf_image() const {
+    if (!m_options.realtime)
+        throw Error("the real-time denoiser needs the session's realtime buffers");
+    Image image = this->image();
+    if (showing_reduced() || !m_geometry || (m_passes == 0 && !has_history())) return image;
+    const std::size_t pixels = m_mean.size();
+    std::vector<Rgb> colour(pixels);
+    std::vector<Vec2> moments(pixels);
+    std::vector<float> lengths(pixels);
+    const float inverse = m_passes > 0 ? 1.0f / static_cast<float>(m_passes) : 0.0f;
+    for (std::size_t i = 0; i < pixels; ++i) {
+        const float* rgb = &image.pixels[i * image.channels.size()];
+        colour[i] = Rgb(rgb[0], rgb[1], rgb[2]);
+        const Vec2 frame_moments = m_moment_sums[i] * inverse;
+        moments[i] =
+            has_history() ? m_history.blend_moments(i, frame_moments, m_passes) : frame_moments;
+        lengths[i] =
+            has_history() ? m_history.blended_length(i, m_passes) : static_cast<float>(m_passes);
+    }
+    SvgfInput input;
+    input.width = m_settings.width;
+    input.height = m_settings.height;
+    input.colour = colour;
+    input.albedo = m_geometry->albedo;
+    input.normal = m_geometry->normal;
+    input.depth = m_geometry->depth;
+    input.moments = moments;
+    input.history_length = lengths;
+    const std::vector<Rgb> filtered = svgf_filter(input, m_options.svgf);
+    Image result = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
+    for (std::size_t i = 0; i < pixels; ++i)
+        for (int ch = 0; ch < 3; ++ch) result.pixels[3 * i + ch] = filtered[i][ch];
+    return result;
 }
 
 std::vector<std::string> ProgressiveSession::progressive_integrators(

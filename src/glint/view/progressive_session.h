@@ -5,14 +5,21 @@
 // resolution, so that the window shows the new view at once; then full passes accumulate
 // until the target (settings.spp), after which the image equals `glint render --spp N`
 // bit for bit (tile integrators, same seed, no adaptive sampling).
+// In temporal mode (SessionOptions::temporal) a camera move does not throw the image away:
+// what was shown is reprojected into the new view (reprojection.h) and blended with the passes
+// since (temporal_history.h), which, once the camera stops, fade it out, leaving the film's
+// image exactly. svgf_image() filters what is shown with the real-time denoiser.
 #include <glint/core/params.h>
+#include <glint/denoise/svgf.h>
 #include <glint/film/film.h>
 #include <glint/film/image.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/progressive.h>
 #include <glint/scene/render_settings.h>
 #include <glint/scene/scene_desc.h>
+#include <glint/view/geometry_buffer.h>
 #include <glint/view/light_edits.h>
+#include <glint/view/temporal_history.h>
 
 #include <memory>
 #include <optional>
@@ -29,6 +36,16 @@ struct SessionOptions {
     int reduced_scale = 4;
     /// Whether the film records the first-hit features (AOVs), which denoised_image() needs.
     bool aovs = false;
+    /// Whether to keep what temporal mode and svgf_image() need: the geometry buffer of the
+    /// view and the luminance moments of each pass (a little work after every pass).
+    bool realtime = false;
+    /// Temporal mode at the start (needs realtime); set_temporal() changes it.
+    bool temporal = false;
+    /// The longest history in frames (TemporalHistory): after a stop, the image is the
+    /// film's again after at most this many passes plus one.
+    int temporal_max_length = 32;
+    /// The real-time denoiser's settings (svgf_image()).
+    SvgfSettings svgf;
 };
 
 /// What render_next() did.
@@ -52,6 +69,10 @@ public:
     void set_lights(const LightEdits& lights);
     /// Throws glint::Error when `name` is unknown or not progressive.
     void set_integrator(const std::string& name);
+    /// Turns temporal mode on or off (the history is dropped either way); throws
+    /// glint::Error without SessionOptions::realtime.
+    void set_temporal(bool on);
+    bool temporal() const { return m_temporal; }
 
     /// Applies pending changes, then renders one pass. Passes may be cancelled through
     /// `progress` (Progress::set_cancel_flag): glint::Interrupted propagates, and the next
@@ -61,8 +82,14 @@ public:
     /// Whether the next render_next() renders the reduced pass (a change is pending, or
     /// none has been shown since the last one).
     bool next_pass_reduced() const {
+        if (m_camera_changed && m_temporal && !m_rebuild && !m_restart && m_geometry) return false;
         return m_options.reduced_scale > 1 &&
                (m_reduced_due || m_camera_changed || m_rebuild || m_restart);
+    }
+    /// Whether the next render_next() renders the first full pass after a move in temporal
+    /// mode, which shows the move as the reduced pass does (a viewer lets it finish).
+    bool next_pass_shows_move() const {
+        return m_temporal && (m_camera_changed || (m_passes == 0 && has_history()));
     }
     /// Full-resolution passes in the film since the last change (its samples per pixel).
     int passes() const { return m_passes; }
@@ -71,8 +98,15 @@ public:
     /// Whether image() is the reduced pass (no full pass finished since the change).
     bool showing_reduced() const { return m_passes == 0 && m_reduced.has_value(); }
     /// The image to show, full size, linear radiance (R, G, B): the film's, or the reduced
-    /// pass enlarged (each of its pixels covers reduced_scale x reduced_scale pixels).
+    /// pass enlarged (each of its pixels covers reduced_scale x reduced_scale pixels), or in
+    /// temporal mode the film blended with the reprojected history.
     Image image() const;
+    /// image() filtered by the real-time denoiser (denoise/svgf.h), guided by the view's
+    /// geometry buffer; image() itself while the reduced pass is shown. Throws glint::Error
+    /// without SessionOptions::realtime.
+    Image svgf_image() const;
+    /// Whether pixels show reprojected history (temporal mode after a move).
+    bool has_history() const { return m_temporal && !m_history.empty(); }
     /// The film's own image (what `glint render` would write after passes() samples).
     Image film_image() const { return m_film.resolve(); }
     /// The film's image denoised by the network (denoise/network_denoiser.h, the render
@@ -93,6 +127,12 @@ public:
 private:
     std::unique_ptr<Camera> make_camera_for(Vec2i resolution) const;
     void restart();
+    // The camera moved to `camera` (full resolution): in temporal mode, what was shown
+    // becomes the history of the new view.
+    void move_history(std::unique_ptr<Camera> camera);
+    // After a full pass: the film's mean and the pass's moments (realtime only).
+    void record_pass();
+    void ensure_geometry();
 
     SceneDesc m_desc;  // as loaded; light edits are applied to a copy
     RenderSettings m_settings;
@@ -111,6 +151,15 @@ private:
     bool m_rebuild = false;
     bool m_restart = false;
     RenderStats m_last;
+    // Realtime state: the camera and geometry buffer of the film's view, the history of
+    // earlier views, the film's mean after the last pass and the sum of the passes'
+    // luminance moments (demodulated, svgf_moments).
+    bool m_temporal = false;
+    std::unique_ptr<Camera> m_view_camera;
+    std::optional<GeometryBuffer> m_geometry;
+    TemporalHistory m_history;
+    std::vector<Rgb> m_mean;
+    std::vector<Vec2> m_moment_sums;
 };
 
 }  // namespace glint

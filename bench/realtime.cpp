@@ -1,0 +1,152 @@
+// The viewer's real-time path without a window (issue 35): what a camera move costs in
+// temporal mode and what the SVGF denoiser costs per frame. Runs a ProgressiveSession as the
+// viewer does (realtime buffers, temporal mode, the scene's own integrator unless --integrator
+// is given), and times each part on its own as well:
+//   glint_bench_realtime [SCENE.lua] [--res WxH ...] [--threads T] [--frames N]
+//                        [--integrator NAME] [--svgf-radius 1|2]
+// Prints, per resolution, the medians over N moves of: the geometry buffer trace, the
+// reprojection, one integrator pass, the whole first frame after a move (render_next after
+// set_camera: geometry buffer + reprojection + pass + bookkeeping) and svgf_image(); wall
+// clock and, for the first frame and SVGF, CPU time divided by the threads (what it would
+// take alone on a machine shared with other work).
+#include <glint/camera/camera.h>
+#include <glint/core/error.h>
+#include <glint/core/progress.h>
+#include <glint/scene/lua/lua_loader.h>
+#include <glint/view/camera_controller.h>
+#include <glint/view/geometry_buffer.h>
+#include <glint/view/progressive_session.h>
+#include <glint/view/reprojection.h>
+
+#include <fmt/format.h>
+#include <tbb/global_control.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace glint;
+
+double median(std::vector<double> values) {
+    if (values.empty()) return 0.0;
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+double cpu_seconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+
+template <typename F>
+double time_ms(F&& f) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void bench_resolution(const SceneDesc& desc, const std::string& integrator, Vec2i res, int frames,
+                      int threads, int svgf_radius) {
+    Params table = desc.render ? *desc.render : Params("render", "render settings");
+    table.set("width", static_cast<double>(res.x), "--res");
+    table.set("height", static_cast<double>(res.y), "--res");
+    table.set("integrator", integrator, "--integrator");
+    table.set("spp", static_cast<double>(1 << 20), "bench");
+    const RenderSettings settings = parse_render_settings(&table);
+    SessionOptions options;
+    options.realtime = true;
+    options.temporal = true;
+    options.svgf.kernel_radius = svgf_radius;
+    ProgressiveSession session(desc, settings, options);
+    Progress progress("bench", 1, true);
+    CameraController controller(desc.camera ? &*desc.camera : nullptr);
+    for (int i = 0; i < 3; ++i) session.render_next(progress);  // warm up, fill the history
+
+    std::vector<double> gbuffer, reproject_ms, pass, first, first_cpu, svgf, svgf_cpu;
+    for (int frame = 0; frame < frames; ++frame) {
+        // A small orbit per frame, as a mouse drag gives.
+        const Params before = controller.params();
+        controller.orbit(1.0f, 0.2f);
+        const auto previous_camera = make_camera(before, res);
+        const auto camera = make_camera(controller.params(), res);
+        GeometryBuffer previous_buffer, buffer;
+        gbuffer.push_back(time_ms(
+            [&] { buffer = trace_geometry_buffer(session.scene(), *camera, res.x, res.y); }));
+        previous_buffer = trace_geometry_buffer(session.scene(), *previous_camera, res.x, res.y);
+        reproject_ms.push_back(
+            time_ms([&] { reproject(buffer, *camera, previous_buffer, *previous_camera); }));
+
+        session.set_camera(controller.params());
+        const double cpu_start = cpu_seconds();
+        first.push_back(time_ms([&] { session.render_next(progress); }));
+        first_cpu.push_back(1e3 * (cpu_seconds() - cpu_start) / threads);
+        pass.push_back(1e3 * session.last_stats().seconds);
+        const double svgf_cpu_start = cpu_seconds();
+        svgf.push_back(time_ms([&] { (void)session.svgf_image(); }));
+        svgf_cpu.push_back(1e3 * (cpu_seconds() - svgf_cpu_start) / threads);
+    }
+    fmt::print(
+        "{}x{} {} threads, {} moves, median ms: geometry buffer {:.1f}, reprojection {:.1f}, "
+        "{} pass {:.1f}, first frame after a move {:.1f} (CPU/threads {:.1f}), SVGF {}x{} {:.1f} "
+        "(CPU/threads {:.1f})\n",
+        res.x, res.y, threads, frames, median(gbuffer), median(reproject_ms), settings.integrator,
+        median(pass), median(first), median(first_cpu), 2 * svgf_radius + 1, 2 * svgf_radius + 1,
+        median(svgf), median(svgf_cpu));
+}
+
+int run(int argc, char** argv) {
+    std::string path = "examples/cornell-box.lua";
+    std::vector<Vec2i> resolutions;
+    int threads = 2, frames = 20, svgf_radius = 2;
+    std::string integrator;
+    for (int i = 1; i < argc; ++i) {
+        const std::string arg = argv[i];
+        auto next = [&]() -> std::string {
+            if (i + 1 >= argc) throw Error(fmt::format("{} needs a value", arg));
+            return argv[++i];
+        };
+        if (arg == "--res") {
+            Vec2i r;
+            const std::string text = next();
+            if (std::sscanf(text.c_str(), "%dx%d", &r.x, &r.y) != 2)
+                throw Error("--res takes WIDTHxHEIGHT");
+            resolutions.push_back(r);
+        } else if (arg == "--threads") {
+            threads = std::stoi(next());
+        } else if (arg == "--frames") {
+            frames = std::stoi(next());
+        } else if (arg == "--svgf-radius") {
+            svgf_radius = std::stoi(next());
+        } else if (arg == "--integrator") {
+            integrator = next();
+        } else {
+            path = arg;
+        }
+    }
+    if (resolutions.empty()) resolutions = {Vec2i(640, 480), Vec2i(1280, 720)};
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+    const SceneDesc desc = load_scene_file(path);
+    fmt::print("{}\n", path);
+    for (const Vec2i& res : resolutions)
+        bench_resolution(desc, integrator.empty() ? "preview" : integrator, res, frames, threads,
+                         svgf_radius);
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "glint_bench_realtime: {}\n", e.what());
+        return 1;
+    }
+}

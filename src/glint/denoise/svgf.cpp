@@ -1,0 +1,406 @@
+#include <glint/core/error.h>
+#include <glint/denoise/svgf.h>
+
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <type_traits>
+
+namespace glint {
+namespace {
+
+constexpr float kAlbedoFloor = 1e-3f;
+// The à-trous kernels' weights by |offset|: the B3 spline (5x5, as the paper) and its 3x3
+// counterpart (as A-SVGF, Schied et al. 2018, for speed).
+constexpr float kKernel5[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
+constexpr float kKernel3[2] = {1.0f / 2.0f, 1.0f / 4.0f};
+
+template <typename Body>
+void for_rows(int height, const Body& body) {
+    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
+        for (int y = rows.begin(); y < rows.end(); ++y) body(y);
+    });
+}
+
+// Four floats or ints in one SSE register (GCC's vector extensions): an à-trous pass
+// computes four pixels' taps at once. Every operation is the IEEE one its scalar form does,
+// so the four lanes give the bits the scalar loop gives.
+using Float4 = float __attribute__((vector_size(16)));
+using Int4 = int32_t __attribute__((vector_size(16)));
+
+Float4 load4(const float* p) {
+    Float4 v;
+    std::memcpy(&v, p, sizeof v);
+    return v;
+}
+void store4(float* p, Float4 v) {
+    std::memcpy(p, &v, sizeof v);
+}
+Float4 abs4(Float4 v) {
+    return reinterpret_cast<Float4>(reinterpret_cast<Int4>(v) & 0x7fffffff);
+}
+
+// 2^f on (-1, 0], a degree-5 fit, for floats and Float4 alike.
+template <typename T>
+T exp2_fraction(T f) {
+    return 1.0f + f * (0.693147182f +
+                       f * (0.240226507f +
+                            f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
+}
+
+// exp(-x) for x >= 0 to about 1e-5 relative: 2^-t as an exponent in the float's bits times
+// a polynomial for the fraction. The filter's weights need no more, and std::exp is most of
+// an à-trous tap's time. -x in powers of two is clamped (NaN too, from pixels whose result
+// is thrown away).
+float exp_negative(float x) {
+    const float scaled = x * 1.44269504f;
+    const float t = scaled < 126.0f ? scaled : 126.0f;
+    const int whole = static_cast<int>(t);  // floor: t >= 0
+    const float p = exp2_fraction(static_cast<float>(whole) - t);
+    return p * std::bit_cast<float>(static_cast<uint32_t>(127 - whole) << 23);
+}
+Float4 exp_negative(Float4 x) {
+    const Float4 scaled = x * 1.44269504f;
+    const Float4 t = scaled < 126.0f ? scaled : 126.0f;
+    const Int4 whole = __builtin_convertvector(t, Int4);
+    const Float4 p = exp2_fraction(__builtin_convertvector(whole, Float4) - t);
+    return p * reinterpret_cast<Float4>((127 - whole) << 23);
+}
+
+// max(0, c)^power for the integer powers of two the normal test uses, by squaring.
+float normal_weight(float cosine, float power) {
+    float w = std::max(0.0f, cosine);
+    if (power == 128.0f) {
+        for (int i = 0; i < 7; ++i) w *= w;
+        return w;
+    }
+    return std::pow(w, power);
+}
+
+// The per-pixel state the passes share.
+struct Planes {
+    int width, height;
+    std::vector<Rgb> illumination;
+    std::vector<float> variance, luminance;
+    std::vector<float> depth_gradient;  // max |dz| to a 4-neighbour that lies on the surface
+    const SvgfInput* input;
+
+    std::size_t at(int x, int y) const { return static_cast<std::size_t>(y) * width + x; }
+    bool surface(std::size_t i) const { return input->depth[i] > 0.0f; }
+};
+
+float depth_weight(const Planes& p, std::size_t i, std::size_t j, float distance,
+                   const SvgfSettings& s) {
+    const float zi = p.input->depth[i];
+    const float scale = s.sigma_depth * p.depth_gradient[i] * distance + 1e-3f * zi;
+    return std::exp(-std::abs(zi - p.input->depth[j]) / scale);
+}
+
+void estimate_depth_gradient(Planes& p) {
+    p.depth_gradient.assign(p.illumination.size(), 0.0f);
+    for_rows(p.height, [&](int y) {
+        for (int x = 0; x < p.width; ++x) {
+            const std::size_t i = p.at(x, y);
+            if (!p.surface(i)) continue;
+            // The smaller one-sided difference on each axis: a depth edge beside the pixel does
+            // not count as its surface's slope.
+            auto slope = [&](int dx, int dy) {
+                float best = INFINITY;
+                for (int sign : {-1, 1}) {
+                    const int nx = x + sign * dx, ny = y + sign * dy;
+                    if (nx < 0 || ny < 0 || nx >= p.width || ny >= p.height) continue;
+                    const std::size_t j = p.at(nx, ny);
+                    if (p.surface(j))
+                        best = std::min(best, std::abs(p.input->depth[j] - p.input->depth[i]));
+                }
+                return std::isfinite(best) ? best : 0.0f;
+            };
+            p.depth_gradient[i] = std::max(slope(1, 0), slope(0, 1));
+        }
+    });
+}
+
+// Temporal variance where the history is long enough, else a spatial estimate from the
+// moments of a 7x7 neighbourhood on the same surface, raised for short histories.
+void estimate_variance(Planes& p, const SvgfSettings& s) {
+    const SvgfInput& in = *p.input;
+    p.variance.assign(p.illumination.size(), 0.0f);
+    for_rows(p.height, [&](int y) {
+        for (int x = 0; x < p.width; ++x) {
+            const std::size_t i = p.at(x, y);
+            if (!p.surface(i)) continue;
+            const float h = in.history_length[i];
+            if (h >= s.min_temporal_history) {
+                p.variance[i] = std::max(0.0f, in.moments[i].y - in.moments[i].x * in.moments[i].x);
+                continue;
+            }
+            float sum_w = 0.0f;
+            Vec2 sum_m(0.0f);
+            for (int dy = -3; dy <= 3; ++dy) {
+                for (int dx = -3; dx <= 3; ++dx) {
+                    const int nx = x + dx, ny = y + dy;
+                    if (nx < 0 || ny < 0 || nx >= p.width || ny >= p.height) continue;
+                    const std::size_t j = p.at(nx, ny);
+                    if (!p.surface(j)) continue;
+                    const float distance = std::sqrt(static_cast<float>(dx * dx + dy * dy));
+                    const float w =
+                        depth_weight(p, i, j, distance, s) *
+                        normal_weight(glm::dot(in.normal[i], in.normal[j]), s.normal_power);
+                    sum_w += w;
+                    sum_m += w * in.moments[j];
+                }
+            }
+            const Vec2 m = sum_m / sum_w;  // sum_w > 0: the pixel itself has weight 1
+            p.variance[i] =
+                std::max(0.0f, m.y - m.x * m.x) * (s.min_temporal_history / std::max(1.0f, h));
+        }
+    });
+}
+
+// The planes an à-trous pass reads and writes, one float per pixel each, so that a pass can
+// run along a row with every tap's arithmetic in SIMD lanes.
+struct Signal {
+    std::vector<float> r, g, b, variance, luminance;
+    explicit Signal(std::size_t count)
+        : r(count), g(count), b(count), variance(count), luminance(count) {}
+};
+
+// What the passes compare, constant over the levels.
+struct Guide {
+    int width, height;
+    const float* depth;
+    std::vector<float> nx, ny, nz;  // normals as planes
+    const float* depth_gradient;
+};
+
+// One à-trous pass with holes `step` pixels apart. Row by row, tap by tap: each tap's
+// weights for a whole row in one loop without branches (the compiler's SIMD lanes), the
+// stopping functions' exponents summed into one exponential, the normal's power by squaring.
+void atrous_pass(const Guide& g, const Signal& in, int step, const SvgfSettings& s, Signal& out) {
+    const int width = g.width, r = s.kernel_radius;
+    const float* kernel = r == 1 ? kKernel3 : kKernel5;
+    const bool square_normal = s.normal_power == 128.0f;
+    for_rows(g.height, [&](int y) {
+        const std::size_t row = static_cast<std::size_t>(y) * width;
+        std::vector<float> inv_luminance_scale(width), slope(width), floor_scale(width);
+        std::vector<float> sum_r(width), sum_g(width), sum_b(width), sum_w(width), sum_var(width);
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = row + x;
+            // The luminance test's scale: the standard deviation, blurred 3x3 (less noisy).
+            float blurred_var = 0.0f, blur_w = 0.0f;
+            for (int dy = -1; dy <= 1; ++dy) {
+                const int ny = y + dy;
+                if (ny < 0 || ny >= g.height) continue;
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int nx = x + dx;
+                    if (nx < 0 || nx >= width) continue;
+                    const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
+                    if (!(g.depth[j] > 0.0f)) continue;
+                    const float w = (dx == 0 ? 0.5f : 0.25f) * (dy == 0 ? 0.5f : 0.25f);
+                    blurred_var += w * in.variance[j];
+                    blur_w += w;
+                }
+            }
+            inv_luminance_scale[x] =
+                blur_w > 0.0f
+                    ? 1.0f / (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) +
+                              1e-6f)
+                    : 0.0f;
+            slope[x] = s.sigma_depth * g.depth_gradient[i];
+            floor_scale[x] = 1e-3f * g.depth[i];
+            // The pixel itself, with the kernel's weight alone.
+            const float w = kernel[0] * kernel[0];
+            sum_r[x] = w * in.r[i];
+            sum_g[x] = w * in.g[i];
+            sum_b[x] = w * in.b[i];
+            sum_w[x] = w;
+            sum_var[x] = w * w * in.variance[i];
+        }
+        const float* zi = g.depth + row;
+        const float* li = in.luminance.data() + row;
+        const float* nxi = g.nx.data() + row;
+        const float* nyi = g.ny.data() + row;
+        const float* nzi = g.nz.data() + row;
+        for (int ky = -r; ky <= r; ++ky) {
+            const int ty = y + ky * step;
+            if (ty < 0 || ty >= g.height) continue;
+            for (int kx = -r; kx <= r; ++kx) {
+                if (kx == 0 && ky == 0) continue;
+                const int dx = kx * step;
+                const int x0 = std::max(0, -dx), x1 = std::min(width, width - dx);
+                if (x0 >= x1) continue;
+                const float kernel_w = kernel[std::abs(kx)] * kernel[std::abs(ky)];
+                const float distance =
+                    static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
+                // Tap j of pixel x is element x of these.
+                const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(ty) * width + dx;
+                const float* zj = g.depth + shift;
+                const float* lj = in.luminance.data() + shift;
+                const float* nxj = g.nx.data() + shift;
+                const float* nyj = g.ny.data() + shift;
+                const float* nzj = g.nz.data() + shift;
+                const float* rj = in.r.data() + shift;
+                const float* gj = in.g.data() + shift;
+                const float* bj = in.b.data() + shift;
+                const float* vj = in.variance.data() + shift;
+                // The loop twice, so that the usual power of 128 needs no branch inside. Local
+                // restrict pointers tell the compiler the sums alias no input: it can then run
+                // the loop in SIMD lanes.
+                auto taps = [&](auto normal_of) {
+                    const float* __restrict czi = zi;
+                    const float* __restrict cli = li;
+                    const float* __restrict cnx = nxi;
+                    const float* __restrict cny = nyi;
+                    const float* __restrict cnz = nzi;
+                    const float* __restrict tz = zj;
+                    const float* __restrict tl = lj;
+                    const float* __restrict tnx = nxj;
+                    const float* __restrict tny = nyj;
+                    const float* __restrict tnz = nzj;
+                    const float* __restrict tr = rj;
+                    const float* __restrict tg = gj;
+                    const float* __restrict tb = bj;
+                    const float* __restrict tv = vj;
+                    const float* __restrict sl = slope.data();
+                    const float* __restrict fl = floor_scale.data();
+                    const float* __restrict il = inv_luminance_scale.data();
+                    float* __restrict sr = sum_r.data();
+                    float* __restrict sg = sum_g.data();
+                    float* __restrict sb = sum_b.data();
+                    float* __restrict sw = sum_w.data();
+                    float* __restrict sv = sum_var.data();
+                    const float kw = kernel_w, dist = distance;
+                    int x = x0;
+                    for (; x + 4 <= x1; x += 4) {
+                        const Float4 cosine = load4(cnx + x) * load4(tnx + x) +
+                                              load4(cny + x) * load4(tny + x) +
+                                              load4(cnz + x) * load4(tnz + x);
+                        const Float4 z = load4(tz + x);
+                        const Float4 exponent =
+                            abs4(load4(czi + x) - z) / (load4(sl + x) * dist + load4(fl + x)) +
+                            abs4(load4(cli + x) - load4(tl + x)) * load4(il + x);
+                        const Float4 zero{};
+                        const Float4 weight =
+                            kw * normal_of(cosine > 0.0f ? cosine : zero) * exp_negative(exponent);
+                        const Float4 w = z > 0.0f ? weight : zero;  // escaped: no part
+                        store4(sr + x, load4(sr + x) + w * load4(tr + x));
+                        store4(sg + x, load4(sg + x) + w * load4(tg + x));
+                        store4(sb + x, load4(sb + x) + w * load4(tb + x));
+                        store4(sw + x, load4(sw + x) + w);
+                        store4(sv + x, load4(sv + x) + w * w * load4(tv + x));
+                    }
+                    for (; x < x1; ++x) {
+                        const float cosine = cnx[x] * tnx[x] + cny[x] * tny[x] + cnz[x] * tnz[x];
+                        const float exponent = std::abs(czi[x] - tz[x]) / (sl[x] * dist + fl[x]) +
+                                               std::abs(cli[x] - tl[x]) * il[x];
+                        const float weight =
+                            kw * normal_of(cosine > 0.0f ? cosine : 0.0f) * exp_negative(exponent);
+                        const float w = tz[x] > 0.0f ? weight : 0.0f;  // escaped: no part
+                        sr[x] += w * tr[x];
+                        sg[x] += w * tg[x];
+                        sb[x] += w * tb[x];
+                        sw[x] += w;
+                        sv[x] += w * w * tv[x];
+                    }
+                };
+                if (square_normal) {
+                    taps([](auto c) {
+                        c *= c, c *= c, c *= c, c *= c, c *= c, c *= c;
+                        return c * c;  // c^128
+                    });
+                } else {
+                    taps([&](auto c) {
+                        // Any other power lane by lane (slower; the settings' default is 128).
+                        if constexpr (std::is_same_v<decltype(c), float>) {
+                            return std::pow(c, s.normal_power);
+                        } else {
+                            for (int k = 0; k < 4; ++k) c[k] = std::pow(c[k], s.normal_power);
+                            return c;
+                        }
+                    });
+                }
+            }
+        }
+        for (int x = 0; x < width; ++x) {
+            const std::size_t i = row + x;
+            if (!(g.depth[i] > 0.0f)) {  // escaped: passes through
+                out.r[i] = in.r[i];
+                out.g[i] = in.g[i];
+                out.b[i] = in.b[i];
+                out.variance[i] = in.variance[i];
+                continue;
+            }
+            const float inv = 1.0f / sum_w[x];
+            out.r[i] = sum_r[x] * inv;
+            out.g[i] = sum_g[x] * inv;
+            out.b[i] = sum_b[x] * inv;
+            out.variance[i] = sum_var[x] * inv * inv;
+        }
+    });
+}
+
+}  // namespace
+
+Rgb svgf_demodulation(const Rgb& albedo) {
+    Rgb d;
+    for (int c = 0; c < 3; ++c) d[c] = albedo[c] > kAlbedoFloor ? albedo[c] : 1.0f;
+    return d;
+}
+
+Vec2 svgf_moments(const Rgb& colour, const Rgb& albedo) {
+    const Rgb d = svgf_demodulation(albedo);
+    const float y = Rgb(colour.r / d.r, colour.g / d.g, colour.b / d.b).luminance();
+    return Vec2(y, y * y);
+}
+
+std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& settings) {
+    const std::size_t count = static_cast<std::size_t>(input.width) * input.height;
+    if (input.width <= 0 || input.height <= 0 || input.colour.size() != count ||
+        input.albedo.size() != count || input.normal.size() != count ||
+        input.depth.size() != count || input.moments.size() != count ||
+        input.history_length.size() != count) {
+        throw Error(
+            fmt::format("SVGF: every input must hold {}x{} pixels", input.width, input.height));
+    }
+    Planes p{input.width, input.height, {}, {}, {}, {}, &input};
+    p.illumination.resize(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const Rgb d = svgf_demodulation(input.albedo[i]);
+        p.illumination[i] =
+            Rgb(input.colour[i].r / d.r, input.colour[i].g / d.g, input.colour[i].b / d.b);
+    }
+    estimate_depth_gradient(p);
+    estimate_variance(p, settings);
+    Guide guide{input.width, input.height, input.depth.data(), {}, {}, {}, p.depth_gradient.data()};
+    guide.nx.resize(count);
+    guide.ny.resize(count);
+    guide.nz.resize(count);
+    Signal signal(count), next(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        guide.nx[i] = input.normal[i].x;
+        guide.ny[i] = input.normal[i].y;
+        guide.nz[i] = input.normal[i].z;
+        signal.r[i] = p.illumination[i].r;
+        signal.g[i] = p.illumination[i].g;
+        signal.b[i] = p.illumination[i].b;
+        signal.variance[i] = p.variance[i];
+    }
+    for (int level = 0; level < settings.levels; ++level) {
+        for (std::size_t i = 0; i < count; ++i)
+            signal.luminance[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]).luminance();
+        atrous_pass(guide, signal, 1 << level, settings, next);
+        std::swap(signal, next);
+    }
+    std::vector<Rgb> result(count);
+    for (std::size_t i = 0; i < count; ++i)
+        result[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]) * svgf_demodulation(input.albedo[i]);
+    return result;
+}
+
+}  // namespace glint
