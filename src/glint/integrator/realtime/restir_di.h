@@ -1,0 +1,167 @@
+#pragma once
+// ReSTIR DI (Bitterli, Wyman, Pharr, Shirley, Lefohn and Jarosz 2020, "Spatiotemporal
+// reservoir resampling for real-time ray tracing with dynamic direct lighting"): direct
+// light at one surface point per pixel, with the light sample chosen by resampled
+// importance sampling (RIS) and then reused from the same pixel's previous pass (temporal
+// reuse, reprojected) and from nearby pixels (spatial reuse).
+//
+// The sample space is the set of points on the lights, in one measure shared by all
+// pixels, so that a sample can move from one pixel to another: area on area lights, one
+// point per point or spot light (counting measure), and solid angle for lights at infinity
+// (the environment, directional lights). The target function at a surface point is the
+// luminance of the unshadowed contribution f |cos| Le G, with G = |cos_light| / d^2 on area
+// lights, 1 / d^2 for point lights and 1 for directions.
+//
+// Two ways to weigh reused reservoirs (RestirMode):
+// - unbiased: the chosen sample's weight is the balance heuristic over the reservoirs that
+//   were combined, p_s(y) / sum_i M_i p_i(y), each p_i the target at reservoir i's own
+//   surface (Bitterli et al., eq. 22). The reservoirs hold no visibility (their targets are
+//   unshadowed, and only the final sample is shadow-tested), so these targets are exactly
+//   where each reservoir can produce y and the weights sum to one over the candidates:
+//   unbiased with no shadow ray per neighbour. (Bitterli et al.'s visibility-aware weights
+//   are what this needs once reservoirs do carry visibility, at one shadow ray per
+//   neighbour; this mode avoids both.)
+// - biased: 1 / M weights, with visibility reuse: after temporal reuse each pixel traces a
+//   shadow ray to its sample and empties the reservoir when it is blocked, so that occluded
+//   samples stop spreading (less noise in penumbrae), and neighbours' targets are never
+//   evaluated for weights. The bias: 1/M counts every neighbour's candidates, also those of
+//   a neighbour that could not have produced the sample, because from there it was
+//   blocked (the neighbour's reservoir was emptied) or below its horizon. The estimate is
+//   then too small: darkening at occlusion boundaries (contact shadows, shadow edges) and
+//   at creases, where neighbours pass the depth and normal tests but see the lights
+//   differently. Away from such boundaries it equals the unbiased mode.
+#include <glint/core/rng.h>
+#include <glint/integrator/integrator.h>
+#include <glint/integrator/realtime/reservoir.h>
+#include <glint/math/frame.h>
+#include <glint/scene/scene.h>
+
+#include <optional>
+#include <vector>
+
+namespace glint {
+
+class Bsdf;
+class Camera;
+
+enum class RestirMode { kOff, kUnbiased, kBiased };
+
+struct RestirSettings {
+    RestirMode mode = RestirMode::kUnbiased;
+    int candidates = 4;        ///< M: light samples per pixel per pass (RIS)
+    int spatial = 2;           ///< neighbours merged per pixel (0: no spatial reuse)
+    bool temporal = true;      ///< merge the previous pass's reservoir (reprojected)
+    float radius = 20.0f;      ///< spatial neighbours within this many pixels
+    float history_cap = 20.0f; ///< the previous pass counts at most this many times M
+};
+
+/// A light sample that can move between pixels: where it is on its light.
+struct LightCandidate {
+    enum class Kind : unsigned char { kArea, kPoint, kDirection, kParallel };
+    const Light* light = nullptr;
+    Vec3 point{0.0f};       ///< on the light; for kDirection and kParallel the unit direction
+                            ///< towards the light
+    Vec3 normal{0.0f};      ///< the light's normal at `point` (kArea)
+    Spectrum irradiance{0.0f};  ///< a directional light's (kParallel), the same everywhere
+    Kind kind = Kind::kPoint;
+};
+
+/// A surface point as reuse needs it: where it is, its BSDF and what rejection compares.
+struct ReuseSurface {
+    Vec3 p{0.0f};
+    Vec3 ng{0.0f};
+    Frame shading;
+    Vec3 wo{0.0f};
+    const Bsdf* bsdf = nullptr;  ///< null: the pixel has no surface to light
+    float depth = 0.0f;          ///< distance along the camera's path to p
+    float time = 0.0f;
+    bool seen_directly = false;  ///< reached without mirrors or glass (temporal reuse needs it)
+};
+
+/// Where a point lands on the film of a pinhole camera (a thin lens's centre): the film
+/// position, in pixels, of the ray from the eye through the point. Built from three of the
+/// camera's rays, so that it outlives the camera (the viewer replaces the camera when it
+/// moves, and the previous pass's projection is what temporal reuse needs).
+class PinholeProjection {
+public:
+    PinholeProjection() = default;
+    explicit PinholeProjection(const Camera& camera);
+    /// nullopt behind the eye, or when the camera is not a pinhole (orthographic).
+    std::optional<Vec2> film_point(const Vec3& p) const;
+    const Vec3& eye() const { return m_eye; }
+    bool valid() const { return m_valid; }
+
+private:
+    Vec3 m_eye{0.0f}, m_forward{0.0f}, m_origin{0.0f}, m_dx{0.0f}, m_dy{0.0f};
+    bool m_valid = false;
+};
+
+class RestirDi {
+public:
+    using LightReservoir = Reservoir<LightCandidate>;
+
+    explicit RestirDi(const RestirSettings& settings) : m_settings(settings) {}
+
+    /// Prepares the buffers of a pass over a `width` x `height` film whose first pixel is
+    /// `origin` (in the full image); keeps the previous pass's surfaces and reservoirs for
+    /// temporal reuse when `keep_history` and the film is the same.
+    void begin_pass(const Scene& scene, int width, int height, Vec2i origin, bool keep_history);
+    /// Ends the pass: its surfaces and final reservoirs become the history.
+    void end_pass();
+    /// Forgets the history (a light or an object changed).
+    void drop_history() { m_history = false; }
+
+    /// The surface of film pixel (x, y) in this pass, which the caller fills in.
+    ReuseSurface& surface(int x, int y) { return m_surfaces[m_current][index(x, y)]; }
+    /// The previous pass's surfaces stay valid until end_pass(): BSDFs the caller makes for
+    /// this pass's surfaces must live as long (two arenas, used in turn).
+    int buffer() const { return m_current; }
+
+    /// First stage, per pixel once its surface is set: M candidates from the scene's light
+    /// sampler, then the reprojected previous reservoir (and, when biased, visibility
+    /// reuse). Draws from `sampler` (its order: per candidate a 2D value and two 1D values as
+    /// next-event estimation draws them, then a 1D value deciding).
+    void generate(const Scene& scene, int x, int y, Sampler& sampler, RayCounter& counter);
+    /// Second stage, per pixel after every pixel's first stage: spatial reuse, then the
+    /// direct light reflected towards wo from the final sample, with its shadow ray.
+    /// `key` seeds the neighbours' choice (the same for any thread count).
+    Spectrum shade(const Scene& scene, int x, int y, uint64_t key, RayCounter& counter);
+
+    /// The target function's value and the point to trace to, for `candidate` at `surface`:
+    /// the unshadowed contribution f |cos| Le G (public for the tests).
+    struct Arrival {
+        Spectrum contribution{0.0f};
+        Vec3 target{0.0f};
+    };
+    bool arrive(const ReuseSurface& surface, const LightCandidate& candidate,
+                Arrival& out) const;
+    static float target_of(const Spectrum& contribution);
+
+    const RestirSettings& settings() const { return m_settings; }
+
+private:
+    size_t index(int x, int y) const {
+        return static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
+    }
+    bool similar(const ReuseSurface& a, const ReuseSurface& b) const;
+    // Combines `inputs` (the first is the pixel's own) into one reservoir for `surfaces[0]`.
+    LightReservoir combine(const LightReservoir* const* inputs, const ReuseSurface* const* surfaces,
+                           int count, Rng& rng) const;
+    bool visible(const Scene& scene, const ReuseSurface& surface, const Vec3& target,
+                 RayCounter& counter) const;
+
+    RestirSettings m_settings;
+    int m_width = 0, m_height = 0;
+    Vec2i m_origin{0};
+    float m_far = 1.0f;  // beyond the scene, for the targets of lights at infinity
+    int m_current = 0;
+    bool m_history = false;
+    PinholeProjection m_projection, m_previous_projection;
+    std::vector<ReuseSurface> m_surfaces[2];
+    std::vector<LightReservoir> m_temporal;   // after the first stage
+    std::vector<LightReservoir> m_final[2];   // after spatial reuse; [previous] is the history
+};
+
+RestirMode restir_mode_named(const std::string& name);
+
+}  // namespace glint
