@@ -137,8 +137,7 @@ bool RestirDi::arrive(const ReuseSurface& surface, const LightCandidate& candida
     }
     if (L.is_black()) return false;
     const Vec3 wi_local = surface.shading.to_local(wi);
-    const Vec3 wo_local = surface.shading.to_local(surface.wo);
-    out.contribution = surface.bsdf->eval(wo_local, wi_local) * (abs_cos_theta(wi_local)) * L;
+    out.contribution = surface.bsdf->eval(surface.wo_local, wi_local) * (abs_cos_theta(wi_local)) * L;
     return !out.contribution.is_black();
 }
 
@@ -187,10 +186,14 @@ RestirDi::LightReservoir RestirDi::combine(const LightReservoir* const* inputs,
     LightReservoir combined;
     int chosen = -1;
     for (int i = 0; i < count; ++i) {
-        float target = 0.0f;
+        // The first input is the pixel's own: its target is already the one here.
+        float target = inputs[i]->target;
         Arrival arrival;
-        if (inputs[i]->has_sample() && arrive(*surfaces[0], inputs[i]->sample, arrival))
-            target = target_of(arrival.contribution);
+        if (i > 0) {
+            target = inputs[i]->has_sample() && arrive(*surfaces[0], inputs[i]->sample, arrival)
+                         ? target_of(arrival.contribution)
+                         : 0.0f;
+        }
         if (combined.merge(*inputs[i], target, rng.next_float())) chosen = i;
     }
     if (chosen < 0) return combined;  // W = 0: nothing to shade with
