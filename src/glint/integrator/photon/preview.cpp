@@ -143,6 +143,7 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     s.restir.candidates = p.get_int("preview_restir_candidates", s.restir.candidates);
     s.restir.spatial = p.get_int("preview_restir_spatial", s.restir.spatial);
     s.restir.temporal = p.get_bool("preview_restir_temporal", s.restir.temporal);
+    s.restir.history_cap = p.get_float("preview_restir_history", s.restir.history_cap);
     if (s.photons < 0 || s.photons > 100000000)
         p.fail_at("preview_photons", "'preview_photons' must be in [0, 1e8] (photons per pass)");
     if (s.window < 1 || s.window > 1024)
@@ -158,6 +159,10 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     if (s.restir.candidates < 1 || s.restir.candidates > 1024)
         p.fail_at("preview_restir_candidates",
                   "'preview_restir_candidates' must be in [1, 1024] (light samples per pixel)");
+    if (!(s.restir.history_cap >= 0.0f && s.restir.history_cap <= 1000.0f))
+        p.fail_at("preview_restir_history",
+                  "'preview_restir_history' must be in [0, 1000] (the previous pass counts at "
+                  "most this many times preview_restir_candidates)");
     if (s.restir.spatial < 0 || s.restir.spatial > 16)
         p.fail_at("preview_restir_spatial",
                   "'preview_restir_spatial' must be in [0, 16] (neighbours; 0: no spatial reuse)");
@@ -341,8 +346,8 @@ Spectrum PreviewIntegrator::indirect_estimate(const Scene& scene, const SurfaceI
 // x1 D S+ L are counted, and are path's too; the only caustics it does not count are the
 // ones the photons estimate with their radius' blur).
 Spectrum PreviewIntegrator::bounce_estimate(const Scene& scene, const SurfaceInteraction& first,
-                                            const Bsdf& first_bsdf, Sampler& sampler,
-                                            Arena& arena, RayCounter& counter) const {
+                                            const Bsdf& first_bsdf, Sampler& sampler, Arena& arena,
+                                            RayCounter& counter) const {
     const bool photons_carry_caustics = m_preview.photons > 0;
     Spectrum L(0.0f), beta(1.0f);
     SurfaceInteraction at = first;
@@ -374,8 +379,8 @@ Spectrum PreviewIntegrator::bounce_estimate(const Scene& scene, const SurfaceInt
             if (!scattering) return L;
             beta *= scattering->weight;
             through_delta = true;
-            ray = spawn_specular_ray(next, ray, scattering->wi, scattering->sample.is_transmission(),
-                                     scattering->sample.eta);
+            ray = spawn_specular_ray(next, ray, scattering->wi,
+                                     scattering->sample.is_transmission(), scattering->sample.eta);
             next_bsdf = nullptr;
         }
         if (!next_bsdf || next_bsdf->is_delta()) break;
@@ -403,8 +408,8 @@ Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sa
     const Bsdf& bsdf = *chain.bsdf;
     const Spectrum direct =
         estimate_direct_light(scene, si, bsdf, sampler, LightWeighting::kNone, counter);
-    return L + chain.beta *
-                   indirect_estimate(scene, si, bsdf, direct, sampler, arena, counter, cache);
+    return L +
+           chain.beta * indirect_estimate(scene, si, bsdf, direct, sampler, arena, counter, cache);
 }
 
 // The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
@@ -507,10 +512,10 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
         });
     }
     for_each_lane(shading, [&](int lane) {
-        lanes.L[lane] = emitted[lane] + beta[lane] * indirect_estimate(
-                                            scene, *surface[lane], *bsdf_of[lane], reflected[lane],
-                                            lanes.samplers[lane], arena, counter,
-                                            lanes.photon_cache);
+        lanes.L[lane] =
+            emitted[lane] + beta[lane] * indirect_estimate(scene, *surface[lane], *bsdf_of[lane],
+                                                           reflected[lane], lanes.samplers[lane],
+                                                           arena, counter, lanes.photon_cache);
     });
     for_each_lane(active, [&](int lane) {
         film.add_sample(lanes.pixels[lane], lanes.L[lane], 1.0f, nullptr);
@@ -559,8 +564,8 @@ void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int p
         HashGrid::Cache cache;
         for (int y = rows.begin(); y < rows.end(); ++y) {
             for (int x = 0; x < w; ++x) {
-                const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) +
-                                 static_cast<size_t>(x);
+                const size_t i =
+                    static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
                 const Vec2i pixel = film.origin() + Vec2i(x, y);
                 sampler.start_pixel_sample(pixel, pass);
                 const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
@@ -586,15 +591,15 @@ void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int p
                 surface.time = si.time;
                 // The last ray starts at the camera unless a mirror or glass turned it.
                 surface.seen_directly = chain.ray.origin == ray.origin;
-                surface.depth = glm::length(si.p - chain.ray.origin) +
-                                (surface.seen_directly ? 0.0f
-                                                       : glm::length(chain.ray.origin - ray.origin));
+                surface.depth =
+                    glm::length(si.p - chain.ray.origin) +
+                    (surface.seen_directly ? 0.0f : glm::length(chain.ray.origin - ray.origin));
                 restir.generate(scene, x, y, sampler, counter);
                 scratch.reset();
                 state.beta[i] = chain.beta;
-                state.rest[i] += chain.beta * indirect_estimate(scene, si, *chain.bsdf,
-                                                                Spectrum(0.0f), sampler, scratch,
-                                                                counter, cache);
+                state.rest[i] +=
+                    chain.beta * indirect_estimate(scene, si, *chain.bsdf, Spectrum(0.0f), sampler,
+                                                   scratch, counter, cache);
             }
         }
         rays += counter.rays;
@@ -604,8 +609,8 @@ void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int p
         RayCounter counter;
         for (int y = rows.begin(); y < rows.end(); ++y) {
             for (int x = 0; x < w; ++x) {
-                const size_t i = static_cast<size_t>(y) * static_cast<size_t>(w) +
-                                 static_cast<size_t>(x);
+                const size_t i =
+                    static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
                 const Vec2i pixel = film.origin() + Vec2i(x, y);
                 const uint64_t packed =
                     (static_cast<uint64_t>(static_cast<uint32_t>(pixel.x)) << 32) |
@@ -636,41 +641,41 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     if (m_preview.restir.mode != RestirMode::kOff) {
         render_restir_pass(scene, film, pass, stats);
     } else {
-    // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
-    // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
-    // photons, so the image is the same for any threads.
-    const int block_rows = (h + kBlockHeight - 1) / kBlockHeight;
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, block_rows, 2), [&](const tbb::blocked_range<int>& rows) {
-            Arena arena;
-            RayCounter counter;
-            if (m_packets) {
-                auto lanes = std::make_unique<CameraLanes>();
-                for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
-                for (int row = rows.begin(); row < rows.end(); ++row)
-                    for (int x = 0; x < w; x += kBlockWidth)
-                        render_block(scene, film, Vec2i(x, row * kBlockHeight), pass, *lanes, arena,
-                                     counter);
-            } else {
-                PassSampler sampler;
-                sampler.set_seed(m_settings.seed);
-                HashGrid::Cache cache;
-                for (int y = rows.begin() * kBlockHeight;
-                     y < std::min(h, rows.end() * kBlockHeight); ++y) {
-                    for (int x = 0; x < w; ++x) {
-                        const Vec2i pixel = film.origin() + Vec2i(x, y);
-                        sampler.start_pixel_sample(pixel, pass);
-                        const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
-                        const Ray ray = scene.camera().sample_ray(film_point, sampler);
-                        arena.reset();
-                        film.add_sample(pixel,
-                                        camera_sample(scene, ray, sampler, arena, counter, cache),
-                                        1.0f, nullptr);
+        // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
+        // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
+        // photons, so the image is the same for any threads.
+        const int block_rows = (h + kBlockHeight - 1) / kBlockHeight;
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, block_rows, 2), [&](const tbb::blocked_range<int>& rows) {
+                Arena arena;
+                RayCounter counter;
+                if (m_packets) {
+                    auto lanes = std::make_unique<CameraLanes>();
+                    for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
+                    for (int row = rows.begin(); row < rows.end(); ++row)
+                        for (int x = 0; x < w; x += kBlockWidth)
+                            render_block(scene, film, Vec2i(x, row * kBlockHeight), pass, *lanes,
+                                         arena, counter);
+                } else {
+                    PassSampler sampler;
+                    sampler.set_seed(m_settings.seed);
+                    HashGrid::Cache cache;
+                    for (int y = rows.begin() * kBlockHeight;
+                         y < std::min(h, rows.end() * kBlockHeight); ++y) {
+                        for (int x = 0; x < w; ++x) {
+                            const Vec2i pixel = film.origin() + Vec2i(x, y);
+                            sampler.start_pixel_sample(pixel, pass);
+                            const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+                            const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                            arena.reset();
+                            film.add_sample(
+                                pixel, camera_sample(scene, ray, sampler, arena, counter, cache),
+                                1.0f, nullptr);
+                        }
                     }
                 }
-            }
-            camera_rays += counter.rays;
-        });
+                camera_rays += counter.rays;
+            });
     }
     stats.rays += camera_rays.load();
     m_timing.camera = seconds_since(camera_start);

@@ -42,8 +42,8 @@ struct Reservoir {
     /// count (target_here = this owner's target function at other.sample).
     bool merge(const Reservoir& other, float target_here, float u) {
         const bool chosen =
-            other.has_sample() && update(other.sample, target_here * other.W * other.count,
-                                         target_here, u);
+            other.has_sample() &&
+            update(other.sample, target_here * other.W * other.count, target_here, u);
         count += other.count;
         return chosen;
     }
@@ -60,9 +60,7 @@ struct Reservoir {
     /// sample (Bitterli et al. 2020, eq. 22 and Algorithm 6): weight_sum mis / target. Any
     /// weights that sum to one over the candidates that could have produced the sample
     /// keep the estimate unbiased.
-    void finish_weighted(float mis) {
-        W = (target > 0.0f) ? weight_sum * mis / target : 0.0f;
-    }
+    void finish_weighted(float mis) { W = (target > 0.0f) ? weight_sum * mis / target : 0.0f; }
 };
 
 }  // namespace glint

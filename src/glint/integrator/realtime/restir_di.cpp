@@ -61,8 +61,8 @@ RestirMode restir_mode_named(const std::string& name) {
     if (name == "unbiased") return RestirMode::kUnbiased;
     if (name == "biased") return RestirMode::kBiased;
     if (name == "off") return RestirMode::kOff;
-    throw Error(fmt::format("unknown ReSTIR mode '{}' (expected 'unbiased', 'biased' or 'off')",
-                            name));
+    throw Error(
+        fmt::format("unknown ReSTIR mode '{}' (expected 'unbiased', 'biased' or 'off')", name));
 }
 
 PinholeProjection::PinholeProjection(const Camera& camera) {
@@ -72,7 +72,8 @@ PinholeProjection::PinholeProjection(const Camera& camera) {
     const Ray r01 = camera.generate_ray(Vec2(0.0f, 1.0f), centre);
     // A pinhole's rays share their origin; an orthographic camera's do not.
     const float scale = 1e-4f * (1.0f + glm::length(r00.origin));
-    if (glm::length(r10.origin - r00.origin) > scale || glm::length(r01.origin - r00.origin) > scale)
+    if (glm::length(r10.origin - r00.origin) > scale ||
+        glm::length(r01.origin - r00.origin) > scale)
         return;
     m_eye = r00.origin;
     m_forward = camera.forward();
@@ -137,7 +138,8 @@ bool RestirDi::arrive(const ReuseSurface& surface, const LightCandidate& candida
     }
     if (L.is_black()) return false;
     const Vec3 wi_local = surface.shading.to_local(wi);
-    out.contribution = surface.bsdf->eval(surface.wo_local, wi_local) * (abs_cos_theta(wi_local)) * L;
+    out.contribution =
+        surface.bsdf->eval(surface.wo_local, wi_local) * (abs_cos_theta(wi_local)) * L;
     return !out.contribution.is_black();
 }
 
@@ -158,6 +160,10 @@ void RestirDi::begin_pass(const Scene& scene, int width, int height, Vec2i origi
         m_temporal.assign(pixels, LightReservoir{});
     }
     m_history = m_history && keep_history && same_film && m_settings.temporal;
+    const float diagonal = std::sqrt(static_cast<float>(width) * static_cast<float>(width) +
+                                     static_cast<float>(height) * static_cast<float>(height));
+    m_radius =
+        m_settings.radius > 0.0f ? m_settings.radius : std::clamp(diagonal / 64.0f, 3.0f, 30.0f);
     m_previous_projection = m_projection;
     m_projection = PinholeProjection(scene.camera());
 }
@@ -173,18 +179,20 @@ bool RestirDi::similar(const ReuseSurface& a, const ReuseSurface& b) const {
            glm::dot(a.shading.n(), b.shading.n()) >= kNormalCosine;
 }
 
-bool RestirDi::visible(const Scene& scene, const ReuseSurface& surface, const Vec3& target,
-                       RayCounter& counter) const {
+Spectrum RestirDi::transmittance_to(const Scene& scene, const ReuseSurface& surface,
+                                    const Vec3& target, RayCounter& counter) const {
     ++counter.rays;
     const Vec3 origin = offset_ray_origin(surface.p, surface.ng, target - surface.p);
-    return !scene.occluded(Ray{origin, target - origin, 0.0f, kShadowRayEnd, surface.time});
+    return transmittance(scene, Scene::ShadowRay{origin, target - origin, surface.time});
 }
 
-RestirDi::LightReservoir RestirDi::combine(const LightReservoir* const* inputs,
-                                           const ReuseSurface* const* surfaces, int count,
-                                           Rng& rng) const {
+RestirDi::LightReservoir RestirDi::combine(const Scene& scene, const LightReservoir* const* inputs,
+                                           const ReuseSurface* const* surfaces, int count, Rng& rng,
+                                           Spectrum& through, RayCounter& counter) const {
     LightReservoir combined;
+    through = Spectrum(0.0f);
     int chosen = -1;
+    Vec3 chosen_target(0.0f);
     for (int i = 0; i < count; ++i) {
         // The first input is the pixel's own: its target is already the one here.
         float target = inputs[i]->target;
@@ -194,28 +202,49 @@ RestirDi::LightReservoir RestirDi::combine(const LightReservoir* const* inputs,
                          ? target_of(arrival.contribution)
                          : 0.0f;
         }
-        if (combined.merge(*inputs[i], target, rng.next_float())) chosen = i;
+        if (combined.merge(*inputs[i], target, rng.next_float())) {
+            chosen = i;
+            chosen_target = i > 0 ? arrival.target : Vec3(0.0f);
+        }
     }
     if (chosen < 0) return combined;  // W = 0: nothing to shade with
+    // Whether the sample reaches this pixel's surface: known for its own sample.
+    if (chosen == 0) {
+        through = Spectrum(1.0f);
+        if (scene.has_interfaces()) {
+            Arrival arrival;
+            if (arrive(*surfaces[0], combined.sample, arrival))
+                through = transmittance_to(scene, *surfaces[0], arrival.target, counter);
+        }
+    } else {
+        through = transmittance_to(scene, *surfaces[0], chosen_target, counter);
+    }
     if (m_settings.mode == RestirMode::kBiased) {
         combined.finish_uniform();
-        return combined;
-    }
-    // The balance heuristic over the candidates the inputs stand for, each input's target
-    // evaluated at its own surface: p_chosen(y) / sum_i M_i p_i(y).
-    float numerator = 0.0f, denominator = 0.0f;
-    for (int i = 0; i < count; ++i) {
-        float target = combined.target;
-        if (i > 0) {
-            Arrival arrival;
-            target = arrive(*surfaces[i], combined.sample, arrival)
-                         ? target_of(arrival.contribution)
-                         : 0.0f;
+    } else {
+        // The balance heuristic over the candidates the inputs stand for, each input's target
+        // and visibility evaluated at its own surface: p_s(y) V_s(y) / sum_i M_i p_i(y) V_i(y).
+        float numerator = 0.0f, denominator = 0.0f;
+        for (int i = 0; i < count; ++i) {
+            float target = combined.target;
+            if (i > 0) {
+                Arrival arrival;
+                target = arrive(*surfaces[i], combined.sample, arrival)
+                             ? target_of(arrival.contribution)
+                             : 0.0f;
+                if (target > 0.0f && i != chosen &&
+                    transmittance_to(scene, *surfaces[i], arrival.target, counter).is_black())
+                    target = 0.0f;
+            } else if (through.is_black()) {
+                target = 0.0f;
+            }
+            denominator += inputs[i]->count * target;
+            if (i == chosen) numerator = target;
         }
-        denominator += inputs[i]->count * target;
-        if (i == chosen) numerator = target;
+        combined.finish_weighted(denominator > 0.0f ? numerator / denominator : 0.0f);
     }
-    combined.finish_weighted(denominator > 0.0f ? numerator / denominator : 0.0f);
+    // Keep the invariant: a reservoir's sample reaches its surface.
+    if (through.is_black()) combined.W = 0.0f;
     return combined;
 }
 
@@ -241,12 +270,19 @@ void RestirDi::generate(const Scene& scene, int x, int y, Sampler& sampler, RayC
         LightCandidate candidate;
         float pdf = 0.0f;
         Arrival arrival;
-        if (!make_candidate(point, s.p, candidate, pdf) || !arrive(s, candidate, arrival))
-            continue;
+        if (!make_candidate(point, s.p, candidate, pdf) || !arrive(s, candidate, arrival)) continue;
         const float target = target_of(arrival.contribution);
         r.update(candidate, target / pdf, target, u_keep);
     }
     r.finish_uniform();
+    // Visibility reuse: a sample that does not reach the surface is dropped here, before it
+    // spreads (the candidates still count).
+    if (r.has_sample()) {
+        Arrival arrival;
+        if (!arrive(s, r.sample, arrival) ||
+            transmittance_to(scene, s, arrival.target, counter).is_black())
+            r.W = 0.0f;
+    }
 
     if (m_history && s.seen_directly) {
         const int previous = m_current ^ 1;
@@ -261,21 +297,17 @@ void RestirDi::generate(const Scene& scene, int x, int y, Sampler& sampler, RayC
                 expected.depth = glm::length(s.p - m_previous_projection.eye());
                 if (ps.seen_directly && similar(expected, ps)) {
                     LightReservoir history = m_final[previous][j];
-                    history.count = std::min(history.count, m_settings.history_cap *
-                                                                static_cast<float>(
-                                                                    m_settings.candidates));
+                    history.count =
+                        std::min(history.count, m_settings.history_cap *
+                                                    static_cast<float>(m_settings.candidates));
                     const LightReservoir* inputs[2] = {&r, &history};
                     const ReuseSurface* surfaces[2] = {&s, &ps};
                     Rng rng(hash_combine(static_cast<uint64_t>(sampler.get_1d() * 0x1p32f), i));
-                    r = combine(inputs, surfaces, 2, rng);
+                    Spectrum through;
+                    r = combine(scene, inputs, surfaces, 2, rng, through, counter);
                 }
             }
         }
-    }
-    // Visibility reuse (biased mode only; see restir_di.h).
-    if (m_settings.mode == RestirMode::kBiased && r.has_sample()) {
-        Arrival arrival;
-        if (!arrive(s, r.sample, arrival) || !visible(scene, s, arrival.target, counter)) r.W = 0.0f;
     }
     out = r;
 }
@@ -296,8 +328,7 @@ Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCoun
         for (int k = 0; k < std::min(m_settings.spatial, kMaxNeighbours); ++k) {
             const float u0 = rng.next_float();
             const Vec2 offset =
-                warp::square_to_uniform_disk_concentric(Vec2(u0, rng.next_float())) *
-                m_settings.radius;
+                warp::square_to_uniform_disk_concentric(Vec2(u0, rng.next_float())) * m_radius;
             const int nx = x + static_cast<int>(std::lround(offset.x));
             const int ny = y + static_cast<int>(std::lround(offset.y));
             if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height || (nx == x && ny == y))
@@ -309,15 +340,22 @@ Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCoun
             surfaces[count] = &ns;
             ++count;
         }
-        if (count > 1) final = combine(inputs, surfaces, count, rng);
+        if (count > 1) {
+            Spectrum through;
+            final = combine(scene, inputs, surfaces, count, rng, through, counter);
+            if (!final.has_sample()) return Spectrum(0.0f);
+            Arrival arrival;
+            if (!arrive(s, final.sample, arrival)) return Spectrum(0.0f);
+            return arrival.contribution * through * final.W;
+        }
     }
+    // The pixel's own sample, which visibility reuse (or the temporal merge) has checked.
     if (!final.has_sample()) return Spectrum(0.0f);
     Arrival arrival;
     if (!arrive(s, final.sample, arrival)) return Spectrum(0.0f);
-    ++counter.rays;
-    const Vec3 origin = offset_ray_origin(s.p, s.ng, arrival.target - s.p);
-    const Spectrum through =
-        transmittance(scene, Scene::ShadowRay{origin, arrival.target - origin, s.time});
+    const Spectrum through = scene.has_interfaces()
+                                 ? transmittance_to(scene, s, arrival.target, counter)
+                                 : Spectrum(1.0f);
     return arrival.contribution * through * final.W;
 }
 
