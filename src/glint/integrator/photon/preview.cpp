@@ -585,7 +585,6 @@ void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int p
                 surface.p = si.p;
                 surface.ng = si.ng;
                 surface.shading = si.shading;
-                surface.wo = si.wo;
                 surface.wo_local = si.to_local(si.wo);
                 surface.bsdf = chain.bsdf;
                 surface.time = si.time;

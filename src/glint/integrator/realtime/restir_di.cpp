@@ -325,6 +325,10 @@ Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCoun
         inputs[0] = &m_temporal[i];
         surfaces[0] = &s;
         int count = 1;
+        // The neighbours first, then their data: the loads of all of them are under way
+        // together (they lie rows apart, mostly outside the caches).
+        size_t neighbours[kMaxNeighbours];
+        int candidates = 0;
         for (int k = 0; k < std::min(m_settings.spatial, kMaxNeighbours); ++k) {
             const float u0 = rng.next_float();
             const Vec2 offset =
@@ -334,6 +338,12 @@ Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCoun
             if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height || (nx == x && ny == y))
                 continue;
             const size_t j = index(nx, ny);
+            __builtin_prefetch(&m_surfaces[m_current][j]);
+            __builtin_prefetch(&m_temporal[j]);
+            neighbours[candidates++] = j;
+        }
+        for (int k = 0; k < candidates; ++k) {
+            const size_t j = neighbours[k];
             const ReuseSurface& ns = m_surfaces[m_current][j];
             if (!similar(s, ns)) continue;
             inputs[count] = &m_temporal[j];

@@ -77,8 +77,7 @@ struct ReuseSurface {
     Vec3 p{0.0f};
     Vec3 ng{0.0f};
     Frame shading;
-    Vec3 wo{0.0f};
-    Vec3 wo_local{0.0f};         ///< wo in the shading frame
+    Vec3 wo_local{0.0f};         ///< towards the camera's side, in the shading frame
     const Bsdf* bsdf = nullptr;  ///< null: the pixel has no surface to light
     float depth = 0.0f;          ///< distance along the camera's path to p
     float time = 0.0f;
