@@ -49,7 +49,9 @@ enum class RestirMode { kOff, kUnbiased, kBiased };
 
 struct RestirSettings {
     RestirMode mode = RestirMode::kUnbiased;
-    int candidates = 4;    ///< M: light samples per pixel per pass (RIS)
+    /// M: light samples per pixel per pass (RIS). 2 candidates and 2 neighbours gave the
+    /// lowest error at equal time on examples/many-lights.lua (bench/README.md).
+    int candidates = 2;
     int spatial = 2;       ///< neighbours merged per pixel (0: no spatial reuse)
     bool temporal = true;  ///< merge the previous pass's reservoir (reprojected)
     /// Spatial neighbours within this many pixels; 0: a 64th of the film's diagonal, within
