@@ -211,7 +211,8 @@ void PreviewIntegrator::restart(const Scene& scene) {
     m_radius2 = r0 * r0;
 
     m_projections.assign(scene.lights().size(), std::nullopt);
-    for (size_t i = 0; i < scene.lights().size(); ++i) {
+    // Projection maps only aim photons: with none, many lights would cost seconds for nothing.
+    for (size_t i = 0; m_preview.photons > 0 && i < scene.lights().size(); ++i) {
         if (ProjectionMap::supports(*scene.lights()[i]))
             m_projections[i].emplace(scene, *scene.lights()[i]);
     }
