@@ -199,7 +199,7 @@ void PreviewIntegrator::scene_changed(SceneChange change) {
 // Drops the photons and prepares what depends on the lights and objects.
 void PreviewIntegrator::restart(const Scene& scene) {
     m_scene = &scene;
-    m_keep_history = false;  // the reservoirs name lights and points that may have moved
+    m_restir.clear();  // the reservoirs name lights and points that may have moved
     m_batches.clear();
     m_grid = HashGrid();
     m_photons.clear();
@@ -528,8 +528,10 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
 // surfaces (two sets, used in turn: the previous pass's surfaces must keep theirs for
 // temporal reuse).
 struct PreviewIntegrator::RestirState {
-    explicit RestirState(const RestirSettings& settings) : restir(settings) {}
+    RestirState(const RestirSettings& settings, Vec2i size, Vec2i origin)
+        : restir(settings), size(size), origin(origin) {}
     RestirDi restir;
+    Vec2i size, origin;          // of the film it serves
     std::vector<Spectrum> rest;  // emission, caustic photons and bounces: all but direct light
     std::vector<Spectrum> beta;  // throughput from the camera to the pixel's surface
     tbb::enumerable_thread_specific<Arena> arenas[2];
@@ -543,12 +545,20 @@ struct PreviewIntegrator::RestirState {
 // is the same for any thread count.
 void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int pass,
                                            RenderStats& stats) {
-    if (!m_restir) m_restir = std::make_unique<RestirState>(m_preview.restir);
-    RestirState& state = *m_restir;
-    RestirDi& restir = state.restir;
     const int w = film.width(), h = film.height();
-    restir.begin_pass(scene, w, h, film.origin(), m_keep_history);
-    m_keep_history = true;
+    RestirState* found = nullptr;
+    for (const auto& candidate : m_restir)
+        if (candidate->size == Vec2i(w, h) && candidate->origin == film.origin())
+            found = candidate.get();
+    if (!found) {
+        if (m_restir.size() >= 2) m_restir.erase(m_restir.begin());  // the older size
+        m_restir.push_back(
+            std::make_unique<RestirState>(m_preview.restir, Vec2i(w, h), film.origin()));
+        found = m_restir.back().get();
+    }
+    RestirState& state = *found;
+    RestirDi& restir = state.restir;
+    restir.begin_pass(scene, w, h, film.origin(), true);
     for (Arena& arena : state.arenas[restir.buffer()]) arena.reset();
     const size_t pixels = static_cast<size_t>(w) * static_cast<size_t>(h);
     state.rest.assign(pixels, Spectrum(0.0f));

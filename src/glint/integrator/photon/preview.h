@@ -118,8 +118,9 @@ private:
     float m_radius2 = 0.0f;         // squared radius of the current pass's estimate
     PassTiming m_timing;
     bool m_packets = true;
-    std::unique_ptr<RestirState> m_restir;  // while preview_restir is not "off"
-    bool m_keep_history = false;            // whether ReSTIR may reuse the previous pass
+    // ReSTIR's state per film size (at most two: the viewer's reduced first pass after a
+    // change must not wipe the full-size passes' history); dropped by restart().
+    std::vector<std::unique_ptr<RestirState>> m_restir;
 };
 
 }  // namespace glint
