@@ -1,12 +1,13 @@
 // The preview integrator's frame times and convergence, as the viewer would see them: it
 // calls render_pass() in a loop, as the viewer does each frame, and times each pass.
 //   glint_bench_preview SCENE.lua --res WxH [--threads T] [--frames N] [--moves M]
-//                       [--set KEY=NUMBER ...] [--packets 0|1]
+//                       [--set KEY=VALUE ...] [--packets 0|1]
 //                       [--snapshots "0.25 1 4" --prefix OUT]
 // Prints the median ms per pass, split into the photon pass and the camera pass, the
 // frames per second that gives, and the median ms of the first pass after a camera move
 // (scene_changed(camera), a cleared film, one pass). --packets 0 traces the camera pass one
-// ray at a time (the same image; to measure what the packets gain). With --snapshots, then renders
+// ray at a time (the same image; to measure what the packets gain). --set takes a number, true,
+// false or else a string (e.g. --set preview_restir=off). With --snapshots, then renders
 // from no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
 // ended within each time t (seconds), for glint_bench_region_error.
 #include <glint/core/error.h>
@@ -23,6 +24,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <ctime>
 #include <sstream>
 #include <string>
@@ -55,14 +57,14 @@ int run(int argc, char** argv) {
     if (argc < 2)
         throw Error(
             "usage: glint_bench_preview SCENE.lua --res WxH [--threads T] "
-            "[--frames N] [--moves M] [--set KEY=NUMBER] [--packets 0|1] "
+            "[--frames N] [--moves M] [--set KEY=VALUE] [--packets 0|1] "
             "[--snapshots \"0.25 1 4\" --prefix OUT]");
     const std::string path = argv[1];
     int width = 640, height = 480, threads = 0, frames = 30, moves = 5;
     std::vector<double> snapshots;
     std::string prefix;
     bool packets = true;
-    std::vector<std::pair<std::string, double>> overrides;
+    std::vector<std::pair<std::string, ParamValue>> overrides;
     for (int i = 2; i < argc; ++i) {
         const std::string flag = argv[i];
         if (i + 1 >= argc) throw Error(fmt::format("{} needs a value", flag));
@@ -84,8 +86,17 @@ int run(int argc, char** argv) {
         } else if (flag == "--set") {
             const size_t eq = value.find('=');
             if (eq == std::string::npos)
-                throw Error(fmt::format("--set: '{}' is not KEY=NUMBER", value));
-            overrides.emplace_back(value.substr(0, eq), std::stod(value.substr(eq + 1)));
+                throw Error(fmt::format("--set: '{}' is not KEY=VALUE", value));
+            const std::string text = value.substr(eq + 1);
+            ParamValue parsed = text;
+            if (text == "true" || text == "false") {
+                parsed = text == "true";
+            } else {
+                char* end = nullptr;
+                const double number = std::strtod(text.c_str(), &end);
+                if (!text.empty() && end == text.c_str() + text.size()) parsed = number;
+            }
+            overrides.emplace_back(value.substr(0, eq), parsed);
         } else if (flag == "--packets") {
             packets = value != "0";
         } else if (flag == "--prefix") {
@@ -101,7 +112,7 @@ int run(int argc, char** argv) {
     table.set("width", static_cast<double>(width), "--res");
     table.set("height", static_cast<double>(height), "--res");
     table.set("integrator", std::string("preview"), "bench");
-    for (const auto& [key, number] : overrides) table.set(key, number, "--set");
+    for (const auto& [key, value] : overrides) table.set(key, value, "--set");
     const RenderSettings settings = parse_render_settings(&table);
     const auto scene = build_scene(desc, settings);
     const int used_threads = threads > 0 ? threads : tbb::this_task_arena::max_concurrency();

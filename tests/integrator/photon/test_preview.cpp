@@ -191,7 +191,8 @@ TEST(Preview, MirrorCeilingCausticMatchesClosedForm) {
 // column and row of blocks are partly outside it.
 TEST(Preview, PacketsGiveTheOneRayImageBitForBit) {
     BuiltScene b = build(R"(
-        glint.render{ width = 63, height = 47, integrator = 'preview', preview_photons = 4000 }
+        glint.render{ width = 63, height = 47, integrator = 'preview', preview_photons = 4000,
+                      preview_restir = 'off' }
         glint.camera{ eye = {0, 1.4, 4}, look_at = {0, 0.7, 0}, fov = 50 }
         glint.background{ radiance = 0.2 }
         glint.quad{ vertices = {{-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}},

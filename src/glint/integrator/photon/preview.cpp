@@ -10,6 +10,7 @@
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include <bit>
@@ -132,6 +133,17 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     s.window = p.get_int("preview_window", s.window);
     s.radius = p.get_float("preview_radius", s.radius);
     s.ambient = p.get_float("preview_ambient", s.ambient);
+    s.bounces = p.get_int("preview_bounces", s.bounces);
+    const std::string restir = p.get_string("preview_restir", "unbiased");
+    try {
+        s.restir.mode = restir_mode_named(restir);
+    } catch (const Error& e) {
+        p.fail_at("preview_restir", fmt::format("'preview_restir': {}", e.what()));
+    }
+    s.restir.candidates = p.get_int("preview_restir_candidates", s.restir.candidates);
+    s.restir.spatial = p.get_int("preview_restir_spatial", s.restir.spatial);
+    s.restir.temporal = p.get_bool("preview_restir_temporal", s.restir.temporal);
+    s.restir.history_cap = p.get_float("preview_restir_history", s.restir.history_cap);
     if (s.photons < 0 || s.photons > 100000000)
         p.fail_at("preview_photons", "'preview_photons' must be in [0, 1e8] (photons per pass)");
     if (s.window < 1 || s.window > 1024)
@@ -141,6 +153,19 @@ PreviewSettings PreviewSettings::read(const Params& p) {
                   "'preview_radius' must be in [0, 1e12] (0: from the scene's size)");
     if (!(s.ambient >= 0.0f && s.ambient <= 1e6f))
         p.fail_at("preview_ambient", "'preview_ambient' must be in [0, 1e6] (0: no ambient term)");
+    if (s.bounces < 0 || s.bounces > 16)
+        p.fail_at("preview_bounces",
+                  "'preview_bounces' must be in [0, 16] (indirect bounces; 0: the ambient term)");
+    if (s.restir.candidates < 1 || s.restir.candidates > 1024)
+        p.fail_at("preview_restir_candidates",
+                  "'preview_restir_candidates' must be in [1, 1024] (light samples per pixel)");
+    if (!(s.restir.history_cap >= 0.0f && s.restir.history_cap <= 1000.0f))
+        p.fail_at("preview_restir_history",
+                  "'preview_restir_history' must be in [0, 1000] (the previous pass counts at "
+                  "most this many times preview_restir_candidates)");
+    if (s.restir.spatial < 0 || s.restir.spatial > 16)
+        p.fail_at("preview_restir_spatial",
+                  "'preview_restir_spatial' must be in [0, 16] (neighbours; 0: no spatial reuse)");
     return s;
 }
 
@@ -163,14 +188,18 @@ std::unique_ptr<Integrator> PreviewIntegrator::create(const RenderSettings& sett
 PreviewIntegrator::PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview)
     : m_settings(settings), m_preview(preview) {}
 
+PreviewIntegrator::~PreviewIntegrator() = default;
+
 void PreviewIntegrator::scene_changed(SceneChange change) {
-    // World-space photons do not depend on the camera; anything else may move them.
+    // World-space photons do not depend on the camera; anything else may move them. ReSTIR's
+    // history survives a camera move too (temporal reuse reprojects it).
     if (change != SceneChange::camera) m_scene = nullptr;
 }
 
 // Drops the photons and prepares what depends on the lights and objects.
 void PreviewIntegrator::restart(const Scene& scene) {
     m_scene = &scene;
+    m_restir.clear();  // the reservoirs name lights and points that may have moved
     m_batches.clear();
     m_grid = HashGrid();
     m_photons.clear();
@@ -182,7 +211,8 @@ void PreviewIntegrator::restart(const Scene& scene) {
     m_radius2 = r0 * r0;
 
     m_projections.assign(scene.lights().size(), std::nullopt);
-    for (size_t i = 0; i < scene.lights().size(); ++i) {
+    // Projection maps only aim photons: with none, many lights would cost seconds for nothing.
+    for (size_t i = 0; m_preview.photons > 0 && i < scene.lights().size(); ++i) {
         if (ProjectionMap::supports(*scene.lights()[i]))
             m_projections[i].emplace(scene, *scene.lights()[i]);
     }
@@ -283,12 +313,84 @@ Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const
 }
 
 // Light leaving the first surface that is not purely specular towards the camera, but for
-// the direct light: the caustic photons and the ambient term.
-Spectrum PreviewIntegrator::indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
-                                              Spectrum reflected, HashGrid::Cache& cache) const {
+// the direct light: the caustic photons, and the path-traced bounces (or the ambient term).
+Spectrum PreviewIntegrator::indirect_estimate(const Scene& scene, const SurfaceInteraction& si,
+                                              const Bsdf& bsdf, Spectrum reflected,
+                                              Sampler& sampler, Arena& arena, RayCounter& counter,
+                                              HashGrid::Cache& cache) const {
     if (m_grid.size() > 0) reflected += caustic_estimate(si, bsdf, cache);
-    reflected += m_ambient * si.material->albedo(si);
+    if (m_preview.bounces > 0)
+        reflected += bounce_estimate(scene, si, bsdf, sampler, arena, counter);
+    else
+        reflected += m_ambient * si.material->albedo(si);
     return reflected;
+}
+
+// The indirect light at the first non-specular surface x1 (reached from the camera through
+// mirrors and glass, E S* x1), by a path of m_preview.bounces non-specular vertices x2, x3,
+// ... traced from x1 by BSDF sampling, each found through any number of mirrors and glass,
+// with next-event estimation at each. Which paths each of the preview's estimators carries,
+// so that none is counted twice (S: a delta lobe, D: any other, L: a light):
+//   direct light (ReSTIR or one light sample) at x1:        E S* x1 L
+//   caustic photons at x1 (photons that met mirrors or glass
+//   between the light and x1):                               E S* x1 S+ L
+//   next-event estimation at x_k, k >= 2 (here):            E S* x1 (S* D){k-1} L
+//   emission that BSDF sampling from x_k reaches through
+//   one or more delta lobes, k >= 2 (here):                  E S* x1 (S* D){k-2} S+ L
+// So emission that BSDF sampling reaches directly (x_k D-sampled straight into a light) is
+// never counted here (next-event estimation has it, with no MIS), and emission reached
+// from x1 through mirrors or glass is left to the photons; with preview_photons = 0 nothing
+// else has those caustic paths, and the bounce counts them. A ray that escapes gathers a
+// constant background always (nothing samples it) and an environment light only after a
+// delta lobe (next-event estimation samples it otherwise). With these, the preview
+// converges to `path`'s image where the scene has no caustics (longer caustic paths such as
+// x1 D S+ L are counted, and are path's too; the only caustics it does not count are the
+// ones the photons estimate with their radius' blur).
+Spectrum PreviewIntegrator::bounce_estimate(const Scene& scene, const SurfaceInteraction& first,
+                                            const Bsdf& first_bsdf, Sampler& sampler, Arena& arena,
+                                            RayCounter& counter) const {
+    const bool photons_carry_caustics = m_preview.photons > 0;
+    Spectrum L(0.0f), beta(1.0f);
+    SurfaceInteraction at = first;
+    const Bsdf* bsdf = &first_bsdf;
+    for (int bounce = 1; bounce <= m_preview.bounces; ++bounce) {
+        std::optional<Scattering> scattering =
+            sample_scattering(at, *bsdf, at.to_local(at.wo), sampler.get_2d(), sampler.get_1d());
+        if (!scattering) break;
+        beta *= scattering->weight;
+        bool through_delta = scattering->sample.is_delta();
+        // Emission reached through delta lobes, which next-event estimation cannot find.
+        const bool count_caustic = bounce > 1 || !photons_carry_caustics;
+        Ray ray = spawn_ray(at, scattering->wi);
+        SurfaceInteraction next;
+        const Bsdf* next_bsdf = nullptr;
+        for (int segment = 0; segment < kMaxCameraSegments; ++segment) {
+            ++counter.rays;
+            if (!scene.intersect(ray, next)) {
+                if (!scene.environment() || (through_delta && count_caustic))
+                    L += beta * scene.escaped_radiance(ray.direction);
+                return L;
+            }
+            beta *= segment_transmittance(ray, next);
+            if (through_delta && count_caustic) L += beta * emitted_radiance(next);
+            next_bsdf = shade(scene, ray, next, arena);
+            if (!next_bsdf || !next_bsdf->is_delta()) break;
+            scattering = sample_scattering(next, *next_bsdf, next.to_local(next.wo),
+                                           sampler.get_2d(), sampler.get_1d());
+            if (!scattering) return L;
+            beta *= scattering->weight;
+            through_delta = true;
+            ray = spawn_specular_ray(next, ray, scattering->wi,
+                                     scattering->sample.is_transmission(), scattering->sample.eta);
+            next_bsdf = nullptr;
+        }
+        if (!next_bsdf || next_bsdf->is_delta()) break;
+        L += beta * estimate_direct_light(scene, next, *next_bsdf, sampler, LightWeighting::kNone,
+                                          counter);
+        at = next;
+        bsdf = next_bsdf;
+    }
+    return L;
 }
 
 // The one-ray form, which the packet form below must match bit for bit (it is tested
@@ -307,7 +409,8 @@ Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sa
     const Bsdf& bsdf = *chain.bsdf;
     const Spectrum direct =
         estimate_direct_light(scene, si, bsdf, sampler, LightWeighting::kNone, counter);
-    return L + chain.beta * indirect_estimate(si, bsdf, direct, cache);
+    return L +
+           chain.beta * indirect_estimate(scene, si, bsdf, direct, sampler, arena, counter, cache);
 }
 
 // The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
@@ -411,12 +514,126 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
     }
     for_each_lane(shading, [&](int lane) {
         lanes.L[lane] =
-            emitted[lane] + beta[lane] * indirect_estimate(*surface[lane], *bsdf_of[lane],
-                                                           reflected[lane], lanes.photon_cache);
+            emitted[lane] + beta[lane] * indirect_estimate(scene, *surface[lane], *bsdf_of[lane],
+                                                           reflected[lane], lanes.samplers[lane],
+                                                           arena, counter, lanes.photon_cache);
     });
     for_each_lane(active, [&](int lane) {
         film.add_sample(lanes.pixels[lane], lanes.L[lane], 1.0f, nullptr);
     });
+}
+
+// What ReSTIR keeps between the two stages of a pass and from pass to pass: its buffers,
+// what each pixel gathers besides direct light, and the arenas that hold the BSDFs of the
+// surfaces (two sets, used in turn: the previous pass's surfaces must keep theirs for
+// temporal reuse).
+struct PreviewIntegrator::RestirState {
+    RestirState(const RestirSettings& settings, Vec2i size, Vec2i origin)
+        : restir(settings), size(size), origin(origin) {}
+    RestirDi restir;
+    Vec2i size, origin;          // of the film it serves
+    std::vector<Spectrum> rest;  // emission, caustic photons and bounces: all but direct light
+    std::vector<Spectrum> beta;  // throughput from the camera to the pixel's surface
+    tbb::enumerable_thread_specific<Arena> arenas[2];
+};
+
+// A pass with ReSTIR: first every pixel finds its surface (through mirrors and glass), draws
+// its light candidates, merges the previous pass's reservoir and gathers everything but
+// direct light; then, once all pixels have their reservoirs, every pixel merges its
+// neighbours' and shades its final sample with one shadow ray. Each pixel's numbers come
+// from (seed, pixel, pass) and the second stage reads only the first's results, so the image
+// is the same for any thread count.
+void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int pass,
+                                           RenderStats& stats) {
+    const int w = film.width(), h = film.height();
+    RestirState* found = nullptr;
+    for (const auto& candidate : m_restir)
+        if (candidate->size == Vec2i(w, h) && candidate->origin == film.origin())
+            found = candidate.get();
+    if (!found) {
+        if (m_restir.size() >= 2) m_restir.erase(m_restir.begin());  // the older size
+        m_restir.push_back(
+            std::make_unique<RestirState>(m_preview.restir, Vec2i(w, h), film.origin()));
+        found = m_restir.back().get();
+    }
+    RestirState& state = *found;
+    RestirDi& restir = state.restir;
+    restir.begin_pass(scene, w, h, film.origin(), true);
+    for (Arena& arena : state.arenas[restir.buffer()]) arena.reset();
+    const size_t pixels = static_cast<size_t>(w) * static_cast<size_t>(h);
+    state.rest.assign(pixels, Spectrum(0.0f));
+    state.beta.assign(pixels, Spectrum(0.0f));
+    std::atomic<uint64_t> rays{0};
+    const uint64_t pass_key = hash_combine(mix_bits(m_settings.seed), static_cast<uint64_t>(pass));
+
+    tbb::parallel_for(tbb::blocked_range<int>(0, h, 4), [&](const tbb::blocked_range<int>& rows) {
+        Arena& arena = state.arenas[restir.buffer()].local();
+        Arena scratch;
+        RayCounter counter;
+        PassSampler sampler;
+        sampler.set_seed(m_settings.seed);
+        HashGrid::Cache cache;
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            for (int x = 0; x < w; ++x) {
+                const size_t i =
+                    static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+                const Vec2i pixel = film.origin() + Vec2i(x, y);
+                sampler.start_pixel_sample(pixel, pass);
+                const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+                const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                const SpecularChain chain =
+                    follow_specular_chain(scene, ray, Spectrum(1.0f), sampler, arena, counter,
+                                          kMaxCameraSegments, nullptr);
+                ReuseSurface& surface = restir.surface(x, y);
+                surface = ReuseSurface{};
+                state.rest[i] = chain.emitted;
+                if (chain.escaped) {
+                    state.rest[i] += chain.beta * scene.escaped_radiance(chain.ray.direction);
+                    continue;
+                }
+                if (!chain.hit) continue;
+                const SurfaceInteraction& si = *chain.hit;
+                surface.p = si.p;
+                surface.ng = si.ng;
+                surface.shading = si.shading;
+                surface.wo_local = si.to_local(si.wo);
+                surface.bsdf = chain.bsdf;
+                surface.time = si.time;
+                // The last ray starts at the camera unless a mirror or glass turned it.
+                surface.seen_directly = chain.ray.origin == ray.origin;
+                surface.depth =
+                    glm::length(si.p - chain.ray.origin) +
+                    (surface.seen_directly ? 0.0f : glm::length(chain.ray.origin - ray.origin));
+                restir.generate(scene, x, y, sampler, counter);
+                scratch.reset();
+                state.beta[i] = chain.beta;
+                state.rest[i] +=
+                    chain.beta * indirect_estimate(scene, si, *chain.bsdf, Spectrum(0.0f), sampler,
+                                                   scratch, counter, cache);
+            }
+        }
+        rays += counter.rays;
+    });
+
+    tbb::parallel_for(tbb::blocked_range<int>(0, h, 4), [&](const tbb::blocked_range<int>& rows) {
+        RayCounter counter;
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            for (int x = 0; x < w; ++x) {
+                const size_t i =
+                    static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
+                const Vec2i pixel = film.origin() + Vec2i(x, y);
+                const uint64_t packed =
+                    (static_cast<uint64_t>(static_cast<uint32_t>(pixel.x)) << 32) |
+                    static_cast<uint32_t>(pixel.y);
+                const Spectrum direct =
+                    restir.shade(scene, x, y, hash_combine(pass_key, packed), counter);
+                film.add_sample(pixel, state.rest[i] + state.beta[i] * direct, 1.0f, nullptr);
+            }
+        }
+        rays += counter.rays;
+    });
+    restir.end_pass();
+    stats.rays += rays.load();
 }
 
 RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int pass,
@@ -431,41 +648,45 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     const auto camera_start = std::chrono::steady_clock::now();
     const int w = film.width(), h = film.height();
     std::atomic<uint64_t> camera_rays{0};
-    // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
-    // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
-    // photons, so the image is the same for any threads.
-    const int block_rows = (h + kBlockHeight - 1) / kBlockHeight;
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, block_rows, 2), [&](const tbb::blocked_range<int>& rows) {
-            Arena arena;
-            RayCounter counter;
-            if (m_packets) {
-                auto lanes = std::make_unique<CameraLanes>();
-                for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
-                for (int row = rows.begin(); row < rows.end(); ++row)
-                    for (int x = 0; x < w; x += kBlockWidth)
-                        render_block(scene, film, Vec2i(x, row * kBlockHeight), pass, *lanes, arena,
-                                     counter);
-            } else {
-                PassSampler sampler;
-                sampler.set_seed(m_settings.seed);
-                HashGrid::Cache cache;
-                for (int y = rows.begin() * kBlockHeight;
-                     y < std::min(h, rows.end() * kBlockHeight); ++y) {
-                    for (int x = 0; x < w; ++x) {
-                        const Vec2i pixel = film.origin() + Vec2i(x, y);
-                        sampler.start_pixel_sample(pixel, pass);
-                        const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
-                        const Ray ray = scene.camera().sample_ray(film_point, sampler);
-                        arena.reset();
-                        film.add_sample(pixel,
-                                        camera_sample(scene, ray, sampler, arena, counter, cache),
-                                        1.0f, nullptr);
+    if (m_preview.restir.mode != RestirMode::kOff) {
+        render_restir_pass(scene, film, pass, stats);
+    } else {
+        // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
+        // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
+        // photons, so the image is the same for any threads.
+        const int block_rows = (h + kBlockHeight - 1) / kBlockHeight;
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, block_rows, 2), [&](const tbb::blocked_range<int>& rows) {
+                Arena arena;
+                RayCounter counter;
+                if (m_packets) {
+                    auto lanes = std::make_unique<CameraLanes>();
+                    for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
+                    for (int row = rows.begin(); row < rows.end(); ++row)
+                        for (int x = 0; x < w; x += kBlockWidth)
+                            render_block(scene, film, Vec2i(x, row * kBlockHeight), pass, *lanes,
+                                         arena, counter);
+                } else {
+                    PassSampler sampler;
+                    sampler.set_seed(m_settings.seed);
+                    HashGrid::Cache cache;
+                    for (int y = rows.begin() * kBlockHeight;
+                         y < std::min(h, rows.end() * kBlockHeight); ++y) {
+                        for (int x = 0; x < w; ++x) {
+                            const Vec2i pixel = film.origin() + Vec2i(x, y);
+                            sampler.start_pixel_sample(pixel, pass);
+                            const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+                            const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                            arena.reset();
+                            film.add_sample(
+                                pixel, camera_sample(scene, ray, sampler, arena, counter, cache),
+                                1.0f, nullptr);
+                        }
                     }
                 }
-            }
-            camera_rays += counter.rays;
-        });
+                camera_rays += counter.rays;
+            });
+    }
     stats.rays += camera_rays.load();
     m_timing.camera = seconds_since(camera_start);
     const uint64_t pixels = static_cast<uint64_t>(w) * static_cast<uint64_t>(h);

@@ -6,7 +6,10 @@
 // Fresnel-chosen lobe per interface) to the first non-specular surface, where it adds
 // direct light (one light sample and its shadow ray), the caustic photons' density within
 // a global radius that shrinks from pass to pass (progressive photon mapping with Knaus and
-// Zwicker's radius schedule), and an ambient term for the light neither of those carries.
+// Zwicker's radius schedule), and one or more path-traced bounces of indirect light (or, with
+// preview_bounces = 0, an ambient term for the light neither of those carries). Direct light
+// uses ReSTIR DI (integrator/realtime/restir_di.h) unless preview_restir = "off"; then it is
+// one light sample and its shadow ray.
 // The film averages the passes, so the image converges while nothing changes; photons
 // survive a camera move (they are in world space) and are dropped when a light or an
 // object moves. For speed (15 frames per second at 640x480 is the aim) the camera rays of
@@ -16,6 +19,7 @@
 #include <glint/integrator/photon/photon_map.h>
 #include <glint/integrator/photon/projection_map.h>
 #include <glint/integrator/progressive.h>
+#include <glint/integrator/realtime/restir_di.h>
 #include <glint/integrator/tile/tile_integrator.h>
 #include <glint/integrator/transport/hash_grid.h>
 
@@ -36,16 +40,26 @@ struct PreviewSettings {
     /// Scale of the ambient term (>= 0; 0 turns it off), an estimate of the light of all
     /// bounces after the first from the lights' power, the scene's size and how closed it
     /// is, plus the constant background for the directions that escape (see restart()).
+    /// Used only with bounces = 0: the path-traced bounces carry that light.
     float ambient = 1.0f;
+    /// Path-traced bounces of indirect light after the first non-specular surface, each with
+    /// next-event estimation (>= 0; 0: the ambient term instead).
+    int bounces = 1;
+    /// Direct light at the first non-specular surface: preview_restir ("unbiased", "biased",
+    /// "off"), preview_restir_candidates (M), preview_restir_spatial (neighbours, 0: none),
+    /// preview_restir_temporal.
+    RestirSettings restir;
 
-    /// Reads and validates preview_photons, preview_window, preview_radius and
-    /// preview_ambient; errors name the key's location.
+    /// Reads and validates preview_photons, preview_window, preview_radius,
+    /// preview_ambient, preview_bounces and the preview_restir keys; errors name the key's
+    /// location.
     static PreviewSettings read(const Params& params);
 };
 
 class PreviewIntegrator final : public Integrator, public ProgressiveIntegrator {
 public:
     PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview);
+    ~PreviewIntegrator() override;
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
 
     /// settings.spp passes into `film`, starting from no photons.
@@ -76,12 +90,17 @@ public:
 
 private:
     struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
+    struct RestirState;  // preview.cpp: ReSTIR's buffers and the arenas its BSDFs live in
     void restart(const Scene& scene);
     void trace_photons(const Scene& scene, RenderStats& stats);
     Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
                               HashGrid::Cache& cache) const;
-    Spectrum indirect_estimate(const SurfaceInteraction& si, const Bsdf& bsdf, Spectrum reflected,
-                               HashGrid::Cache& cache) const;
+    Spectrum indirect_estimate(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                               Spectrum reflected, Sampler& sampler, Arena& arena,
+                               RayCounter& counter, HashGrid::Cache& cache) const;
+    Spectrum bounce_estimate(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
+                             Sampler& sampler, Arena& arena, RayCounter& counter) const;
+    void render_restir_pass(const Scene& scene, Film& film, int pass, RenderStats& stats);
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                            RayCounter& counter, HashGrid::Cache& cache) const;
     void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,
@@ -99,6 +118,9 @@ private:
     float m_radius2 = 0.0f;         // squared radius of the current pass's estimate
     PassTiming m_timing;
     bool m_packets = true;
+    // ReSTIR's state per film size (at most two: the viewer's reduced first pass after a
+    // change must not wipe the full-size passes' history); dropped by restart().
+    std::vector<std::unique_ptr<RestirState>> m_restir;
 };
 
 }  // namespace glint
