@@ -95,8 +95,10 @@ Image direct_reference(int seed) {
 TEST(RestirDi, PlainRisConvergesToPathDirectLight) {
     const Convergence c = converge(
         [](int seed) {
-            return test::render_lua(direct_preview(
-                "preview_restir_spatial = 0, preview_restir_temporal = false", 64, seed));
+            return test::render_lua(
+                direct_preview("preview_restir = 'unbiased', preview_restir_spatial = 0, "
+                               "preview_restir_temporal = false",
+                               64, seed));
         },
         direct_reference);
     std::printf("RIS: relative MSE %.5f (noise %.5f, reference noise %.5f)\n", c.error, c.noise,

@@ -134,7 +134,7 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     s.radius = p.get_float("preview_radius", s.radius);
     s.ambient = p.get_float("preview_ambient", s.ambient);
     s.bounces = p.get_int("preview_bounces", s.bounces);
-    const std::string restir = p.get_string("preview_restir", "unbiased");
+    const std::string restir = p.get_string("preview_restir", "off");
     try {
         s.restir.mode = restir_mode_named(restir);
     } catch (const Error& e) {

@@ -43,8 +43,10 @@ struct PreviewSettings {
     /// Used only with bounces = 0: the path-traced bounces carry that light.
     float ambient = 1.0f;
     /// Path-traced bounces of indirect light after the first non-specular surface, each with
-    /// next-event estimation (>= 0; 0: the ambient term instead).
-    int bounces = 1;
+    /// next-event estimation (>= 0; 0: the ambient term instead). 0 by default, as
+    /// preview_restir is "off": both cost frames per second (docs/integrators.md), and the
+    /// viewer's default stays the fast preview until they reach its speed.
+    int bounces = 0;
     /// Direct light at the first non-specular surface: preview_restir ("unbiased", "biased",
     /// "off"), preview_restir_candidates (M), preview_restir_spatial (neighbours, 0: none),
     /// preview_restir_temporal.

@@ -48,7 +48,7 @@ class Camera;
 enum class RestirMode { kOff, kUnbiased, kBiased };
 
 struct RestirSettings {
-    RestirMode mode = RestirMode::kUnbiased;
+    RestirMode mode = RestirMode::kOff;
     /// M: light samples per pixel per pass (RIS). 2 candidates and 2 neighbours gave the
     /// lowest error at equal time on examples/many-lights.lua (bench/README.md).
     int candidates = 2;
