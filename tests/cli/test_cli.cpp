@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
 
+#include <cctype>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -281,11 +282,13 @@ TEST_F(CliTest, SummaryGivesExactSampleAndRayTotals) {
     const auto result =
         run_glint(fmt::format("render {}small.lua --res 8x6 --spp 3 -o {}", kScenes, out("t.exr")));
     ASSERT_EQ(result.exit_code, 0) << result.output;
-    // "... N samples and M rays in all": N starts after the last space before " samples".
+    // "N samples and M rays in all": N is the digits before " samples and ".
     // (Not std::regex: GCC 12 warns falsely inside it under the sanitizers.)
     const size_t words = result.output.find(" samples and ");
     ASSERT_NE(words, std::string::npos) << result.output;
-    const size_t number = result.output.rfind(' ', words - 1) + 1;
+    size_t number = words;
+    while (number > 0 && std::isdigit(static_cast<unsigned char>(result.output[number - 1])))
+        --number;
     unsigned long long samples = 0, rays = 0;
     ASSERT_EQ(std::sscanf(result.output.c_str() + number, "%llu samples and %llu rays in all",
                           &samples, &rays),
