@@ -1,7 +1,7 @@
 // Writes examples/smoke.nvdb, the density grid examples/smoke.lua renders: the procedural
 // fbm cloud (src/glint/medium/grid/fbm_cloud.h) at 32^3, stored sparsely (only voxels with
-// density) as a NanoVDB fog volume, 1/16 scene units per voxel, index (0, 0, 0) at the origin. Run by
-// scripts/make-example-grid.sh; the file is committed.
+// density) as a NanoVDB fog volume, 1/16 scene units per voxel, index (0, 0, 0) at the origin. Run
+// by scripts/make-example-grid.sh; the file is committed.
 #include <glint/core/error.h>
 #include <glint/medium/grid/fbm_cloud.h>
 #include <glint/medium/grid/nanovdb_file.h>

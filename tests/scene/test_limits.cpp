@@ -98,8 +98,9 @@ TEST(Limits, MaxDepthHasHardMaxima) {
     // The script is built outside the lambda: GCC 12 warns falsely (-Warray-bounds) about
     // a string concatenation inlined into it.
     std::string script = kClosedMirror;
-    script += "glint.render{ integrator = 'whitted', max_depth = 65, width = 2, height = 2, "
-              "spp = 1 }\n";
+    script +=
+        "glint.render{ integrator = 'whitted', max_depth = 65, width = 2, height = 2, "
+        "spp = 1 }\n";
     const std::string whitted = error_of([&script] { test::render_lua(script); });
     EXPECT_NE(whitted.find("test.lua:5: whitted follows mirrors and glass by recursion: "
                            "'max_depth' must be at most 64"),

@@ -54,8 +54,8 @@ const Medium* medium_beyond(const SurfaceInteraction& si, const Vec3& direction,
 // `surface` is the surface point scattering, or null for a point `p` in `medium`.
 template <typename Scatter>
 Spectrum direct_light(const Scene& scene, const Vec3& p, float time,
-                      const SurfaceInteraction* surface, const Medium* medium, Sampler& sampler, Rng& rng, const Spectrum& r_u,
-                      Scatter&& scatter) {
+                      const SurfaceInteraction* surface, const Medium* medium, Sampler& sampler,
+                      Rng& rng, const Spectrum& r_u, Scatter&& scatter) {
     const Vec2 u = sampler.get_2d();
     const float u_light = sampler.get_1d();
     const float u_select = sampler.get_1d();
@@ -128,9 +128,8 @@ Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
     walk.medium = scene.camera_medium();
     walk.sampler = &sampler;
     walk.aov = aov;
-    walk.hero =
-        std::min(static_cast<int>(sampler.get_1d() * Spectrum::active_values()),
-                 Spectrum::active_values() - 1);
+    walk.hero = std::min(static_cast<int>(sampler.get_1d() * Spectrum::active_values()),
+                         Spectrum::active_values() - 1);
     walk.rng.seed(stream_seed(sampler.get_1d()));
     for (int crossings = 0; crossings < 1024;) {
         ++counter.rays;
@@ -243,8 +242,8 @@ void VolPathIntegrator::scatter_by_phase(const Scene& scene, Walk& walk, const V
     const Vec3 wo = -glm::normalize(walk.ray.direction);
     const HenyeyGreenstein phase(walk.medium->phase_asymmetry());
     Sampler& sampler = *walk.sampler;
-    walk.L += walk.beta * direct_light(scene, p, walk.ray.time, nullptr, walk.medium, sampler, walk.rng, walk.r_u,
-                                       [&](const Vec3& wi, float& pdf_wi) {
+    walk.L += walk.beta * direct_light(scene, p, walk.ray.time, nullptr, walk.medium, sampler,
+                                       walk.rng, walk.r_u, [&](const Vec3& wi, float& pdf_wi) {
                                            pdf_wi = phase.eval(wo, wi);
                                            return Spectrum(pdf_wi);
                                        });
@@ -298,8 +297,8 @@ bool VolPathIntegrator::scatter_at_surface(const Scene& scene, Walk& walk, Arena
     const Vec3 wo_local = si.to_local(si.wo);
     Sampler& sampler = *walk.sampler;
     if (!bsdf->is_delta()) {
-        walk.L += walk.beta * direct_light(scene, si.p, si.time, &si, walk.medium, sampler, walk.rng,
-                                           walk.r_u, [&](const Vec3& wi, float& pdf_wi) {
+        walk.L += walk.beta * direct_light(scene, si.p, si.time, &si, walk.medium, sampler,
+                                           walk.rng, walk.r_u, [&](const Vec3& wi, float& pdf_wi) {
                                                const Vec3 wi_local = si.to_local(wi);
                                                return bsdf->eval_pdf(wo_local, wi_local, pdf_wi) *
                                                       abs_cos_theta(wi_local);
