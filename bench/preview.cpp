@@ -10,6 +10,8 @@
 // false or else a string (e.g. --set preview_restir=off). With --snapshots, then renders
 // from no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
 // ended within each time t (seconds), for glint_bench_region_error.
+#include "timing.h"
+
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/film/image_io.h>
@@ -33,21 +35,8 @@
 namespace {
 
 using namespace glint;
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    const size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-// CPU time of the whole process (all threads), in seconds: on a machine shared with other
-// work, CPU time per frame divided by the threads is what the frame would take alone.
-double cpu_seconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using bench::cpu_seconds;
+using bench::median;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

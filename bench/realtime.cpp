@@ -9,6 +9,8 @@
 // set_camera: geometry buffer + reprojection + pass + bookkeeping) and svgf_image(); wall
 // clock and, for the first frame and SVGF, CPU time divided by the threads (what it would
 // take alone on a machine shared with other work).
+#include "timing.h"
+
 #include <glint/camera/camera.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
@@ -31,19 +33,8 @@
 namespace {
 
 using namespace glint;
-
-double median(std::vector<double> values) {
-    if (values.empty()) return 0.0;
-    std::sort(values.begin(), values.end());
-    const size_t n = values.size();
-    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
-}
-
-double cpu_seconds() {
-    timespec t{};
-    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
-    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
-}
+using bench::cpu_seconds;
+using bench::median;
 
 template <typename F>
 double time_ms(F&& f) {
