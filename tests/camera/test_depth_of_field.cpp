@@ -18,7 +18,7 @@ using glint::test::render_lua;
 namespace {
 
 constexpr int kWidth = 32, kHeight = 8;
-constexpr float kFov = 10.0f;  // vertical, degrees
+constexpr float kNarrowFov = 10.0f;  // vertical, degrees
 
 // A camera at the origin looking down -z at an emitter of radiance 1 that covers x < 0 of
 // the plane z = -distance (nothing beyond x = 0, so black there): a vertical edge through the
@@ -31,7 +31,7 @@ Image render_edge(float distance, float aperture, float focus, int spp) {
         glint.quad{{ vertices = {{ {{-100, -100, {d}}}, {{0, -100, {d}}}, {{0, 100, {d}}}, {{-100, 100, {d}}} }},
                      material = glint.emissive{{ radiance = 1, two_sided = true }} }}
     )",
-                                  kFov, aperture, focus, kWidth, kHeight, spp,
+                                  kNarrowFov, aperture, focus, kWidth, kHeight, spp,
                                   fmt::arg("d", -distance)));
 }
 
@@ -66,7 +66,7 @@ TEST(ThinLens, OutOfFocusEdgeIsBlurredByTheCircleOfConfusion) {
     const int spp = 1024;
     const Image image = render_edge(distance, aperture, focus, spp);
     const double rho = aperture * std::abs(1.0 - distance / focus);
-    const double pixel = 2.0 * distance * std::tan(glm::radians(kFov / 2.0)) / kHeight;
+    const double pixel = 2.0 * distance * std::tan(glm::radians(kNarrowFov / 2.0)) / kHeight;
     const double bound = 4.0 * 0.5 / std::sqrt(double(spp) * kHeight);
     int blurred = 0;
     for (int x = 0; x < kWidth; ++x) {

@@ -15,29 +15,29 @@ using namespace glint;
 
 namespace {
 
-const Vec3 kEye(1.0f, 2.0f, 3.0f);
-const Vec3 kLookAt(0.0f, 1.5f, -2.0f);
-const Vec3 kUp(0.0f, 1.0f, 0.0f);
-const Vec2i kResolution(64, 48);
+const Vec3 kOrthoEye(1.0f, 2.0f, 3.0f);
+const Vec3 kOrthoLookAt(0.0f, 1.5f, -2.0f);
+const Vec3 kOrthoUp(0.0f, 1.0f, 0.0f);
+const Vec2i kOrthoResolution(64, 48);
 constexpr float kScale = 3.0f;
 
 std::unique_ptr<Camera> camera_from(const std::string& code) {
     const SceneDesc desc = load_scene_string(code, "camera-test.lua");
     const RenderSettings settings = parse_render_settings(desc.render ? &*desc.render : nullptr);
-    return make_camera(*desc.camera, kResolution);
+    return make_camera(*desc.camera, kOrthoResolution);
 }
 
 }  // namespace
 
 TEST(OrthographicCamera, SampleWiRoundTripsThroughGenerateRay) {
-    const OrthographicCamera camera(kEye, kLookAt, kUp, kScale, kResolution);
-    const Vec3 forward = glm::normalize(kLookAt - kEye);
+    const OrthographicCamera camera(kOrthoEye, kOrthoLookAt, kOrthoUp, kScale, kOrthoResolution);
+    const Vec3 forward = glm::normalize(kOrthoLookAt - kOrthoEye);
     EXPECT_NEAR(camera.film_area(), kScale * kScale * 64.0f / 48.0f, 1e-5f);
     std::mt19937 rng(3);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     int inside = 0;
     for (int i = 0; i < 500; ++i) {
-        const Vec2 film(u(rng) * kResolution.x, u(rng) * kResolution.y);
+        const Vec2 film(u(rng) * kOrthoResolution.x, u(rng) * kOrthoResolution.y);
         const Ray ray = camera.generate_ray(film, Vec2(0.5f));
         EXPECT_GT(glm::dot(ray.direction, forward), 1.0f - 1e-6f);
         const Vec3 ref = ray.origin + (0.1f + 10.0f * u(rng)) * ray.direction;
@@ -53,13 +53,13 @@ TEST(OrthographicCamera, SampleWiRoundTripsThroughGenerateRay) {
         // The footprint of a parallel ray on a plane facing the camera is one pixel.
         Vec3 dpdx, dpdy;
         camera.approximate_footprint(ref, -forward, dpdx, dpdy);
-        EXPECT_NEAR(glm::length(dpdx), kScale / kResolution.y, 1e-4f);
+        EXPECT_NEAR(glm::length(dpdx), kScale / kOrthoResolution.y, 1e-4f);
     }
     EXPECT_EQ(inside, 500);
     // Behind the film plane, or beside the frame: no connection.
-    EXPECT_FALSE(camera.sample_wi(kEye - forward, Vec2(0.5f)));
+    EXPECT_FALSE(camera.sample_wi(kOrthoEye - forward, Vec2(0.5f)));
     const Ray corner = camera.generate_ray(Vec2(0.0f), Vec2(0.5f));
-    const Vec3 right = glm::normalize(glm::cross(forward, kUp));
+    const Vec3 right = glm::normalize(glm::cross(forward, kOrthoUp));
     EXPECT_FALSE(camera.sample_wi(corner.origin + 2.0f * forward - 0.01f * right, Vec2(0.5f)));
     // A delta in direction: no ray found by chance carries importance.
     EXPECT_EQ(to_rgb(camera.we(corner))[0], 0.0f);

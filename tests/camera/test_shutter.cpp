@@ -26,7 +26,7 @@ PerspectiveCamera test_camera() {
     return camera;
 }
 
-std::unique_ptr<Camera> camera_from(const std::string& code) {
+std::unique_ptr<Camera> shutter_camera_from(const std::string& code) {
     const SceneDesc desc = load_scene_string(code, "shutter-test.lua");
     return make_camera(*desc.camera, Vec2i(16, 16));
 }
@@ -99,7 +99,7 @@ TEST(Shutter, AStillCameraDrawsNoTime) {
 
 TEST(Shutter, MovingCameraCarriesItsRays) {
     const auto camera =
-        camera_from("glint.camera{ eye = {0, 0, 0}, look_at = {0, 0, -1}, shutter = {0, 1} }");
+        shutter_camera_from("glint.camera{ eye = {0, 0, 0}, look_at = {0, 0, -1}, shutter = {0, 1} }");
     camera->set_motion(MotionTransform({Transform(), Transform::translate(Vec3(2, 0, 0))}));
     camera->set_time_sampled(true);
     const auto sampler = make_sampler("independent", 1, 5);
@@ -112,10 +112,10 @@ TEST(Shutter, MovingCameraCarriesItsRays) {
 }
 
 TEST(Shutter, BadShuttersAreErrorsNamingTheLine) {
-    EXPECT_NO_THROW(camera_from("glint.camera{ shutter = {0, 1} }"));
+    EXPECT_NO_THROW(shutter_camera_from("glint.camera{ shutter = {0, 1} }"));
     for (const char* shutter : {"{0.5, 0.2}", "{-0.1, 0.5}", "{0, 1.5}", "{0.5}", "{0, 0.5, 1}"}) {
         try {
-            camera_from(std::string("glint.camera{ shutter = ") + shutter + " }");
+            shutter_camera_from(std::string("glint.camera{ shutter = ") + shutter + " }");
             ADD_FAILURE() << shutter << " was accepted";
         } catch (const Error& e) {
             EXPECT_NE(std::string(e.what()).find("shutter-test.lua:1"), std::string::npos)

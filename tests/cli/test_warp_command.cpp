@@ -14,7 +14,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kScene = GLINT_SOURCE_DIR "/tests/scenes/small.lua";
+const std::string kSmallScene = GLINT_SOURCE_DIR "/tests/scenes/small.lua";
 
 class WarpCommand : public ::testing::Test {
 protected:
@@ -33,7 +33,7 @@ protected:
 
 TEST_F(WarpCommand, WarpsAnImageRenderedWithDepthAndCountsDisocclusions) {
     ASSERT_EQ(
-        run_glint(fmt::format("render {} --aovs -o {} --quiet", kScene, out("a.exr"))).exit_code,
+        run_glint(fmt::format("render {} --aovs -o {} --quiet", kSmallScene, out("a.exr"))).exit_code,
         0);
     const auto result = run_glint(
         fmt::format("warp {} --camera \"eye=0.6,2.2,7.8\" -o {}", out("a.exr"), out("b.png")));
@@ -51,7 +51,7 @@ TEST_F(WarpCommand, WarpsAnImageRenderedWithDepthAndCountsDisocclusions) {
 }
 
 TEST_F(WarpCommand, ImagesWithoutDepthOrCameraAreRefusedClearly) {
-    ASSERT_EQ(run_glint(fmt::format("render {} -o {} --quiet", kScene, out("plain.exr"))).exit_code,
+    ASSERT_EQ(run_glint(fmt::format("render {} -o {} --quiet", kSmallScene, out("plain.exr"))).exit_code,
               0);
     auto result = run_glint(
         fmt::format("warp {} --camera \"eye=0,2,7\" -o {}", out("plain.exr"), out("b.png")));
@@ -69,7 +69,7 @@ TEST_F(WarpCommand, ImagesWithoutDepthOrCameraAreRefusedClearly) {
     EXPECT_EQ(result.exit_code, 1);
     EXPECT_NE(result.output.find("--scene"), std::string::npos) << result.output;
     result = run_glint(fmt::format("warp {} --scene {} --camera \"eye=0,2,7\" -o {}",
-                                   out("nocamera.exr"), kScene, out("b.png")));
+                                   out("nocamera.exr"), kSmallScene, out("b.png")));
     EXPECT_EQ(result.exit_code, 0) << result.output;
 
     result = run_glint(
@@ -80,7 +80,7 @@ TEST_F(WarpCommand, ImagesWithoutDepthOrCameraAreRefusedClearly) {
 
 TEST_F(WarpCommand, BadFlagsAreUsageErrors) {
     ASSERT_EQ(
-        run_glint(fmt::format("render {} --aovs -o {} --quiet", kScene, out("a.exr"))).exit_code,
+        run_glint(fmt::format("render {} --aovs -o {} --quiet", kSmallScene, out("a.exr"))).exit_code,
         0);
     for (const char* camera : {"eye=1,2", "bogus=3", "fov=abc", "", "eye=0,0.5,0"}) {
         const auto result = run_glint(

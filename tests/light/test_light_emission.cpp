@@ -24,7 +24,7 @@ using namespace glint;
 
 namespace {
 
-constexpr int kSamples = 100000;
+constexpr int kEmissionSamples = 100000;
 
 // One sample_le call from the three numbers of a chi-square sample, the remaining two
 // dimensions from `rng` (fixed seed): `position_first` says whether the chi-square's
@@ -42,7 +42,7 @@ void expect_consistent(const Light& light, const std::string& label, double powe
     int mismatches = 0, drawn = 0;
     Spectrum sum(0.0f);
     std::vector<double> total(3, 0.0);
-    for (int i = 0; i < kSamples; ++i) {
+    for (int i = 0; i < kEmissionSamples; ++i) {
         const Vec2 a(rng.next_float(), rng.next_float()), b(rng.next_float(), rng.next_float());
         const std::optional<LightEmission> e = light.sample_le(a, b, rng.next_float());
         if (!e) continue;
@@ -60,7 +60,7 @@ void expect_consistent(const Light& light, const std::string& label, double powe
     EXPECT_GT(drawn, 0) << label;
     const Spectrum power = light.power();
     for (int c = 0; c < 3; ++c) {
-        const double mean = total[c] / kSamples;
+        const double mean = total[c] / kEmissionSamples;
         EXPECT_NEAR(mean, to_rgb(power)[c], std::max(power_tolerance, 1e-5) * to_rgb(power)[c])
             << label << " channel " << c;
     }
@@ -79,7 +79,7 @@ void expect_directions(const Light& light,
             if (!e) return std::nullopt;
             return to_test(*e);
         },
-        density, kSamples, 3, cos_theta_bins, 40, 0.001);
+        density, kEmissionSamples, 3, cos_theta_bins, 40, 0.001);
     EXPECT_TRUE(result.passed) << label << ": " << result.details;
     EXPECT_NEAR(result.integrated_pdf, 1.0, 3e-3) << label << ": " << result.details;
 }
@@ -96,7 +96,7 @@ void expect_positions(const Light& light,
             if (!e) return std::nullopt;
             return to_plane(*e);
         },
-        density, lo, hi, kSamples, 5, 0.001);
+        density, lo, hi, kEmissionSamples, 5, 0.001);
     EXPECT_TRUE(result.passed) << label << ": " << result.details;
     EXPECT_NEAR(result.integrated_pdf, 1.0, 3e-3) << label << ": " << result.details;
 }

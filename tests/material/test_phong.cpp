@@ -12,7 +12,7 @@ using namespace glint;
 
 namespace {
 
-Vec3 direction(float degrees, float phi = 0.3f, bool below = false) {
+Vec3 at_angle(float degrees, float phi = 0.3f, bool below = false) {
     const float theta = glm::radians(degrees);
     const Vec3 w(std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta));
     return below ? Vec3(w.x, w.y, -w.z) : w;
@@ -42,8 +42,8 @@ TEST(PhongBsdf, SamplingMatchesPdf) {
         float diffuse, specular, exponent;
     };
     const Case cases[] = {{0.5f, 0.4f, 20.0f}, {0.0f, 0.9f, 200.0f}, {0.8f, 0.1f, 1.0f}};
-    const std::vector<Vec3> outgoing = {direction(0.0f), direction(45.0f), direction(80.0f),
-                                        direction(30.0f, 2.0f, true)};
+    const std::vector<Vec3> outgoing = {at_angle(0.0f), at_angle(45.0f), at_angle(80.0f),
+                                        at_angle(30.0f, 2.0f, true)};
     for (const Case& c : cases) {
         const PhongBsdf bsdf(Spectrum(c.diffuse), Spectrum(c.specular), c.exponent);
         for (const Vec3& wo : outgoing) {
@@ -74,20 +74,20 @@ TEST(PhongBsdf, SamplingMatchesPdf) {
 // the whole lobe is above the surface and the albedo is exactly kd + ks.
 TEST(PhongBsdf, ConservesEnergy) {
     const PhongBsdf bsdf(Spectrum(0.6f), Spectrum(0.4f), 30.0f);
-    EXPECT_NEAR(albedo(bsdf, direction(0.0f)), 1.0, 0.01);
+    EXPECT_NEAR(albedo(bsdf, at_angle(0.0f)), 1.0, 0.01);
     for (float degrees : {20.0f, 50.0f, 75.0f, 89.0f}) {
-        EXPECT_LE(albedo(bsdf, direction(degrees)), 1.0 + 1e-3) << degrees << " degrees";
+        EXPECT_LE(albedo(bsdf, at_angle(degrees)), 1.0 + 1e-3) << degrees << " degrees";
     }
     const PhongBsdf sharp(Spectrum(0.0f), Spectrum(1.0f), 1000.0f);
-    EXPECT_LE(albedo(sharp, direction(60.0f)), 1.0 + 1e-2);
+    EXPECT_LE(albedo(sharp, at_angle(60.0f)), 1.0 + 1e-2);
 }
 
 TEST(PhongBsdf, ReciprocalAndOneSidedPerHemisphere) {
     const PhongBsdf bsdf(Spectrum(0.3f), Spectrum(0.5f), 15.0f);
     Rng rng(3);
     for (int i = 0; i < 1000; ++i) {
-        const Vec3 a = direction(rng.next_float() * 89.0f, rng.next_float() * 6.28f);
-        const Vec3 b = direction(rng.next_float() * 89.0f, rng.next_float() * 6.28f);
+        const Vec3 a = at_angle(rng.next_float() * 89.0f, rng.next_float() * 6.28f);
+        const Vec3 b = at_angle(rng.next_float() * 89.0f, rng.next_float() * 6.28f);
         EXPECT_NEAR(to_rgb(bsdf.eval(a, b)).r, to_rgb(bsdf.eval(b, a)).r,
                     1e-4f * (1.0f + to_rgb(bsdf.eval(a, b)).r));
         EXPECT_EQ(to_rgb(bsdf.eval(a, Vec3(b.x, b.y, -b.z))).r, 0.0f);

@@ -19,13 +19,10 @@
 #include <vector>
 
 using namespace glint;
+using glint::test::contains;
 using glint::test::error_of;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 void write(const std::string& path, const std::string& bytes) {
     std::ofstream(path, std::ios::binary) << bytes;

@@ -21,12 +21,9 @@
 
 using namespace glint;
 using glint::test::error_of;
+using glint::test::contains;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 bool any_contains(const std::vector<std::string>& lines, const std::string& part) {
     for (const std::string& l : lines)

@@ -11,13 +11,10 @@
 #include <fstream>
 
 using namespace glint;
+using glint::test::contains;
 using glint::test::error_of;
 
 namespace {
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
 
 PbrtScene parse(const std::string& text) {
     return parse_pbrt_text(text, "scene.pbrt", ".");

@@ -18,6 +18,7 @@
 #include <vector>
 
 using namespace glint;
+using glint::test::contains;
 using glint::test::error_of;
 
 namespace {
@@ -107,12 +108,8 @@ void expect_sample(const PlyMesh& ply) {
     EXPECT_NEAR(ply.colors[3].x, 0.2f, 1e-6f);
 }
 
-std::string error_in(const std::string& bytes) {
+std::string ply_error(const std::string& bytes) {
     return error_of([&] { parse_ply(bytes, "test.ply"); });
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
 }
 
 }  // namespace
@@ -145,7 +142,7 @@ TEST(Ply, EveryTruncationIsAnError) {
     for (bool big : {false, true}) {
         const std::string bytes = binary_ply(Sample(), big);
         for (size_t n = 0; n < bytes.size(); ++n) {
-            const std::string message = error_in(bytes.substr(0, n));
+            const std::string message = ply_error(bytes.substr(0, n));
             ASSERT_TRUE(contains(message, "test.ply")) << "cut at " << n << ": " << message;
         }
     }
@@ -154,7 +151,7 @@ TEST(Ply, EveryTruncationIsAnError) {
         // Cutting the ASCII text in the middle of the last number leaves a shorter, valid
         // number; every other cut loses a value.
         if (n >= text.size() - 3) continue;
-        const std::string message = error_in(text.substr(0, n));
+        const std::string message = ply_error(text.substr(0, n));
         ASSERT_TRUE(contains(message, "test.ply")) << "cut at " << n << ": " << message;
     }
 }
@@ -165,26 +162,26 @@ TEST(Ply, MalformedFilesNameWhatIsWrong) {
         "property float y\nproperty float z\nelement face 1\n"
         "property list uchar int vertex_indices\nend_header\n";
     const std::string verts = "0 0 0\n1 0 0\n0 1 0\n";
-    EXPECT_TRUE(contains(error_in(head + verts + "3 0 1 3\n"), "refers to vertex 3"));
-    EXPECT_TRUE(contains(error_in(head + verts + "3 0 1 -1\n"), "test.ply:13: face 0 refers"));
-    EXPECT_TRUE(contains(error_in(head + verts + "2 0 1\n"), "face 0 has 2 corners"));
-    EXPECT_TRUE(contains(error_in(head + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"), "test.ply:11:"));
-    EXPECT_TRUE(contains(error_in(head + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"), "'x' is not a number"));
-    EXPECT_TRUE(contains(error_in("plx\n"), "not a PLY file"));
-    EXPECT_TRUE(contains(error_in("ply\nformat ascii 2.0\nend_header\n"), "test.ply:2:"));
-    EXPECT_TRUE(contains(error_in("ply\nformat ascii 1.0\nelement vertex 3\nproperty half x\n"),
+    EXPECT_TRUE(contains(ply_error(head + verts + "3 0 1 3\n"), "refers to vertex 3"));
+    EXPECT_TRUE(contains(ply_error(head + verts + "3 0 1 -1\n"), "test.ply:13: face 0 refers"));
+    EXPECT_TRUE(contains(ply_error(head + verts + "2 0 1\n"), "face 0 has 2 corners"));
+    EXPECT_TRUE(contains(ply_error(head + "0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"), "test.ply:11:"));
+    EXPECT_TRUE(contains(ply_error(head + "0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n"), "'x' is not a number"));
+    EXPECT_TRUE(contains(ply_error("plx\n"), "not a PLY file"));
+    EXPECT_TRUE(contains(ply_error("ply\nformat ascii 2.0\nend_header\n"), "test.ply:2:"));
+    EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement vertex 3\nproperty half x\n"),
                          "unknown property type 'half'"));
-    EXPECT_TRUE(contains(error_in("ply\nformat ascii 1.0\nelement face 1\n"
+    EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement face 1\n"
                                   "property list uchar float vertex_indices\nend_header\n"),
                          "integer type"));
-    EXPECT_TRUE(contains(error_in("ply\nformat ascii 1.0\nelement vertex 3\n"), "no 'end_header'"));
+    EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement vertex 3\n"), "no 'end_header'"));
     // A count that the bytes left cannot hold is refused before anything is allocated.
     const std::string liar =
         "ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\n"
         "property float x\nproperty float y\nproperty float z\nend_header\n";
-    EXPECT_TRUE(contains(error_in(liar + std::string(24, '\0')), "claims 4000000000"));
-    EXPECT_TRUE(contains(error_in(head + verts), "ends inside element 'face' 0 of 1"));
-    EXPECT_TRUE(contains(error_in("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+    EXPECT_TRUE(contains(ply_error(liar + std::string(24, '\0')), "claims 4000000000"));
+    EXPECT_TRUE(contains(ply_error(head + verts), "ends inside element 'face' 0 of 1"));
+    EXPECT_TRUE(contains(ply_error("ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
                                   "property float y\nproperty float z\nend_header\n0 0 0\n"),
                          "contains no faces"));
 }

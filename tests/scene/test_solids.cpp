@@ -19,7 +19,7 @@ using glint::test::error_of;
 
 namespace {
 
-std::unique_ptr<Scene> build(const std::string& code) {
+std::unique_ptr<Scene> build_scene(const std::string& code) {
     const SceneDesc desc = load_scene_string(code, "scene.lua", GLINT_SOURCE_DIR "/tests/scenes");
     return build_scene(desc, parse_render_settings(desc.render ? &*desc.render : nullptr));
 }
@@ -119,7 +119,7 @@ TEST(Solids, BadInputGivesClearErrorsWithTheLine) {
         {"glint.add(glint.solid.torus{ material = glint.diffuse{} })", "scene.lua:1:", {"torus"}},
     };
     for (const Case& c : cases) {
-        const std::string message = error_of([&] { build(c.code); });
+        const std::string message = error_of([&] { build_scene(c.code); });
         EXPECT_NE(message.find(c.line), std::string::npos) << c.code << "\n  gave: " << message;
         for (const char* word : c.words) {
             EXPECT_NE(message.find(word), std::string::npos)
@@ -132,7 +132,7 @@ TEST(Solids, BadInputGivesClearErrorsWithTheLine) {
 // enclosing CSG node, else from glint.add. A cut face shows the material of the solid
 // that was subtracted.
 TEST(Solids, PrimitivesKeepTheirMaterials) {
-    const auto scene = build(std::string(kMaterials) + R"(
+    const auto scene = build_scene(std::string(kMaterials) + R"(
         local ball = glint.solid.sphere{ center = {-2, 0, 0}, radius = 1, material = red }
         local block = glint.solid.box{ min = {1, -1, -1}, max = {3, 1, 1} }
         glint.add(glint.union{ ball, block, material = blue })
@@ -158,7 +158,7 @@ TEST(Solids, PrimitivesKeepTheirMaterials) {
 // A ray through a union's two parts meets both materials: the first where it enters and,
 // continued from there, the second.
 TEST(Solids, ARayThroughTwoPartsSeesBothMaterials) {
-    const auto scene = build(std::string(kMaterials) + R"(
+    const auto scene = build_scene(std::string(kMaterials) + R"(
         local a = glint.solid.box{ min = {0, -1, -1}, max = {1, 1, 1}, material = red }
         local b = glint.solid.sphere{ center = {3, 0, 0}, radius = 1, material = blue }
         glint.add(glint.union{ a, b })
@@ -180,7 +180,7 @@ TEST(Solids, ARayThroughTwoPartsSeesBothMaterials) {
 // Integrators keep one SurfaceInteraction for a whole path and let each hit overwrite the
 // last: a CSG part index or a texture footprint must not carry over to the next surface.
 TEST(Solids, AReusedInteractionKeepsNothingFromThePreviousHit) {
-    const auto scene = build(std::string(kMaterials) + R"(
+    const auto scene = build_scene(std::string(kMaterials) + R"(
         local a = glint.solid.box{ min = {0, -1, -1}, max = {1, 1, 1}, material = red }
         local b = glint.solid.sphere{ center = {3, 0, 0}, radius = 1, material = blue }
         glint.add(glint.union{ a, b })
@@ -211,7 +211,7 @@ TEST(Solids, AReusedInteractionKeepsNothingFromThePreviousHit) {
 // A CSG solid in a group placed twice is one prototype with two instances; both are hit,
 // with the right material per part and normals carried to the world.
 TEST(Solids, CsgInAGroupIsInstanced) {
-    const auto scene = build(std::string(kMaterials) + R"(
+    const auto scene = build_scene(std::string(kMaterials) + R"(
         local g = glint.group()
         local cup = glint.difference{
             glint.solid.cylinder{ radius = 1, height = 2, material = red },
@@ -251,7 +251,7 @@ TEST(Solids, CsgInAGroupIsInstanced) {
 // A node's transform moves the whole tree, normals included; 'bounds' clips an infinite
 // quadric to a box whose faces become caps.
 TEST(Solids, TransformedAndBoundedSolids) {
-    const auto scene = build(std::string(kMaterials) + R"(
+    const auto scene = build_scene(std::string(kMaterials) + R"(
         local lens = glint.intersection{
             glint.solid.sphere{ center = {-0.5, 0, 0}, radius = 1 },
             glint.solid.sphere{ center = {0.5, 0, 0}, radius = 1 },
@@ -293,7 +293,7 @@ TEST(Solids, TransformedAndBoundedSolids) {
 // The named primitives have the documented placement: a cylinder centred on the origin
 // along y; a cone with its base on y = 0 and its apex at y = height.
 TEST(Solids, CylinderAndConeDimensions) {
-    const auto scene = build(std::string(kMaterials) + R"(
+    const auto scene = build_scene(std::string(kMaterials) + R"(
         glint.add(glint.solid.cylinder{ radius = 1, height = 4, material = red })
         glint.add(glint.solid.cone{ radius = 1, height = 2, material = blue,
                                     transform = glint.translate(10, 0, 0) })
@@ -322,8 +322,8 @@ TEST(Solids, ShortcutsOffFindTheSameHits) {
                                                glint.rotate(90, {1, 0, 0}) }, material = blue })
         end
     )";
-    const auto on = build(body);
-    const auto off = build("glint.render{ csg_shortcuts = false }\n" + body);
+    const auto on = build_scene(body);
+    const auto off = build_scene("glint.render{ csg_shortcuts = false }\n" + body);
     int hits = 0;
     for (int i = 0; i < 1000; ++i) {
         const float x = -2.0f + 13.0f * static_cast<float>(i % 40) / 40.0f;

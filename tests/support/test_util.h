@@ -21,6 +21,11 @@ inline std::string error_of(const std::function<void()>& f) {
     return "";
 }
 
+// Whether `part` occurs in `text` (messages are checked by their key phrases).
+inline bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
 // A unit direction at polar angle `degrees` from +z (or -z when `inside`), azimuth `phi`.
 inline Vec3 direction(float degrees, float phi = 0.7f, bool inside = false) {
     const float theta = glm::radians(degrees);

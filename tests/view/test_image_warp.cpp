@@ -22,7 +22,7 @@
 namespace glint {
 namespace {
 
-constexpr int kWidth = 96, kHeight = 72;
+constexpr int kWarpWidth = 96, kWarpHeight = 72;
 
 struct Rendered {
     Image image;
@@ -33,7 +33,7 @@ Rendered render_from(const std::string& camera_lua, uint64_t seed) {
     std::string code = test::example_with_settings(
         "cornell-box.lua", fmt::format("width = {}, height = {}, spp = 32, seed = {}, "
                                        "integrator = 'path', aovs = true",
-                                       kWidth, kHeight, seed));
+                                       kWarpWidth, kWarpHeight, seed));
     // The example's camera line, replaced.
     const std::size_t start = code.find("glint.camera{");
     code.replace(start, code.find('\n', start) - start, camera_lua);
@@ -64,7 +64,7 @@ bool seen_by_a(const Rendered& a, const Rendered& b, int x, int y) {
     const bool escaped = escaped_at(depth);
     const Ray ray = b.camera->generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
     const auto p = a.camera->project(ray.origin + (escaped ? 1e6f : depth) * ray.direction);
-    if (!p || p->film.x < 0 || p->film.y < 0 || p->film.x >= kWidth || p->film.y >= kHeight)
+    if (!p || p->film.x < 0 || p->film.y < 0 || p->film.x >= kWarpWidth || p->film.y >= kWarpHeight)
         return false;
     const float a_depth = a.image.at(static_cast<int>(p->film.x), static_cast<int>(p->film.y),
                                      a.image.channel_index("depth.Z"));
@@ -85,8 +85,8 @@ bool on_edge(const Rendered& b, int x, int y) {
     const float l = luminance(x, y);
     for (int dy = -1; dy <= 1; ++dy) {
         for (int dx = -1; dx <= 1; ++dx) {
-            const int nx = std::clamp(x + dx, 0, kWidth - 1);
-            const int ny = std::clamp(y + dy, 0, kHeight - 1);
+            const int nx = std::clamp(x + dx, 0, kWarpWidth - 1);
+            const int ny = std::clamp(y + dy, 0, kWarpHeight - 1);
             const float n = b.image.at(nx, ny, z), ln = luminance(nx, ny);
             if (!(std::abs(n - d) <= 0.1f * d)) return true;
             if (ln > 2.0f * l + 0.05f || l > 2.0f * ln + 0.05f) return true;
@@ -99,18 +99,18 @@ TEST(ImageWarp, WarpedRenderMatchesADirectRenderAndMarksDisocclusions) {
     const Rendered a = render_from(kCameraA, 1);
     const Rendered b = render_from(kCameraB, 2);
     const Rendered b_again = render_from(kCameraB, 3);
-    const WarpResult warped = warp_image(a.image, *a.camera, *b.camera, kWidth, kHeight);
-    ASSERT_EQ(warped.image.width, kWidth);
+    const WarpResult warped = warp_image(a.image, *a.camera, *b.camera, kWarpWidth, kWarpHeight);
+    ASSERT_EQ(warped.image.width, kWarpWidth);
 
     // Relative squared error over the pixels both show, against the noise of two renders
     // from B with different seeds (the warped image carries A's noise instead of B's).
     double warp_error = 0.0, noise = 0.0;
     int shared = 0, holes_seen = 0, covered_unseen = 0, unseen = 0;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
+    for (int y = 0; y < kWarpHeight; ++y) {
+        for (int x = 0; x < kWarpWidth; ++x) {
             if (on_edge(b, x, y)) continue;
             const bool seen = seen_by_a(a, b, x, y);
-            const bool hole = warped.hole[y * kWidth + x] != 0;
+            const bool hole = warped.hole[y * kWarpWidth + x] != 0;
             unseen += !seen;
             if (hole) {
                 holes_seen += seen;
@@ -131,7 +131,7 @@ TEST(ImageWarp, WarpedRenderMatchesADirectRenderAndMarksDisocclusions) {
     }
     warp_error /= 3.0 * shared;
     noise /= 3.0 * shared;
-    EXPECT_GT(shared, kWidth * kHeight / 2);
+    EXPECT_GT(shared, kWarpWidth * kWarpHeight / 2);
     EXPECT_LT(warp_error, 2.0 * noise) << "noise between two renders " << noise;
     // Holes are where A saw nothing (a pixel's blend of edges aside), and where A saw
     // nothing there are holes.
@@ -143,10 +143,10 @@ TEST(ImageWarp, WarpedRenderMatchesADirectRenderAndMarksDisocclusions) {
 
 TEST(ImageWarp, SameCameraGivesTheImageBackWithoutHoles) {
     const Rendered a = render_from(kCameraA, 1);
-    const WarpResult same = warp_image(a.image, *a.camera, *a.camera, kWidth, kHeight);
+    const WarpResult same = warp_image(a.image, *a.camera, *a.camera, kWarpWidth, kWarpHeight);
     EXPECT_EQ(same.holes, 0);
-    for (int y = 0; y < kHeight; ++y)
-        for (int x = 0; x < kWidth; ++x)
+    for (int y = 0; y < kWarpHeight; ++y)
+        for (int x = 0; x < kWarpWidth; ++x)
             for (int c = 0; c < 3; ++c)
                 ASSERT_NEAR(same.image.at(x, y, c), a.image.at(x, y, c),
                             1e-4f * (1.0f + a.image.at(x, y, c)));
@@ -155,7 +155,7 @@ TEST(ImageWarp, SameCameraGivesTheImageBackWithoutHoles) {
 TEST(ImageWarp, NeedsDepth) {
     const Rendered a = render_from(kCameraA, 1);
     const Image no_depth = without_channels(a.image, {"depth."});
-    EXPECT_THROW(warp_image(no_depth, *a.camera, *a.camera, kWidth, kHeight), Error);
+    EXPECT_THROW(warp_image(no_depth, *a.camera, *a.camera, kWarpWidth, kWarpHeight), Error);
 }
 
 TEST(CameraAttributes, RoundTripThroughAnExrHeader) {

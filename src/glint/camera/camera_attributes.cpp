@@ -13,10 +13,6 @@ std::string vec3_text(const Vec3& v) {
     return fmt::format("{:.9g},{:.9g},{:.9g}", v.x, v.y, v.z);
 }
 
-std::vector<double> numbers(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
-
 const std::string* find(const ImageAttributes& attributes, const std::string& name) {
     for (const auto& [key, value] : attributes)
         if (key == name) return &value;
@@ -70,7 +66,7 @@ std::optional<StoredCamera> camera_from_attributes(const ImageAttributes& attrib
         const std::string* text = find(attributes, fmt::format("camera.{}", name));
         const std::optional<Vec3> v = text ? parse_vec3(*text) : std::nullopt;
         if (!v) throw bad(name);
-        stored.params.set(name, numbers(*v));
+        stored.params.set(name, numbers_of(*v));
     }
     const char* size_name = *type == "orthographic" ? "scale" : "fov";
     const std::string* size = find(attributes, fmt::format("camera.{}", size_name));

@@ -10,10 +10,8 @@ namespace glint {
 
 namespace {
 
-// Largest float below 1: keeps u in [0, 1) so that the last non-empty bin is the
-// furthest a sample can reach, even when callers pass exactly 1.
-constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
-
+// Keeps u in [0, 1) (kOneMinusEpsilon) so that the last non-empty bin is the furthest a
+// sample can reach, even when callers pass exactly 1.
 float clamp_unit(float u) {
     // NaN compares false with everything, so it ends at 0 rather than poisoning indices.
     if (!(u > 0.0f)) return 0.0f;

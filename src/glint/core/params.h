@@ -23,6 +23,14 @@ using ParamValue =
     std::variant<bool, double, std::string, std::vector<double>, std::vector<std::vector<double>>,
                  std::vector<std::string>, Transform, ObjectRef>;
 
+// A vector or colour as the list of numbers a Params value holds (for set()).
+inline std::vector<double> numbers_of(const Vec3& v) {
+    return {v.x, v.y, v.z};
+}
+inline std::vector<double> numbers_of(const Rgb& c) {
+    return {c.r, c.g, c.b};
+}
+
 class Params {
 public:
     Params() = default;

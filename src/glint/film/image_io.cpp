@@ -2,6 +2,7 @@
 
 #include <glint/core/error.h>
 #include <glint/core/memory.h>
+#include <glint/core/strings.h>
 #include <glint/film/output_batch.h>
 
 #include <OpenImageIO/imageio.h>
@@ -27,13 +28,6 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr const char* kSupported = ".exr, .png";
-
-std::string lower_extension(const std::string& path) {
-    std::string ext = fs::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext;
-}
 
 double srgb_encode(double linear) {
     return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;

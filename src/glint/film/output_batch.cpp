@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/strings.h>
 #include <glint/film/output_batch.h>
 
 #include <fcntl.h>
@@ -16,13 +17,6 @@ namespace glint {
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string lower_extension(const fs::path& path) {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
-    return ext;
-}
 
 // "dir/out.exr" -> "dir/out.tmp<pid>-<n>.exr": unique per process and call, and with the
 // real extension last because OpenImageIO chooses the format from it.

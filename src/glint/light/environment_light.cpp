@@ -14,9 +14,6 @@
 namespace glint {
 namespace {
 
-// Largest float below 1, so map coordinates stay inside [0, 1).
-constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
-
 // cos(theta) at the top edge of row `y` of `height` less cos(theta) at its bottom edge,
 // as 2 sin(mid) sin(half width): the plain difference of cosines near 1 would cancel.
 float row_cos_theta_span(int y, int height) {

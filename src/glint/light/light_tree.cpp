@@ -7,9 +7,6 @@
 namespace glint {
 namespace {
 
-// The largest float below 1: where a remapped random number must stay.
-constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
-
 // The first child's share of the light reaching p, from the two importances. Where neither
 // child can reach p (the parent's looser bounds could), the walk goes on by power: every
 // light then keeps a positive probability unless a sibling branch certainly outweighs it, so

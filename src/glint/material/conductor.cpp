@@ -57,7 +57,7 @@ private:
     const spectral::ConductorData* m_measured;
 };
 
-std::string preset_names() {
+std::string conductor_preset_names() {
     std::string names;
     for (const ConductorPreset& preset : kConductorPresets) {
         names += fmt::format("{}'{}'", names.empty() ? "" : ", ", preset.name);
@@ -117,7 +117,7 @@ std::unique_ptr<Material> make_conductor_material(const Params& params, TextureT
         const ConductorPreset* preset = find_conductor_preset(name);
         if (!preset) {
             params.fail(
-                fmt::format("unknown 'preset' '{}'; known presets: {}", name, preset_names()));
+                fmt::format("unknown 'preset' '{}'; known presets: {}", name, conductor_preset_names()));
         }
         eta = SceneColor(preset->eta, RgbRole::unbounded);
         k = SceneColor(preset->k, RgbRole::unbounded);

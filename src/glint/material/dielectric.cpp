@@ -58,7 +58,7 @@ private:
     std::optional<spectral::DispersiveIor> m_dispersion;
 };
 
-std::string preset_names() {
+std::string dielectric_preset_names() {
     std::string names;
     for (const std::string& name : spectral::dielectric_names())
         names += fmt::format("{}'{}'", names.empty() ? "" : ", ", name);
@@ -83,7 +83,7 @@ std::optional<spectral::DispersiveIor> read_dispersion(const Params& params) {
         auto preset = spectral::named_dielectric(name);
         if (!preset)
             params.fail(fmt::format("unknown 'ior' preset '{}'; known: {} (or give a number)", name,
-                                    preset_names()));
+                                    dielectric_preset_names()));
         return preset;
     }
     if (abbe) {

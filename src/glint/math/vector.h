@@ -19,6 +19,8 @@ using Mat3 = glm::mat3;
 using Mat4 = glm::mat4;
 
 inline constexpr float kPi = 3.14159265358979323846f;
+// The largest float below 1: where a sample in [0, 1) must stay below 1 after rounding.
+inline constexpr float kOneMinusEpsilon = 0x1.fffffep-1f;
 inline constexpr float kInvPi = 1.0f / kPi;
 inline constexpr float kInv2Pi = 0.5f / kPi;
 inline constexpr float kInv4Pi = 0.25f / kPi;

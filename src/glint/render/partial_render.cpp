@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/strings.h>
 #include <glint/render/partial_render.h>
 
 #include <fmt/format.h>
@@ -86,9 +87,7 @@ Image partial_sums_image(const Film& film, const RenderSettings& settings, Sampl
 
 void check_partial_outputs(const RenderSettings& settings) {
     for (const std::string& output : settings.outputs) {
-        std::string extension = std::filesystem::path(output).extension().string();
-        std::transform(extension.begin(), extension.end(), extension.begin(),
-                       [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+        const std::string extension = lower_extension(output);
         if (extension != ".exr") {
             throw Error(
                 fmt::format("{}: a partial render writes its sums to EXR files only, not "

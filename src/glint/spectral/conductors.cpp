@@ -3,19 +3,14 @@
 #include <glint/spectral/conductor_data.h>
 #include <glint/spectral/spectrum_to_rgb.h>
 
+#include <glint/core/strings.h>
+
 #include <algorithm>
 #include <cctype>
 #include <stdexcept>
 
 namespace glint::spectral {
 namespace {
-
-std::string lower(std::string_view s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
-}
 
 struct Entry {
     std::vector<std::string> names;  // the symbol first, then aliases
@@ -52,10 +47,10 @@ ComplexIor ConductorData::eval(float nm) const {
 }
 
 const ConductorData* named_conductor(std::string_view name) {
-    const std::string wanted = lower(name);
+    const std::string wanted = to_lower(name);
     for (const Entry& e : all_conductors())
         for (const std::string& n : e.names)
-            if (lower(n) == wanted) return &e.data;
+            if (to_lower(n) == wanted) return &e.data;
     return nullptr;
 }
 

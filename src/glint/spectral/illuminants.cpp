@@ -3,6 +3,8 @@
 #include <glint/spectral/cie.h>
 #include <glint/spectral/cie_data.h>
 
+#include <glint/core/strings.h>
+
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -10,13 +12,6 @@
 
 namespace glint::spectral {
 namespace {
-
-std::string lower(std::string_view s) {
-    std::string out(s);
-    std::transform(out.begin(), out.end(), out.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return out;
-}
 
 // A table at `first_nm` + 5 nm · i, scaled to luminance 1 (∫ S ȳ dλ = ∫ ȳ dλ), so that every
 // named illuminant is equally bright and a light's intensity alone sets its brightness.
@@ -69,9 +64,9 @@ const std::vector<Named>& all_illuminants() {
 }  // namespace
 
 const TabulatedSpectrum* named_illuminant(std::string_view name) {
-    const std::string wanted = lower(name);
+    const std::string wanted = to_lower(name);
     for (const auto& entry : all_illuminants())
-        if (lower(entry.name) == wanted) return &entry.spectrum;
+        if (to_lower(entry.name) == wanted) return &entry.spectrum;
     return nullptr;
 }
 

@@ -17,9 +17,6 @@ Vec3 rotate(const Vec3& v, const Vec3& axis, float radians) {
     return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0f - c);
 }
 
-std::vector<double> numbers(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
 
 // Shortest text that reads back as the same float.
 std::string number(float x) {
@@ -92,9 +89,9 @@ void CameraController::fly(const Vec3& step) {
 
 Params CameraController::params() const {
     Params table = m_table;
-    table.set("eye", numbers(m_pose.eye));
-    table.set("look_at", numbers(m_pose.target));
-    table.set("up", numbers(m_pose.up));
+    table.set("eye", numbers_of(m_pose.eye));
+    table.set("look_at", numbers_of(m_pose.target));
+    table.set("up", numbers_of(m_pose.up));
     return table;
 }
 

@@ -8,19 +8,13 @@
 namespace glint {
 namespace {
 
-std::vector<double> numbers(const Rgb& c) {
-    return {c.r, c.g, c.b};
-}
-std::vector<double> numbers(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
 
 // Scales the spectrum under `key` (1 when the scene left it out).
 void scale_power(Params& params, const std::string& key, float scale) {
     if (scale == 1.0f) return;
     // A copy reads the value, so the original's record of used keys stays as it was.
     const Params read = params;
-    params.set(key, numbers(read.get_rgb(key, Rgb(1.0f)) * scale), params.where_of(key));
+    params.set(key, numbers_of(read.get_rgb(key, Rgb(1.0f)) * scale), params.where_of(key));
 }
 
 // The material of a world shape (always a handle after loading), or null: a solid's parts
@@ -82,7 +76,7 @@ SceneDesc LightEdits::apply(const SceneDesc& original) const {
             const Params read = p;
             for (const std::string& key : editing.position_keys) {
                 if (read.has(key))
-                    p.set(key, numbers(read.get_vec3(key) + light.offset), p.where_of(key));
+                    p.set(key, numbers_of(read.get_vec3(key) + light.offset), p.where_of(key));
             }
             continue;
         }

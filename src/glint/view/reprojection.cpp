@@ -11,7 +11,7 @@ namespace {
 
 // How far along an escaped ray its point is put: far enough that a translation of the
 // camera does not move it on the film, near enough for float precision.
-constexpr float kFarAway = 1e6f;
+constexpr float kMissDepth = 1e6f;
 
 bool same_surface(const GeometryBuffer& current, std::size_t i, const GeometryBuffer& previous,
                   std::size_t j, float expected_depth, const ReprojectionTolerances& tol) {
@@ -26,7 +26,7 @@ HistoryTaps taps_of(const GeometryBuffer& current, std::size_t i, const Ray& ray
                     const GeometryBuffer& previous, const Camera& previous_camera,
                     const ReprojectionTolerances& tol) {
     HistoryTaps taps;
-    const Vec3 point = ray.origin + (current.hit(i) ? current.depth[i] : kFarAway) * ray.direction;
+    const Vec3 point = ray.origin + (current.hit(i) ? current.depth[i] : kMissDepth) * ray.direction;
     const std::optional<FilmProjection> projected = previous_camera.project(point);
     // Off the previous frame there is no history, even where a tap at its edge would reach.
     if (!projected || !(projected->film.x >= 0.0f && projected->film.y >= 0.0f &&

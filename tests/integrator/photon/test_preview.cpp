@@ -55,7 +55,7 @@ double region_error(const Image& test, const Image& reference) {
 
 using test::BuiltScene;
 
-BuiltScene build(const std::string& code) {
+BuiltScene build_scene(const std::string& code) {
     return test::build_lua(code, "preview-test.lua");
 }
 
@@ -101,7 +101,7 @@ TEST(Preview, CausticConvergesToSppm) {
 
 // A camera move keeps the photons and the shrinking radius; a light move drops them.
 TEST(Preview, CameraChangeKeepsPhotonsLightChangeDropsThem) {
-    BuiltScene b = build(caustic_scene("integrator = 'preview', preview_photons = 5000"));
+    BuiltScene b = build_scene(caustic_scene("integrator = 'preview', preview_photons = 5000"));
     auto integrator = make_integrator(b.settings);
     auto* preview = dynamic_cast<PreviewIntegrator*>(integrator.get());
     ASSERT_NE(preview, nullptr);
@@ -190,7 +190,7 @@ TEST(Preview, MirrorCeilingCausticMatchesClosedForm) {
 // and an area light with shadows, and caustic photons. The film is 63 x 47, so the last
 // column and row of blocks are partly outside it.
 TEST(Preview, PacketsGiveTheOneRayImageBitForBit) {
-    BuiltScene b = build(R"(
+    BuiltScene b = build_scene(R"(
         glint.render{ width = 63, height = 47, integrator = 'preview', preview_photons = 4000,
                       preview_restir = 'off' }
         glint.camera{ eye = {0, 1.4, 4}, look_at = {0, 0.7, 0}, fov = 50 }

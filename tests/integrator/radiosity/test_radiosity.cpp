@@ -77,11 +77,11 @@ double patch_form_factor(const Rectangle& i, const Rectangle& j, int n, int samp
 }
 
 // Mean and standard error of K independent estimates.
-struct Estimate {
+struct PatchEstimate {
     double mean = 0.0, se = 0.0;
 };
 template <typename F>
-Estimate repeat(int k, F&& f) {
+PatchEstimate repeat(int k, F&& f) {
     double sum = 0.0, sum2 = 0.0;
     for (int s = 1; s <= k; ++s) {
         const double v = f(static_cast<uint64_t>(s));
@@ -128,7 +128,7 @@ TEST(RadiosityFormFactor, ParallelUnitSquares) {
     const Rectangle i{Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
     const Rectangle j{Vec3(0, 0, 1), Vec3(0, 1, 0), Vec3(1, 0, 0)};  // faces -z, towards i
     const double exact = parallel_rectangles(1, 1, 1);
-    const Estimate f = repeat(8, [&](uint64_t s) { return patch_form_factor(i, j, 16, 256, s); });
+    const PatchEstimate f = repeat(8, [&](uint64_t s) { return patch_form_factor(i, j, 16, 256, s); });
     EXPECT_NEAR(exact, 0.19982, 1e-4);
     EXPECT_NEAR(f.mean, exact, 4 * f.se + 1e-3 * exact) << "se " << f.se;
 }
@@ -137,7 +137,7 @@ TEST(RadiosityFormFactor, PerpendicularUnitSquares) {
     const Rectangle floor{Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0)};  // faces +y
     const Rectangle wall{Vec3(0, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1)};   // x = 0, faces +x
     const double exact = perpendicular_rectangles(1, 1, 1);
-    const Estimate f =
+    const PatchEstimate f =
         repeat(8, [&](uint64_t s) { return patch_form_factor(floor, wall, 32, 256, s); });
     EXPECT_NEAR(exact, 0.20004, 1e-4);
     EXPECT_NEAR(f.mean, exact, 4 * f.se + 2e-3 * exact) << "se " << f.se;
@@ -150,7 +150,7 @@ TEST(RadiosityFormFactor, DifferentialAreaToCoaxialDisc) {
     for (const double h : {0.5, 1.0, 2.0}) {
         const int segments = 256;
         const Vec3 centre(0, 0, static_cast<float>(h));
-        const Estimate f = repeat(8, [&](uint64_t s) {
+        const PatchEstimate f = repeat(8, [&](uint64_t s) {
             Rng rng(s);
             uint64_t rays = 0;
             double sum = 0.0;
@@ -177,8 +177,8 @@ TEST(RadiosityFormFactor, Reciprocity) {
     const Rectangle j{Vec3(0.5f, 1.0f, 0.2f), Vec3(0.5f, -0.3f, 0.0f),
                       Vec3(0.0f, 0.2f, 0.7f)};  // tilted, faces down-ish
     ASSERT_LT(j.normal().y, 0.0f);
-    const Estimate ij = repeat(8, [&](uint64_t s) { return patch_form_factor(i, j, 16, 64, s); });
-    const Estimate ji = repeat(8, [&](uint64_t s) { return patch_form_factor(j, i, 16, 64, s); });
+    const PatchEstimate ij = repeat(8, [&](uint64_t s) { return patch_form_factor(i, j, 16, 64, s); });
+    const PatchEstimate ji = repeat(8, [&](uint64_t s) { return patch_form_factor(j, i, 16, 64, s); });
     const double a = i.area() * ij.mean, b = j.area() * ji.mean;
     const double se = std::hypot(i.area() * ij.se, j.area() * ji.se);
     EXPECT_GT(a, 0.01);
@@ -196,7 +196,7 @@ TEST(RadiosityFormFactor, ClosedBoxSumsToOne) {
     )");
     const MeshData box = make_box_mesh(Vec3(0), Vec3(1));
     const Rectangle floor{Vec3(0, 0, 0), Vec3(0, 0, 1), Vec3(1, 0, 0)};  // faces +y, inward
-    const Estimate f = repeat(4, [&](uint64_t s) {
+    const PatchEstimate f = repeat(4, [&](uint64_t s) {
         double sum = 0.0;
         uint64_t rays = 0;
         const int n = 16;

@@ -19,10 +19,10 @@
 namespace glint {
 namespace {
 
-constexpr int kTileSize = 16;
+constexpr int kCameraTileSize = 16;
 // Light subpaths per chunk: the unit of parallel work of the light pass and of the fixed
 // order in which its splats reach the film.
-constexpr int kChunkPaths = 256;
+constexpr int kLightPathsPerChunk = 256;
 // The light subpaths take their random numbers from a sampler of their own, seeded apart
 // from the camera's, so that the two subpaths of a pixel are independent.
 constexpr uint64_t kLightSeedSalt = 0x56434d4c49474854ULL;
@@ -138,11 +138,11 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     it.light_tracing_count =
         static_cast<float>(static_cast<double>(n_light) / static_cast<double>(pixels));
     it.light_paths.resize(n_light);
-    const int chunks = static_cast<int>((n_light + kChunkPaths - 1) / kChunkPaths);
+    const int chunks = static_cast<int>((n_light + kLightPathsPerChunk - 1) / kLightPathsPerChunk);
     it.arenas.resize(chunks);
     it.splats.resize(chunks);
     it.progress = &progress;
-    const int tiles_x = (w + kTileSize - 1) / kTileSize, tiles_y = (h + kTileSize - 1) / kTileSize;
+    const int tiles_x = (w + kCameraTileSize - 1) / kCameraTileSize, tiles_y = (h + kCameraTileSize - 1) / kCameraTileSize;
     RenderStats stats;
     std::vector<Vec3> positions;  // of it.photons
     for (int iteration = 0; iteration < m_settings.spp; ++iteration) {
@@ -196,8 +196,8 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
                                       int chunk) const {
     const int w = film.width();
     const size_t n_light = it.light_paths.size();
-    const size_t begin = static_cast<size_t>(chunk) * kChunkPaths;
-    const size_t end = std::min(n_light, begin + kChunkPaths);
+    const size_t begin = static_cast<size_t>(chunk) * kLightPathsPerChunk;
+    const size_t end = std::min(n_light, begin + kLightPathsPerChunk);
     const int max_depth = m_settings.max_depth;
     const WavelengthContext iteration_wavelengths =
         pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));
@@ -240,10 +240,10 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
 // subpath (subpath.h), then the strategies' draws (connect_strategy).
 void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration& it,
                                 int tile) const {
-    const int tiles_x = (film.width() + kTileSize - 1) / kTileSize;
-    const int x0 = (tile % tiles_x) * kTileSize, y0 = (tile / tiles_x) * kTileSize;
-    const int x1 = std::min(x0 + kTileSize, film.width());
-    const int y1 = std::min(y0 + kTileSize, film.height());
+    const int tiles_x = (film.width() + kCameraTileSize - 1) / kCameraTileSize;
+    const int x0 = (tile % tiles_x) * kCameraTileSize, y0 = (tile / tiles_x) * kCameraTileSize;
+    const int x1 = std::min(x0 + kCameraTileSize, film.width());
+    const int y1 = std::min(y0 + kCameraTileSize, film.height());
     const int max_depth = m_settings.max_depth;
     const WavelengthContext iteration_wavelengths =
         pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));

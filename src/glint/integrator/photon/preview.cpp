@@ -20,7 +20,7 @@ namespace glint {
 namespace {
 
 // Knaus and Zwicker's alpha: the radius shrinks so that bias and variance both vanish.
-constexpr float kAlpha = 2.0f / 3.0f;
+constexpr float kRadiusShrinkAlpha = 2.0f / 3.0f;
 constexpr int kMaxCameraSegments = 16;
 // The camera pass's packets: blocks of 4 x 2 pixels.
 constexpr int kBlockWidth = 4, kBlockHeight = 2;
@@ -239,7 +239,7 @@ void PreviewIntegrator::restart(const Scene& scene) {
 }
 
 void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
-    if (m_photon_passes > 0) m_radius2 *= (m_photon_passes + kAlpha) / (m_photon_passes + 1.0f);
+    if (m_photon_passes > 0) m_radius2 *= (m_photon_passes + kRadiusShrinkAlpha) / (m_photon_passes + 1.0f);
     const uint64_t count = static_cast<uint64_t>(m_preview.photons);
     PhotonEmitter emitter = [this](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
         const auto& projection = m_projections[static_cast<size_t>(light.index())];

@@ -138,10 +138,6 @@ bool refuse_writing(std::string* error, const std::string&, const std::vector<un
     return false;
 }
 
-std::vector<double> numbers_of(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
-
 Mat4 node_matrix(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) {
         Mat4 m;  // glTF stores column-major, as glm does

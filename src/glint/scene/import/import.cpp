@@ -1,4 +1,5 @@
 #include <glint/core/error.h>
+#include <glint/core/strings.h>
 #include <glint/core/file_access.h>
 #include <glint/scene/import/gltf.h>
 #include <glint/scene/import/import.h>
@@ -17,13 +18,6 @@
 
 namespace glint {
 namespace {
-
-std::string extension_of(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    return ext;
-}
 
 Bounds3 bounds_of(const MeshData& mesh) {
     Bounds3 b;
@@ -124,7 +118,7 @@ void add_mesh_shape(SceneDesc& desc, int group, MeshData mesh, const ObjectRef& 
 }
 
 Bounds3 import_file(SceneDesc& desc, const ImportTarget& target) {
-    const std::string ext = extension_of(target.path);
+    const std::string ext = lower_extension(target.path);
     if (ext == ".obj") return import_obj(desc, target);
     if (ext == ".ply") return import_ply(desc, target);
     if (ext == ".gltf" || ext == ".glb") return import_gltf(desc, target);
@@ -161,7 +155,7 @@ void import_into(SceneDesc& desc, const Params& params) {
 }
 
 MeshData load_mesh_file(const std::string& path) {
-    const std::string ext = extension_of(path);
+    const std::string ext = lower_extension(path);
     if (ext == ".obj") return load_obj(path);
     if (ext == ".ply") return load_ply(path).mesh;
     throw Error(
@@ -171,7 +165,7 @@ MeshData load_mesh_file(const std::string& path) {
 }
 
 bool is_model_file(const std::string& path) {
-    const std::string ext = extension_of(path);
+    const std::string ext = lower_extension(path);
     return ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb" || ext == ".pbrt";
 }
 
@@ -207,7 +201,7 @@ SceneDesc load_model_scene(const std::string& path) {
         desc.render = std::move(render);
     }
     // A pbrt file is a whole scene: without lights it is dark, as pbrt renders it.
-    if (desc.lights.empty() && !desc.background && extension_of(path) != ".pbrt") {
+    if (desc.lights.empty() && !desc.background && lower_extension(path) != ".pbrt") {
         Params background("background", fmt::format("{} (default background)", path));
         background.set("radiance", 1.0);
         desc.background = std::move(background);

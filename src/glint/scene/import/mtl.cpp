@@ -212,10 +212,6 @@ ObjectRef add_map(const MtlMap& map, const MtlMaterial& material, const std::str
     return ObjectRef{"texture", static_cast<int>(textures.size()) - 1};
 }
 
-std::vector<double> as_numbers(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
-
 }  // namespace
 
 std::vector<MtlMaterial> parse_mtl(std::string_view text, const std::string& name) {
@@ -243,7 +239,7 @@ Params mtl_to_params(const MtlMaterial& m, const std::string& directory,
     if (m.ke && max_of(*m.ke) > 0.0f) {
         // An emitter: glint's emissive surfaces do not also reflect, so Kd and Ks go.
         params = Params("emissive", m.where);
-        params.set("radiance", as_numbers(*m.ke));
+        params.set("radiance", numbers_of(*m.ke));
         if (m.map_ke) warn("'map_Ke' is not supported (the emission is Ke, uniform)");
     } else if (illum == 4 || illum == 6 || illum == 7 || illum == 9 || d < 1.0f) {
         // Transparent: the glass of illum 4/6/7/9, or any dissolve below 1 (which in a
@@ -253,7 +249,7 @@ Params mtl_to_params(const MtlMaterial& m, const std::string& directory,
     } else if (illum == 3 || illum == 5) {
         // Ray-traced reflection: a mirror tinted by Ks (1 where Ks is not given).
         params = Params("mirror", m.where);
-        params.set("tint", as_numbers(m.ks ? glm::min(ks, Vec3(1.0f)) : Vec3(1.0f)));
+        params.set("tint", numbers_of(m.ks ? glm::min(ks, Vec3(1.0f)) : Vec3(1.0f)));
     } else if (illum != 0 && illum != 1 && max_of(ks) > 0.0f) {
         // Kd + Ks with exponent Ns: the Phong model OBJ itself describes. glint's Phong
         // keeps Kd + Ks <= 1 so that the surface creates no energy: both are scaled down
@@ -270,8 +266,8 @@ Params mtl_to_params(const MtlMaterial& m, const std::string& directory,
         if (m.map_kd)
             params.set("diffuse", add_map(*m.map_kd, m, directory, true, textures));
         else
-            params.set("diffuse", as_numbers(diffuse));
-        params.set("specular", as_numbers(specular));
+            params.set("diffuse", numbers_of(diffuse));
+        params.set("specular", numbers_of(specular));
         params.set("exponent", static_cast<double>(m.ns.value_or(10.0f)));
         if (m.map_ks) warn("'map_Ks' is not supported by the phong material (Ks is uniform)");
     } else {
@@ -279,7 +275,7 @@ Params mtl_to_params(const MtlMaterial& m, const std::string& directory,
         if (m.map_kd)
             params.set("reflectance", add_map(*m.map_kd, m, directory, true, textures));
         else
-            params.set("reflectance", as_numbers(glm::min(kd, Vec3(1.0f))));
+            params.set("reflectance", numbers_of(glm::min(kd, Vec3(1.0f))));
     }
     if (params.type() == "diffuse" || params.type() == "phong" || params.type() == "mirror" ||
         params.type() == "dielectric") {

@@ -14,9 +14,6 @@
 namespace glint {
 namespace {
 
-std::vector<double> numbers_of(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
 
 }  // namespace
 

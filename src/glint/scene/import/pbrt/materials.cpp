@@ -15,9 +15,6 @@ namespace {
 
 constexpr int kMaxMaterialDepth = 16;  // mix materials naming each other
 
-std::vector<double> numbers_of(const Vec3& v) {
-    return {v.x, v.y, v.z};
-}
 
 }  // namespace
 
