@@ -52,7 +52,7 @@ struct Case {
 // The preview is not among them: it is biased here (docs/robustness.md, issue 28 item 3:
 // the strongly absorbed blue comes out about 30 % too bright on the wide scene, and the
 // small scene's floor some 18 times too dark, absorption or not); it joins once fixed.
-TEST(Absorption, EveryIntegratorAgreesWithThePathTracerThroughTintedGlass) {
+TEST(AbsorptionSlow, EveryIntegratorAgreesWithThePathTracerThroughTintedGlass) {
     const Case cases[] = {{"light", 128, true},
                           {"bdpt", 16, false},
                           {"vcm", 32, false},

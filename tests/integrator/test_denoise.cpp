@@ -90,7 +90,7 @@ void check_scene(const std::string& noisy_code, const std::string& reference_cod
                denoised_error, noisy_error / denoised_error);
 }
 
-TEST(Denoise, CornellBoxErrorFourTimesLowerWithSharpEdges) {
+TEST(DenoiseSlow, CornellBoxErrorFourTimesLowerWithSharpEdges) {
     auto code = [](int spp, int seed) {
         return example_with_settings(
             "cornell-box.lua",
@@ -102,7 +102,7 @@ TEST(Denoise, CornellBoxErrorFourTimesLowerWithSharpEdges) {
 
 constexpr double kTextureBandBound = 0.0066;
 
-TEST(Denoise, TexturesErrorFourTimesLowerWithSharpEdges) {
+TEST(DenoiseSlow, TexturesErrorFourTimesLowerWithSharpEdges) {
     auto code = [](int spp, int seed) {
         return example_with_settings(
             "textures.lua",

@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <support/image_comparison.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
 #include <algorithm>
 #include <functional>
@@ -119,6 +120,8 @@ TEST_P(EveryIntegrator, WhiteFurnace) {
     const std::string name = GetParam();
     const Held held = held_to(name);
     if (!held.not_furnace.empty()) GTEST_SKIP() << held.not_furnace;
+    if (test::kSanitizerBuild && (name == "photon" || name == "sppm"))
+        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     auto scene = [&](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
@@ -143,6 +146,8 @@ TEST_P(EveryIntegrator, ClosedSphereAroundPointLight) {
     const std::string name = GetParam();
     const Held held = held_to(name);
     if (!held.not_point_light.empty()) GTEST_SKIP() << held.not_point_light;
+    if (test::kSanitizerBuild && (name == "mlt" || name == "bdpt"))
+        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     auto scene = [&](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 0}}, look_at = {{0, 0, -1}}, fov = 70 }}
@@ -161,6 +166,8 @@ TEST_P(EveryIntegrator, ClosedSphereAroundPointLight) {
 // a glass and a mirror sphere at 48 x 48 is 9 tiles (and 9 chunks of light paths at 4 spp).
 TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
     const std::string name = GetParam();
+    if (test::kSanitizerBuild && (name == "photon" || name == "radiosity"))
+        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     const Held held = held_to(name);
     const std::string scene = example_with_settings(
         "cornell-spheres.lua", fmt::format("width = 48, height = 48, spp = {}, seed = 7, "
@@ -181,6 +188,8 @@ TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
 // scaled by 1.03.
 TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
     const std::string name = GetParam();
+    if (test::kSanitizerBuild && (name == "whitted" || name == "sppm"))
+        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     const Held held = held_to(name);
     if (name == "photon" || name == "preview")
         GTEST_SKIP() << "16 renders of this scene take 100 s or more; its direct light is "

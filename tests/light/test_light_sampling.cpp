@@ -189,7 +189,7 @@ double sphere_pdf(const DVec3& center, double radius, const Vec3& ref, const Vec
 
 }  // namespace
 
-TEST(QuadEmitter, SamplingMatchesSolidAngleDensity) {
+TEST(QuadEmitterSlow, SamplingMatchesSolidAngleDensity) {
     struct Case {
         std::string name;
         MeshData mesh;

@@ -246,7 +246,7 @@ TEST(ImageTexture, MipmappingLowersErrorAtGrazingAngles) {
 // own variance (half that between two seeds) plus the reference's plus the filter's bias;
 // the bias may be at most twice the variance. The test checks that trilinear filtering
 // fails the same bound.
-TEST(ImageTexture, AnisotropicFilteringKeepsStripesAlongTheView) {
+TEST(ImageTextureSlow, AnisotropicFilteringKeepsStripesAlongTheView) {
     TempDir dir;
     Image stripes = make_image(8, 8, {"R", "G", "B"});
     for (int y = 0; y < 8; ++y) {

@@ -154,7 +154,7 @@ TEST(ConductorFresnel, ClosedForms) {
     EXPECT_LT(to_rgb(gold).b, 0.45f);
 }
 
-TEST(RoughConductorBsdf, SamplingMatchesPdf) {
+TEST(RoughConductorBsdfSlow, SamplingMatchesPdf) {
     const ConductorFresnel gold{unbounded(kConductorPresets[0].eta),
                                 unbounded(kConductorPresets[0].k), Spectrum(1.0f), false};
     struct Case {
@@ -287,7 +287,7 @@ TEST(RoughConductorBsdf, Reciprocal) {
     }
 }
 
-TEST(RoughDielectricBsdf, SamplingMatchesPdf) {
+TEST(RoughDielectricBsdfSlow, SamplingMatchesPdf) {
     const float eta = 1.5f;
     struct Case {
         float degrees;
@@ -353,7 +353,7 @@ TEST(RoughDielectricBsdf, GeneralisedReciprocity) {
 // light refracted through steep facets or away from the normal leaves at grazing angles and
 // is shadowed more than the reflection, the glass loses more than the conductor. The
 // midpoint quadrature of eval() agrees with the sampled R + T where the lobes are wide.
-TEST(RoughDielectricBsdf, WhiteFurnace) {
+TEST(RoughDielectricBsdfSlow, WhiteFurnace) {
     const float eta = 1.5f;
     const float angles[] = {0.0f, 30.0f, 60.0f, 75.0f, 85.0f};
     std::cout << "Rough dielectric (eta 1.5): R + T and loss against the GGX conductor with F = 1\n"
@@ -413,7 +413,7 @@ TEST(RoughDielectricBsdf, WhiteFurnace) {
     }
 }
 
-TEST(PlasticBsdf, SamplingMatchesPdf) {
+TEST(PlasticBsdfSlow, SamplingMatchesPdf) {
     struct Case {
         float diffuse, roughness, ior;
     };
@@ -497,7 +497,7 @@ TEST(PlasticBsdf, ConservesEnergyAndIsReciprocal) {
 // BSDF's own sampling, whose pdf is chi-square tested above. The bounds are [0.998, 1.000] widened
 // by the estimate's error (2e-4, or four standard errors) and, above 1, by the coat albedo table's
 // stated accuracy (1e-3).
-TEST(PlasticBsdf, WhiteBaseReflectsAlmostAllLight) {
+TEST(PlasticBsdfSlow, WhiteBaseReflectsAlmostAllLight) {
     const float angles[] = {0.0f, 30.0f, 60.0f, 75.0f, 85.0f, 89.0f};
     for (float roughness : {0.0f, 0.05f, 0.1f, 0.3f, 0.6f, 1.0f}) {
         const float alpha = roughness_to_alpha(roughness);

@@ -116,17 +116,17 @@ void expect_lobes_sample_their_pdf(bool metal) {
 
 }  // namespace
 
-TEST(PrincipledBsdf, DielectricReflectionLobesSampleTheirPdf) {
+TEST(PrincipledBsdfSlow, DielectricReflectionLobesSampleTheirPdf) {
     expect_lobes_sample_their_pdf(false);
 }
 
-TEST(PrincipledBsdf, MetalLobeSamplesItsPdf) {
+TEST(PrincipledBsdfSlow, MetalLobeSamplesItsPdf) {
     expect_lobes_sample_their_pdf(true);
 }
 
 // The glass alone (transmission 1), from outside and inside, reflection and refraction each
 // magnified around its centre.
-TEST(PrincipledBsdf, GlassLobeSamplingMatchesPdf) {
+TEST(PrincipledBsdfSlow, GlassLobeSamplingMatchesPdf) {
     const float eta = 1.5f;
     const Vec3 directions[] = {direction(0.0f), direction(60.0f), direction(25.0f, 1.1f, true)};
     const float roughnesses[] = {0.1f, 0.4f, 1.0f};
@@ -187,13 +187,13 @@ void expect_mixtures_sample_their_pdf(const std::vector<MixtureCase>& cases) {
 
 }  // namespace
 
-TEST(PrincipledBsdf, OpaqueMixtureSamplesItsPdf) {
+TEST(PrincipledBsdfSlow, OpaqueMixtureSamplesItsPdf) {
     expect_mixtures_sample_their_pdf({{0.0f, 0.5f, 0.0f, 0.0f, 0.0f},
                                       {0.5f, 0.3f, 0.0f, 0.5f, 0.0f},
                                       {1.0f, 0.9f, 0.0f, 1.0f, 1.0f}});
 }
 
-TEST(PrincipledBsdf, TransmittingMixtureSamplesItsPdf) {
+TEST(PrincipledBsdfSlow, TransmittingMixtureSamplesItsPdf) {
     expect_mixtures_sample_their_pdf(
         {{0.2f, 0.6f, 0.5f, 0.3f, 1.0f}, {0.0f, 0.8f, 0.7f, 1.0f, 0.5f}});
 }
@@ -203,7 +203,7 @@ TEST(PrincipledBsdf, TransmittingMixtureSamplesItsPdf) {
 // model promises 1 it is 1 within the same bound: a white opaque dielectric without coat or
 // sheen at every roughness (the diffuse term takes exactly what the specular layer passes),
 // and a white metal at roughness 0 (F = 1 and GGX at alpha 1e-3 masks nothing).
-TEST(PrincipledBsdf, WhiteFurnace) {
+TEST(PrincipledBsdfSlow, WhiteFurnace) {
     const float angles[] = {0.0f, 30.0f, 60.0f, 75.0f, 85.0f};
     struct Case {
         const char* name;

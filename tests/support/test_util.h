@@ -11,6 +11,16 @@
 
 namespace glint::test {
 
+// True in the sanitizer tree (GLINT_SANITIZE). CI runs that tree's tests without the `slow`
+// label (suites named *Slow); a parametrized test whose heaviest cases are statistical
+// convergence checks skips just those cases there. They take half a minute or more each
+// under the sanitizers, run in the normal tree, and share their code with the cases that stay.
+#ifdef GLINT_SANITIZER_BUILD
+inline constexpr bool kSanitizerBuild = true;
+#else
+inline constexpr bool kSanitizerBuild = false;
+#endif
+
 // The message of the glint::Error that `f` throws, or "" when it throws none.
 inline std::string error_of(const std::function<void()>& f) {
     try {

@@ -137,7 +137,7 @@ std::string glossy_scene(const std::string& integrator, int spp, int seed) {
 
 }  // namespace
 
-TEST(Bdpt, ConvergesToPathOnTheCornellBox) {
+TEST(BdptSlow, ConvergesToPathOnTheCornellBox) {
     expect_bdpt_converges_to_path(
         [](const std::string& integrator, int spp, int seed) {
             return example("cornell-box.lua", integrator, spp, seed);
@@ -146,7 +146,7 @@ TEST(Bdpt, ConvergesToPathOnTheCornellBox) {
 }
 
 // Glass and mirror spheres: delta lobes seen directly, caustics on the floor.
-TEST(Bdpt, ConvergesToPathOnTheCornellSpheres) {
+TEST(BdptSlow, ConvergesToPathOnTheCornellSpheres) {
     expect_bdpt_converges_to_path(
         [](const std::string& integrator, int spp, int seed) {
             return example("cornell-spheres.lua", integrator, spp, seed);
@@ -154,14 +154,14 @@ TEST(Bdpt, ConvergesToPathOnTheCornellSpheres) {
         32, 64);
 }
 
-TEST(Bdpt, ConvergesToPathOnAGlossySceneUnderTheSky) {
+TEST(BdptSlow, ConvergesToPathOnAGlossySceneUnderTheSky) {
     expect_bdpt_converges_to_path(glossy_scene, 48, 64);
 }
 
 // Principled surfaces (material/principled_bsdf.h) seen by camera paths and by light paths,
 // which use the adjoint BSDF (importance mode): rough glass, a clear-coated metal, a sheen
 // and a sphere whose principled emission makes it the scene's only light.
-TEST(Bdpt, ConvergesToPathOnPrincipledSurfaces) {
+TEST(BdptSlow, ConvergesToPathOnPrincipledSurfaces) {
     expect_bdpt_converges_to_path(
         [](const std::string& integrator, int spp, int seed) {
             return fmt::format(R"(
@@ -190,7 +190,7 @@ TEST(Bdpt, ConvergesToPathOnPrincipledSurfaces) {
 // The caustic of a point light behind a glass ball (test_light's scene): black for the path
 // tracer, found by bdpt's light subpaths (t = 1 and s, t >= 2) and by SPPM. SPPM's finite
 // radius blurs the caustic by about 5 % over this region (see test_light), hence the 8 %.
-TEST(Bdpt, SeesThePointLightCausticBehindGlassLikeSppm) {
+TEST(BdptSlow, SeesThePointLightCausticBehindGlassLikeSppm) {
     constexpr int kImages = 6;
     const Vec3 light(0.0f, 2.0f, 0.0f);
     const std::vector<bool> mask = shadow_mask(point_light_behind_glass("spp = 1"), light);

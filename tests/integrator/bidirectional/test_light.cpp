@@ -82,7 +82,7 @@ TEST(LightTracer, ConvergesToPathOnTheCornellBox) {
 // (masked out) and the light's lower side beside the slab. Light paths reach the floor
 // through both faces of the slab (importance-mode refraction) and the two-sided light
 // connects to the lens from the side sample_le chose.
-TEST(LightTracer, ConvergesToPathUnderAGlassSlab) {
+TEST(LightTracerSlow, ConvergesToPathUnderAGlassSlab) {
     expect_light_converges_to_path(
         [](const std::string& integrator, int spp, int seed) {
             return fmt::format(R"(
@@ -103,7 +103,7 @@ TEST(LightTracer, ConvergesToPathUnderAGlassSlab) {
 
 // (c) The Cornell box with a glass and a mirror sphere: the spheres are masked out, but
 // the walls and floor keep the caustic and the light reflected off the mirror.
-TEST(LightTracer, ConvergesToPathOnTheCornellSpheres) {
+TEST(LightTracerSlow, ConvergesToPathOnTheCornellSpheres) {
     expect_light_converges_to_path(
         [](const std::string& integrator, int spp, int seed) {
             return example_with("cornell-spheres.lua",
@@ -120,7 +120,7 @@ TEST(LightTracer, ConvergesToPathOnTheCornellSpheres) {
 // between initial radii of 0.04 and 0.01 (0.099 -> 0.104 in red, 32 passes of 30000
 // photons), so it may differ from the unbiased light tracer by 8 % of its value plus four
 // standard errors of the difference.
-TEST(LightTracer, SeesThePointLightCausticBehindGlassLikeSppm) {
+TEST(LightTracerSlow, SeesThePointLightCausticBehindGlassLikeSppm) {
     constexpr int kImages = 6;
     const Vec3 light(0.0f, 2.0f, 0.0f);
     const std::vector<bool> mask = shadow_mask(point_light_behind_glass("spp = 1"), light);

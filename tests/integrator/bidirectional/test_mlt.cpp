@@ -226,7 +226,7 @@ TEST(PssSampler, StreamsKeepTheirDimensions) {
 // exactly a Le, carried by paths of one bounce only (the emitter reflects nothing), so the
 // bootstrap's samples at depths 0 and 2 find nothing. The image's mean is then b times the
 // colour of a Le over its luminance, whatever the chains do: this checks b.
-TEST(Mlt, DiffuseSphereInsideAnEmittingSphere) {
+TEST(MltSlow, DiffuseSphereInsideAnEmittingSphere) {
     auto scene = [](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
@@ -263,7 +263,7 @@ std::string cornell(const std::string& integrator, int spp, int seed, int width 
 
 // mlt and path agree on the Cornell box (paths of at most 5 bounces) over every pixel, and the
 // same check rejects mlt's images scaled by 1.03.
-TEST(Mlt, ConvergesToPathOnTheCornellBox) {
+TEST(MltSlow, ConvergesToPathOnTheCornellBox) {
     constexpr int kImages = 8;
     constexpr int kBlock = 4;
     const std::string settings = ", mlt_bootstrap = 20000, mlt_chains = 256";
@@ -283,7 +283,7 @@ TEST(Mlt, ConvergesToPathOnTheCornellBox) {
 // The same agreement with other mutation settings (issue 28: only the defaults were ever
 // rendered): mostly small steps of a wide kernel, and mostly large steps with a narrow one.
 // The acceptance rule must keep the image unbiased whatever the proposal does.
-TEST(Mlt, ConvergesToPathWithOtherMutationSettings) {
+TEST(MltSlow, ConvergesToPathWithOtherMutationSettings) {
     constexpr int kImages = 8;
     constexpr int kBlock = 4;
     const Image first = render_lua(cornell("path", 1, 1));

@@ -104,7 +104,7 @@ TEST(Vcm, DiffuseSphereInsideAnEmittingSphere) {
 // the kernel is unbiased here too; s = 0 cannot hit the point light, merging (eta = 8 for
 // 32 x 32 light paths: about 40 % of the image) and connections share the rest. The merges'
 // weights leave a bias of -0.2 % (measured), within the 0.3 % allowed as above.
-TEST(Vcm, ClosedSphereAroundPointLightSumsEveryBounce) {
+TEST(VcmSlow, ClosedSphereAroundPointLightSumsEveryBounce) {
     expect_point_light_sphere("", 6);
 }
 
@@ -116,11 +116,11 @@ TEST(Vcm, EmittingSphereFurnaceWithMoreOrFewerLightSubpaths) {
     expect_emitting_sphere(", vcm_light_paths = 64");
 }
 
-TEST(Vcm, PointLightFurnaceWithMoreLightSubpaths) {
+TEST(VcmSlow, PointLightFurnaceWithMoreLightSubpaths) {
     expect_point_light_sphere(", vcm_light_paths = 4096", 4);
 }
 
-TEST(Vcm, PointLightFurnaceWithFewerLightSubpaths) {
+TEST(VcmSlow, PointLightFurnaceWithFewerLightSubpaths) {
     expect_point_light_sphere(", vcm_light_paths = 256", 6);
 }
 
@@ -175,13 +175,13 @@ void expect_vcm_converges_to_path(const char* file, const std::string& extra = "
 
 // The default radius (1/256 of the scene's diagonal) at 32 x 32: merges take a few per cent
 // of the diffuse light and blur it over about a tenth of a pixel, far below the noise.
-TEST(Vcm, ConvergesToPathOnTheCornellBox) {
+TEST(VcmSlow, ConvergesToPathOnTheCornellBox) {
     expect_vcm_converges_to_path("cornell-box.lua");
 }
 
 // Glass and mirror spheres: delta lobes seen directly, caustics on the floor (where merging
 // and connections share the paths).
-TEST(Vcm, ConvergesToPathOnTheCornellSpheres) {
+TEST(VcmSlow, ConvergesToPathOnTheCornellSpheres) {
     expect_vcm_converges_to_path("cornell-spheres.lua");
 }
 
@@ -189,17 +189,17 @@ TEST(Vcm, ConvergesToPathOnTheCornellSpheres) {
 // pixel connects to one of the first 1024 subpaths and the rest only merge and join the
 // lens; with 1/4, each subpath serves 4 pixels 8 rows apart. 4x costs about 3 times as much
 // per iteration: 12 iterations, and the bound follows the noise.
-TEST(Vcm, ConvergesToPathOnTheCornellSpheresWithMoreLightSubpaths) {
+TEST(VcmSlow, ConvergesToPathOnTheCornellSpheresWithMoreLightSubpaths) {
     expect_vcm_converges_to_path("cornell-spheres.lua", ", vcm_light_paths = 4096", 12);
 }
 
-TEST(Vcm, ConvergesToPathOnTheCornellSpheresWithFewerLightSubpaths) {
+TEST(VcmSlow, ConvergesToPathOnTheCornellSpheresWithFewerLightSubpaths) {
     expect_vcm_converges_to_path("cornell-spheres.lua", ", vcm_light_paths = 256");
 }
 
 // With a merging radius far below a pixel's footprint merges get almost no weight: vcm is
 // bdpt with its light subpaths traced apart, and the two agree.
-TEST(Vcm, WithATinyRadiusAgreesWithBdpt) {
+TEST(VcmSlow, WithATinyRadiusAgreesWithBdpt) {
     expect_converges(
         [](int seed) {
             return example(
@@ -262,7 +262,7 @@ std::array<Estimate, 3> mirror_region(const std::vector<bool>& mask, const std::
 // floor, mirror, lens): only merging finds it. vcm agrees with SPPM there (within the noise
 // and 8 % for SPPM's blur, as in test_bdpt), and bdpt, which has no strategy for such a path,
 // leaves the region black: we assert it holds less than 1 % of vcm's light.
-TEST(Vcm, SeesTheCausticInAMirrorLikeSppm) {
+TEST(VcmSlow, SeesTheCausticInAMirrorLikeSppm) {
     const Vec3 light(0.0f, 2.0f, 0.0f);
     const std::vector<bool> mask = mirrored_shadow_mask(mirror_caustic("spp = 1"), light);
     ASSERT_GE(std::count(mask.begin(), mask.end(), true), 8);
@@ -281,7 +281,7 @@ TEST(Vcm, SeesTheCausticInAMirrorLikeSppm) {
 
 // test_bdpt's point light behind a glass ball, seen directly: black for the path tracer,
 // found by vcm's light subpaths and merges, as by SPPM.
-TEST(Vcm, SeesThePointLightCausticBehindGlassLikeSppm) {
+TEST(VcmSlow, SeesThePointLightCausticBehindGlassLikeSppm) {
     constexpr int kImages = 6;
     const Vec3 light(0.0f, 2.0f, 0.0f);
     const std::vector<bool> mask = shadow_mask(point_light_behind_glass("spp = 1"), light);

@@ -395,7 +395,7 @@ Image render_cornell_with(const std::string& integrator, int res, int spp, int s
 // falls like 1/spp (a biased variant would plateau), and the image means agree within four
 // standard errors (estimated from each variant's two renders), a bound below 1 % of the
 // mean: a 2 % bias fails it, which the test checks on a scaled copy of each image.
-TEST(PathIntegrator, LightAndBsdfSamplingConvergeToTheSameImage) {
+TEST(PathIntegratorSlow, LightAndBsdfSamplingConvergeToTheSameImage) {
     const int res = 24;
     const int reference_spp = 1024;
     const Image reference = render_cornell_with("path", res, reference_spp, 99);

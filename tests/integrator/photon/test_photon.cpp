@@ -69,7 +69,7 @@ TEST(PhotonMapping, StoredFluxFollowsTheGeometricSeries) {
 // image's bound is under 1.5 % of its mean, so a 3 % bias fails it, which the test checks
 // on scaled copies. (SPPM's shrinking radius blurs the image slightly; the regions are large
 // enough for that to cancel.)
-TEST(PhotonMapping, SppmAgreesWithPathTracingOnTheCornellBox) {
+TEST(PhotonMappingSlow, SppmAgreesWithPathTracingOnTheCornellBox) {
     const int res = 32;
     auto render = [&](const char* integrator, int spp, int seed) {
         return render_lua(glint::test::example_with_settings(

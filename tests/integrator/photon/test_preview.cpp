@@ -69,7 +69,7 @@ BuiltScene build_scene(const std::string& code) {
 // blur of the final radius (0.013 after 64 passes, a tenth of a pixel's footprint) and
 // the light that bounces off the floor through the glass, which sppm has and the preview
 // does not.
-TEST(Preview, CausticConvergesToSppm) {
+TEST(PreviewSlow, CausticConvergesToSppm) {
     auto sppm = [&](int seed) {
         return test::render_lua(caustic_scene(fmt::format(
             "integrator = 'sppm', spp = 128, photons = 20000, photon_radius = 0.1, seed = {}",
@@ -139,7 +139,7 @@ TEST(Preview, CameraChangeKeepsPhotonsLightChangeDropsThem) {
 // is 2.3 % after 32 passes and 1.0 % after 128 (so it is the photons' noise, not a bias),
 // about 1.5 % after the 64 passes here. Light that the floor reflects back to the mirror
 // is left out on both sides (the preview carries no indirect light; its ambient term is off).
-TEST(Preview, MirrorCeilingCausticMatchesClosedForm) {
+TEST(PreviewSlow, MirrorCeilingCausticMatchesClosedForm) {
     const int res = 32;
     const float fov = 60.0f, camera_height = 1.5f, h = 0.5f, H = 2.0f, rho = 0.5f, t = 0.8f,
                 intensity = 4.0f;

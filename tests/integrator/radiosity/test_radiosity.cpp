@@ -285,7 +285,7 @@ std::string cornell_path(int seed, int spp) {
 // 1.7 % and 1.0 %; the finer mesh must halve the error, come within the noise plus 0.0015,
 // and its means within 1.5 %. The display takes 256 samples per pixel, so that the edges of
 // the light and of the box are resolved as the reference resolves them.
-TEST(Radiosity, CornellBoxConvergesToPathAsTheMeshIsRefined) {
+TEST(RadiositySlow, CornellBoxConvergesToPathAsTheMeshIsRefined) {
     const Image reference = render_lua(cornell_path(1, 512));
     const Image other = render_lua(cornell_path(2, 512));
     const double noise = compare_images(other, reference).rel_mse / 2.0;
@@ -312,7 +312,7 @@ TEST(Radiosity, CornellBoxConvergesToPathAsTheMeshIsRefined) {
 // solve, where the spheres only occlude, drops: measured 5.5 % of the mean at 128 x 128.
 // Bounds: relative MSE below 0.02 (0.0074 measured here at 32 x 32, the hybrid's own noise
 // included; means 5.7 % low), means within 8 % and below the reference's (the missing light).
-TEST(Radiosity, HybridAgreesWithPathOnTheCornellSpheres) {
+TEST(RadiositySlow, HybridAgreesWithPathOnTheCornellSpheres) {
     const Image reference = render_lua(glint::test::example_with_settings(
         "cornell-spheres.lua", "width = 32, height = 32, spp = 1024, integrator = 'path'"));
     const Image hybrid = render_lua(glint::test::example_with_settings(

@@ -148,7 +148,7 @@ TEST(RestirDi, BiasedModeIsDarker) {
 
 // With one indirect bounce (and next-event estimation there) the preview carries what
 // `path` with two bounces carries on the Cornell box, which has no mirrors or glass.
-TEST(RestirDi, PreviewWithBouncesConvergesToPathOnCornellBox) {
+TEST(RestirDiSlow, PreviewWithBouncesConvergesToPathOnCornellBox) {
     const Convergence c = converge(
         [](int seed) {
             return test::render_lua(test::example_with_settings(

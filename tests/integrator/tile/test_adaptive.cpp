@@ -73,7 +73,7 @@ std::string cornell(const std::string& settings) {
 // far from the reference get more than those close to it. One render's error varies by
 // about 10 % with the seed, and at this size the two are close, so the errors are averaged
 // over three seeds and compared with a 5 % margin.
-TEST(AdaptiveSampling, NoWorseThanUniformForEqualSamplesAndFollowsNoise) {
+TEST(AdaptiveSamplingSlow, NoWorseThanUniformForEqualSamplesAndFollowsNoise) {
     const Image reference = render_lua(cornell("spp = 2048, seed = 5"));
     double adaptive_error = 0.0, uniform_error = 0.0;
     Image adaptive, uniform;
