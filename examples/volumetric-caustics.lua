@@ -3,7 +3,9 @@
 -- caustic on the floor. The fog is bounded by an interface box (a surface that only bounds
 -- a medium); the camera stands outside it, in clear air. volpath finds the beam only by
 -- BSDF and phase sampling hitting the small light through the glass, so it converges
--- slowly: the light-path methods with media (issue 29 item 3) are the ones to do it fast.
+-- slowly; the light tracer follows the light through the glass into the fog and sees the
+-- beam at once (`glint render examples/volumetric-caustics.lua --integrator light`), but
+-- cannot see the glass itself (bench/volumetric_caustics.sh compares the two).
 local fog = glint.medium{ density = 0.1, albedo = 0.9, g = 0.4 }
 local glass = glint.dielectric{ ior = 1.5 }
 local floor = glint.diffuse{ reflectance = 0.6 }

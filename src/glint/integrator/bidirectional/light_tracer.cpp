@@ -4,9 +4,13 @@
 #include <glint/integrator/bidirectional/light_tracer.h>
 #include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/media.h>
 #include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/visibility.h>
+#include <glint/medium/delta_tracking.h>
+#include <glint/medium/henyey_greenstein.h>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -42,6 +46,22 @@ struct LightTracer::Chunk {
     }
 };
 
+// The state of one light path between vertices. In media, distances are sampled for one
+// channel, the hero; r_u holds the densities with which every channel would have sampled the
+// same path over the hero's (volpath's r_u), and what the path splats is divided by their
+// mean: the balance heuristic over the choice of hero.
+struct LightTracer::Particle {
+    Ray ray;
+    Spectrum beta;
+    Spectrum r_u{1.0f};
+    const Medium* medium = nullptr;
+    int hero = 0;
+    int bounce = 1;  // the scattering vertex the next event makes
+    int max_bounces = kMaxBounces;
+
+    Spectrum splat_weight() const { return beta / r_u.average(); }
+};
+
 LightTracer::LightTracer(const RenderSettings& settings) : m_settings(settings) {}
 
 std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, const Params&) {
@@ -55,6 +75,15 @@ std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, 
 
 RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    m_light_media.clear();
+    if (!scene.media().empty()) {
+        // Where each light starts its paths, probed once from one point it emits from.
+        m_light_media.assign(scene.lights().size(), nullptr);
+        for (const std::unique_ptr<Light>& light : scene.lights()) {
+            const std::optional<LightEmission> e = light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
+            if (e) m_light_media[light->index()] = medium_containing(scene, e->ray.origin);
+        }
+    }
     const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();
     const uint64_t paths = pixels * static_cast<uint64_t>(m_settings.spp);
     // Camera::We is normalised over the whole image: a pixel's value is its splats times
@@ -86,8 +115,9 @@ RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progre
 // mode until roulette, the depth limit or an escape ends it; the light's point and every
 // non-specular vertex connect to the camera. Draws, from an RNG keyed by (seed, index): the
 // light (1D), the ray's origin (2D) and direction (2D), the light's part (1D), the lens
-// point of the light's own connection (2D); then per vertex the lens point (2D), the BSDF
-// sample (2D + 1D) and roulette (1D).
+// point of the light's own connection (2D); in a scene with media the hero channel (1D);
+// then per vertex the lens point (2D), the BSDF sample (2D + 1D) and roulette (1D), and in
+// media the collisions' distances and events.
 void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const {
     chunk.rng.seed(hash_combine(mix_bits(m_settings.seed ^ 0x4c54u), index));
     const PathWavelengths wavelengths(m_settings.spectral,
@@ -101,23 +131,48 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
     const Vec2 u_light_lens = chunk.next_2d();
     const std::optional<LightPathStart> start = start_light_path(scene, u_start);
     if (!start) return;
-    connect_light_to_camera(scene, start->emission, *start->light, start->pmf, u_light_lens, chunk);
+    const bool with_media = !m_light_media.empty();
+    Particle particle;
+    particle.medium = with_media ? m_light_media[start->light->index()] : nullptr;
+    connect_light_to_camera(scene, start->emission, *start->light, start->pmf, particle.medium,
+                            u_light_lens, chunk);
 
-    Spectrum beta = start->beta;
-    if (beta.is_black()) return;
-    Ray ray = start->emission.ray;
-    const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : kMaxBounces;
-    for (int bounce = 1; bounce <= max_bounces; ++bounce) {
+    particle.beta = start->beta;
+    if (particle.beta.is_black()) return;
+    particle.ray = start->emission.ray;
+    particle.max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : kMaxBounces;
+    if (with_media) {
+        particle.hero =
+            std::min(static_cast<int>(chunk.rng.next_float() * Spectrum::active_values()),
+                     Spectrum::active_values() - 1);
+    }
+    for (int crossings = 0; particle.bounce <= particle.max_bounces && crossings < kMaxBounces;) {
         ++chunk.rays;
-        std::optional<SurfaceInteraction> hit = scene.intersect(ray);
+        SurfaceInteraction si;
+        // With media the walk stops at the interfaces too: they change its medium.
+        const bool hit = with_media ? scene.intersect_surface(particle.ray, si)
+                                    : scene.intersect(particle.ray, si);
+        if (particle.medium) {
+            const MediumEvent event =
+                through_medium(scene, particle, hit ? si.t : kInfinity, chunk);
+            if (event == MediumEvent::kEnded) return;
+            if (event == MediumEvent::kScattered) continue;
+        }
         if (!hit) return;
-        SurfaceInteraction& si = *hit;
-        beta *= segment_transmittance(ray, si);
-        const Bsdf* bsdf = shade(scene, ray, si, chunk.arena);
+        if (with_media && si.material->is_interface()) {
+            // Only the medium changes: the ray goes straight on, and no bounce is counted.
+            particle.medium = medium_beyond(si, particle.ray.direction, particle.medium);
+            particle.ray = spawn_ray(si, particle.ray.direction);
+            ++crossings;
+            continue;
+        }
+        // Without media tracked, absorbing glass is its interior's closed form.
+        if (!with_media) particle.beta *= segment_transmittance(particle.ray, si);
+        const Bsdf* bsdf = shade(scene, particle.ray, si, chunk.arena);
         if (!bsdf) return;
         const Vec2 u_lens = chunk.next_2d();
-        if (!bsdf->is_delta()) connect_to_camera(scene, si, *bsdf, beta, u_lens, chunk);
-        if (bounce == max_bounces) return;
+        if (!bsdf->is_delta()) connect_to_camera(scene, si, *bsdf, particle, u_lens, chunk);
+        if (particle.bounce == particle.max_bounces) return;
 
         const Vec2 u = chunk.next_2d();
         const float u_lobe = chunk.rng.next_float();
@@ -131,18 +186,91 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
         if (!survives_power_roulette(
                 scattering->weight.max_value(), [&] { return chunk.rng.next_float(); }, survive))
             return;
-        beta *= scattering->weight / survive;
-        continue_ray(ray, si, *scattering);
+        particle.beta *= scattering->weight / survive;
+        continue_ray(particle.ray, si, *scattering);
+        if (with_media)
+            particle.medium = medium_beyond(si, particle.ray.direction, particle.medium);
+        ++particle.bounce;
     }
+}
+
+// The particle's segment through its medium up to t_hit: absorbed (kEnded), scattered at a
+// collision (kScattered: connected to the lens there, its ray turned by the phase function),
+// or across to t_hit with its throughput and ratios carried (kCrossed). Distances come from
+// delta tracking on the hero channel; a medium that only absorbs is not sampled.
+LightTracer::MediumEvent LightTracer::through_medium(const Scene& scene, Particle& particle,
+                                                     float t_hit, Chunk& chunk) const {
+    const Medium& medium = *particle.medium;
+    if (!samples_distances(medium)) {
+        const float t = std::isinf(t_hit) ? 1e30f : t_hit;
+        particle.beta *= medium.transmittance(particle.ray, t, chunk.rng);
+        return particle.beta.is_black() ? MediumEvent::kEnded : MediumEvent::kCrossed;
+    }
+    MediumEvent event = MediumEvent::kCrossed;
+    const Spectrum T_maj = sample_collisions(
+        medium, particle.ray, t_hit, particle.hero, chunk.rng,
+        [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
+            event = collide(scene, particle, t, point, sigma_maj, T, chunk);
+            return event == MediumEvent::kCrossed;
+        });
+    if (event != MediumEvent::kCrossed) return event;
+    const float T_hero = T_maj.value(particle.hero);
+    if (!(T_hero > 0.0f)) return MediumEvent::kEnded;
+    particle.beta *= T_maj / T_hero;
+    particle.r_u *= T_maj / T_hero;
+    return MediumEvent::kCrossed;
+}
+
+// A tentative collision at parameter t of the particle's ray: absorption, real scattering
+// or a null collision, chosen with the hero channel's probabilities (as volpath's collide).
+// A real scattering is a vertex of the light path: it connects to the lens, then the phase
+// function turns the ray (exactly sampled, so the throughput keeps its value).
+LightTracer::MediumEvent LightTracer::collide(const Scene& scene, Particle& particle, float t,
+                                              const MediumPoint& point, const Spectrum& sigma_maj,
+                                              const Spectrum& T, Chunk& chunk) const {
+    const int hero = particle.hero;
+    const float sigma_hero = sigma_maj.value(hero);
+    const float T_hero = T.value(hero);
+    const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
+    const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
+    const float u = chunk.rng.next_float();
+    if (u < p_absorb) return MediumEvent::kEnded;
+    if (u < p_absorb + p_scatter) {
+        const float pdf = T_hero * point.sigma_s.value(hero);
+        particle.beta *= T * point.sigma_s / pdf;
+        particle.r_u *= T * point.sigma_s / pdf;
+        if (particle.beta.is_black() || particle.r_u.is_black()) return MediumEvent::kEnded;
+        const Vec3 p = particle.ray.at(t);
+        const Vec3 wi_arrival = glm::normalize(particle.ray.direction);
+        const Vec2 u_lens = chunk.next_2d();
+        const std::optional<CameraConnection> connection = connect_medium_point_to_camera(
+            scene, p, wi_arrival, *particle.medium, particle.splat_weight(), u_lens, chunk.rays);
+        if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
+        if (particle.bounce++ == particle.max_bounces) return MediumEvent::kEnded;
+        // The phase function's arguments point away from p: -wi_arrival is where the light
+        // came from, and the sample is where it goes.
+        const HenyeyGreenstein phase(particle.medium->phase_asymmetry());
+        const PhaseSample next = phase.sample(-wi_arrival, chunk.next_2d());
+        particle.ray = Ray{p, next.wi, 0.0f, kInfinity, particle.ray.time};
+        return MediumEvent::kScattered;
+    }
+    // A null collision: the ray goes on, each channel weighted by its null share.
+    const Spectrum sigma_n = (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
+    const float pdf = T_hero * sigma_n.value(hero);
+    if (!(pdf > 0.0f)) return MediumEvent::kEnded;
+    particle.beta *= T * sigma_n / pdf;
+    particle.r_u *= T * sigma_n / pdf;
+    return particle.beta.is_black() || particle.r_u.is_black() ? MediumEvent::kEnded
+                                                               : MediumEvent::kCrossed;
 }
 
 // The strategy that sees a non-specular surface lit by the path: the surface point
 // connected to a point on the lens, splatted where that connection lands on the film.
 void LightTracer::connect_to_camera(const Scene& scene, const SurfaceInteraction& si,
-                                    const Bsdf& bsdf, const Spectrum& beta, const Vec2& u_lens,
+                                    const Bsdf& bsdf, const Particle& particle, const Vec2& u_lens,
                                     Chunk& chunk) const {
-    const std::optional<CameraConnection> connection =
-        connect_surface_to_camera(scene, si, bsdf, beta, u_lens, chunk.rays);
+    const std::optional<CameraConnection> connection = connect_surface_to_camera(
+        scene, si, bsdf, particle.splat_weight(), u_lens, chunk.rays, particle.medium);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 
@@ -150,13 +278,13 @@ void LightTracer::connect_to_camera(const Scene& scene, const SurfaceInteraction
 // the lens. Lights without a surface are left out: point and spot lights are invisible to
 // the camera in every glint integrator, and lights at infinity have no point to connect.
 void LightTracer::connect_light_to_camera(const Scene& scene, const LightEmission& emission,
-                                          const Light& light, float light_pmf, const Vec2& u_lens,
-                                          Chunk& chunk) const {
+                                          const Light& light, float light_pmf, const Medium* medium,
+                                          const Vec2& u_lens, Chunk& chunk) const {
     const bool has_surface = emission.n != Vec3(0.0f);
     if (!has_surface || light.is_infinite() || !(emission.pdf_pos > 0.0f)) return;
     const std::optional<CameraConnection> connection =
         connect_light_point_to_camera(scene, light, emission.ray.origin, emission.n,
-                                      light_pmf * emission.pdf_pos, u_lens, chunk.rays);
+                                      light_pmf * emission.pdf_pos, u_lens, chunk.rays, medium);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 

@@ -15,7 +15,16 @@
 // fixed chunks, each traced with its own random numbers keyed by (seed, path index), and
 // the chunks' splats reach the film in chunk order, so the image is the same for any thread
 // count.
+//
+// In participating media (glint.medium) the particle samples its distances by delta
+// tracking, as volpath does, and every real scattering in a medium is a vertex that
+// connects to the lens too: light -> glass -> fog -> camera is the volumetric caustic that
+// camera paths find only by chance. A light starts in the medium around it
+// (medium_containing); emitting media send no light paths.
+#include <glint/core/medium.h>
 #include <glint/integrator/integrator.h>
+
+#include <vector>
 
 namespace glint {
 
@@ -33,14 +42,22 @@ public:
 
 private:
     struct Chunk;
+    struct Particle;
+    enum class MediumEvent { kCrossed, kScattered, kEnded };
     void trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const;
+    MediumEvent through_medium(const Scene& scene, Particle& particle, float t_hit,
+                               Chunk& chunk) const;
+    MediumEvent collide(const Scene& scene, Particle& particle, float t, const MediumPoint& point,
+                        const Spectrum& sigma_maj, const Spectrum& T, Chunk& chunk) const;
     void connect_to_camera(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
-                           const Spectrum& beta, const Vec2& u_lens, Chunk& chunk) const;
+                           const Particle& particle, const Vec2& u_lens, Chunk& chunk) const;
     void connect_light_to_camera(const Scene& scene, const LightEmission& emission,
-                                 const Light& light, float light_pmf, const Vec2& u_lens,
-                                 Chunk& chunk) const;
+                                 const Light& light, float light_pmf, const Medium* medium,
+                                 const Vec2& u_lens, Chunk& chunk) const;
 
     RenderSettings m_settings;
+    // The medium each light sits in, by Light::index; empty when the scene has no media.
+    std::vector<const Medium*> m_light_media;
 };
 
 }  // namespace glint

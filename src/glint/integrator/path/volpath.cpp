@@ -1,4 +1,5 @@
 #include <glint/integrator/path/volpath.h>
+#include <glint/integrator/transport/media.h>
 #include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
@@ -39,13 +40,6 @@ struct VolPathIntegrator::Walk {
 };
 
 namespace {
-
-// A surface crossed only where it bounds media (an interface) or refracts into them.
-const Medium* medium_beyond(const SurfaceInteraction& si, const Vec3& direction,
-                            const Medium* current) {
-    const MediumInterface media = si.material->medium_interface();
-    return media.is_transition() ? media.leaving(glm::dot(direction, si.ng) > 0.0f) : current;
-}
 
 // What a light sample contributes from a scattering point, light sampling weighted against
 // BSDF or phase sampling by the balance heuristic (see volpath.h): `scatter(wi)` gives the

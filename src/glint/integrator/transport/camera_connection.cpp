@@ -1,5 +1,7 @@
 #include <glint/integrator/transport/camera_connection.h>
+#include <glint/integrator/transport/media.h>
 #include <glint/integrator/transport/visibility.h>
+#include <glint/medium/henyey_greenstein.h>
 
 namespace glint {
 namespace {
@@ -16,7 +18,8 @@ std::optional<CameraWiSample> sample_lens(const Scene& scene, const Vec3& p, con
 std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
                                                           const SurfaceInteraction& si,
                                                           const Bsdf& bsdf, const Spectrum& beta,
-                                                          const Vec2& u_lens, uint64_t& rays) {
+                                                          const Vec2& u_lens, uint64_t& rays,
+                                                          const Medium* medium) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, si.p, u_lens);
     if (!lens) return std::nullopt;
     const Vec3 wi_local = si.to_local(lens->wi);
@@ -25,7 +28,8 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
         bsdf.eval(si.to_local(si.wo), wi_local, TransportMode::kImportance, si.to_local(si.ng));
     if (f.is_black()) return std::nullopt;
     ++rays;
-    const Spectrum visible = transmittance(scene, si, lens->p_lens);
+    const Spectrum visible =
+        transmittance(scene, si, lens->p_lens, medium_beyond(si, lens->wi, medium));
     if (visible.is_black()) return std::nullopt;
     return CameraConnection{*lens,
                             beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We * visible};
@@ -34,7 +38,8 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
 std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
                                                               const Light& light, const Vec3& p,
                                                               const Vec3& n, float pdf_origin,
-                                                              const Vec2& u_lens, uint64_t& rays) {
+                                                              const Vec2& u_lens, uint64_t& rays,
+                                                              const Medium* medium) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens);
     if (!lens) return std::nullopt;
     const float cosine = glm::dot(n, lens->wi);
@@ -43,12 +48,30 @@ std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene
     if (Le.is_black()) return std::nullopt;
     const float side_pdf = light.emitted(p, n, -n).is_black() ? 1.0f : 0.5f;
     ++rays;
-    const Spectrum visible = transmittance(scene, p, lens->p_lens);
+    const Spectrum visible = transmittance(scene, p, lens->p_lens, medium);
     if (visible.is_black()) return std::nullopt;
     // p was chosen with density pdf_origin per area and the lens point with lens->pdf per
     // solid angle at p: Le |cos| We / (pdf_origin side_pdf pdf).
     return CameraConnection{
         *lens, Le * lens->We * (cosine / (pdf_origin * side_pdf * lens->pdf)) * visible};
+}
+
+std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scene, const Vec3& p,
+                                                               const Vec3& wi_arrival,
+                                                               const Medium& medium,
+                                                               const Spectrum& beta,
+                                                               const Vec2& u_lens, uint64_t& rays) {
+    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens);
+    if (!lens) return std::nullopt;
+    // The phase function's arguments point away from p: where the light came from
+    // (-wi_arrival) and where it goes (the lens).
+    const float phase = HenyeyGreenstein(medium.phase_asymmetry()).eval(-wi_arrival, lens->wi);
+    if (!(phase > 0.0f)) return std::nullopt;
+    ++rays;
+    const Spectrum visible = transmittance(scene, p, lens->p_lens, &medium);
+    if (visible.is_black()) return std::nullopt;
+    // A point in a medium has no cosine: the phase function is a density per solid angle.
+    return CameraConnection{*lens, beta * (phase / lens->pdf) * lens->We * visible};
 }
 
 }  // namespace glint

@@ -20,11 +20,25 @@ struct CameraConnection {
 /// Connects a non-specular surface vertex of a light path to the lens with `u_lens`: `beta`
 /// is the power the path carries to `si`, `bsdf` its BSDF (evaluated in importance mode,
 /// from where the particle came, si.wo, to the lens). nullopt when the lens cannot see the
-/// point or the shadow ray is blocked; the shadow ray is counted in `rays`.
+/// point or the shadow ray is blocked; the shadow ray is counted in `rays`. `medium` is the
+/// medium the particle travelled through to `si` (null: vacuum); the shadow ray starts in
+/// the medium on the lens's side of the surface and takes on the transmittance of its media.
 std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
                                                           const SurfaceInteraction& si,
                                                           const Bsdf& bsdf, const Spectrum& beta,
-                                                          const Vec2& u_lens, uint64_t& rays);
+                                                          const Vec2& u_lens, uint64_t& rays,
+                                                          const Medium* medium = nullptr);
+
+/// Connects a scattering point `p` of a light path inside `medium` to the lens with
+/// `u_lens`: `beta` is the power the path carries to p, arriving along `wi_arrival` (unit,
+/// the direction it travelled), and the medium's Henyey–Greenstein phase function scatters
+/// it towards the lens. nullopt when the lens cannot see p or the media and surfaces between
+/// let nothing through; the shadow ray is counted in `rays`.
+std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scene, const Vec3& p,
+                                                               const Vec3& wi_arrival,
+                                                               const Medium& medium,
+                                                               const Spectrum& beta,
+                                                               const Vec2& u_lens, uint64_t& rays);
 
 /// Connects the starting point `p` of a light path on an emitting surface (normal `n`, the
 /// side Light::sample_le chose) to the lens with `u_lens`. `pdf_origin` is the density the
@@ -32,10 +46,12 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
 /// the lens without hitting the light itself; a two-sided light chooses each side half the
 /// time, so the side facing the camera counts double. Points without a surface (point,
 /// spot lights) and lights at infinity are for the caller to leave out: they are invisible
-/// to the camera in every glint integrator.
+/// to the camera in every glint integrator. `medium` is the medium around the light (null:
+/// vacuum).
 std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
                                                               const Light& light, const Vec3& p,
                                                               const Vec3& n, float pdf_origin,
-                                                              const Vec2& u_lens, uint64_t& rays);
+                                                              const Vec2& u_lens, uint64_t& rays,
+                                                              const Medium* medium = nullptr);
 
 }  // namespace glint

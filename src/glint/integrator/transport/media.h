@@ -1,0 +1,33 @@
+#pragma once
+// Which medium a ray travels through, by the rules every walk that meets media shares:
+//
+//   medium_beyond      the medium a ray leaving a surface enters
+//   medium_containing  the medium around a point, found by a probe ray: where a light path
+//                      starts (a light names no medium of its own)
+//
+// Media fill closed shapes (glint.interface, glass with an interior): a surface that names
+// media switches the ray to the medium on the side it goes to; any other surface leaves the
+// ray in the medium it was in.
+#include <glint/core/interaction.h>
+#include <glint/core/medium.h>
+#include <glint/material/material.h>
+
+namespace glint {
+
+class Scene;
+
+/// The medium a ray leaving `si` along `direction` enters: the surface's interior or
+/// exterior where it bounds media, `current` where it bounds none.
+inline const Medium* medium_beyond(const SurfaceInteraction& si, const Vec3& direction,
+                                   const Medium* current) {
+    const MediumInterface media = si.material->medium_interface();
+    return media.is_transition() ? media.leaving(glm::dot(direction, si.ng) > 0.0f) : current;
+}
+
+/// The medium that contains `p`: the side a probe ray from p arrives at on the first surface
+/// that bounds media. A probe that meets none leaves p outside every closed medium, where
+/// the camera's `medium` is when the camera is outside them too (an unbounded atmosphere, as
+/// the foggy Cornell box's), and vacuum otherwise.
+const Medium* medium_containing(const Scene& scene, const Vec3& p);
+
+}  // namespace glint
