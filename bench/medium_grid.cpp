@@ -134,7 +134,7 @@ int main(int argc, char** argv) {
         "cloud: 128^3 voxels, {:.1f} % non-empty, max density {:.3f}; sigma_t {} at "
         "density 1; {} rays\n",
         100.0 * occupied / (128.0 * 128 * 128), cloud.max_value(), o.sigma, o.rays);
-    const Spectrum sigma_s(o.sigma * 0.8f), sigma_a(o.sigma * 0.2f);
+    const Rgb sigma_s(o.sigma * 0.8f), sigma_a(o.sigma * 0.2f);
     const HeterogeneousMedium grid_medium(cloud, Transform(), sigma_a, sigma_s, 0.0f, o.resolution);
     const HeterogeneousMedium global_medium(cloud, Transform(), sigma_a, sigma_s, 0.0f, 1);
     const std::vector<Ray> rays = make_rays(o.rays);

@@ -216,7 +216,8 @@ class SpectralFurnace : public ::testing::TestWithParam<std::string> {};
 TEST_P(SpectralFurnace, InnerSphereDisappears) {
     const std::string name = GetParam();
     if (test::kSanitizerBuild && (name == "sppm"))
-        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
+        GTEST_SKIP()
+            << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     const std::string extra = name == "vcm"    ? ", vcm_radius = 0.05"
                               : name == "sppm" ? ", photons = 5000"
                                                : "";
@@ -246,6 +247,83 @@ INSTANTIATE_TEST_SUITE_P(Integrators, SpectralFurnace,
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;
                          });
+
+// Media in spectral mode: their coefficients are uplifted at each path's wavelengths. In the
+// white furnace a sphere of chromatic, albedo-1 medium still disappears. (The light tracer's
+// spectral media are checked against volpath in test_light_media.cpp: in a furnace around
+// the camera its splats from the emitter next to the lens are too noisy to bound.)
+TEST(SpectralMediaSlow, AlbedoOneMediumDisappearsInTheFurnace) {
+    auto scene = [](int seed) {
+        return fmt::format(R"(
+            glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
+            glint.render{{ width = 16, height = 16, spp = 128, seed = {}, integrator = 'volpath',
+                          spectral = true }}
+            glint.sphere{{ center = {{0, 0, 0}}, radius = 3,
+                          material = glint.emissive{{ radiance = 2, two_sided = true }} }}
+            local fog = glint.medium{{ density = {{0.5, 2, 6}}, albedo = 1, g = 0.6 }}
+            glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
+                          material = glint.interface{{ interior = fog }} }}
+        )",
+                           seed);
+    };
+    for (int c = 0; c < 3; ++c) {
+        const Estimate e = image_mean(scene, 6, c);
+        EXPECT_LT(4.0 * e.se, 0.03 * 2.0) << "channel " << c;
+        EXPECT_NEAR(e.mean, 2.0, 4.0 * e.se + 2e-3 * 2.0) << "channel " << c;
+    }
+}
+
+namespace {
+
+// A floor seen through a slab of tinted glass (`absorption`, the interior medium's hook) or
+// through a slab of chromatic fog, lit by a wide emitter above.
+std::string floor_under_slab(const std::string& slab, bool spectral, int seed) {
+    return fmt::format(R"(
+        glint.camera{{ eye = {{0, 0, 0.5}}, look_at = {{0, 0, 0}}, up = {{0, 1, 0}}, fov = 40 }}
+        glint.render{{ width = 12, height = 12, spp = 64, seed = {}, integrator = 'volpath',
+                      max_depth = 12, spectral = {} }}
+        glint.quad{{ vertices = {{ {{-50, -50, 0}}, {{50, -50, 0}}, {{50, 50, 0}}, {{-50, 50, 0}} }},
+                    material = glint.diffuse{{ reflectance = 0.5 }} }}
+        glint.box{{ min = {{-1000, -1000, 1}}, max = {{1000, 1000, 2}}, material = {} }}
+        glint.quad{{ vertices = {{ {{-400, -400, 6}}, {{-400, 400, 6}}, {{400, 400, 6}}, {{400, -400, 6}} }},
+                    material = glint.emissive{{ radiance = 1 }} }}
+    )",
+                       seed, spectral ? "true" : "false", slab);
+}
+
+// Spectral and RGB renders of `slab` agree channel by channel within `tolerance` of the
+// RGB mean (exp(-sigma d) of an uplifted spectrum is not exp of the RGB value) plus noise.
+void expect_spectral_agrees_with_rgb(const std::string& slab, double tolerance) {
+    for (int c = 0; c < 3; ++c) {
+        const Estimate rgb =
+            image_mean([&](int seed) { return floor_under_slab(slab, false, seed); }, 4, c);
+        const Estimate spectral =
+            image_mean([&](int seed) { return floor_under_slab(slab, true, seed); }, 4, c);
+        const double noise = 4.0 * std::sqrt(rgb.se * rgb.se + spectral.se * spectral.se);
+        std::printf("channel %d: rgb %.5f, spectral %.5f, ratio %.4f\n", c, rgb.mean, spectral.mean,
+                    spectral.mean / rgb.mean);
+        EXPECT_NEAR(spectral.mean, rgb.mean, tolerance * rgb.mean + noise) << "channel " << c;
+    }
+}
+
+}  // namespace
+
+// Tinted glass keeps its colour in spectral mode (thin enough that exp(-sigma d) is nearly
+// linear, so spectral and RGB must agree closely). Read as RGB at the path's wavelengths,
+// the same coefficients would tint every wavelength alike: blue would pass about a third
+// more light than it does.
+TEST(SpectralMedia, AbsorbingGlassKeepsItsColour) {
+    expect_spectral_agrees_with_rgb("glint.dielectric{ ior = 1.5, absorption = {0.2, 0.05, 0.5} }",
+                                    0.05);
+}
+
+// Chromatic fog keeps its colour in spectral mode too.
+TEST(SpectralMedia, ChromaticFogKeepsItsColour) {
+    expect_spectral_agrees_with_rgb(
+        "glint.interface{ interior = glint.medium{ sigma_a = {0.1, 0.3, 0.6}, sigma_s = {0.6, 0.4, "
+        "0.2}, g = 0.3 } }",
+        0.1);
+}
 
 namespace {
 

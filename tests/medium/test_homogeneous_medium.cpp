@@ -17,12 +17,12 @@ using namespace glint::test;
 
 namespace {
 
-const Spectrum kSigmaA = uplift(Rgb(0.2f, 0.05f, 0.6f), RgbRole::unbounded);
-const Spectrum kSigmaS = uplift(Rgb(0.3f, 1.0f, 0.1f), RgbRole::unbounded);
+const Rgb kSigmaA(0.2f, 0.05f, 0.6f);
+const Rgb kSigmaS(0.3f, 1.0f, 0.1f);
 constexpr float kDepth = 1.7f;
 
 double expected(int c) {
-    const float sigma_t = kSigmaA.value(c) + kSigmaS.value(c);
+    const float sigma_t = kSigmaA[c] + kSigmaS[c];
     return std::exp(-static_cast<double>(sigma_t) * kDepth);
 }
 
@@ -74,7 +74,7 @@ TEST(HomogeneousSlab, CollisionDistancesFollowTheirDensity) {
     const Ray ray{Vec3(0.0f), Vec3(0.0f, 0.0f, 1.0f)};
     const int n = 100000, bins = 20;
     for (int hero = 0; hero < 3; ++hero) {
-        const double sigma = kSigmaA.value(hero) + kSigmaS.value(hero);
+        const double sigma = kSigmaA[hero] + kSigmaS[hero];
         std::vector<int> counts(bins + 1, 0);
         Rng rng(11 + hero);
         for (int i = 0; i < n; ++i) {

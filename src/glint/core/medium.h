@@ -85,26 +85,31 @@ public:
 
 /// A homogeneous medium that absorbs and does not scatter: transmittance exp(-sigma_a d)
 /// over a distance d (Beer-Lambert). The interior of an absorbing dielectric.
+///
+/// Media keep their coefficients as the colours the scene gave and uplift them when asked
+/// (uplift(..., RgbRole::unbounded)), as materials do: in spectral mode a path asks at its
+/// own wavelengths, in RGB mode the uplift is a copy.
 class AbsorbingMedium final : public Medium {
 public:
-    explicit AbsorbingMedium(const Spectrum& sigma_a) : m_sigma_a(sigma_a) {}
-    MediumPoint at(const Vec3&) const override { return MediumPoint{m_sigma_a}; }
+    explicit AbsorbingMedium(const Rgb& sigma_a) : m_sigma_a(sigma_a) {}
+    MediumPoint at(const Vec3&) const override { return MediumPoint{sigma_a()}; }
     void majorants(const Ray&, float t_max, MajorantVisitor visit) const override {
-        visit(MajorantSegment{0.0f, t_max, m_sigma_a});
+        visit(MajorantSegment{0.0f, t_max, sigma_a()});
     }
     Spectrum transmittance(const Ray& ray, float t, Rng&) const override {
         return transmittance(ray, t);
     }
     /// The closed form; needs no random numbers.
     Spectrum transmittance(const Ray& ray, float t) const {
-        return exp(m_sigma_a * (-t * glm::length(ray.direction)));
+        return exp(sigma_a() * (-t * glm::length(ray.direction)));
     }
     bool scatters() const override { return false; }
     bool is_homogeneous() const override { return true; }
-    const Spectrum& sigma_a() const { return m_sigma_a; }
+    Spectrum sigma_a() const { return uplift(m_sigma_a, RgbRole::unbounded); }
+    bool absorbs() const { return m_sigma_a.max_value() > 0.0f; }
 
 private:
-    Spectrum m_sigma_a;
+    Rgb m_sigma_a;
 };
 
 /// The media on the two sides of a surface: `inside` is the side its geometric normal

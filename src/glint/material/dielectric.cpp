@@ -13,8 +13,7 @@ namespace {
 
 class DielectricMaterial final : public Material {
 public:
-    DielectricMaterial(const FloatInput& ior, const Spectrum& absorption,
-                       const FloatInput& roughness,
+    DielectricMaterial(const FloatInput& ior, const Rgb& absorption, const FloatInput& roughness,
                        std::optional<spectral::DispersiveIor> dispersion)
         : m_ior(ior), m_interior(absorption), m_roughness(roughness), m_dispersion(dispersion) {}
     // The index per wavelength where the scene gave dispersion (RGB mode renders m_ior, its
@@ -36,7 +35,7 @@ public:
     // Beer-Lambert absorption inside is a medium that only absorbs: the first user of the
     // medium hook. Clear glass separates no media.
     MediumInterface intrinsic_media() const override {
-        if (m_interior.sigma_a().is_black()) return {};
+        if (!m_interior.absorbs()) return {};
         return MediumInterface{&m_interior, nullptr};
     }
 
@@ -136,8 +135,7 @@ std::unique_ptr<Material> make_dielectric_material(const Params& params, Texture
         params.fail("'absorption' must not be negative");
     }
     const FloatInput roughness = textures.scalar(params, "roughness", 0.0f, 0.0f, 1.0f);
-    return std::make_unique<DielectricMaterial>(ior, uplift(absorption, RgbRole::unbounded),
-                                                roughness, dispersion);
+    return std::make_unique<DielectricMaterial>(ior, absorption, roughness, dispersion);
 }
 
 }  // namespace glint

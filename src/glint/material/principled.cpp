@@ -31,7 +31,7 @@ struct PrincipledInputs {
     float clearcoat = 0.0f, clearcoat_roughness = 0.03f;
     float sheen = 0.0f, sheen_tint = 0.5f;
     SceneColor emission;
-    Spectrum absorption{0.0f};
+    Rgb absorption{0.0f};
     // The transmission's index per wavelength, from `abbe` (glTF KHR_materials_dispersion);
     // RGB mode renders `ior`, its value at 587.56 nm.
     std::optional<spectral::DispersiveIor> dispersion;
@@ -74,7 +74,7 @@ public:
     SceneColor emission() const override { return m_in.emission; }
     // Absorption inside (KHR_materials_volume) is a medium that only absorbs, as for glass.
     MediumInterface intrinsic_media() const override {
-        if (m_interior.sigma_a().is_black()) return {};
+        if (!m_interior.absorbs()) return {};
         return MediumInterface{&m_interior, nullptr};
     }
 
@@ -168,7 +168,7 @@ std::unique_ptr<Material> make_principled_material(const Params& params, Texture
     const Rgb absorption = params.get_rgb("absorption", Rgb(0.0f));
     if (!(absorption.min_value() >= 0.0f) || !absorption.is_finite())
         params.fail("'absorption' must be finite and not negative");
-    in.absorption = uplift(absorption, RgbRole::unbounded);
+    in.absorption = absorption;
     return std::make_unique<PrincipledMaterial>(in);
 }
 

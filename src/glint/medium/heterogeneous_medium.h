@@ -16,8 +16,8 @@ public:
     /// (grid.bounds(), in the grid's own space) in the scene; g is the Henyey-Greenstein
     /// asymmetry; `majorant_resolution` the majorant grid's cells per axis (1: one global
     /// majorant).
-    HeterogeneousMedium(VoxelGrid grid, const Transform& grid_to_world, const Spectrum& sigma_a,
-                        const Spectrum& sigma_s, float g,
+    HeterogeneousMedium(VoxelGrid grid, const Transform& grid_to_world, const Rgb& sigma_a,
+                        const Rgb& sigma_s, float g,
                         int majorant_resolution = MajorantGrid::kDefaultResolution);
 
     MediumPoint at(const Vec3& p) const override;
@@ -27,7 +27,9 @@ public:
     /// Ratio tracking against the majorant segments (an unbiased estimate).
     Spectrum transmittance(const Ray& ray, float t, Rng& rng) const override;
     float phase_asymmetry() const override { return m_g; }
-    bool scatters() const override { return !m_sigma_s.is_black() && m_grid.max_value() > 0.0f; }
+    bool scatters() const override {
+        return m_sigma_s.max_value() > 0.0f && m_grid.max_value() > 0.0f;
+    }
 
     const VoxelGrid& grid() const { return m_grid; }
     const MajorantGrid& majorant_grid() const { return m_majorants; }
@@ -37,9 +39,9 @@ private:
     MajorantGrid m_majorants;
     // Scene space to the grid's normalised space, [0, 1]^3 over its box.
     Transform m_world_to_unit;
-    Spectrum m_sigma_a;
-    Spectrum m_sigma_s;
-    Spectrum m_sigma_t;
+    // At density 1; colours, uplifted when asked (see AbsorbingMedium).
+    Rgb m_sigma_a;
+    Rgb m_sigma_s;
     float m_g;
 };
 

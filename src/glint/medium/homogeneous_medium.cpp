@@ -2,16 +2,27 @@
 
 namespace glint {
 
-HomogeneousMedium::HomogeneousMedium(const Spectrum& sigma_a, const Spectrum& sigma_s, float g,
-                                     const Spectrum& emission)
-    : m_point{sigma_a, sigma_s, emission}, m_sigma_t(sigma_a + sigma_s), m_g(g) {}
+HomogeneousMedium::HomogeneousMedium(const Rgb& sigma_a, const Rgb& sigma_s, float g,
+                                     const Rgb& emission)
+    : m_sigma_a(sigma_a), m_sigma_s(sigma_s), m_emission(emission), m_g(g) {}
+
+MediumPoint HomogeneousMedium::at(const Vec3&) const {
+    return MediumPoint{uplift(m_sigma_a, RgbRole::unbounded), uplift(m_sigma_s, RgbRole::unbounded),
+                       uplift(m_emission, RgbRole::illuminant)};
+}
+
+// sigma_a and sigma_s uplifted apart and added, as at() gives them: the majorant equals the
+// extinction at every wavelength, so delta tracking meets no null collisions.
+Spectrum HomogeneousMedium::sigma_t() const {
+    return uplift(m_sigma_a, RgbRole::unbounded) + uplift(m_sigma_s, RgbRole::unbounded);
+}
 
 void HomogeneousMedium::majorants(const Ray&, float t_max, MajorantVisitor visit) const {
-    visit(MajorantSegment{0.0f, t_max, m_sigma_t});
+    visit(MajorantSegment{0.0f, t_max, sigma_t()});
 }
 
 Spectrum HomogeneousMedium::transmittance(const Ray& ray, float t, Rng&) const {
-    return exp(m_sigma_t * (-t * glm::length(ray.direction)));
+    return exp(sigma_t() * (-t * glm::length(ray.direction)));
 }
 
 }  // namespace glint

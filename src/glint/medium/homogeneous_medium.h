@@ -9,23 +9,23 @@ namespace glint {
 class HomogeneousMedium final : public Medium {
 public:
     /// Coefficients per unit length; `emission` is the radiance of its sigma_a-weighted
-    /// source; g the Henyey-Greenstein asymmetry.
-    HomogeneousMedium(const Spectrum& sigma_a, const Spectrum& sigma_s, float g,
-                      const Spectrum& emission = Spectrum(0.0f));
+    /// source; g the Henyey-Greenstein asymmetry. Colours, uplifted when asked (see
+    /// AbsorbingMedium).
+    HomogeneousMedium(const Rgb& sigma_a, const Rgb& sigma_s, float g,
+                      const Rgb& emission = Rgb(0.0f));
 
-    MediumPoint at(const Vec3&) const override { return m_point; }
+    MediumPoint at(const Vec3&) const override;
     void majorants(const Ray& ray, float t_max, MajorantVisitor visit) const override;
     Spectrum transmittance(const Ray& ray, float t, Rng& rng) const override;
     float phase_asymmetry() const override { return m_g; }
-    bool scatters() const override { return !m_point.sigma_s.is_black(); }
-    bool emits() const override { return !(m_point.emission * m_point.sigma_a).is_black(); }
+    bool scatters() const override { return m_sigma_s.max_value() > 0.0f; }
+    bool emits() const override { return (m_emission * m_sigma_a).max_value() > 0.0f; }
     bool is_homogeneous() const override { return true; }
 
-    const Spectrum& sigma_t() const { return m_sigma_t; }
+    Spectrum sigma_t() const;
 
 private:
-    MediumPoint m_point;
-    Spectrum m_sigma_t;
+    Rgb m_sigma_a, m_sigma_s, m_emission;
     float m_g;
 };
 

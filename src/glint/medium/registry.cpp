@@ -22,7 +22,7 @@ Rgb non_negative_rgb(const Params& params, const char* name, const Rgb& fallback
 
 // What every medium type reads: its coefficients and phase function.
 struct Coefficients {
-    Spectrum sigma_a, sigma_s;
+    Rgb sigma_a, sigma_s;
     float g;
 };
 
@@ -53,8 +53,7 @@ Coefficients read_coefficients(const Params& params) {
     if (!(scale > 0.0f) || !std::isfinite(scale)) params.fail("'scale' must be a positive number");
     const float g = params.get_float("g", 0.0f);
     if (!(g > -1.0f && g < 1.0f)) params.fail("'g' must lie in (-1, 1)");
-    return {uplift(sigma_a * scale, RgbRole::unbounded),
-            uplift(sigma_s * scale, RgbRole::unbounded), g};
+    return {sigma_a * scale, sigma_s * scale, g};
 }
 
 //   emission  spectrum  0    radiance of the medium's emission (its source is sigma_a times it)
@@ -62,8 +61,7 @@ std::unique_ptr<Medium> make_homogeneous(const Params& params) {
     const Coefficients c = read_coefficients(params);
     const Rgb emission = non_negative_rgb(params, "emission", Rgb(0.0f));
     params.check_all_used();
-    return std::make_unique<HomogeneousMedium>(c.sigma_a, c.sigma_s, c.g,
-                                               uplift(emission, RgbRole::illuminant));
+    return std::make_unique<HomogeneousMedium>(c.sigma_a, c.sigma_s, c.g, emission);
 }
 
 int int_in(const Params& params, const char* name, int fallback, int lo, int hi) {

@@ -103,16 +103,6 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
                     settings.where_of("integrator"), settings.integrator));
 }
 
-// Media hold their coefficients as RGB channels; in spectral mode a path's values are
-// wavelengths, and multiplying the two would give wrong colours without a word.
-void check_spectral_media(const Scene& scene, const RenderSettings& settings) {
-    if (!settings.spectral || scene.media().empty()) return;
-    throw Error(
-        fmt::format("{}: participating media (glint.medium) are not spectral yet; "
-                    "render this scene without spectral = true",
-                    settings.where_of("spectral")));
-}
-
 // Integrators without wavelengths render in RGB; the user asked for spectra, so say so.
 void warn_if_not_spectral(const RenderSettings& settings,
                           const IntegratorCapabilities& capabilities,
@@ -145,7 +135,6 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
     for (const std::string& warning : warnings) warn(control, warning);
     const auto scene = build_scene(desc, settings);
     check_motion(*scene, settings, integrator->capabilities());
-    check_spectral_media(*scene, settings);
     warn_if_not_spectral(settings, integrator->capabilities(), control);
     for (const std::string& warning : scene->stats().warnings) warn(control, warning);
     throw_if_cancelled(control);

@@ -231,7 +231,7 @@ TEST(Visibility, WithoutInterfacesIsTheOcclusionQuery) {
 // A medium that only absorbs (an absorbing dielectric's inside) lets exp(-sigma_a d) through
 // a segment of length d, per channel, and the dielectric names it as its inside.
 TEST(Medium, AbsorbingMediumFollowsBeerLambert) {
-    const AbsorbingMedium medium(Spectrum(0.5f));
+    const AbsorbingMedium medium(Rgb(0.5f));
     const Ray ray{Vec3(0.0f), Vec3(0.0f, 2.0f, 0.0f), 0.0f, kInfinity};
     EXPECT_FLOAT_EQ(medium.transmittance(ray, 1.5f).average(), std::exp(-0.5f * 3.0f));
     const test::BuiltScene b = test::build_lua(R"(

@@ -14,7 +14,7 @@ namespace {
 
 // The cloud over the unit box, moved and stretched into the scene, so that the map from
 // the scene to the grid is exercised. Extinction 1.5 per unit at density 1, albedo 0.5.
-HeterogeneousMedium test_medium(int majorant_resolution, Spectrum sigma_t = Spectrum(1.5f)) {
+HeterogeneousMedium test_medium(int majorant_resolution, Rgb sigma_t = Rgb(1.5f)) {
     VoxelGrid cloud = make_fbm_cloud({.resolution = 24, .frequency = 4.0f, .coverage = 0.8f},
                                      Bounds3{Vec3(0.0f), Vec3(1.0f)});
     const Transform grid_to_world =
@@ -121,9 +121,8 @@ TEST(HeterogeneousMedium, DeltaAndRatioTrackingAgreeWithQuadrature) {
 
 TEST(HeterogeneousMedium, RatioTrackingHandlesEachChannel) {
     const float sigmas[3] = {2.0f, 4.0f, 8.0f};
-    const HeterogeneousMedium medium =
-        test_medium(16, uplift(Rgb(sigmas[0], sigmas[1], sigmas[2]), RgbRole::unbounded));
-    const HeterogeneousMedium grey = test_medium(16, Spectrum(1.0f));
+    const HeterogeneousMedium medium = test_medium(16, Rgb(sigmas[0], sigmas[1], sigmas[2]));
+    const HeterogeneousMedium grey = test_medium(16, Rgb(1.0f));
     Rng rng(5);
     const Ray ray = test_rays()[1];
     const double depth = optical_depth(grey, ray, 0.0, ray_end(ray));
