@@ -52,8 +52,17 @@ private:
         uint32_t depth = 0;
         bool in_tree = false;
     };
-    uint32_t build(std::vector<Entry>& entries, size_t begin, size_t end, uint64_t turns,
-                   uint32_t depth);
+    // One light as the build sees it (light_tree.cpp), and where a split goes.
+    struct BuildItem;
+    struct Split;
+    // Builds the subtree over items[begin, end) into the nodes from `index` on (a subtree of
+    // k lights takes 2k - 1 nodes in preorder, so every subtree's place is known before it is
+    // built and subtrees can be built in parallel with the same result).
+    void build(std::vector<BuildItem>& items, const std::vector<Entry>& entries, size_t begin,
+               size_t end, const Bounds3& centroids, uint32_t index, uint64_t turns,
+               uint32_t depth);
+    static Split choose_split(std::vector<BuildItem>& items, size_t begin, size_t end,
+                              const Bounds3& centroids, uint32_t depth);
     float probability_of_tree() const;
 
     std::vector<Node> m_nodes;
