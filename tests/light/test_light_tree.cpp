@@ -272,6 +272,22 @@ TEST(LightTree, DegenerateInputs) {
     EXPECT_EQ(single.sample(kPoints[0].p, kPoints[0].n, 0.7f).light, one[0].get());
 }
 
+// A chain that the split cost peels one light at a time: point lights along x at 1.8^k,
+// each twice as bright as the one before, round a cluster of 16 at the start. A light's
+// place in the tree is recorded in 64 bits, one per level: the build must switch to median
+// splits before the chain (66 levels and more) would go deeper than that, or the pmfs of
+// the deepest lights, which dominate near the cluster, would come out wrong.
+TEST(LightTree, DeepChainStaysWithin64Levels) {
+    std::vector<std::unique_ptr<Light>> lights;
+    for (int i = 0; i < 16; ++i)
+        lights.push_back(std::make_unique<PointLight>(Vec3(0, -1, 0), Spectrum(1.0f)));
+    for (int k = 0; k < 66; ++k)
+        lights.push_back(
+            std::make_unique<PointLight>(Vec3(std::pow(1.8f, static_cast<float>(k)), -1, 0),
+                                         Spectrum(std::pow(3.0f, static_cast<float>(k)))));
+    expect_consistent(lights);
+}
+
 TEST(DirectionCone, MergedHoldsBothCones) {
     Rng rng(5);
     int checked = 0;

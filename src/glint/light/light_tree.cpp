@@ -9,6 +9,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace glint {
 namespace {
@@ -163,10 +164,12 @@ struct Bin {
     // directions, times its size (the squared diagonal: the importance's distance clamp and
     // subtended cone both grow with the box's radius, and a flat or point-like box keeps a
     // size, unlike a surface area).
-    float cost() const {
-        if (count == 0) return 0.0f;
-        const Vec3 diagonal = bounds.extent();
-        return phi * orientation_measure(normals.cos_theta(), cos_theta_e) *
+    // In double: power times squared size overflows a float in scenes of large extent.
+    double cost() const {
+        if (count == 0) return 0.0;
+        const glm::dvec3 diagonal(bounds.extent());
+        return static_cast<double>(phi) *
+               static_cast<double>(orientation_measure(normals.cos_theta(), cos_theta_e)) *
                glm::dot(diagonal, diagonal);
     }
 };
@@ -241,14 +244,14 @@ LightTree::Split LightTree::choose_split(std::vector<BuildItem>& items, size_t b
         }
         Bin before;
         int best = -1;
-        float best_cost = kInfinity;
+        double best_cost = std::numeric_limits<double>::infinity();
         Bin best_before;
         for (int b = 1; b < kBins; ++b) {
             // Behind an empty bin the split is the one before it again.
             if (bins[b - 1].count == 0) continue;
             before.add(bins[b - 1]);
             if (after[b].count == 0) break;
-            const float cost = before.cost() + after[b].cost();
+            const double cost = before.cost() + after[b].cost();
             if (cost < best_cost) {
                 best_cost = cost;
                 best = b;
