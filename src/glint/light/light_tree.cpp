@@ -37,8 +37,6 @@ constexpr size_t kBinnedFrom = 16;
 // Subtrees with fewer lights are built by the calling thread: below this a task costs more
 // than it saves.
 constexpr size_t kParallelFrom = 4096;
-// Subtrees of at most this many lights fetch their leaves' memory ahead (see build).
-constexpr size_t kPrefetchBelow = 16;
 
 // A box round a set of unit directions: merged by min and max, far cheaper than merging
 // cones (which takes an acos per merge), and good enough for the split cost. The cone
@@ -212,8 +210,20 @@ LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbou
     });
     m_nodes.resize(2 * count - 1);
     m_leaf_lights.resize(count);
+    std::vector<uint32_t> leaf_nodes(count);
     const Bounds3 centroids = centroid_bounds(items.data(), items.data() + count);
-    build(items, bounded, 0, count, centroids, 0, 0, 0);
+    build_shape(items, 0, count, centroids, 0, 0, 0, leaf_nodes);
+    // The leaves read their entries in no order that memory can guess: in a flat loop of
+    // independent reads the processor keeps many of those misses in flight at once, where
+    // inside the recursion it would wait for each in turn.
+    tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const auto& range) {
+        for (size_t place = range.begin(); place != range.end(); ++place) {
+            const Entry& e = bounded[items[place].entry];
+            m_nodes[leaf_nodes[place]].bounds = e.bounds;
+            m_leaf_lights[place] = e.light;
+        }
+    });
+    merge_bounds(0, count);
 }
 
 // Where to split items[begin, end) (at least two): at the cheapest of the boundaries between
@@ -280,44 +290,29 @@ LightTree::Split LightTree::choose_split(std::vector<BuildItem>& items, size_t b
                  centroid_bounds(items.data() + middle, last)};
 }
 
-void LightTree::build(std::vector<BuildItem>& items, const std::vector<Entry>& entries,
-                      size_t begin, size_t end, const Bounds3& centroids, uint32_t index,
-                      uint64_t turns, uint32_t depth) {
+void LightTree::build_shape(std::vector<BuildItem>& items, size_t begin, size_t end,
+                            const Bounds3& centroids, uint32_t index, uint64_t turns,
+                            uint32_t depth, std::vector<uint32_t>& leaf_nodes) {
     if (end - begin == 1) {
-        const Entry& e = entries[items[begin].entry];
-        m_nodes[index] = Node{e.bounds, static_cast<uint32_t>(begin), true};
-        m_leaf_lights[begin] = e.light;
+        m_nodes[index].second_child_or_light = static_cast<uint32_t>(begin);
+        m_nodes[index].leaf = true;
+        leaf_nodes[begin] = index;
         const int light_index = items[begin].light_index;
         if (light_index >= 0 && static_cast<size_t>(light_index) < m_trails.size())
             m_trails[light_index] = Trail{turns, depth, true};
         return;
     }
     const Split split = choose_split(items, begin, end, centroids, depth);
-    // The leaves of a small subtree read their entries and write their trails in no order
-    // that memory can guess: ask for those lines all together, before the subtree is built,
-    // rather than one miss at a time.
-    const auto prefetch_leaves = [&](size_t first, size_t last) {
-        for (size_t i = first; i < last; ++i) {
-            const char* entry = reinterpret_cast<const char*>(&entries[items[i].entry]);
-            __builtin_prefetch(entry);
-            __builtin_prefetch(entry + sizeof(Entry) - 1);  // it may straddle two lines
-            const int light_index = items[i].light_index;
-            if (light_index >= 0 && static_cast<size_t>(light_index) < m_trails.size())
-                __builtin_prefetch(&m_trails[light_index], 1);
-        }
-    };
-    if (end - begin > kPrefetchBelow) {
-        if (split.middle - begin <= kPrefetchBelow) prefetch_leaves(begin, split.middle);
-        if (end - split.middle <= kPrefetchBelow) prefetch_leaves(split.middle, end);
-    }
     const uint32_t second = index + 2 * static_cast<uint32_t>(split.middle - begin);
+    m_nodes[index].second_child_or_light = second;
+    m_nodes[index].leaf = false;
     const auto build_first = [&] {
-        build(items, entries, begin, split.middle, split.first_centroids, index + 1, turns,
-              depth + 1);
+        build_shape(items, begin, split.middle, split.first_centroids, index + 1, turns, depth + 1,
+                    leaf_nodes);
     };
     const auto build_second = [&] {
-        build(items, entries, split.middle, end, split.second_centroids, second,
-              turns | (uint64_t(1) << depth), depth + 1);
+        build_shape(items, split.middle, end, split.second_centroids, second,
+                    turns | (uint64_t(1) << depth), depth + 1, leaf_nodes);
     };
     if (end - begin >= kParallelFrom) {
         tbb::parallel_invoke(build_first, build_second);
@@ -325,9 +320,22 @@ void LightTree::build(std::vector<BuildItem>& items, const std::vector<Entry>& e
         build_first();
         build_second();
     }
-    const LightBounds merged =
-        LightBounds::merged(m_nodes[index + 1].bounds, m_nodes[second].bounds);
-    m_nodes[index] = Node{merged, second, false};
+}
+
+// Each inner node's bounds from its children's, bottom up; subtrees in parallel as in
+// build_shape, each merge in the same order for any thread count.
+void LightTree::merge_bounds(uint32_t index, size_t count) {
+    if (count == 1) return;
+    const uint32_t second = m_nodes[index].second_child_or_light;
+    const size_t first_count = (second - index) / 2;
+    if (count >= kParallelFrom) {
+        tbb::parallel_invoke([&] { merge_bounds(index + 1, first_count); },
+                             [&] { merge_bounds(second, count - first_count); });
+    } else {
+        merge_bounds(index + 1, first_count);
+        merge_bounds(second, count - first_count);
+    }
+    m_nodes[index].bounds = LightBounds::merged(m_nodes[index + 1].bounds, m_nodes[second].bounds);
 }
 
 // The tree as a whole is one choice among the unbounded lights, all equally likely.
