@@ -241,9 +241,10 @@ LightTree::Split LightTree::choose_split(std::vector<BuildItem>& items, size_t b
     const int axis = widest_axis(extent);
     const bool spread = extent[axis] > 0.0f && std::isfinite(extent[axis]);
     const bool deep = depth + 1 + std::bit_width(count - 1) > 64;
-    if (spread && !deep && count >= kBinnedFrom) {
+    // (A spread so small that kBins / spread overflows is as good as none for the bins.)
+    const float scale = static_cast<float>(kBins) / extent[axis];
+    if (spread && std::isfinite(scale) && !deep && count >= kBinnedFrom) {
         const float low = centroids.min[axis];
-        const float scale = static_cast<float>(kBins) / extent[axis];
         const auto bin_of = [&](const BuildItem& item) {
             const int b = static_cast<int>((item.centroid()[axis] - low) * scale);
             return std::clamp(b, 0, kBins - 1);
