@@ -1,6 +1,7 @@
 // The light tree: its choice of light against its stated pmf (chi-square) at several
 // receiving points, pmfs over all lights summing to 1, a pmf of zero only for lights that
-// really cannot light the point, and the cone bounds it is built on.
+// really cannot light the point, the same tree for any thread count, degenerate inputs, and
+// the cone bounds it is built on.
 #include <glint/core/rng.h>
 #include <glint/geometry/mesh.h>
 #include <glint/geometry/sphere.h>
@@ -10,7 +11,9 @@
 
 #include <gtest/gtest.h>
 #include <support/chi_square.h>
+#include <tbb/global_control.h>
 
+#include <bit>
 #include <cmath>
 #include <map>
 #include <memory>
@@ -171,6 +174,118 @@ TEST(LightTree, PowerSelectionIsTheSameEverywhere) {
         EXPECT_EQ(sampler.pmf(kPoints[1].p, kPoints[1].n, *light), sampler.pmf(*light));
     }
     EXPECT_EQ(sampler.tree(), nullptr);
+}
+
+// The build splits subtrees among threads: the tree, and so every pmf and every choice,
+// must be the same bits for one thread and for two. Enough lights that the top levels are
+// built in parallel (subtrees of 4,096 lights and more).
+TEST(LightTree, SameForOneAndTwoThreads) {
+    const auto lights = mixed_lights(12000);
+    const auto build = [&](int threads) {
+        const tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+        return std::make_unique<LightSampler>(lights, LightSelection::kTree);
+    };
+    const auto one = build(1);
+    const auto two = build(2);
+    ASSERT_NE(one->tree(), nullptr);
+    EXPECT_EQ(one->tree()->node_count(), two->tree()->node_count());
+    int compared = 0;
+    for (const auto& [p, n] : kPoints) {
+        for (const auto& light : lights) {
+            ASSERT_EQ(std::bit_cast<uint32_t>(one->pmf(p, n, *light)),
+                      std::bit_cast<uint32_t>(two->pmf(p, n, *light)))
+                << "light " << light->index();
+            ++compared;
+        }
+        Rng rng(13);
+        for (int i = 0; i < 2000; ++i) {
+            const float u = rng.next_float();
+            const LightSampler::Choice a = one->sample(p, n, u), b = two->sample(p, n, u);
+            ASSERT_EQ(a.light, b.light);
+            ASSERT_EQ(std::bit_cast<uint32_t>(a.pmf), std::bit_cast<uint32_t>(b.pmf));
+        }
+    }
+    EXPECT_EQ(compared, static_cast<int>(std::size(kPoints) * lights.size()));
+}
+
+namespace {
+
+// Checks a tree over `lights` at the test points: pmfs summing to 1, and every choice
+// stating the pmf that pmf() gives.
+void expect_consistent(const std::vector<std::unique_ptr<Light>>& lights) {
+    const LightSampler sampler(lights, LightSelection::kTree);
+    ASSERT_NE(sampler.tree(), nullptr);
+    EXPECT_EQ(sampler.tree()->node_count(), 2 * lights.size() - 1);
+    for (const auto& [p, n] : kPoints) {
+        double sum = 0.0;
+        for (const auto& light : lights) sum += sampler.pmf(p, n, *light);
+        EXPECT_NEAR(sum, 1.0, 1e-5) << "at " << p.x << "," << p.y << "," << p.z;
+        Rng rng(17);
+        for (int i = 0; i < 1000; ++i) {
+            const LightSampler::Choice c = sampler.sample(p, n, rng.next_float());
+            ASSERT_NE(c.light, nullptr);
+            EXPECT_GT(c.pmf, 0.0f);
+            EXPECT_EQ(c.pmf, sampler.pmf(p, n, *c.light));
+        }
+    }
+}
+
+}  // namespace
+
+// Lights whose centroids all coincide leave no axis to split along; one or two lights are
+// the smallest trees. Each still gives a tree whose pmfs sum to 1 and match its choices.
+TEST(LightTree, DegenerateInputs) {
+    // 200 point lights at one point, of different intensities: every node's children have
+    // the same box, so the walk goes by power alone and each light's pmf is its share of the
+    // power (up to float rounding along the walk).
+    std::vector<std::unique_ptr<Light>> same_point;
+    double total = 0.0;
+    for (int i = 0; i < 200; ++i) {
+        same_point.push_back(
+            std::make_unique<PointLight>(Vec3(1.0f, -2.0f, 0.5f), Spectrum(1.0f + i % 7)));
+        total += 1.0 + i % 7;
+    }
+    expect_consistent(same_point);
+    const LightSampler sampler(same_point, LightSelection::kTree);
+    for (const auto& light : same_point) {
+        const double expected = light->power().luminance() / (4.0 * kPi * total);
+        EXPECT_NEAR(sampler.pmf(kPoints[2].p, kPoints[2].n, *light), expected, 1e-4 * expected);
+    }
+    // Quads at one place, facing every way: coincident centroids with different cones.
+    std::vector<std::unique_ptr<Light>> same_centre;
+    Rng rng(19);
+    for (int i = 0; i < 50; ++i)
+        same_centre.push_back(
+            quad_light(Vec3(0.5f, 0.5f, 0.5f), random_unit(rng), 0.3f, 2.0f, i % 3 == 0));
+    expect_consistent(same_centre);
+
+    std::vector<std::unique_ptr<Light>> two;
+    two.push_back(std::make_unique<PointLight>(Vec3(1, 0, 0), Spectrum(1.0f)));
+    two.push_back(quad_light(Vec3(-1, 1, 0), Vec3(0, -1, 0), 0.5f, 3.0f, false));
+    expect_consistent(two);
+
+    std::vector<std::unique_ptr<Light>> one;
+    one.push_back(std::make_unique<PointLight>(Vec3(2, 2, 2), Spectrum(1.0f)));
+    expect_consistent(one);
+    const LightSampler single(one, LightSelection::kTree);
+    EXPECT_EQ(single.pmf(kPoints[0].p, kPoints[0].n, *one[0]), 1.0f);
+    EXPECT_EQ(single.sample(kPoints[0].p, kPoints[0].n, 0.7f).light, one[0].get());
+}
+
+// A chain that the split cost peels one light at a time: point lights along x at 1.8^k,
+// each twice as bright as the one before, round a cluster of 16 at the start. A light's
+// place in the tree is recorded in 64 bits, one per level: the build must switch to median
+// splits before the chain (66 levels and more) would go deeper than that, or the pmfs of
+// the deepest lights, which dominate near the cluster, would come out wrong.
+TEST(LightTree, DeepChainStaysWithin64Levels) {
+    std::vector<std::unique_ptr<Light>> lights;
+    for (int i = 0; i < 16; ++i)
+        lights.push_back(std::make_unique<PointLight>(Vec3(0, -1, 0), Spectrum(1.0f)));
+    for (int k = 0; k < 66; ++k)
+        lights.push_back(
+            std::make_unique<PointLight>(Vec3(std::pow(1.8f, static_cast<float>(k)), -1, 0),
+                                         Spectrum(std::pow(3.0f, static_cast<float>(k)))));
+    expect_consistent(lights);
 }
 
 TEST(DirectionCone, MergedHoldsBothCones) {

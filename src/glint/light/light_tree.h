@@ -52,8 +52,21 @@ private:
         uint32_t depth = 0;
         bool in_tree = false;
     };
-    uint32_t build(std::vector<Entry>& entries, size_t begin, size_t end, uint64_t turns,
-                   uint32_t depth);
+    // One light as the build sees it (light_tree.cpp), and where a split goes.
+    struct BuildItem;
+    struct Split;
+    // The build, in three passes. First the shape of the subtree over items[begin, end),
+    // into the nodes from `index` on (a subtree of k lights takes 2k - 1 nodes in preorder,
+    // so every subtree's place is known before it is built and subtrees can be built in
+    // parallel with the same result); each leaf's node goes in leaf_nodes, by its place.
+    // Then the leaves' bounds and lights, from the entries; then every inner node's bounds,
+    // from its children's (merge_bounds).
+    void build_shape(std::vector<BuildItem>& items, size_t begin, size_t end,
+                     const Bounds3& centroids, uint32_t index, uint64_t turns, uint32_t depth,
+                     std::vector<uint32_t>& leaf_nodes);
+    void merge_bounds(uint32_t index, size_t count);
+    static Split choose_split(std::vector<BuildItem>& items, size_t begin, size_t end,
+                              const Bounds3& centroids, uint32_t depth);
     float probability_of_tree() const;
 
     std::vector<Node> m_nodes;
