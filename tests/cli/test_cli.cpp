@@ -179,6 +179,25 @@ TEST_F(CliTest, UsageErrorsExitWithTwo) {
     EXPECT_EQ(run_glint("--help").exit_code, 0);
 }
 
+// A scene with fog rendered by an integrator that ignores scattering media is one warning
+// that says which integrators render them; volpath and light give none.
+TEST_F(CliTest, FogOnAnIntegratorWithoutMediaWarns) {
+    const std::string scene = GLINT_SOURCE_DIR "/examples/foggy-cornell.lua";
+    auto result = run_glint(fmt::format(
+        "render {} --integrator path --res 8x8 --spp 1 -o {} --quiet", scene, out("a.exr")));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_EQ(count_of(result.output, "warning:"), 1u) << result.output;
+    EXPECT_NE(result.output.find("the 'path' integrator ignores participating media"),
+              std::string::npos)
+        << result.output;
+    for (const char* integrator : {"volpath", "light"}) {
+        result = run_glint(fmt::format("render {} --integrator {} --res 8x8 --spp 1 -o {} --quiet",
+                                       scene, integrator, out("a.exr")));
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(count_of(result.output, "warning"), 0u) << integrator << ": " << result.output;
+    }
+}
+
 // spectral = true on an integrator that renders in RGB is one warning naming the
 // setting's line; on a spectral integrator, none.
 TEST_F(CliTest, SpectralOnAnRgbIntegratorWarns) {

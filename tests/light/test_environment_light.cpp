@@ -337,7 +337,7 @@ std::string sphere_on_floor(const char* integrator, int spp, int seed) {
 // disappears. For the path tracer this holds only if the environment's light samples and
 // the BSDF's escaped rays together count the environment once; for Whitted, whose direct
 // light is the whole answer on a convex sphere, if light sampling alone is unbiased.
-TEST(EnvironmentLight, WhiteFurnaceSphereDisappears) {
+TEST(EnvironmentLightSlow, WhiteFurnaceSphereDisappears) {
     // A uniform map is light-sampled uniformly over the sphere, so half the light samples
     // fall below each point's horizon: within 1 % at every pixel, the sphere's rim included,
     // takes a few thousand samples.

@@ -230,7 +230,7 @@ TEST(QuadEmitterSlow, SamplingMatchesSolidAngleDensity) {
     }
 }
 
-TEST(QuadEmitter, FarAwayQuadOnAZoomedCap) {
+TEST(QuadEmitterSlow, FarAwayQuadOnAZoomedCap) {
     const TriangleMesh mesh("irregular", make_quad_mesh(Vec3(-0.5f, -0.4f, 0), Vec3(0.9f, -0.6f, 0),
                                                         Vec3(0.6f, 0.8f, 0), Vec3(-0.7f, 0.3f, 0)));
     const auto sampler = mesh.make_sampler(Transform());

@@ -45,6 +45,10 @@ struct IntegratorCapabilities {
     /// Follows hero wavelengths when the scene asks for `spectral = true`
     /// (docs/spectral.md); the others render in RGB, and the render says so.
     bool spectral = false;
+    /// Samples scattering (and emission) in participating media (glint.medium). The others
+    /// see through such media as if they were not there, absorbing glass apart, and the
+    /// render says so.
+    bool scattering_media = false;
     /// The debug views it can write, besides those every integrator's settings give.
     std::vector<DebugView> debug_views;
 

@@ -103,6 +103,21 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
                     settings.where_of("integrator"), settings.integrator));
 }
 
+// Only volpath and light sample scattering in media; the others would show the scene as if
+// its fog were not there, so say so.
+void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
+                           const IntegratorCapabilities& capabilities,
+                           const RenderControl& control) {
+    if (capabilities.scattering_media) return;
+    const bool scattering =
+        std::any_of(scene.media().begin(), scene.media().end(),
+                    [](const std::unique_ptr<Medium>& m) { return m->scatters() || m->emits(); });
+    if (!scattering) return;
+    warn(control, fmt::format("{}: the '{}' integrator ignores participating media that scatter "
+                              "or emit (glint.medium); 'volpath' and 'light' render them",
+                              settings.where_of("integrator"), settings.integrator));
+}
+
 // Integrators without wavelengths render in RGB; the user asked for spectra, so say so.
 void warn_if_not_spectral(const RenderSettings& settings,
                           const IntegratorCapabilities& capabilities,
@@ -136,6 +151,7 @@ RenderedImage render_image(const SceneDesc& desc, const RenderSettings& settings
     const auto scene = build_scene(desc, settings);
     check_motion(*scene, settings, integrator->capabilities());
     warn_if_not_spectral(settings, integrator->capabilities(), control);
+    warn_if_media_ignored(*scene, settings, integrator->capabilities(), control);
     for (const std::string& warning : scene->stats().warnings) warn(control, warning);
     throw_if_cancelled(control);
 

@@ -66,7 +66,7 @@ void expect_light_converges_to_path(
 }  // namespace
 
 // (a) The Cornell box: diffuse everywhere, the light seen directly (its one emitting side).
-TEST(LightTracer, ConvergesToPathOnTheCornellBox) {
+TEST(LightTracerSlow, ConvergesToPathOnTheCornellBox) {
     expect_light_converges_to_path(
         [](const std::string& integrator, int spp, int seed) {
             return example_with("cornell-box.lua",
@@ -154,4 +154,3 @@ TEST(LightTracerSlow, SeesThePointLightCausticBehindGlassLikeSppm) {
         EXPECT_GT(sppm[c].mean, 100.0 * path[c].mean) << "channel " << c;
     }
 }
-

@@ -148,7 +148,7 @@ TEST(LightTracerMediaSlow, ConvergesToVolpathInAFogBox) {
 
 // In spectral mode (the fog's coefficients uplifted at each path's wavelengths) the two agree
 // on the image's means over the same pixels.
-TEST(LightTracerMedia, SpectralMeansAgreeWithVolpathInAFogBox) {
+TEST(LightTracerMediaSlow, SpectralMeansAgreeWithVolpathInAFogBox) {
     constexpr int kImages = 4;
     const std::vector<uint8_t> mask = non_delta_mask(fog_box("path", 1, 1));
     const auto light =

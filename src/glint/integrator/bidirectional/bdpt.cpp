@@ -205,10 +205,12 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
             return result;
         }
         // qs.pdf_fwd of the light's own point is the light's choice times its area density.
+        // bdpt renders still scenes only (check_motion): any time sees the same scene.
+        constexpr float kStillTime = 0.0f;
         const std::optional<CameraConnection> connection =
             s == 1
-                ? connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.pdf_fwd, u_lens,
-                                                counter.rays)
+                ? connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, kStillTime,
+                                                qs.pdf_fwd, u_lens, counter.rays)
                 : connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens, counter.rays);
         if (!connection) return result;
         const CameraWiSample* const lens = &connection->lens;

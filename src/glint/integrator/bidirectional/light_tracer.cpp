@@ -75,6 +75,13 @@ std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, 
 
 RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    if (scene.camera().is_moving() && scene.camera().time_sampled()) {
+        // Camera::sample_wi joins a point to the lens where the camera stands at rest.
+        throw Error(
+            fmt::format("{}: integrator 'light' renders moving objects but not a moving "
+                        "camera yet; use path or sppm",
+                        m_settings.where_of("integrator")));
+    }
     m_light_media.clear();
     if (!scene.media().empty()) {
         // Where each light starts its paths, probed once from one point it emits from.
@@ -129,6 +136,10 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
     u_start.u_direction = chunk.next_2d();
     u_start.u_select = chunk.rng.next_float();
     const Vec2 u_light_lens = chunk.next_2d();
+    // One time per light path, uniform over the shutter, only when the scene moves (still
+    // scenes keep their paths bit for bit); every ray and connection of the path keeps it.
+    if (scene.camera().time_sampled())
+        u_start.time = scene.camera().time_of_sample(chunk.rng.next_float());
     const std::optional<LightPathStart> start = start_light_path(scene, u_start);
     if (!start) return;
     const bool with_media = !m_light_media.empty();
@@ -244,7 +255,8 @@ LightTracer::MediumEvent LightTracer::collide(const Scene& scene, Particle& part
         const Vec3 wi_arrival = glm::normalize(particle.ray.direction);
         const Vec2 u_lens = chunk.next_2d();
         const std::optional<CameraConnection> connection = connect_medium_point_to_camera(
-            scene, p, wi_arrival, *particle.medium, particle.splat_weight(), u_lens, chunk.rays);
+            scene, p, wi_arrival, particle.ray.time, *particle.medium, particle.splat_weight(),
+            u_lens, chunk.rays);
         if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
         if (particle.bounce++ == particle.max_bounces) return MediumEvent::kEnded;
         // The phase function's arguments point away from p: -wi_arrival is where the light
@@ -282,9 +294,9 @@ void LightTracer::connect_light_to_camera(const Scene& scene, const LightEmissio
                                           const Vec2& u_lens, Chunk& chunk) const {
     const bool has_surface = emission.n != Vec3(0.0f);
     if (!has_surface || light.is_infinite() || !(emission.pdf_pos > 0.0f)) return;
-    const std::optional<CameraConnection> connection =
-        connect_light_point_to_camera(scene, light, emission.ray.origin, emission.n,
-                                      light_pmf * emission.pdf_pos, u_lens, chunk.rays, medium);
+    const std::optional<CameraConnection> connection = connect_light_point_to_camera(
+        scene, light, emission.ray.origin, emission.n, emission.ray.time,
+        light_pmf * emission.pdf_pos, u_lens, chunk.rays, medium);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 

@@ -37,6 +37,8 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.spectral = true;
+        capabilities.motion_blur = true;  // each path carries its time (a still camera)
+        capabilities.scattering_media = true;
         return capabilities;
     }
 

@@ -31,6 +31,11 @@ public:
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     RenderStats render_pass(const Scene& scene, Film& film, int pass, Progress& progress) override;
     void scene_changed(SceneChange change) override;
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities = TileIntegrator::capabilities();
+        capabilities.scattering_media = true;
+        return capabilities;
+    }
 
     Spectrum li(const Ray& ray, const Scene& scene, Sampler& sampler, Arena& arena,
                 RayCounter& counter, AovSample* aov) const override;

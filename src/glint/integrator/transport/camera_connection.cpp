@@ -35,11 +35,9 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
                             beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We * visible};
 }
 
-std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
-                                                              const Light& light, const Vec3& p,
-                                                              const Vec3& n, float pdf_origin,
-                                                              const Vec2& u_lens, uint64_t& rays,
-                                                              const Medium* medium) {
+std::optional<CameraConnection> connect_light_point_to_camera(
+    const Scene& scene, const Light& light, const Vec3& p, const Vec3& n, float time,
+    float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens);
     if (!lens) return std::nullopt;
     const float cosine = glm::dot(n, lens->wi);
@@ -48,7 +46,8 @@ std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene
     if (Le.is_black()) return std::nullopt;
     const float side_pdf = light.emitted(p, n, -n).is_black() ? 1.0f : 0.5f;
     ++rays;
-    const Spectrum visible = transmittance(scene, p, lens->p_lens, medium);
+    const Spectrum visible =
+        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, medium);
     if (visible.is_black()) return std::nullopt;
     // p was chosen with density pdf_origin per area and the lens point with lens->pdf per
     // solid angle at p: Le |cos| We / (pdf_origin side_pdf pdf).
@@ -57,7 +56,7 @@ std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene
 }
 
 std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scene, const Vec3& p,
-                                                               const Vec3& wi_arrival,
+                                                               const Vec3& wi_arrival, float time,
                                                                const Medium& medium,
                                                                const Spectrum& beta,
                                                                const Vec2& u_lens, uint64_t& rays) {
@@ -68,7 +67,8 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
     const float phase = HenyeyGreenstein(medium.phase_asymmetry()).eval(-wi_arrival, lens->wi);
     if (!(phase > 0.0f)) return std::nullopt;
     ++rays;
-    const Spectrum visible = transmittance(scene, p, lens->p_lens, &medium);
+    const Spectrum visible =
+        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium);
     if (visible.is_black()) return std::nullopt;
     // A point in a medium has no cosine: the phase function is a density per solid angle.
     return CameraConnection{*lens, beta * (phase / lens->pdf) * lens->We * visible};

@@ -32,10 +32,10 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
 /// Connects a scattering point `p` of a light path inside `medium` to the lens with
 /// `u_lens`: `beta` is the power the path carries to p, arriving along `wi_arrival` (unit,
 /// the direction it travelled), and the medium's Henyey–Greenstein phase function scatters
-/// it towards the lens. nullopt when the lens cannot see p or the media and surfaces between
-/// let nothing through; the shadow ray is counted in `rays`.
+/// it towards the lens; `time` is the path's scene time. nullopt when the lens cannot see p or the
+/// media and surfaces between let nothing through; the shadow ray is counted in `rays`.
 std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scene, const Vec3& p,
-                                                               const Vec3& wi_arrival,
+                                                               const Vec3& wi_arrival, float time,
                                                                const Medium& medium,
                                                                const Spectrum& beta,
                                                                const Vec2& u_lens, uint64_t& rays);
@@ -46,12 +46,10 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
 /// the lens without hitting the light itself; a two-sided light chooses each side half the
 /// time, so the side facing the camera counts double. Points without a surface (point,
 /// spot lights) and lights at infinity are for the caller to leave out: they are invisible
-/// to the camera in every glint integrator. `medium` is the medium around the light (null:
-/// vacuum).
-std::optional<CameraConnection> connect_light_point_to_camera(const Scene& scene,
-                                                              const Light& light, const Vec3& p,
-                                                              const Vec3& n, float pdf_origin,
-                                                              const Vec2& u_lens, uint64_t& rays,
-                                                              const Medium* medium = nullptr);
+/// to the camera in every glint integrator. `time` is the path's scene time; `medium` the
+/// medium around the light (null: vacuum).
+std::optional<CameraConnection> connect_light_point_to_camera(
+    const Scene& scene, const Light& light, const Vec3& p, const Vec3& n, float time,
+    float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium = nullptr);
 
 }  // namespace glint
