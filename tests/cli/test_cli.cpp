@@ -196,6 +196,25 @@ TEST_F(CliTest, FogOnAnIntegratorWithoutMediaWarns) {
         EXPECT_EQ(result.exit_code, 0) << result.output;
         EXPECT_EQ(count_of(result.output, "warning"), 0u) << integrator << ": " << result.output;
     }
+    // A glowing medium: light paths start at lights only, so 'light' says it leaves the glow
+    // out; volpath does not.
+    const std::string glow = out("glow.lua");
+    {
+        std::ofstream file(glow);
+        file << "glint.camera{ eye = {0, 0, 3}, look_at = {0, 0, 0} }\n"
+                "glint.render{ width = 8, height = 8, spp = 1 }\n"
+                "local glow = glint.medium{ sigma_a = 1, emission = 2 }\n"
+                "glint.sphere{ radius = 1, material = glint.interface{ interior = glow } }\n";
+    }
+    result =
+        run_glint(fmt::format("render {} --integrator light -o {} --quiet", glow, out("b.exr")));
+    EXPECT_EQ(result.exit_code, 0) << result.output;
+    EXPECT_NE(result.output.find("the 'light' integrator ignores the light media emit"),
+              std::string::npos)
+        << result.output;
+    result =
+        run_glint(fmt::format("render {} --integrator volpath -o {} --quiet", glow, out("b.exr")));
+    EXPECT_EQ(count_of(result.output, "warning"), 0u) << result.output;
 }
 
 // spectral = true on an integrator that renders in RGB is one warning naming the

@@ -121,7 +121,8 @@ TEST_P(EveryIntegrator, WhiteFurnace) {
     const Held held = held_to(name);
     if (!held.not_furnace.empty()) GTEST_SKIP() << held.not_furnace;
     if (test::kSanitizerBuild && (name == "photon" || name == "sppm"))
-        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
+        GTEST_SKIP()
+            << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     auto scene = [&](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
@@ -146,8 +147,9 @@ TEST_P(EveryIntegrator, ClosedSphereAroundPointLight) {
     const std::string name = GetParam();
     const Held held = held_to(name);
     if (!held.not_point_light.empty()) GTEST_SKIP() << held.not_point_light;
-    if (test::kSanitizerBuild && (name == "mlt" || name == "bdpt"))
-        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
+    if (test::kSanitizerBuild && (name == "mlt" || name == "bdpt" || name == "vcm"))
+        GTEST_SKIP()
+            << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     auto scene = [&](int seed) {
         return fmt::format(R"(
             glint.camera{{ eye = {{0, 0, 0}}, look_at = {{0, 0, -1}}, fov = 70 }}
@@ -167,7 +169,8 @@ TEST_P(EveryIntegrator, ClosedSphereAroundPointLight) {
 TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
     const std::string name = GetParam();
     if (test::kSanitizerBuild && (name == "photon" || name == "radiosity"))
-        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
+        GTEST_SKIP()
+            << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     const Held held = held_to(name);
     const std::string scene = example_with_settings(
         "cornell-spheres.lua", fmt::format("width = 48, height = 48, spp = {}, seed = 7, "
@@ -189,7 +192,8 @@ TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
 TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
     const std::string name = GetParam();
     if (test::kSanitizerBuild && (name == "whitted" || name == "sppm"))
-        GTEST_SKIP() << "a convergence check of minutes under the sanitizers: the normal tree runs it";
+        GTEST_SKIP()
+            << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     const Held held = held_to(name);
     if (name == "photon" || name == "preview")
         GTEST_SKIP() << "16 renders of this scene take 100 s or more; its direct light is "

@@ -215,7 +215,7 @@ class SpectralFurnace : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpectralFurnace, InnerSphereDisappears) {
     const std::string name = GetParam();
-    if (test::kSanitizerBuild && (name == "sppm"))
+    if (test::kSanitizerBuild && (name == "sppm" || name == "vcm" || name == "bdpt"))
         GTEST_SKIP()
             << "a convergence check of minutes under the sanitizers: the normal tree runs it";
     const std::string extra = name == "vcm"    ? ", vcm_radius = 0.05"

@@ -45,10 +45,12 @@ struct IntegratorCapabilities {
     /// Follows hero wavelengths when the scene asks for `spectral = true`
     /// (docs/spectral.md); the others render in RGB, and the render says so.
     bool spectral = false;
-    /// Samples scattering (and emission) in participating media (glint.medium). The others
-    /// see through such media as if they were not there, absorbing glass apart, and the
-    /// render says so.
+    /// Samples scattering in participating media (glint.medium). The others see through
+    /// such media as if they were not there, absorbing glass apart, and the render says so.
     bool scattering_media = false;
+    /// Collects the light that media emit (glint.medium{ emission = ... }); the render says
+    /// so where a medium emits and the integrator does not.
+    bool emitting_media = false;
     /// The debug views it can write, besides those every integrator's settings give.
     std::vector<DebugView> debug_views;
 

@@ -103,19 +103,28 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
                     settings.where_of("integrator"), settings.integrator));
 }
 
-// Only volpath and light sample scattering in media; the others would show the scene as if
-// its fog were not there, so say so.
+// Only volpath and light sample scattering in media, and only volpath collects their
+// emission; the others would show the scene as if its fog (or its glow) were not there, so
+// say so.
 void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
                            const IntegratorCapabilities& capabilities,
                            const RenderControl& control) {
-    if (capabilities.scattering_media) return;
-    const bool scattering =
-        std::any_of(scene.media().begin(), scene.media().end(),
-                    [](const std::unique_ptr<Medium>& m) { return m->scatters() || m->emits(); });
-    if (!scattering) return;
-    warn(control, fmt::format("{}: the '{}' integrator ignores participating media that scatter "
-                              "or emit (glint.medium); 'volpath' and 'light' render them",
-                              settings.where_of("integrator"), settings.integrator));
+    const auto any_medium = [&](auto&& predicate) {
+        return std::any_of(scene.media().begin(), scene.media().end(),
+                           [&](const std::unique_ptr<Medium>& m) { return predicate(*m); });
+    };
+    if (!capabilities.scattering_media &&
+        any_medium([](const Medium& m) { return m.scatters() || m.emits(); })) {
+        warn(control, fmt::format("{}: the '{}' integrator ignores participating media that "
+                                  "scatter or emit (glint.medium); 'volpath' and 'light' render "
+                                  "them",
+                                  settings.where_of("integrator"), settings.integrator));
+    } else if (!capabilities.emitting_media &&
+               any_medium([](const Medium& m) { return m.emits(); })) {
+        warn(control, fmt::format("{}: the '{}' integrator ignores the light media emit "
+                                  "(glint.medium{{ emission = ... }}); 'volpath' renders it",
+                                  settings.where_of("integrator"), settings.integrator));
+    }
 }
 
 // Integrators without wavelengths render in RGB; the user asked for spectra, so say so.

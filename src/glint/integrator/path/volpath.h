@@ -34,6 +34,7 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
         capabilities.scattering_media = true;
+        capabilities.emitting_media = true;
         return capabilities;
     }
 
