@@ -227,6 +227,9 @@ TEST_P(EveryIntegrator, LightTreeConvergesToPowerSampling) {
                                 {{x + s, y, z + s}}, {{x - s, y, z + s}}}}, material = m }}
                 end
             end
+            -- An emitting box: a mesh light whose 12 triangles the tree chooses one by one.
+            glint.box{{ min = {{-1.3, 1.5, -0.3}}, max = {{-0.9, 1.9, 0.1}},
+                        material = glint.emissive{{ radiance = {{2, 2.5, 1.5}} }} }}
             glint.point_light{{ position = {{-1, 2, 1}}, intensity = 1.5 }}
             glint.spot_light{{ position = {{1, 2.5, 1}}, look_at = {{0, 0, 0}}, intensity = 4,
                               cone_angle = 30, falloff_start = 20 }}

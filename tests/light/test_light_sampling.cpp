@@ -230,6 +230,66 @@ TEST(QuadEmitterSlow, SamplingMatchesSolidAngleDensity) {
     }
 }
 
+namespace {
+
+// One piece of an emitting mesh (a triangle) as a sampler of its own: what next-event
+// estimation samples once the light tree has chosen that triangle.
+class PieceSampler final : public ShapeSampler {
+public:
+    PieceSampler(const ShapeSampler& whole, uint32_t piece) : m_whole(whole), m_piece(piece) {}
+    ShapeSample sample(const Vec3& ref, const Vec2& u, float u_select) const override {
+        return m_whole.sample_piece(ref, u, u_select, m_piece);
+    }
+    float pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const override {
+        return m_whole.pdf_piece(ref, p, n, m_piece);
+    }
+    float area() const override { return m_whole.piece_area(m_piece); }
+    ShapeSample sample_area(const Vec2& u, float u_select) const override {
+        return m_whole.sample_area(u, u_select);
+    }
+    Bounds3 bounds() const override { return m_whole.piece_bounds(m_piece); }
+
+private:
+    const ShapeSampler& m_whole;
+    uint32_t m_piece;
+};
+
+}  // namespace
+
+// Every triangle of an emitting mesh is a piece the light tree chooses on its own (a
+// rectangle stays whole); a piece is sampled in its own solid angle, or by area where the
+// thresholds say so, with the density given the piece. Checked on a quad's two triangles and
+// on a box (12 triangles, more than the whole mesh samples in solid angle) near and far.
+TEST(MeshEmitterPieces, EachTriangleMatchesItsDensity) {
+    const TriangleMesh square("square", make_quad_mesh(Vec3(-0.5f, -0.5f, 0), Vec3(0.5f, -0.5f, 0),
+                                                       Vec3(0.5f, 0.5f, 0), Vec3(-0.5f, 0.5f, 0)));
+    EXPECT_EQ(square.make_sampler(Transform())->piece_count(), 1u);
+    const TriangleMesh quad("irregular", make_quad_mesh(Vec3(-0.5f, -0.4f, 0), Vec3(0.9f, -0.6f, 0),
+                                                        Vec3(0.6f, 0.8f, 0), Vec3(-0.7f, 0.3f, 0)));
+    const TriangleMesh box("box", make_box_mesh(Vec3(-0.5f), Vec3(0.5f)));
+    struct Case {
+        const TriangleMesh* mesh;
+        uint32_t piece;
+        Vec3 ref;
+    };
+    const Case cases[] = {{&quad, 0, Vec3(0.1f, 0.2f, 0.8f)},
+                          {&quad, 1, Vec3(-0.8f, 0.9f, 0.6f)},
+                          {&box, 4, Vec3(0.2f, 0.1f, 0.9f)},
+                          {&box, 7, Vec3(2.0f, 6.0f, 9.0f)}};
+    for (const Case& c : cases) {
+        const auto whole = c.mesh->make_sampler(Transform());
+        ASSERT_EQ(whole->piece_count(), c.mesh->triangle_count());
+        const TriangleEmitter all = world_triangles(c.mesh->data(), Transform());
+        TriangleEmitter one;
+        one.triangles = {all.triangles[c.piece]};
+        const PieceSampler piece(*whole, c.piece);
+        EXPECT_NEAR(piece.area(), one.area(), 1e-5 * one.area());
+        expect_matches(
+            piece, c.ref, [&](const Vec3& w, double slack) { return one.pdf(c.ref, w, slack); },
+            c.mesh->name() + " piece " + std::to_string(c.piece), static_cast<int>(std::size(cases)));
+    }
+}
+
 TEST(QuadEmitterSlow, FarAwayQuadOnAZoomedCap) {
     const TriangleMesh mesh("irregular", make_quad_mesh(Vec3(-0.5f, -0.4f, 0), Vec3(0.9f, -0.6f, 0),
                                                         Vec3(0.6f, 0.8f, 0), Vec3(-0.7f, 0.3f, 0)));

@@ -42,8 +42,16 @@ std::unique_ptr<Light> quad_light(const Vec3& center, const Vec3& normal, float 
                                        two_sided);
 }
 
+// An emitting box: a mesh light of 12 pieces (its triangles) facing six ways.
+std::unique_ptr<Light> box_light(const Vec3& center, float size, float radiance) {
+    const Vec3 half(0.5f * size);
+    const TriangleMesh mesh("box", make_box_mesh(center - half, center + half));
+    return std::make_unique<AreaLight>(mesh.make_sampler(Transform()), Spectrum(radiance), false);
+}
+
 // A mixed scene of lights: quads facing every way (one- and two-sided), spheres, point and
-// spot lights, a dark quad, and a directional light (no bounds: chosen beside the tree).
+// spot lights, a dark quad, emitting boxes (lights of 12 pieces each) and a directional
+// light (no bounds: chosen beside the tree).
 std::vector<std::unique_ptr<Light>> mixed_lights(int quads) {
     Rng rng(7);
     std::vector<std::unique_ptr<Light>> lights;
@@ -59,10 +67,25 @@ std::vector<std::unique_ptr<Light>> mixed_lights(int quads) {
     lights.push_back(std::make_unique<SpotLight>(Vec3(2, -3, 1), Vec3(0, 1, 0.2f), Spectrum(8.0f),
                                                  25.0f, 15.0f));
     lights.push_back(quad_light(Vec3(0, 0, 1), Vec3(0, 0, 1), 0.5f, 0.0f, false));
+    lights.push_back(box_light(Vec3(-1, -1, 2), 0.8f, 3.0f));
+    lights.push_back(box_light(Vec3(3, 0.5f, -2), 0.4f, 6.0f));
     auto sun = std::make_unique<DirectionalLight>(Vec3(0.3f, -1, 0.2f), Spectrum(1.0f));
     sun->preprocess(Vec3(0.0f), 6.0f);
     lights.push_back(std::move(sun));
     return lights;
+}
+
+// One light's piece: what the tree chooses among.
+struct Piece {
+    const Light* light;
+    uint32_t piece;
+};
+std::vector<Piece> pieces_of(const std::vector<std::unique_ptr<Light>>& lights) {
+    std::vector<Piece> pieces;
+    for (const auto& light : lights) {
+        for (uint32_t i = 0; i < light->piece_count(); ++i) pieces.push_back({light.get(), i});
+    }
+    return pieces;
 }
 
 // Receiving points, with a surface's normal or none (zero: a point in a medium).
@@ -80,9 +103,11 @@ const Receiver kPoints[] = {{Vec3(0.0f), Vec3(0.0f)},
 TEST(LightTree, PmfsOverAllLightsSumToOne) {
     const auto lights = mixed_lights(300);
     const LightSampler sampler(lights, LightSelection::kTree);
+    const std::vector<Piece> pieces = pieces_of(lights);
+    ASSERT_EQ(pieces.size(), lights.size() + 2 * 11);  // two boxes of 12 pieces
     for (const auto& [p, n] : kPoints) {
         double sum = 0.0;
-        for (const auto& light : lights) sum += sampler.pmf(p, n, *light);
+        for (const Piece& piece : pieces) sum += sampler.pmf(p, n, *piece.light, piece.piece);
         EXPECT_NEAR(sum, 1.0, 1e-4) << "at " << p.x << "," << p.y << "," << p.z;
     }
 }
@@ -90,9 +115,14 @@ TEST(LightTree, PmfsOverAllLightsSumToOne) {
 TEST(LightTree, ChoicesMatchTheStatedPmf) {
     const auto lights = mixed_lights(60);
     const LightSampler sampler(lights, LightSelection::kTree);
+    const std::vector<Piece> pieces = pieces_of(lights);
+    // Each light's pieces' counts, from first_count[Light::index] on.
+    std::vector<size_t> first_count(lights.size() + 1, 0);
+    for (const auto& light : lights)
+        first_count[light->index() + 1] = first_count[light->index()] + light->piece_count();
     const int kDraws = 400000;
     for (const auto& [p, n] : kPoints) {
-        std::vector<int> counts(lights.size(), 0);
+        std::vector<int> counts(pieces.size(), 0);
         int mismatched_pmf = 0, none = 0;
         Rng rng(11);
         for (int i = 0; i < kDraws; ++i) {
@@ -101,17 +131,19 @@ TEST(LightTree, ChoicesMatchTheStatedPmf) {
                 ++none;
                 continue;
             }
-            ++counts[c.light->index()];
-            if (c.pmf != sampler.pmf(p, n, *c.light)) ++mismatched_pmf;
+            ASSERT_LT(c.piece, c.light->piece_count());
+            ++counts[first_count[c.light->index()] + c.piece];
+            if (c.pmf != sampler.pmf(p, n, *c.light, c.piece)) ++mismatched_pmf;
         }
         EXPECT_EQ(mismatched_pmf, 0);
         EXPECT_EQ(none, 0);
-        // Pearson's statistic over lights with enough expected draws; the rest pooled.
+        // Pearson's statistic over pieces with enough expected draws; the rest pooled.
         double statistic = 0.0, pooled_expected = 0.0, pooled_observed = 0.0;
         int bins = 0;
-        for (const auto& light : lights) {
-            const double expected = kDraws * static_cast<double>(sampler.pmf(p, n, *light));
-            const double observed = counts[light->index()];
+        for (const Piece& piece : pieces) {
+            const double expected =
+                kDraws * static_cast<double>(sampler.pmf(p, n, *piece.light, piece.piece));
+            const double observed = counts[first_count[piece.light->index()] + piece.piece];
             if (expected == 0.0) {
                 EXPECT_EQ(observed, 0.0) << "a light of pmf 0 was chosen";
                 continue;
@@ -144,24 +176,27 @@ TEST(LightTree, PmfIsZeroOnlyForLightsThatCannotReachThePoint) {
     const auto lights = mixed_lights(300);
     const LightSampler sampler(lights, LightSelection::kTree);
     Rng rng(3);
-    int zero = 0, reaching = 0;
+    int zero = 0, reaching = 0, box_faces_dismissed = 0;
     for (const auto& [p, n] : kPoints) {
-        for (const auto& light : lights) {
+        for (const auto& [light, piece] : pieces_of(lights)) {
             bool reaches = false;
             for (int i = 0; i < 400 && !reaches; ++i) {
-                const auto ls =
-                    light->sample_li(p, Vec2(rng.next_float(), rng.next_float()), rng.next_float());
+                const auto ls = light->sample_li_piece(p, Vec2(rng.next_float(), rng.next_float()),
+                                                       rng.next_float(), piece);
                 reaches = ls && !ls->L.is_black() && ls->pdf > 0.0f;
             }
-            const float pmf = sampler.pmf(p, n, *light);
+            const float pmf = sampler.pmf(p, n, *light, piece);
             if (pmf == 0.0f) {
                 ++zero;
-                EXPECT_FALSE(reaches)
-                    << "light " << light->index() << " reaches a point where its pmf is 0";
+                if (light->piece_count() > 1) ++box_faces_dismissed;
+                EXPECT_FALSE(reaches) << "light " << light->index() << " piece " << piece
+                                      << " reaches a point where its pmf is 0";
             }
             if (reaches) ++reaching;
         }
     }
+    // A box shows each point at most three faces: the tree must dismiss the others' pieces.
+    EXPECT_GT(box_faces_dismissed, 10);
     // Quads facing away from a point are about half of all: the test must see both kinds.
     EXPECT_GT(zero, 300);
     EXPECT_GT(reaching, 300);
@@ -190,11 +225,12 @@ TEST(LightTree, SameForOneAndTwoThreads) {
     ASSERT_NE(one->tree(), nullptr);
     EXPECT_EQ(one->tree()->node_count(), two->tree()->node_count());
     int compared = 0;
+    const std::vector<Piece> pieces = pieces_of(lights);
     for (const auto& [p, n] : kPoints) {
-        for (const auto& light : lights) {
-            ASSERT_EQ(std::bit_cast<uint32_t>(one->pmf(p, n, *light)),
-                      std::bit_cast<uint32_t>(two->pmf(p, n, *light)))
-                << "light " << light->index();
+        for (const auto& [light, piece] : pieces) {
+            ASSERT_EQ(std::bit_cast<uint32_t>(one->pmf(p, n, *light, piece)),
+                      std::bit_cast<uint32_t>(two->pmf(p, n, *light, piece)))
+                << "light " << light->index() << " piece " << piece;
             ++compared;
         }
         Rng rng(13);
@@ -202,10 +238,11 @@ TEST(LightTree, SameForOneAndTwoThreads) {
             const float u = rng.next_float();
             const LightSampler::Choice a = one->sample(p, n, u), b = two->sample(p, n, u);
             ASSERT_EQ(a.light, b.light);
+            ASSERT_EQ(a.piece, b.piece);
             ASSERT_EQ(std::bit_cast<uint32_t>(a.pmf), std::bit_cast<uint32_t>(b.pmf));
         }
     }
-    EXPECT_EQ(compared, static_cast<int>(std::size(kPoints) * lights.size()));
+    EXPECT_EQ(compared, static_cast<int>(std::size(kPoints) * pieces.size()));
 }
 
 namespace {

@@ -31,6 +31,7 @@ struct SurfaceInteraction {
     Vec3 wo{0.0f};           // direction towards the ray origin, unit length
     bool front_face = true;  // the ray arrived on the side ng points to
     int part = 0;  // which part of the shape was hit (CSG primitives have their own materials)
+    uint32_t primitive = 0;  // the hit's primitive in its shape (a mesh's triangle; HitRecord)
     const Material* material = nullptr;
     const Light* area_light = nullptr;  // set when the surface emits
 

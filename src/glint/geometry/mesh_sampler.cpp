@@ -117,20 +117,8 @@ ShapeSample MeshSampler::sample(const Vec3& ref, const Vec2& u, float u_select) 
         }
     } else if (!m_rectangle && m_normals.size() <= kSolidAngleTriangles) {
         const size_t tri = pick_triangle(u_select);
-        const Vec3* v = &m_vertices[3 * tri];
-        const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
-        const bool worth = may_pay(ref, centroid, m_normals[tri], triangle_area(tri));
-        const SphericalTriangle st = worth ? SphericalTriangle(ref, v[0], v[1], v[2])
-                                           : SphericalTriangle(ref, v[0], v[0], v[0]);
-        if (worth && spherical_pays(st.solid_angle())) {
-            s.p = on_plane(ref, st.sample(u), v[0], m_normals[tri]);
-            s.n = m_normals[tri];
-            s.pdf = static_cast<float>(triangle_area(tri) / m_area / st.solid_angle());
-            return s;
-        }
-        s.p = point_in(tri, u);
-        s.n = m_normals[tri];
-        s.pdf = area_to_solid_angle_pdf(m_inverse_area, ref, s.p, s.n);
+        s = sample_triangle(ref, u, tri);
+        s.pdf *= triangle_area(tri) * m_inverse_area;  // times the triangle's probability
         return s;
     }
     const size_t tri = pick_triangle(u_select);
@@ -147,15 +135,66 @@ float MeshSampler::pdf(const Vec3& ref, const Vec3& p, const Vec3& n) const {
         if (spherical_pays(sr.solid_angle())) return static_cast<float>(1.0 / sr.solid_angle());
     } else if (!m_rectangle && m_normals.size() <= kSolidAngleTriangles) {
         const size_t tri = triangle_holding(p);
-        const Vec3* v = &m_vertices[3 * tri];
-        const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
-        if (!may_pay(ref, centroid, m_normals[tri], triangle_area(tri)))
-            return area_to_solid_angle_pdf(m_inverse_area, ref, p, n);
-        const SphericalTriangle st(ref, v[0], v[1], v[2]);
-        if (spherical_pays(st.solid_angle()))
-            return static_cast<float>(triangle_area(tri) / m_area / st.solid_angle());
+        return pdf_in_triangle(ref, p, n, tri) * (triangle_area(tri) * m_inverse_area);
     }
     return area_to_solid_angle_pdf(m_inverse_area, ref, p, n);
+}
+
+ShapeSample MeshSampler::sample_triangle(const Vec3& ref, const Vec2& u, size_t tri) const {
+    const Vec3* v = &m_vertices[3 * tri];
+    const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
+    const float area = triangle_area(tri);
+    const bool worth = may_pay(ref, centroid, m_normals[tri], area);
+    const SphericalTriangle st = worth ? SphericalTriangle(ref, v[0], v[1], v[2])
+                                       : SphericalTriangle(ref, v[0], v[0], v[0]);
+    ShapeSample s;
+    s.n = m_normals[tri];
+    if (worth && spherical_pays(st.solid_angle())) {
+        s.p = on_plane(ref, st.sample(u), v[0], m_normals[tri]);
+        s.pdf = static_cast<float>(1.0 / st.solid_angle());
+        return s;
+    }
+    s.p = point_in(tri, u);
+    s.pdf = area_to_solid_angle_pdf(1.0f / area, ref, s.p, s.n);
+    return s;
+}
+
+float MeshSampler::pdf_in_triangle(const Vec3& ref, const Vec3& p, const Vec3& n,
+                                   size_t tri) const {
+    const Vec3* v = &m_vertices[3 * tri];
+    const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
+    const float area = triangle_area(tri);
+    if (may_pay(ref, centroid, m_normals[tri], area)) {
+        const SphericalTriangle st(ref, v[0], v[1], v[2]);
+        if (spherical_pays(st.solid_angle())) return static_cast<float>(1.0 / st.solid_angle());
+    }
+    return area_to_solid_angle_pdf(1.0f / area, ref, p, n);
+}
+
+Bounds3 MeshSampler::piece_bounds(uint32_t piece) const {
+    if (!is_piece(piece)) return m_bounds;
+    Bounds3 b;
+    for (int k = 0; k < 3; ++k) b.expand(m_vertices[3 * piece + k]);
+    return b;
+}
+
+DirectionCone MeshSampler::piece_normal_cone(uint32_t piece) const {
+    if (!is_piece(piece)) return m_normal_cone;
+    return {m_normals[piece], 1.0f, false};
+}
+
+float MeshSampler::piece_area(uint32_t piece) const {
+    return is_piece(piece) ? triangle_area(piece) : m_area;
+}
+
+ShapeSample MeshSampler::sample_piece(const Vec3& ref, const Vec2& u, float u_select,
+                                      uint32_t piece) const {
+    return is_piece(piece) ? sample_triangle(ref, u, piece) : sample(ref, u, u_select);
+}
+
+float MeshSampler::pdf_piece(const Vec3& ref, const Vec3& p, const Vec3& n,
+                             uint32_t piece) const {
+    return is_piece(piece) ? pdf_in_triangle(ref, p, n, piece) : pdf(ref, p, n);
 }
 
 // A triangle chosen with probability proportional to its area.

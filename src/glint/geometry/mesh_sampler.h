@@ -42,11 +42,28 @@ public:
     Bounds3 bounds() const override { return m_bounds; }
     DirectionCone normal_cone() const override { return m_normal_cone; }
 
+    /// Every triangle is a piece, except in a rectangle, which is sampled whole.
+    uint32_t piece_count() const override {
+        return m_rectangle ? 1u : static_cast<uint32_t>(m_normals.size());
+    }
+    Bounds3 piece_bounds(uint32_t piece) const override;
+    DirectionCone piece_normal_cone(uint32_t piece) const override;
+    float piece_area(uint32_t piece) const override;
+    /// The triangle in solid angle where that pays (the same limits as sample()), by area
+    /// otherwise.
+    ShapeSample sample_piece(const Vec3& ref, const Vec2& u, float u_select,
+                             uint32_t piece) const override;
+    float pdf_piece(const Vec3& ref, const Vec3& p, const Vec3& n, uint32_t piece) const override;
+
 private:
     struct Rectangle {
         Vec3 corner, edge_x, edge_y;
     };
     size_t pick_triangle(float u_select) const;
+    bool is_piece(uint32_t piece) const { return !m_rectangle && piece < m_normals.size(); }
+    // A point on triangle `tri` seen from `ref`, with its density given the triangle.
+    ShapeSample sample_triangle(const Vec3& ref, const Vec2& u, size_t tri) const;
+    float pdf_in_triangle(const Vec3& ref, const Vec3& p, const Vec3& n, size_t tri) const;
     Vec3 rectangle_centre() const {
         return m_rectangle->corner + 0.5f * (m_rectangle->edge_x + m_rectangle->edge_y);
     }

@@ -49,6 +49,25 @@ public:
     // World-space box and the cone holding every outward normal, for the light tree.
     virtual Bounds3 bounds() const = 0;
     virtual DirectionCone normal_cone() const { return DirectionCone::whole_sphere(); }
+
+    // Pieces: parts of the shape that the light tree chooses among one by one (the triangles
+    // of an emitting mesh), so that a large emitter's near parts get its samples. A shape
+    // sampled whole (a sphere, a rectangle) is one piece, and the calls below are then
+    // those above. A piece's index is the primitive index of its hits (HitRecord).
+    virtual uint32_t piece_count() const { return 1; }
+    // The box, normals and area of one piece.
+    virtual Bounds3 piece_bounds(uint32_t) const { return bounds(); }
+    virtual DirectionCone piece_normal_cone(uint32_t) const { return normal_cone(); }
+    virtual float piece_area(uint32_t) const { return area(); }
+    // sample() within one piece: the density is the point's given that piece.
+    virtual ShapeSample sample_piece(const Vec3& ref, const Vec2& u, float u_select,
+                                     uint32_t) const {
+        return sample(ref, u, u_select);
+    }
+    // The density of sample_piece choosing `p` (normal `n`) on `piece`.
+    virtual float pdf_piece(const Vec3& ref, const Vec3& p, const Vec3& n, uint32_t) const {
+        return pdf(ref, p, n);
+    }
 };
 
 class Shape {

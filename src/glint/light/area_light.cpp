@@ -5,8 +5,16 @@ namespace glint {
 
 std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
                                                 float u_select) const {
+    return arriving_from(ref, m_shape->sample(ref, u, u_select));
+}
+
+std::optional<LightSample> AreaLight::sample_li_piece(const Vec3& ref, const Vec2& u,
+                                                      float u_select, uint32_t piece) const {
+    return arriving_from(ref, m_shape->sample_piece(ref, u, u_select, piece));
+}
+
+std::optional<LightSample> AreaLight::arriving_from(const Vec3& ref, const ShapeSample& s) const {
     std::optional<LightSample> result;  // one named result, built in the caller's storage
-    const ShapeSample s = m_shape->sample(ref, u, u_select);
     const Vec3 d = s.p - ref;
     const float dist2 = glm::dot(d, d);
     if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf) || !(dist2 > 0.0f)) return result;
@@ -23,6 +31,11 @@ std::optional<LightSample> AreaLight::sample_li(const Vec3& ref, const Vec2& u,
 
 float AreaLight::pdf_li(const Vec3& ref, const SurfaceInteraction& on_light) const {
     return m_shape->pdf(ref, on_light.p, on_light.ng);
+}
+
+float AreaLight::pdf_li_piece(const Vec3& ref, const SurfaceInteraction& on_light,
+                              uint32_t piece) const {
+    return m_shape->pdf_piece(ref, on_light.p, on_light.ng, piece);
 }
 
 Spectrum AreaLight::le(const SurfaceInteraction& si, const Vec3& w) const {
@@ -74,10 +87,19 @@ Spectrum AreaLight::power() const {
 // A surface emits over the hemisphere about each normal (pi / 2 past it), on both sides of
 // it when two-sided.
 std::optional<LightBounds> AreaLight::bounds() const {
+    return bounds_of(m_shape->bounds(), m_shape->normal_cone(), power().luminance());
+}
+
+std::optional<LightBounds> AreaLight::piece_bounds(uint32_t piece) const {
+    const float phi = power().luminance() * (m_shape->piece_area(piece) / m_shape->area());
+    return bounds_of(m_shape->piece_bounds(piece), m_shape->piece_normal_cone(piece), phi);
+}
+
+LightBounds AreaLight::bounds_of(const Bounds3& box, const DirectionCone& normals, float phi) const {
     LightBounds b;
-    b.bounds = m_shape->bounds();
-    b.phi = std::max(0.0f, power().luminance());
-    b.normals = m_shape->normal_cone();
+    b.bounds = box;
+    b.phi = std::max(0.0f, phi);
+    b.normals = normals;
     b.cos_theta_e = 0.0f;
     b.two_sided = m_two_sided;
     return b;

@@ -21,6 +21,12 @@ public:
     Spectrum le(const SurfaceInteraction& si, const Vec3& w) const override;
     Spectrum power() const override;
     std::optional<LightBounds> bounds() const override;
+    uint32_t piece_count() const override { return m_shape->piece_count(); }
+    std::optional<LightBounds> piece_bounds(uint32_t piece) const override;
+    std::optional<LightSample> sample_li_piece(const Vec3& ref, const Vec2& u, float u_select,
+                                               uint32_t piece) const override;
+    float pdf_li_piece(const Vec3& ref, const SurfaceInteraction& on_light,
+                       uint32_t piece) const override;
     /// A point uniform by area, a direction cosine-weighted about the normal (on the side
     /// u_select picks, when two-sided); n is the normal of the side the ray leaves.
     std::optional<LightEmission> sample_le(const Vec2& u_position, const Vec2& u_direction,
@@ -41,6 +47,10 @@ public:
     }
 
 private:
+    // The light sample at the shape's point `s` seen from `ref`.
+    std::optional<LightSample> arriving_from(const Vec3& ref, const ShapeSample& s) const;
+    LightBounds bounds_of(const Bounds3& box, const DirectionCone& normals, float phi) const;
+
     std::unique_ptr<ShapeSampler> m_shape;
     SceneColor m_radiance;
     bool m_two_sided;

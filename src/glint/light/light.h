@@ -93,6 +93,30 @@ public:
     /// lights without a place in the scene (environment, directional), which the tree
     /// chooses alongside its own.
     virtual std::optional<LightBounds> bounds() const { return std::nullopt; }
+
+    /// Pieces: the parts of one light that the light tree chooses among one by one, the
+    /// triangles of an emitting mesh (ShapeSampler::piece_count), so that every emissive
+    /// triangle is a light of its own for next-event estimation while the mesh stays one
+    /// light everywhere else (power, light paths, Whitted's sum over lights). A light of
+    /// one piece answers the calls below as the whole-light calls above.
+    virtual uint32_t piece_count() const { return 1; }
+    /// The bounds of piece `piece` (< piece_count()).
+    virtual std::optional<LightBounds> piece_bounds(uint32_t piece) const {
+        (void)piece;
+        return bounds();
+    }
+    /// sample_li within piece `piece`: the density is the point's given that piece.
+    virtual std::optional<LightSample> sample_li_piece(const Vec3& ref, const Vec2& u,
+                                                       float u_select, uint32_t piece) const {
+        (void)piece;
+        return sample_li(ref, u, u_select);
+    }
+    /// The density of sample_li_piece choosing `on_light`'s point, which lies on `piece`.
+    virtual float pdf_li_piece(const Vec3& ref, const SurfaceInteraction& on_light,
+                               uint32_t piece) const {
+        (void)piece;
+        return pdf_li(ref, on_light);
+    }
     virtual bool is_delta() const = 0;
     /// Whether the emission is a delta in direction (a directional light): its rays come in
     /// parallel from a disc outside the scene, so bidirectional methods treat its vertex as

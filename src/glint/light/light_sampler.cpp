@@ -10,10 +10,18 @@ LightTree build_tree(const std::vector<std::unique_ptr<Light>>& lights) {
     std::vector<const Light*> unbounded;
     bounded.reserve(lights.size());
     for (const std::unique_ptr<Light>& light : lights) {
-        if (std::optional<LightBounds> b = light->bounds())
-            bounded.push_back({light.get(), *b});
-        else
+        const uint32_t pieces = light->piece_count();
+        if (pieces > 1) {
+            // Every piece (an emitting mesh's triangle) a leaf of its own.
+            for (uint32_t piece = 0; piece < pieces; ++piece) {
+                if (std::optional<LightBounds> b = light->piece_bounds(piece))
+                    bounded.push_back({light.get(), *b, piece});
+            }
+        } else if (std::optional<LightBounds> b = light->bounds()) {
+            bounded.push_back({light.get(), *b, 0});
+        } else {
             unbounded.push_back(light.get());
+        }
     }
     return LightTree(std::move(bounded), std::move(unbounded), lights.size());
 }

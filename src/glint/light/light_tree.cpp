@@ -123,8 +123,8 @@ struct LightTree::BuildItem {
     DirectionBox normals;
     float phi = 0.0f;
     float cos_theta_e = 1.0f;
-    uint32_t entry = 0;    // in the entries
-    int light_index = -1;  // Light::index, read once here rather than at the leaf
+    uint32_t entry = 0;  // in the entries
+    int64_t trail = -1;  // where its Trail goes in m_trails (-1: none)
 
     Vec3 centroid() const { return bounds.center(); }
 };
@@ -192,7 +192,17 @@ Bounds3 centroid_bounds(const Item* first, const Item* last) {
 
 LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbounded,
                      size_t light_count)
-    : m_unbounded(std::move(unbounded)), m_trails(light_count) {
+    : m_unbounded(std::move(unbounded)) {
+    // Each light's trails take as many places as it has pieces here.
+    std::vector<size_t> pieces(light_count, 0);
+    for (const Entry& e : bounded) {
+        const int index = e.light->index();
+        if (index >= 0 && static_cast<size_t>(index) < light_count)
+            pieces[index] = std::max<size_t>(pieces[index], size_t(e.piece) + 1);
+    }
+    m_first_trail.resize(light_count + 1, 0);
+    for (size_t i = 0; i < light_count; ++i) m_first_trail[i + 1] = m_first_trail[i] + pieces[i];
+    m_trails.resize(m_first_trail.back());
     // Lights that emit nothing never need a sample: leaving them out keeps their pmf 0.
     std::erase_if(bounded, [](const Entry& e) { return !(e.bounds.phi > 0.0f); });
     if (bounded.empty()) return;
@@ -203,13 +213,16 @@ LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbou
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const auto& range) {
         for (size_t i = range.begin(); i != range.end(); ++i) {
             const LightBounds& b = bounded[i].bounds;
-            items[i] =
-                BuildItem{b.bounds,      DirectionBox::of(b.normals), b.phi,
-                          b.cos_theta_e, static_cast<uint32_t>(i),    bounded[i].light->index()};
+            const int index = bounded[i].light->index();
+            const bool indexed = index >= 0 && static_cast<size_t>(index) < light_count;
+            const int64_t trail =
+                indexed ? static_cast<int64_t>(m_first_trail[index] + bounded[i].piece) : -1;
+            items[i] = BuildItem{b.bounds,      DirectionBox::of(b.normals), b.phi,
+                                 b.cos_theta_e, static_cast<uint32_t>(i),    trail};
         }
     });
     m_nodes.resize(2 * count - 1);
-    m_leaf_lights.resize(count);
+    m_leaves.resize(count);
     std::vector<uint32_t> leaf_nodes(count);
     const Bounds3 centroids = centroid_bounds(items.data(), items.data() + count);
     build_shape(items, 0, count, centroids, 0, 0, 0, leaf_nodes);
@@ -220,7 +233,7 @@ LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbou
         for (size_t place = range.begin(); place != range.end(); ++place) {
             const Entry& e = bounded[items[place].entry];
             m_nodes[leaf_nodes[place]].bounds = e.bounds;
-            m_leaf_lights[place] = e.light;
+            m_leaves[place] = Leaf{e.light, e.piece};
         }
     });
     merge_bounds(0, count);
@@ -298,9 +311,7 @@ void LightTree::build_shape(std::vector<BuildItem>& items, size_t begin, size_t 
         m_nodes[index].second_child_or_light = static_cast<uint32_t>(begin);
         m_nodes[index].leaf = true;
         leaf_nodes[begin] = index;
-        const int light_index = items[begin].light_index;
-        if (light_index >= 0 && static_cast<size_t>(light_index) < m_trails.size())
-            m_trails[light_index] = Trail{turns, depth, true};
+        if (items[begin].trail >= 0) m_trails[items[begin].trail] = Trail{turns, depth, true};
         return;
     }
     const Split split = choose_split(items, begin, end, centroids, depth);
@@ -369,17 +380,25 @@ LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const
             node = second;
         }
     }
-    return {m_leaf_lights[m_nodes[node].second_child_or_light], pmf};
+    const Leaf& leaf = m_leaves[m_nodes[node].second_child_or_light];
+    return {leaf.light, pmf, leaf.piece};
 }
 
-float LightTree::pmf(const Vec3& p, const Vec3& n, const Light& light) const {
+const LightTree::Trail* LightTree::trail_of(int light_index, uint32_t piece) const {
+    if (light_index < 0 || static_cast<size_t>(light_index) + 1 >= m_first_trail.size())
+        return nullptr;
+    const size_t place = m_first_trail[light_index] + piece;
+    if (place >= m_first_trail[light_index + 1]) return nullptr;
+    return &m_trails[place];
+}
+
+float LightTree::pmf(const Vec3& p, const Vec3& n, const Light& light, uint32_t piece) const {
     const float p_tree = probability_of_tree();
     if (std::find(m_unbounded.begin(), m_unbounded.end(), &light) != m_unbounded.end())
         return (1.0f - p_tree) / static_cast<float>(m_unbounded.size());
-    const int index = light.index();
-    if (index < 0 || static_cast<size_t>(index) >= m_trails.size()) return 0.0f;
-    const Trail& trail = m_trails[index];
-    if (!trail.in_tree) return 0.0f;
+    const Trail* found = trail_of(light.index(), piece);
+    if (!found || !found->in_tree) return 0.0f;
+    const Trail& trail = *found;
     float pmf = p_tree;
     uint32_t node = 0;
     for (uint32_t level = 0; level < trail.depth; ++level) {
@@ -397,8 +416,9 @@ float LightTree::pmf(const Vec3& p, const Vec3& n, const Light& light) const {
 }
 
 size_t LightTree::memory_bytes() const {
-    return m_nodes.capacity() * sizeof(Node) + m_leaf_lights.capacity() * sizeof(const Light*) +
-           m_unbounded.capacity() * sizeof(const Light*) + m_trails.capacity() * sizeof(Trail);
+    return m_nodes.capacity() * sizeof(Node) + m_leaves.capacity() * sizeof(Leaf) +
+           m_unbounded.capacity() * sizeof(const Light*) + m_trails.capacity() * sizeof(Trail) +
+           m_first_trail.capacity() * sizeof(size_t);
 }
 
 }  // namespace glint

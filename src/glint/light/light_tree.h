@@ -4,7 +4,9 @@
 // estimated to send to the receiving point (LightBounds::importance), so that near, bright
 // lights facing the point get the samples and far or turned-away ones few or none. Lights
 // without bounds (the environment, the sun) are chosen alongside the tree, uniformly.
-// The probability of any light at any point is computed exactly, for MIS.
+// The probability of any light at any point is computed exactly, for MIS. A light of
+// several pieces (an emitting mesh, Light::piece_count) has a leaf for each piece, so the
+// tree chooses a triangle rather than a mesh.
 #include <glint/light/light_bounds.h>
 
 #include <cstdint>
@@ -17,10 +19,11 @@ class Light;
 
 class LightTree {
 public:
-    /// A light and its bounds; lights with no bounds go in `unbounded`.
+    /// A light's piece and its bounds; lights with no bounds go in `unbounded`.
     struct Entry {
         const Light* light;
         LightBounds bounds;
+        uint32_t piece = 0;
     };
     LightTree() = default;
     /// `light_count` bounds the lights' indices (Light::index), for the pmf look-up.
@@ -29,12 +32,13 @@ public:
     struct Choice {
         const Light* light = nullptr;
         float pmf = 0.0f;
+        uint32_t piece = 0;
     };
     /// A light for the receiving point `p` with unit normal `n` (zero: a point without a
     /// surface); no light only when the scene has none.
     Choice sample(const Vec3& p, const Vec3& n, float u) const;
-    /// The probability that sample(p, n, .) returns `light`.
-    float pmf(const Vec3& p, const Vec3& n, const Light& light) const;
+    /// The probability that sample(p, n, .) returns piece `piece` of `light`.
+    float pmf(const Vec3& p, const Vec3& n, const Light& light, uint32_t piece = 0) const;
 
     size_t node_count() const { return m_nodes.size(); }
     size_t memory_bytes() const;
@@ -43,8 +47,12 @@ private:
     struct Node {
         LightBounds bounds;
         uint32_t second_child_or_light = 0;  // interior: its second child (the first follows
-                                             // it); leaf: the index into m_leaf_lights
+                                             // it); leaf: the index into m_leaves
         bool leaf = false;
+    };
+    struct Leaf {
+        const Light* light = nullptr;
+        uint32_t piece = 0;
     };
     // Where a light's leaf is: the turns from the root (bit i: 1 = second child at depth i).
     struct Trail {
@@ -69,10 +77,15 @@ private:
                               const Bounds3& centroids, uint32_t depth);
     float probability_of_tree() const;
 
+    // The trail of piece `piece` of the light with index `light_index`; null for none.
+    const Trail* trail_of(int light_index, uint32_t piece) const;
+
     std::vector<Node> m_nodes;
-    std::vector<const Light*> m_leaf_lights;
+    std::vector<Leaf> m_leaves;
     std::vector<const Light*> m_unbounded;
-    std::vector<Trail> m_trails;  // by Light::index
+    // Each light's pieces' trails, from m_trails[m_first_trail[Light::index]] on.
+    std::vector<Trail> m_trails;
+    std::vector<size_t> m_first_trail;  // by Light::index, and one past the last
 };
 
 }  // namespace glint

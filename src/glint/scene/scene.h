@@ -188,6 +188,7 @@ private:
         const WorldEntry& entry = m_world[hit.top_geometry];
         // What the shapes may leave unset, reset here, since `si` may hold the previous hit.
         si.part = 0;
+        si.primitive = hit.primitive;
         si.dpdx = si.dpdy = Vec3(0.0f);
         si.dudx = si.dvdx = si.dudy = si.dvdy = 0.0f;
         if (hit.instanced()) {

@@ -107,9 +107,8 @@ void PathIntegrator::escape(const Scene& scene, PathState& path, int depth) cons
         if (!Le.is_black()) {
             path.L += path.beta * Le *
                       bsdf_emission_weight(m_strategy, path.specular_bounce, path.bsdf_pdf, [&] {
-                          return scene.light_sampler().pmf(path.previous_point,
-                                                           path.previous_normal, *si.area_light) *
-                                 si.area_light->pdf_li(path.previous_point, si);
+                          return scene.light_sampler().pdf_li(path.previous_point,
+                                                              path.previous_normal, si);
                       });
         }
     }

@@ -275,9 +275,7 @@ bool VolPathIntegrator::scatter_at_surface(const Scene& scene, Walk& walk, Arena
     SurfaceInteraction& si = walk.si;
     if (si.area_light) {
         add_emission(walk, emitted_radiance(si), [&] {
-            return scene.light_sampler().pmf(walk.previous_point, walk.previous_normal,
-                                             *si.area_light) *
-                   si.area_light->pdf_li(walk.previous_point, si);
+            return scene.light_sampler().pdf_li(walk.previous_point, walk.previous_normal, si);
         });
     }
     const Bsdf* bsdf = shade(scene, walk.ray, si, arena);

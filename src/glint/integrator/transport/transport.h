@@ -131,7 +131,7 @@ enum class LightChoice {
     const LightSampler::Choice choice =
         rule == LightChoice::kForPoint ? lights.sample(p, n, u_light) : lights.sample(u_light);
     if (!choice.light) return LightPoint{choice, std::nullopt};
-    return LightPoint{choice, choice.light->sample_li(p, u, u_select)};
+    return LightPoint{choice, LightSampler::sample_li(choice, p, u, u_select)};
 }
 
 /// A direct-light estimate at a surface point, valid if nothing blocks the way to `target`.
