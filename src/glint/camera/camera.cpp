@@ -20,8 +20,8 @@ void Camera::set_shutter(float open, float close) {
     m_shutter_close = close;
 }
 
-void Camera::move_to_time(Ray& ray, float u) const {
-    ray.time = time_of_sample(u);
+void Camera::move_to_time(Ray& ray, float time) const {
+    ray.time = time;
     if (!m_motion.is_moving()) return;
     const Transform xf = m_motion.at(ray.time);
     ray.origin = xf.point(ray.origin);
@@ -31,6 +31,40 @@ void Camera::move_to_time(Ray& ray, float u) const {
     d.ry_origin = xf.point(d.ry_origin);
     d.rx_direction = xf.vector(d.rx_direction);
     d.ry_direction = xf.vector(d.ry_direction);
+}
+
+std::optional<CameraWiSample> Camera::sample_wi_at(const Vec3& ref, const Vec2& u_lens,
+                                                   float time) const {
+    if (!m_motion.is_moving()) return sample_wi(ref, u_lens);
+    // In the camera's own frame at that time, then back: the frame only turns and moves
+    // (motion_is_rigid), so the solid-angle density at ref is the same in both.
+    const Transform xf = m_motion.at(time);
+    std::optional<CameraWiSample> s = sample_wi(xf.inverse().point(ref), u_lens);
+    if (s) {
+        s->wi = glm::normalize(xf.vector(s->wi));
+        s->p_lens = xf.point(s->p_lens);
+    }
+    return s;
+}
+
+CameraPdf Camera::pdf_we_at(const Ray& ray) const {
+    if (!m_motion.is_moving()) return pdf_we(ray);
+    const Transform to_camera = m_motion.at(ray.time).inverse();
+    Ray local = ray;
+    local.origin = to_camera.point(ray.origin);
+    local.direction = glm::normalize(to_camera.vector(ray.direction));
+    return pdf_we(local);
+}
+
+bool Camera::motion_is_rigid() const {
+    constexpr float kTolerance = 1e-4f;
+    for (size_t i = 0; i < m_motion.key_count(); ++i) {
+        const TransformParts& parts = m_motion.parts(i);
+        if (glm::length(parts.scale - Vec3(1.0f)) > kTolerance ||
+            glm::length(parts.shear) > kTolerance)
+            return false;
+    }
+    return true;
 }
 
 namespace {

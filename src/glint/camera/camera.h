@@ -70,10 +70,23 @@ public:
     Ray sample_ray(const Vec2& film, Sampler& sampler) const {
         Ray ray = generate_ray(film, needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
         if (m_time_sampled) [[unlikely]]
-            move_to_time(ray, sampler.get_1d());
+            move_to_time(ray, time_of_sample(sampler.get_1d()));
         else
             ray.time = m_shutter_open;
         return ray;
+    }
+    /// sample_ray at scene time `time`, drawing no time: for a walk whose time another walk
+    /// chose (vcm's camera subpath takes the time of the light subpath it joins).
+    Ray sample_ray_at(const Vec2& film, Sampler& sampler, float time) const {
+        Ray ray = generate_ray(film, needs_lens_sample() ? sampler.get_2d() : Vec2(0.5f));
+        move_to_time(ray, time);
+        return ray;
+    }
+    /// The time of a walk that starts at a light and meets the camera there (light tracing,
+    /// a light subpath of its own): drawn uniform over the shutter with `sampler`'s next
+    /// dimension when the scene moves, the shutter's opening otherwise (no draw).
+    float sample_time(Sampler& sampler) const {
+        return m_time_sampled ? time_of_sample(sampler.get_1d()) : m_shutter_open;
     }
 
     /// The scene times [open, close] the shutter is open for, within the motion keys' span
@@ -101,6 +114,9 @@ public:
     /// the importance it sends towards `ref`; nullopt when `ref` is behind the camera,
     /// outside the frame, or on the lens.
     virtual std::optional<CameraWiSample> sample_wi(const Vec3& ref, const Vec2& u_lens) const = 0;
+    /// sample_wi for the camera where its motion puts it at scene time `time`.
+    std::optional<CameraWiSample> sample_wi_at(const Vec3& ref, const Vec2& u_lens,
+                                               float time) const;
     /// Importance of a ray leaving the lens (unit direction; zero outside the frame or
     /// backwards); when `film` is non-null and the importance is not zero, sets the film
     /// position the ray comes from.
@@ -109,6 +125,12 @@ public:
     /// lens point uniform on its disc) produces `ray` (unit direction); zero outside the
     /// frame.
     virtual CameraPdf pdf_we(const Ray& ray) const = 0;
+    /// pdf_we of a ray that leaves the lens at scene time ray.time.
+    CameraPdf pdf_we_at(const Ray& ray) const;
+    /// Whether every motion key only turns and moves the camera (no scale or shear): then
+    /// densities on and through the lens are the same at every time, as the methods that
+    /// join light paths to the lens (sample_wi_at, pdf_we_at) need.
+    bool motion_is_rigid() const;
     /// The lens normal (the viewing direction), unit, for cosines at the lens.
     virtual Vec3 forward() const = 0;
 
@@ -137,9 +159,9 @@ protected:
     float m_footprint_scale = 1.0f;
 
 private:
-    // Gives `ray` the time of sample `u` and moves it (with its differentials) as the
-    // camera stands at that time.
-    void move_to_time(Ray& ray, float u) const;
+    // Gives `ray` scene time `time` and moves it (with its differentials) as the camera
+    // stands at that time.
+    void move_to_time(Ray& ray, float time) const;
 
     float m_shutter_open = 0.0f, m_shutter_close = 0.0f;
     bool m_time_sampled = false;

@@ -332,7 +332,8 @@ TEST(BdptMis, StrategiesOfARealPathSumToOne) {
         const Ray ray = scene->camera().generate_ray(Vec2(attempt % 32 + 0.5f, 16.5f), Vec2(0.5f));
         generate_camera_subpath(*scene, ray, *sampler, arena, counter, WalkLimits{4, false},
                                 camera);
-        generate_light_subpath(*scene, *sampler, arena, counter, WalkLimits{3, false}, light);
+        generate_light_subpath(*scene, ray.time, *sampler, arena, counter, WalkLimits{3, false},
+                               light);
         // Strategy (2, 3) needs two light and three camera vertices: walks that ended
         // sooner (a ray that left the box) do not make this path. (Reading past them was a
         // heap overflow that AddressSanitizer found.)

@@ -443,7 +443,8 @@ TEST(VcmMis, StrategiesOfARealMergedPathSumToOne) {
         const Ray ray = scene->camera().generate_ray(Vec2(attempt % 32 + 0.5f, 16.5f), Vec2(0.5f));
         generate_camera_subpath(*scene, ray, *sampler, arena, counter, WalkLimits{4, false},
                                 camera);
-        generate_light_subpath(*scene, *sampler, arena, counter, WalkLimits{3, false}, light);
+        generate_light_subpath(*scene, ray.time, *sampler, arena, counter, WalkLimits{3, false},
+                               light);
         if (camera.size() < 3 || light.size() < 2 || !camera[2].connectible()) continue;
         // eta such that the merge at x_2 weighs as much as the connection there (the box's
         // densities per area are small in its units).

@@ -205,11 +205,10 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
             return result;
         }
         // qs.pdf_fwd of the light's own point is the light's choice times its area density.
-        // bdpt renders still scenes only (check_motion): any time sees the same scene.
-        constexpr float kStillTime = 0.0f;
+        // The light's point keeps its subpath's time (PathVertex::si.time), as hits do.
         const std::optional<CameraConnection> connection =
             s == 1
-                ? connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, kStillTime,
+                ? connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.si.time,
                                                 qs.pdf_fwd, u_lens, counter.rays)
                 : connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens, counter.rays);
         if (!connection) return result;
@@ -217,6 +216,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         L = connection->L;
         sampled.kind = PathVertex::Kind::kCamera;
         sampled.p = lens->p_lens;
+        sampled.si.time = qs.si.time;  // where the camera stands for the MIS densities
         result.splat = true;
         result.film = lens->film;
     } else if (s == 1) {
@@ -323,6 +323,7 @@ int BdptIntegrator::debug_count() {
 
 RenderStats BdptIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    check_camera_motion_joinable(scene, "bdpt", m_settings.where_of("integrator"));
     const int w = film.width(), h = film.height();
     // One light subpath per camera sample: the splats of spp paths per pixel (camera.h).
     const double splat_scale = 1.0 / static_cast<double>(m_settings.spp);
@@ -400,8 +401,8 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                 worker.arena.reset();
                 generate_camera_subpath(scene, ray, sampler, worker.arena, worker.counter,
                                         camera_limits, worker.camera);
-                generate_light_subpath(scene, sampler, worker.arena, worker.counter, light_limits,
-                                       worker.light);
+                generate_light_subpath(scene, ray.time, sampler, worker.arena, worker.counter,
+                                       light_limits, worker.light);
                 std::fill(worker.strategy_L.begin(), worker.strategy_L.end(), Spectrum(0.0f));
                 Spectrum L(0.0f);
                 const int n_camera = static_cast<int>(worker.camera.size());

@@ -90,6 +90,7 @@ public:
         IntegratorCapabilities capabilities;
         capabilities.debug_views = {{"strategies", "--integrator bdpt"}};
         capabilities.spectral = true;
+        capabilities.motion_blur = true;  // one time per camera and light subpath pair
         return capabilities;
     }
 

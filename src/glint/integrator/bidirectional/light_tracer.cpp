@@ -75,13 +75,7 @@ std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, 
 
 RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
-    if (scene.camera().is_moving() && scene.camera().time_sampled()) {
-        // Camera::sample_wi joins a point to the lens where the camera stands at rest.
-        throw Error(
-            fmt::format("{}: integrator 'light' renders moving objects but not a moving "
-                        "camera yet; use path or sppm",
-                        m_settings.where_of("integrator")));
-    }
+    check_camera_motion_joinable(scene, "light", m_settings.where_of("integrator"));
     m_light_media.clear();
     if (!scene.media().empty()) {
         // Where each light starts its paths, probed once from one point it emits from.

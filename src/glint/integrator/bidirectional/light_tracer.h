@@ -37,7 +37,7 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.spectral = true;
-        capabilities.motion_blur = true;  // each path carries its time (a still camera)
+        capabilities.motion_blur = true;  // each path carries its time
         capabilities.scattering_media = true;
         return capabilities;
     }

@@ -1,6 +1,7 @@
 #include <glint/core/cancel.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
+#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/mlt.h>
 
@@ -94,8 +95,8 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     // s = 1 with t > 1 samples its light point afresh in connect_strategy.
     if (s > 1 || (s == 1 && t == 1)) {
         sampler.set_stream(PssSampler::kLightStream);
-        generate_light_subpath(scene, sampler, ws.arena, ws.counter, WalkLimits{s, false},
-                               ws.light);
+        generate_light_subpath(scene, ray.time, sampler, ws.arena, ws.counter,
+                               WalkLimits{s, false}, ws.light);
     }
     sampler.set_stream(PssSampler::kConnectionStream);
     const StrategyContribution c = connect_strategy(scene, ws.light, ws.camera, s, t, sampler,
@@ -108,6 +109,7 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
 
 RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    check_camera_motion_joinable(scene, "mlt", m_settings.where_of("integrator"));
     const Vec2 film_size(static_cast<float>(film.width()), static_cast<float>(film.height()));
     const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();
     const uint64_t mutations = pixels * static_cast<uint64_t>(m_settings.spp);

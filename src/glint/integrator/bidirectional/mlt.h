@@ -66,6 +66,11 @@ public:
     /// samples, and each lands in the pixel that holds it (a box filter).
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities;
+        capabilities.motion_blur = true;  // the path's time is a dimension of its state
+        return capabilities;
+    }
 
     /// The contribution of the sampler's current state for paths of `depth` bounces on a
     /// film of `film_size` pixels. Reads, in the connection stream, the strategy (1D), then

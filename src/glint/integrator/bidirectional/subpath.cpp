@@ -107,10 +107,11 @@ void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sample
                              RayCounter& counter, const WalkLimits& limits,
                              std::vector<PathVertex>& path) {
     path.clear();
-    const CameraPdf pdf = scene.camera().pdf_we(ray);
+    const CameraPdf pdf = scene.camera().pdf_we_at(ray);
     PathVertex lens;
     lens.kind = PathVertex::Kind::kCamera;
     lens.p = ray.origin;
+    lens.si.time = ray.time;  // the path's scene time
     // The camera ray's weight We cos / (pdf_pos pdf_dir) is 1 (camera.h).
     lens.beta = Spectrum(1.0f);
     lens.pdf_fwd = pdf.pos;
@@ -119,10 +120,12 @@ void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sample
                 counter, limits, path);
 }
 
-void generate_light_subpath(const Scene& scene, Sampler& sampler, Arena& arena, RayCounter& counter,
-                            const WalkLimits& limits, std::vector<PathVertex>& path) {
+void generate_light_subpath(const Scene& scene, float time, Sampler& sampler, Arena& arena,
+                            RayCounter& counter, const WalkLimits& limits,
+                            std::vector<PathVertex>& path) {
     path.clear();
     LightPathSamples u_start;
+    u_start.time = time;
     u_start.u_light = sampler.get_1d();
     u_start.u_position = sampler.get_2d();
     u_start.u_direction = sampler.get_2d();
@@ -137,6 +140,7 @@ void generate_light_subpath(const Scene& scene, Sampler& sampler, Arena& arena, 
     start.light = &light;
     start.infinite = light.is_infinite() || light.is_delta_direction();
     start.p = emission->ray.origin;
+    start.si.time = time;
     start.ng = emission->n;
     start.w_sky = -emission->ray.direction;
     start.beta = emission->Le;
@@ -161,7 +165,7 @@ float continuation_pdf(const Scene& scene, const PathVertex* prev, const PathVer
     const Vec3 w_next = direction_to(v, next);
     float pdf = 0.0f;
     if (v.kind == PathVertex::Kind::kCamera) {
-        pdf = scene.camera().pdf_we(Ray{v.p, w_next}).dir;
+        pdf = scene.camera().pdf_we_at(Ray{v.p, w_next, 0.0f, kInfinity, v.si.time}).dir;
     } else {
         if (!v.bsdf || !prev) return 0.0f;
         const Vec3 w_prev = direction_to(v, *prev);

@@ -71,9 +71,11 @@ void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sample
 /// from it (Light::sample_le), then one vertex per hit, scattering in importance mode.
 /// Draws: the light (1D), the ray's origin (2D) and direction (2D), the light's part (1D);
 /// then per hit the BSDF sample (2D, 1D) and roulette (1D). Empty when the scene has no
-/// light or the light emits nothing.
-void generate_light_subpath(const Scene& scene, Sampler& sampler, Arena& arena, RayCounter& counter,
-                            const WalkLimits& limits, std::vector<PathVertex>& path);
+/// light or the light emits nothing. Every ray of the subpath has scene time `time` (the
+/// camera subpath's that it joins: one time per path, so joins see one scene).
+void generate_light_subpath(const Scene& scene, float time, Sampler& sampler, Arena& arena,
+                            RayCounter& counter, const WalkLimits& limits,
+                            std::vector<PathVertex>& path);
 
 /// Density (per unit area at `next`, or solid angle when `next` is at infinity) with which a
 /// walk at `v`, having arrived from `prev`, continues to `next`. `v` is the lens (prev

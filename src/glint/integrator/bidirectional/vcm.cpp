@@ -2,6 +2,7 @@
 #include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/core/rng.h>
+#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/vcm.h>
 #include <glint/integrator/transport/hash_grid.h>
@@ -48,6 +49,7 @@ struct VcmIntegrator::Iteration {
     const Sampler* camera_sampler = nullptr;  // prototypes
     const Sampler* light_sampler = nullptr;
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
+    std::vector<float> light_times;                    // each light path's scene time
     std::vector<Arena> arenas;                         // per chunk: the light BSDFs
     std::vector<std::vector<Splat>> splats;            // per chunk
     std::vector<PhotonRef> photons;                    // the light vertices merges use, in the grid
@@ -101,6 +103,7 @@ float VcmIntegrator::radius_at(float r0, float alpha, int iteration) {
 
 RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
+    check_camera_motion_joinable(scene, "vcm", m_settings.where_of("integrator"));
     const int w = film.width(), h = film.height();
     const size_t pixels = static_cast<size_t>(w) * h;
     const size_t n_light = m_vcm.light_paths > 0 ? static_cast<size_t>(m_vcm.light_paths) : pixels;
@@ -138,6 +141,7 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     it.light_tracing_count =
         static_cast<float>(static_cast<double>(n_light) / static_cast<double>(pixels));
     it.light_paths.resize(n_light);
+    it.light_times.assign(n_light, 0.0f);
     const int chunks = static_cast<int>((n_light + kLightPathsPerChunk - 1) / kLightPathsPerChunk);
     it.arenas.resize(chunks);
     it.splats.resize(chunks);
@@ -218,7 +222,10 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
         std::optional<SecondaryWavelengthsScope> terminated;  // this light path's
         if (m_settings.spectral) terminated.emplace();
         std::vector<PathVertex>& light = it.light_paths[i];
-        generate_light_subpath(scene, *sampler, arena, counter, it.light_limits, light);
+        // One time per light subpath; the camera subpaths that join it take the same.
+        const float time = scene.camera().sample_time(*sampler);
+        generate_light_subpath(scene, time, *sampler, arena, counter, it.light_limits, light);
+        it.light_times[i] = time;
         for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
             if (max_depth >= 0 && s - 1 > max_depth) break;
             const StrategyContribution c =
@@ -267,11 +274,15 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
             if (m_settings.spectral) terminated.emplace();
             const FilterSample filter = m_filter->sample(sampler->get_pixel_2d());
             const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
-            const Ray ray = scene.camera().sample_ray(film_point, *sampler);
+            // The light subpath this camera subpath joins, and its time (joins see one scene;
+            // merges meet photons of every time, as sppm's, docs/integrators.md).
+            const size_t light_index =
+                (static_cast<size_t>(y) * film.width() + x) % it.light_paths.size();
+            const std::vector<PathVertex>& light = it.light_paths[light_index];
+            const Ray ray =
+                scene.camera().sample_ray_at(film_point, *sampler, it.light_times[light_index]);
             arena.reset();
             generate_camera_subpath(scene, ray, *sampler, arena, counter, it.camera_limits, camera);
-            const std::vector<PathVertex>& light =
-                it.light_paths[(static_cast<size_t>(y) * film.width() + x) % it.light_paths.size()];
             Spectrum L(0.0f);
             const int n_camera = static_cast<int>(camera.size());
             const int n_light = std::max(1, static_cast<int>(light.size()));

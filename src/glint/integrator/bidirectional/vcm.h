@@ -59,6 +59,7 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.spectral = true;
+        capabilities.motion_blur = true;  // one time per camera and light subpath pair
         return capabilities;
     }
 

@@ -1,26 +1,41 @@
+#include <glint/core/error.h>
 #include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/media.h>
 #include <glint/integrator/transport/visibility.h>
 #include <glint/medium/henyey_greenstein.h>
 
+#include <fmt/format.h>
+
 namespace glint {
 namespace {
 
-// A lens point seen from `p`, when the camera gives one that carries importance.
-std::optional<CameraWiSample> sample_lens(const Scene& scene, const Vec3& p, const Vec2& u_lens) {
-    std::optional<CameraWiSample> lens = scene.camera().sample_wi(p, u_lens);
+// A lens point seen from `p` at scene time `time` (where the camera then stands), when the
+// camera gives one that carries importance.
+std::optional<CameraWiSample> sample_lens(const Scene& scene, const Vec3& p, const Vec2& u_lens,
+                                          float time) {
+    std::optional<CameraWiSample> lens = scene.camera().sample_wi_at(p, u_lens, time);
     if (!lens || lens->We.is_black() || !(lens->pdf > 0.0f)) return std::nullopt;
     return lens;
 }
 
 }  // namespace
 
+void check_camera_motion_joinable(const Scene& scene, const std::string& integrator,
+                                  const std::string& where) {
+    const Camera& camera = scene.camera();
+    if (!camera.is_moving() || camera.motion_is_rigid()) return;
+    throw Error(fmt::format("{}: integrator '{}' joins light paths to a moving camera, whose "
+                            "motion keys may only turn and move it (these scale or shear it); "
+                            "use path or sppm",
+                            where, integrator));
+}
+
 std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
                                                           const SurfaceInteraction& si,
                                                           const Bsdf& bsdf, const Spectrum& beta,
                                                           const Vec2& u_lens, uint64_t& rays,
                                                           const Medium* medium) {
-    const std::optional<CameraWiSample> lens = sample_lens(scene, si.p, u_lens);
+    const std::optional<CameraWiSample> lens = sample_lens(scene, si.p, u_lens, si.time);
     if (!lens) return std::nullopt;
     const Vec3 wi_local = si.to_local(lens->wi);
     // Importance mode: wo is where the particle came from, wi where it goes (the camera).
@@ -38,7 +53,7 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
 std::optional<CameraConnection> connect_light_point_to_camera(
     const Scene& scene, const Light& light, const Vec3& p, const Vec3& n, float time,
     float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium) {
-    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens);
+    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
     if (!lens) return std::nullopt;
     const float cosine = glm::dot(n, lens->wi);
     if (!(cosine > 0.0f)) return std::nullopt;
@@ -60,7 +75,7 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
                                                                const Medium& medium,
                                                                const Spectrum& beta,
                                                                const Vec2& u_lens, uint64_t& rays) {
-    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens);
+    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
     if (!lens) return std::nullopt;
     // The phase function's arguments point away from p: where the light came from
     // (-wi_arrival) and where it goes (the lens).

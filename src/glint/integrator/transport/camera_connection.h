@@ -10,6 +10,12 @@
 
 namespace glint {
 
+/// Light paths join a moving camera where it stands at their time; the densities of those
+/// joins hold only while the camera turns and moves without scaling (Camera::motion_is_rigid).
+/// Throws glint::Error naming `integrator` and the setting's place `where` otherwise.
+void check_camera_motion_joinable(const Scene& scene, const std::string& integrator,
+                                  const std::string& where);
+
 /// A light path joined to the lens: the lens sample (film position, point, importance) and
 /// the unweighted contribution it carries to the film.
 struct CameraConnection {
