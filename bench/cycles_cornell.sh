@@ -27,6 +27,8 @@
 #   CYCLES_REF_SPP  Cycles reference samples per pixel (default 2048)
 #   SPP             samples per pixel to time (default "16 64 256")
 #   REPS            timed renders of each (default 3)
+#   KEEP_REFERENCES 1: reuse OUT's references from an earlier run with the same settings
+#                   (only the timed renders run: about 2 minutes)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 GLINT=${GLINT:-build/glint}
@@ -37,6 +39,7 @@ REF_SPP=${REF_SPP:-4096}
 CYCLES_REF_SPP=${CYCLES_REF_SPP:-2048}
 SPP=${SPP:-16 64 256}
 REPS=${REPS:-3}
+KEEP_REFERENCES=${KEEP_REFERENCES:-0}
 SCENE=examples/cornell-box.lua
 command -v blender >/dev/null || { echo "cycles_cornell: install Debian's blender" >&2; exit 1; }
 [ -x "$GLINT" ] || { echo "cycles_cornell: no glint at $GLINT (build it, or set GLINT)" >&2; exit 1; }
@@ -50,16 +53,26 @@ else
 fi
 mkdir -p "$OUT"
 
-glint_render() {  # output spp seed -> seconds of the render (from the CLI's summary line)
-    "$GLINT" render "$SCENE" --integrator path --threads "$THREADS" --res "${SIZE}x${SIZE}" \
-        --spp "$2" --seed "$3" -o "$1" 2>"$1.log"
-    sed -nE 's/^.*threads: ([0-9.]+) s,.*$/\1/p' "$1.log" | tail -1
+glint_seconds() {  # log -> "wall processor" seconds of the render (the CLI's summary lines)
+    echo "$(sed -nE 's/^.*threads: ([0-9.]+) s,.*$/\1/p' "$1" | tail -1)" \
+        "$(sed -nE 's/^.* ([0-9.]+) s of processor time$/\1/p' "$1" | tail -1)"
 }
 
-cycles_render() {  # output spp seed -> seconds of the render inside Blender
+cycles_seconds() {  # log -> "wall processor" seconds of the render inside Blender
+    echo "$(sed -nE 's/^cycles-render-seconds: ([0-9.]+)$/\1/p' "$1")" \
+        "$(sed -nE 's/^cycles-render-cpu-seconds: ([0-9.]+)$/\1/p' "$1")"
+}
+
+glint_render() {  # output spp seed -> "wall processor" seconds of the render
+    "$GLINT" render "$SCENE" --integrator path --threads "$THREADS" --res "${SIZE}x${SIZE}" \
+        --spp "$2" --seed "$3" -o "$1" 2>"$1.log"
+    glint_seconds "$1.log"
+}
+
+cycles_render() {  # output spp seed -> "wall processor" seconds of the render
     blender -b --factory-startup --python "$blender_script" -- "$1" "$2" "$SIZE" "$3" \
         >"$1.log" 2>&1 || { tail -20 "$1.log" >&2; exit 1; }
-    sed -nE 's/^cycles-render-seconds: ([0-9.]+)$/\1/p' "$1.log"
+    cycles_seconds "$1.log"
 }
 
 compare() {  # test reference -> "relMSE test_mean(R G B) ref_mean(R G B)"
@@ -73,46 +86,63 @@ compare() {  # test reference -> "relMSE test_mean(R G B) ref_mean(R G B)"
 echo "glint against Cycles: $SCENE, ${SIZE}x${SIZE}, $THREADS threads, $(date -u '+%Y-%m-%d %H:%M UTC')"
 echo "glint: $GLINT ($("$GLINT" --version 2>/dev/null | head -1)); $(blender --version 2>/dev/null | head -1)"
 echo "load before: $(uptime)"
-g_ref_s=$(glint_render "$OUT/glint-ref.exr" "$REF_SPP" 7)
-c_ref_s=$(cycles_render "$OUT/cycles-ref.exr" "$CYCLES_REF_SPP" 7)
+kept=""
+if [ "$KEEP_REFERENCES" = 1 ] && [ -f "$OUT/glint-ref.exr" ] && [ -f "$OUT/cycles-ref.exr" ]; then
+    g_ref_s=$(glint_seconds "$OUT/glint-ref.exr.log")
+    c_ref_s=$(cycles_seconds "$OUT/cycles-ref.exr.log")
+    kept=" (kept from an earlier run)"
+else
+    g_ref_s=$(glint_render "$OUT/glint-ref.exr" "$REF_SPP" 7)
+    c_ref_s=$(cycles_render "$OUT/cycles-ref.exr" "$CYCLES_REF_SPP" 7)
+fi
 echo "Cycles sampling pattern: $(sed -n 's/^cycles-sampling-pattern: //p' "$OUT/cycles-ref.exr.log")"
 read -r ref_rel c_r c_g c_b g_r g_g g_b < <(compare "$OUT/cycles-ref.exr" "$OUT/glint-ref.exr")
 echo
-echo "References: glint $REF_SPP spp ($g_ref_s s), Cycles $CYCLES_REF_SPP spp ($c_ref_s s)"
+echo "References (wall and processor seconds): glint $REF_SPP spp ($g_ref_s), Cycles $CYCLES_REF_SPP spp ($c_ref_s)$kept"
 awk -v gr="$g_r" -v gg="$g_g" -v gb="$g_b" -v cr="$c_r" -v cg="$c_g" -v cb="$c_b" -v rel="$ref_rel" 'BEGIN {
     printf "| | R mean | G mean | B mean |\n|---|---|---|---|\n"
     printf "| glint | %.5f | %.5f | %.5f |\n| Cycles | %.5f | %.5f | %.5f |\n", gr, gg, gb, cr, cg, cb
-    printf "| Cycles / glint - 1 | %+.2f %% | %+.2f %% | %+.2f %% |\n",
+    printf "| Cycles / glint - 1 | %+.3f %% | %+.3f %% | %+.3f %% |\n",
         100 * (cr / gr - 1), 100 * (cg / gg - 1), 100 * (cb / gb - 1)
     printf "relative MSE of the Cycles reference against glint'"'"'s: %.6f\n", rel }'
 
 # Timed renders, alternating. Seed 1 for every test image: repeats only re-time the same image.
-declare -A seconds
+declare -A wall cpu
 for rep in $(seq "$REPS"); do
     for n in $SPP; do
         for who in glint cycles; do
-            s=$("${who}_render" "$OUT/$who-$n.exr" "$n" 1)
-            seconds[$who,$n]=$(awk -v a="${seconds[$who,$n]:-inf}" -v b="$s" \
-                'BEGIN { print (a == "inf" || b + 0 < a + 0) ? b : a }')
-            echo "  rep $rep: $who $n spp: $s s" >&2
+            read -r w c < <("${who}_render" "$OUT/$who-$n.exr" "$n" 1)
+            [ -n "$w" ] && [ -n "$c" ] || { echo "cycles_cornell: no time in $OUT/$who-$n.exr.log" >&2; exit 1; }
+            wall[$who,$n]=$(awk -v a="${wall[$who,$n]:-$w}" -v b="$w" 'BEGIN { print (b + 0 < a + 0) ? b : a }')
+            cpu[$who,$n]=$(awk -v a="${cpu[$who,$n]:-$c}" -v b="$c" 'BEGIN { print (b + 0 < a + 0) ? b : a }')
+            echo "  rep $rep: $who $n spp: $w s ($c s of processor time)" >&2
         done
     done
 done
 
 echo
 echo "Timed renders (minimum of $REPS, alternating glint and Cycles); relative MSE against each reference"
-echo "| spp | glint s | glint relMSE (glint ref) | glint relMSE (Cycles ref) | Cycles s | Cycles relMSE (glint ref) | Cycles relMSE (Cycles ref) | glint eff. | Cycles eff. | glint / Cycles | same, Cycles ref |"
-echo "|---|---|---|---|---|---|---|---|---|---|---|"
+echo "| spp | glint s | glint CPU s | Cycles s | Cycles CPU s | glint relMSE (glint ref) | glint relMSE (Cycles ref) | Cycles relMSE (glint ref) | Cycles relMSE (Cycles ref) | glint eff. | Cycles eff. | glint / Cycles | by CPU s | by Cycles ref |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"
+rows=""
 for n in $SPP; do
     read -r gg _ < <(compare "$OUT/glint-$n.exr" "$OUT/glint-ref.exr")
     read -r gc _ < <(compare "$OUT/glint-$n.exr" "$OUT/cycles-ref.exr")
     read -r cg _ < <(compare "$OUT/cycles-$n.exr" "$OUT/glint-ref.exr")
     read -r cc _ < <(compare "$OUT/cycles-$n.exr" "$OUT/cycles-ref.exr")
-    awk -v n="$n" -v gs="${seconds[glint,$n]}" -v cs="${seconds[cycles,$n]}" \
+    row=$(awk -v n="$n" -v gs="${wall[glint,$n]}" -v cs="${wall[cycles,$n]}" \
+        -v gp="${cpu[glint,$n]}" -v cp="${cpu[cycles,$n]}" \
         -v gg="$gg" -v gc="$gc" -v cg="$cg" -v cc="$cc" 'BEGIN {
         ge = 1 / (gg * gs); ce = 1 / (cg * cs)
-        printf "| %d | %.2f | %.5f | %.5f | %.2f | %.5f | %.5f | %.1f | %.1f | %.2f | %.2f |\n",
-            n, gs, gg, gc, cs, cg, cc, ge, ce, ge / ce, (1 / (gc * gs)) / (1 / (cc * cs)) }'
+        printf "| %d | %.2f | %.2f | %.2f | %.2f | %.5f | %.5f | %.5f | %.5f | %.1f | %.1f | %.2f | %.2f | %.2f |\n",
+            n, gs, gp, cs, cp, gg, gc, cg, cc, ge, ce, ge / ce, (cg * cp) / (gg * gp),
+            (cc * cs) / (gc * gs) }')
+    echo "$row"
+    rows+="$row"$'\n'
 done
-echo "efficiency = 1 / (relative MSE against glint's reference x seconds); last column: each against Cycles' reference"
+printf '%s' "$rows" | awk -F'|' '
+    { w += log($13); p += log($14); c += log($15); k++ }
+    END { printf "glint / Cycles, geometric mean over the spp: %.2f (wall), %.2f (processor time), %.2f (wall, Cycles reference)\n",
+          exp(w / k), exp(p / k), exp(c / k) }'
+echo "efficiency = 1 / (relative MSE against glint's reference x wall seconds of the render)"
 echo "load after: $(uptime)"
