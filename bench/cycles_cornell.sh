@@ -28,7 +28,7 @@
 #   SPP             samples per pixel to time (default "16 64 256")
 #   REPS            timed renders of each (default 3)
 #   KEEP_REFERENCES 1: reuse OUT's references from an earlier run with the same settings
-#                   (only the timed renders run: about 2 minutes)
+#                   (only the timed renders run: about 3 minutes)
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 GLINT=${GLINT:-build/glint}
