@@ -208,6 +208,13 @@ std::vector<Vec2> Params::get_vec2_list(const std::string& name) const {
     wrong_type(name, "a list of {u, v} pairs");
 }
 
+std::vector<std::vector<double>> Params::get_rows(const std::string& name) const {
+    const ParamValue* v = lookup(name);
+    if (!v) return {};
+    if (auto rows = std::get_if<std::vector<std::vector<double>>>(v)) return *rows;
+    wrong_type(name, "a list of lists of numbers");
+}
+
 std::vector<std::string> Params::get_strings(const std::string& name) const {
     const ParamValue* v = lookup(name);
     if (!v) return {};

@@ -65,6 +65,8 @@ public:
     std::vector<double> get_numbers(const std::string& name) const;
     std::vector<Vec3> get_vec3_list(const std::string& name) const;
     std::vector<Vec2> get_vec2_list(const std::string& name) const;
+    /// A list of lists of numbers, each of any length (empty when absent).
+    std::vector<std::vector<double>> get_rows(const std::string& name) const;
     // A single string or a list of strings.
     std::vector<std::string> get_strings(const std::string& name) const;
     Transform get_transform(const std::string& name) const;  // identity when absent

@@ -37,6 +37,25 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
         }
         m_bounds.expand(data.positions[i]);
     }
+    if (!data.position_keys.empty() && !data.normals.empty()) {
+        throw Error(fmt::format("mesh '{}': a deforming mesh takes no normals (it is shaded by "
+                                "its triangles' own normals at each time)",
+                                m_name));
+    }
+    for (size_t k = 0; k < data.position_keys.size(); ++k) {
+        const std::vector<Vec3>& key = data.position_keys[k];
+        if (key.size() != vertex_count) {
+            throw Error(fmt::format("mesh '{}': vertex key {} has {} vertices, the mesh {}",
+                                    m_name, k + 2, key.size(), vertex_count));
+        }
+        for (size_t i = 0; i < key.size(); ++i) {
+            if (!is_finite(key[i])) {
+                throw Error(fmt::format("mesh '{}': vertex {} of key {} is not finite", m_name,
+                                        i + 1, k + 2));
+            }
+            m_bounds.expand(key[i]);
+        }
+    }
     for (auto& n : data.normals) {
         const float len = glm::length(n);
         n = (std::isfinite(len) && len > 0.0f) ? n / len : Vec3(0.0f);
@@ -73,9 +92,13 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
 
 TriangleMesh::TriangleFrame TriangleMesh::triangle_frame(size_t first_index) const {
     const uint32_t* idx = &m_data.indices[first_index];
-    const Vec3& p0 = m_data.positions[idx[0]];
-    const Vec3& p1 = m_data.positions[idx[1]];
-    const Vec3& p2 = m_data.positions[idx[2]];
+    return frame_of(m_data.positions[idx[0]], m_data.positions[idx[1]], m_data.positions[idx[2]],
+                    first_index);
+}
+
+TriangleMesh::TriangleFrame TriangleMesh::frame_of(const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                                                   size_t first_index) const {
+    const uint32_t* idx = &m_data.indices[first_index];
     TriangleFrame frame;
     frame.ng = glm::normalize(triangle_cross(p0, p1, p2));
     Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
@@ -103,16 +126,24 @@ size_t TriangleMesh::memory_bytes() const {
     return m_data.positions.capacity() * sizeof(Vec3) + m_data.normals.capacity() * sizeof(Vec3) +
            m_data.uvs.capacity() * sizeof(Vec2) + m_data.indices.capacity() * sizeof(uint32_t) +
            m_frames.capacity() * sizeof(TriangleFrame) +
-           m_flat_shading.capacity() * sizeof(FlatShading);
+           m_flat_shading.capacity() * sizeof(FlatShading) +
+           m_data.position_keys.size() * m_data.positions.size() * sizeof(Vec3);
 }
 
 RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
     RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
-    auto* vertices = static_cast<float*>(
-        rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                3 * sizeof(float), m_data.positions.size()));
-    for (size_t i = 0; i < m_data.positions.size(); ++i) {
-        std::memcpy(vertices + 3 * i, &m_data.positions[i], 3 * sizeof(float));
+    // A deforming mesh is one of Embree's multi-segment motion-blur geometries: a vertex
+    // buffer per key, which Embree interpolates linearly at each ray's time.
+    const unsigned keys = 1 + static_cast<unsigned>(m_data.position_keys.size());
+    if (keys > 1) rtcSetGeometryTimeStepCount(geometry, keys);
+    for (unsigned key = 0; key < keys; ++key) {
+        const std::vector<Vec3>& positions =
+            key == 0 ? m_data.positions : m_data.position_keys[key - 1];
+        auto* vertices = static_cast<float*>(
+            rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, key, RTC_FORMAT_FLOAT3,
+                                    3 * sizeof(float), positions.size()));
+        for (size_t i = 0; i < positions.size(); ++i)
+            std::memcpy(vertices + 3 * i, &positions[i], 3 * sizeof(float));
     }
     auto* indices = static_cast<uint32_t*>(
         rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
@@ -125,8 +156,12 @@ RTCGeometry TriangleMesh::create_embree_geometry(RTCDevice device) const {
 // Everything is computed in locals and stored once: reading back a vector just stored
 // component by component into `si` (as copying si.p to si.p_object did) makes the CPU wait
 // for the stores to land, at every hit.
-void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
+void TriangleMesh::fill_interaction(const Ray& ray, const HitRecord& hit,
                                     SurfaceInteraction& si) const {
+    if (!m_data.position_keys.empty()) [[unlikely]] {
+        fill_deformed(ray.time, hit, si);
+        return;
+    }
     const uint32_t* idx = &m_data.indices[3 * hit.primitive];
     const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
     const Vec3 p = b0 * m_data.positions[idx[0]] + b1 * m_data.positions[idx[1]] +
@@ -163,6 +198,38 @@ void TriangleMesh::fill_interaction(const Ray&, const HitRecord& hit,
     si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
     si.dpdu = dpdu;
     si.dpdv = dpdv;
+}
+
+void TriangleMesh::fill_deformed(float time, const HitRecord& hit, SurfaceInteraction& si) const {
+    // Between the two keys around `time`, linearly, as Embree interpolates them.
+    const size_t segments = m_data.position_keys.size();
+    const float f = std::clamp(time, 0.0f, 1.0f) * static_cast<float>(segments);
+    const size_t first = std::min(static_cast<size_t>(f), segments - 1);
+    const float w = f - static_cast<float>(first);
+    const std::vector<Vec3>& a = first == 0 ? m_data.positions : m_data.position_keys[first - 1];
+    const std::vector<Vec3>& b = m_data.position_keys[first];
+    const uint32_t* idx = &m_data.indices[3 * hit.primitive];
+    Vec3 corner[3];
+    for (int k = 0; k < 3; ++k) corner[k] = (1.0f - w) * a[idx[k]] + w * b[idx[k]];
+    // A triangle that collapses at this time keeps the frame it has at rest.
+    const bool collapsed = !(glm::length(triangle_cross(corner[0], corner[1], corner[2])) > 0.0f);
+    const TriangleFrame frame = collapsed ? m_frames[hit.primitive]
+                                          : frame_of(corner[0], corner[1], corner[2], 3 * hit.primitive);
+    const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
+    const Vec3 p = b0 * corner[0] + b1 * corner[1] + b2 * corner[2];
+    Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);
+    if (!m_data.uvs.empty()) {
+        uv0 = m_data.uvs[idx[0]];
+        uv1 = m_data.uvs[idx[1]];
+        uv2 = m_data.uvs[idx[2]];
+    }
+    si.shading = Frame::from_normal_tangent(frame.ng, frame.dpdu);
+    si.p = p;
+    si.p_object = m_placed_by_transform ? m_data.to_object.point(p) : p;
+    si.ng = frame.ng;
+    si.uv = b0 * uv0 + b1 * uv1 + b2 * uv2;
+    si.dpdu = frame.dpdu;
+    si.dpdv = frame.dpdv;
 }
 
 std::unique_ptr<ShapeSampler> TriangleMesh::make_sampler(const Transform& to_world) const {
@@ -217,6 +284,8 @@ void transform_mesh(MeshData& mesh, const Transform& xf) {
     if (xf.is_identity()) return;
     mesh.to_object = mesh.to_object * xf.inverse();
     for (auto& p : mesh.positions) p = xf.point(p);
+    for (auto& key : mesh.position_keys)
+        for (auto& p : key) p = xf.point(p);
     for (auto& n : mesh.normals) n = glm::normalize(xf.normal(n));
     // A mirroring transform reverses the winding; restore it so normals still point out.
     if (xf.swaps_handedness()) {

@@ -13,6 +13,10 @@ struct MeshData {
     std::vector<Vec3> normals;      // per vertex, optional
     std::vector<Vec2> uvs;          // per vertex, optional
     std::vector<uint32_t> indices;  // three per triangle
+    // Deformation blur: the positions at later times, each as many as `positions` (which is
+    // the first key); n keys in all stand at the scene times i / (n - 1). Empty: the mesh
+    // keeps its form.
+    std::vector<std::vector<Vec3>> position_keys;
     // Undoes the transform applied by transform_mesh, so that solid textures see the mesh
     // where it was modelled.
     Transform to_object;
@@ -27,6 +31,7 @@ public:
     std::string name() const override { return m_name; }
     Bounds3 bounds() const override { return m_bounds; }
     size_t triangle_count() const override { return m_data.indices.size() / 3; }
+    bool deforms() const override { return !m_data.position_keys.empty(); }
     size_t memory_bytes() const override;
     RTCGeometry create_embree_geometry(RTCDevice device) const override;
     void fill_interaction(const Ray& ray, const HitRecord& hit,
@@ -44,6 +49,11 @@ private:
         Vec3 dpdu, dpdv;  // from the uvs, or a frame around ng where they are degenerate
     };
     TriangleFrame triangle_frame(size_t first_index) const;
+    // The frame of the triangle with corners p0, p1, p2 (in index order from first_index).
+    TriangleFrame frame_of(const Vec3& p0, const Vec3& p1, const Vec3& p2,
+                           size_t first_index) const;
+    // A deforming mesh's hit: its triangle's corners where they stand at `time`.
+    void fill_deformed(float time, const HitRecord& hit, SurfaceInteraction& si) const;
 
     std::string m_name;
     MeshData m_data;

@@ -77,6 +77,9 @@ public:
     virtual std::string name() const = 0;
     virtual Bounds3 bounds() const = 0;
     virtual size_t triangle_count() const { return 0; }
+    /// Whether the shape changes its form over the scene times [0, 1] (deformation blur: a
+    /// mesh with vertex keys); its hits then depend on the ray's time.
+    virtual bool deforms() const { return false; }
     /// Bytes of the shape's own arrays (vertices, indices, per-triangle data), for `glint
     /// info`; what Embree holds is counted by Accel::embree_bytes().
     virtual size_t memory_bytes() const { return 0; }

@@ -22,6 +22,36 @@ std::unique_ptr<Shape> mesh_shape(const Params& params, std::string name, MeshDa
     }
 }
 
+// Deformation blur: `vertex_keys`, the vertices at later times, each key a flat list
+// {x1, y1, z1, x2, ...} of as many vertices as `vertices` (the first key).
+std::vector<std::vector<Vec3>> read_vertex_keys(const Params& params, size_t vertex_count) {
+    std::vector<std::vector<Vec3>> keys;
+    if (!params.has("vertex_keys")) return keys;
+    // The same limit as motion keys (2 to 129 in all, with `vertices`).
+    constexpr size_t kMaxLaterKeys = 128;
+    const std::vector<std::vector<double>> rows = params.get_rows("vertex_keys");
+    if (rows.empty() || rows.size() > kMaxLaterKeys) {
+        params.fail_at("vertex_keys", fmt::format("'vertex_keys' must list 1 to {} keys, each the "
+                                                  "vertices at a later time as a flat list "
+                                                  "{{x1, y1, z1, x2, ...}}",
+                                                  kMaxLaterKeys));
+    }
+    for (size_t k = 0; k < rows.size(); ++k) {
+        if (rows[k].size() != 3 * vertex_count) {
+            params.fail_at("vertex_keys",
+                           fmt::format("key {} of 'vertex_keys' holds {} numbers; the mesh's {} "
+                                       "vertices need {}",
+                                       k + 1, rows[k].size(), vertex_count, 3 * vertex_count));
+        }
+        std::vector<Vec3>& key = keys.emplace_back(vertex_count);
+        for (size_t i = 0; i < vertex_count; ++i) {
+            key[i] = Vec3(static_cast<float>(rows[k][3 * i]), static_cast<float>(rows[k][3 * i + 1]),
+                          static_cast<float>(rows[k][3 * i + 2]));
+        }
+    }
+    return keys;
+}
+
 std::unique_ptr<Shape> make_sphere(const Params& params, const ShapeSources&) {
     const SphereParams sphere = read_sphere(params);
     return std::make_unique<Sphere>(sphere.center, sphere.radius,
@@ -73,6 +103,7 @@ std::unique_ptr<Shape> make_mesh(const Params& params, const ShapeSources& sourc
     if (data.positions.empty() || data.indices.empty()) {
         params.fail("a mesh needs 'file', or 'vertices' and 'indices'");
     }
+    data.position_keys = read_vertex_keys(params, data.positions.size());
     return mesh_shape(params, "mesh", std::move(data));
 }
 

@@ -164,6 +164,7 @@ private:
             const unsigned id = m_scene->m_accel.add_shape(-1, *use.shape);
             Scene::WorldEntry& entry = world_entry(id);
             entry.geometry = {use.shape, use.materials};
+            note_deformation(use, "");
             entry.light = make_area_light(use, Transform());
             count_shape(use, Transform());
         }
@@ -225,6 +226,7 @@ private:
                                     "area lights stand still in glint",
                                     instance.where));
                 }
+                note_deformation(use, instance.where);
                 entry.lights.push_back(make_area_light(use, to_world));
                 count_shape(use, motion);
             }
@@ -258,6 +260,18 @@ private:
     Scene::WorldEntry& world_entry(unsigned id) {
         if (m_scene->m_world.size() <= id) m_scene->m_world.resize(id + 1);
         return m_scene->m_world[id];
+    }
+
+    // A deforming shape makes the scene one that moves (rays draw times); an emitting one
+    // is refused, as a moving emitter is. `placed_at`: the placement's line, if any.
+    void note_deformation(const ShapeUse& use, const std::string& placed_at) {
+        if (!use.shape->deforms()) return;
+        if (is_emitter(use)) {
+            use.params->fail(fmt::format("an emitting shape cannot deform{}: area lights keep "
+                                         "their form in glint",
+                                         placed_at.empty() ? "" : " (placed at " + placed_at + ")"));
+        }
+        m_scene->m_has_motion = true;
     }
 
     static bool is_emitter(const ShapeUse& use) {

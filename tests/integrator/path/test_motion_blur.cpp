@@ -329,3 +329,109 @@ TEST(MotionBlur, MalformedMotionIsAnErrorNamingTheLine) {
     EXPECT_NE(emitter.find(":2:"), std::string::npos) << emitter;
     EXPECT_NE(emitter.find("cannot move"), std::string::npos) << emitter;
 }
+
+// Deformation blur: a quad whose right edge sweeps from x = 0.2 to x = 1 over the shutter
+// (vertex keys), seen from above: a pixel at x is covered while the edge is past it, a
+// fraction 1 - (x - 0.2) / 0.8 of the shutter, and sees 1 - 0.5 c as the spinning square.
+TEST(MotionBlur, DeformingMeshMatchesTheCoveredFractionOfTheShutter) {
+    constexpr int kSize = 40, kSpp = 512;
+    constexpr float kHeight = 2.4f;
+    const Image image = render_lua(fmt::format(R"(
+glint.camera{{ type = "orthographic", eye = {{0, 0, 5}}, look_at = {{0, 0, 0}}, scale = {},
+               shutter = {{0, 1}} }}
+glint.render{{ width = {}, height = {}, spp = {}, max_depth = 1, filter = "box" }}
+glint.background{{ radiance = 1 }}
+glint.mesh{{ vertices = {{{{0, -1, 0}}, {{0.2, -1, 0}}, {{0.2, 1, 0}}, {{0, 1, 0}}}},
+             indices = {{1, 2, 3, 1, 3, 4}},
+             vertex_keys = {{ {{0, -1, 0,  1, -1, 0,  1, 1, 0,  0, 1, 0}} }},
+             material = glint.diffuse{{ reflectance = 0.5 }} }}
+)",
+                                               kHeight, kSize, kSize, kSpp));
+    const float pixel = kHeight / kSize;
+    double worst = 0.0, sum_error = 0.0;
+    int count = 0;
+    for (int py = 0; py < kSize; ++py) {
+        for (int px = 0; px < kSize; ++px) {
+            const float cx = (px + 0.5f) * pixel - 0.5f * kHeight;
+            const float cy = 0.5f * kHeight - (py + 0.5f) * pixel;
+            // Pixels wholly inside the band the edge sweeps, away from the top and bottom.
+            if (cx - 0.5f * pixel < 0.2f || cx + 0.5f * pixel > 1.0f || std::abs(cy) > 0.8f)
+                continue;
+            int covered = 0, total = 0;
+            for (int sx = 0; sx < 8; ++sx) {
+                const float x = cx + ((sx + 0.5f) / 8 - 0.5f) * pixel;
+                for (int t = 0; t < 400; ++t, ++total)
+                    covered += x <= 0.2f + 0.8f * (t + 0.5f) / 400;
+            }
+            const double expected = 1.0 - 0.5 * covered / total;
+            const double error = image.at(px, py, 1) - expected;
+            worst = std::max(worst, std::abs(error));
+            sum_error += error;
+            ++count;
+        }
+    }
+    ASSERT_GT(count, 100);
+    const double se = 0.25 / std::sqrt(static_cast<double>(kSpp));  // as for the square
+    EXPECT_LT(worst, 5.0 * se);
+    EXPECT_LT(std::abs(sum_error / count), 5.0 * se / std::sqrt(static_cast<double>(count)));
+}
+
+// A mesh whose keys translate every vertex blurs as the same mesh moved by motion keys.
+TEST(MotionBlur, DeformingMeshAgreesWithTheSameRigidMotion) {
+    const auto scene = [](bool deform, int seed) {
+        const std::string motion =
+            deform ? "vertex_keys = { { 0.6, -0.5, 0,  1.6, -0.5, 0,  1.6, 0.5, 0,  0.6, 0.5, 0,"
+                     "  0.6, -0.5, 1,  1.6, -0.5, 1,  1.6, 0.5, 1,  0.6, 0.5, 1 } }"
+                   : "motion = { glint.translate(0, 0, 0), glint.translate(1.2, 0, 0) }";
+        return fmt::format(R"(
+glint.camera{{ eye = {{0, 1, 5}}, look_at = {{0, 0, 0}}, fov = 32, shutter = {{0, 1}} }}
+glint.render{{ width = 24, height = 24, spp = 16, seed = {}, max_depth = 2 }}
+glint.background{{ radiance = {{0.4, 0.5, 0.6}} }}
+glint.point_light{{ position = {{1, 4, 3}}, intensity = 20 }}
+glint.quad{{ vertices = {{{{-3, -0.6, -3}}, {{-3, -0.6, 3}}, {{3, -0.6, 3}}, {{3, -0.6, -3}}}},
+             material = glint.diffuse{{ reflectance = 0.5 }} }}
+-- Two faces of a slab, as one mesh.
+glint.mesh{{ vertices = {{{{-0.6, -0.5, 0}}, {{0.4, -0.5, 0}}, {{0.4, 0.5, 0}}, {{-0.6, 0.5, 0}},
+                          {{-0.6, -0.5, 1}}, {{0.4, -0.5, 1}}, {{0.4, 0.5, 1}}, {{-0.6, 0.5, 1}}}},
+             indices = {{1, 2, 3, 1, 3, 4, 5, 7, 6, 5, 8, 7}}, {},
+             material = glint.diffuse{{ reflectance = {{0.8, 0.3, 0.2}} }} }}
+)",
+                           seed, motion);
+    };
+    // The rigid motion's keys translate by 1.2, the vertex keys by 1.2 in x too (and the
+    // second face stays 1 behind the first): the same sweep.
+    std::vector<Image> deformed, rigid;
+    for (int k = 0; k < 8; ++k) {
+        deformed.push_back(render_lua(scene(true, k + 1)));
+        rigid.push_back(render_lua(scene(false, k + 101)));
+    }
+    EXPECT_LT(largest_z(block_stats(deformed), block_stats(rigid)), 5.0);
+}
+
+TEST(MotionBlur, MalformedVertexKeysAreErrorsNamingTheLine) {
+    const auto message_of = [](const std::string& extra) {
+        try {
+            render_lua("glint.camera{ shutter = {0, 1} }\n"
+                       "glint.mesh{ vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "
+                       "indices = {1, 2, 3}, " +
+                       extra + " }");
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    const std::string grey = "material = glint.diffuse{}, ";
+    const std::string short_key = message_of(grey + "vertex_keys = { {0, 0, 0, 1, 0, 0} }");
+    EXPECT_NE(short_key.find(":2:"), std::string::npos) << short_key;
+    EXPECT_NE(short_key.find("need 9"), std::string::npos) << short_key;
+    const std::string with_normals = message_of(
+        grey + "normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, vertex_keys = { {0, 0, 0, 1, 0, 0, 0, 1, 1} "
+        "}");
+    EXPECT_NE(with_normals.find("normals"), std::string::npos) << with_normals;
+    EXPECT_NE(with_normals.find(":2:"), std::string::npos) << with_normals;
+    const std::string emitting = message_of(
+        "material = glint.emissive{ radiance = 1 }, vertex_keys = { {0, 0, 0, 1, 0, 0, 0, 1, 1} "
+        "}");
+    EXPECT_NE(emitting.find("deform"), std::string::npos) << emitting;
+    EXPECT_NE(emitting.find(":2:"), std::string::npos) << emitting;
+}
