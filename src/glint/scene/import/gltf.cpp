@@ -3,6 +3,7 @@
 #include <glint/core/file_access.h>
 #include <glint/scene/import/file_bytes.h>
 #include <glint/scene/import/gltf.h>
+#include <glint/scene/import/keyframe_curve.h>
 
 #include <fmt/format.h>
 #include <tiny_gltf.h>
@@ -17,6 +18,7 @@
 #include <fstream>
 #include <limits>
 #include <map>
+#include <optional>
 #include <set>
 #include <tuple>
 
@@ -138,6 +140,57 @@ bool refuse_writing(std::string* error, const std::string&, const std::vector<un
     return false;
 }
 
+// A node's translation, rotation and scale (glTF's TRS), from the node or an animation.
+struct NodePose {
+    Vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    Vec3 scale{1.0f};
+
+    Mat4 matrix() const {
+        return glm::translate(Mat4(1.0f), translation) * glm::mat4_cast(rotation) *
+               glm::scale(Mat4(1.0f), scale);
+    }
+};
+
+NodePose node_pose(const tinygltf::Node& node) {
+    NodePose pose;
+    if (node.translation.size() == 3)
+        pose.translation = Vec3(node.translation[0], node.translation[1], node.translation[2]);
+    if (node.rotation.size() == 4) {
+        pose.rotation = glm::normalize(glm::quat(
+            static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+            static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
+    }
+    if (node.scale.size() == 3) pose.scale = Vec3(node.scale[0], node.scale[1], node.scale[2]);
+    return pose;
+}
+
+// The curves of one animated node (glTF's channels that target it).
+struct NodeAnimation {
+    std::optional<KeyframeCurve> translation, rotation, scale;
+
+    NodePose at(NodePose pose, float time) const {
+        float v[4];
+        if (translation) {
+            translation->evaluate(time, v);
+            pose.translation = Vec3(v[0], v[1], v[2]);
+        }
+        if (rotation) {
+            rotation->evaluate(time, v);
+            pose.rotation = glm::quat(v[3], v[0], v[1], v[2]);
+        }
+        if (scale) {
+            scale->evaluate(time, v);
+            pose.scale = Vec3(v[0], v[1], v[2]);
+        }
+        return pose;
+    }
+};
+
+// Motion keys taken from an animation over a time window: enough that a shutter's arc of a
+// turning or accelerating node is followed closely (glint interpolates between keys).
+constexpr int kAnimationKeys = 17;
+
 Mat4 node_matrix(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) {
         Mat4 m;  // glTF stores column-major, as glm does
@@ -195,7 +248,9 @@ public:
         // group placed several times (Embree instances) instead of copies.
         std::vector<int> path;
         for (int root : m_roots) count_uses(root, path);
-        for (int root : m_roots) visit(root, m_target.transform.matrix(), path);
+        read_animation();
+        const std::vector<Mat4> placed(m_key_times.size(), m_target.transform.matrix());
+        for (int root : m_roots) visit(root, placed, path);
         return m_bounds;
     }
 
@@ -344,26 +399,128 @@ private:
         path.push_back(node_index);
     }
 
-    void visit(int node_index, const Mat4& parent, std::vector<int>& path) {
+    // `parent`: the parent's world matrix at each of m_key_times (one: standing still).
+    void visit(int node_index, const std::vector<Mat4>& parent, std::vector<int>& path) {
         enter(node_index, path);
         const tinygltf::Node& node = m_model.nodes[static_cast<size_t>(node_index)];
-        const Mat4 world = parent * node_matrix(node);
-        for (int i = 0; i < 16; ++i) {
-            if (!std::isfinite(world[i / 4][i % 4]))
-                fail(fmt::format("node {} has a transform that is not finite", node_index));
+        std::vector<Mat4> world(parent.size());
+        auto animation = m_animations.find(node_index);
+        bool hidden = false;
+        for (size_t k = 0; k < world.size(); ++k) {
+            const Mat4 local = animation == m_animations.end()
+                                   ? node_matrix(node)
+                                   : animation->second.at(node_pose(node), m_key_times[k]).matrix();
+            world[k] = parent[k] * local;
+            for (int i = 0; i < 16; ++i) {
+                if (!std::isfinite(world[k][i / 4][i % 4]))
+                    fail(fmt::format("node {} has a transform that is not finite", node_index));
+            }
+            // A node scaled to nothing (a way to hide it) places nothing: its transform has
+            // no inverse.
+            hidden |= !(std::abs(glm::determinant(Mat3(world[k]))) > 1e-30f);
         }
-        // A node scaled to nothing (a way to hide it) places nothing: its transform has no
-        // inverse.
-        const float det = glm::determinant(Mat3(world));
-        if (node.mesh >= 0 && std::abs(det) > 1e-30f) place_mesh(node.mesh, Transform(world));
-        if (node.camera >= 0) add_camera(at(m_model.cameras, node.camera, "camera"), world);
+        const bool moving =
+            std::any_of(world.begin(), world.end(), [&](const Mat4& m) { return m != world[0]; });
+        if (node.mesh >= 0 && !hidden) {
+            if (moving)
+                place_moving_mesh(node.mesh, world);
+            else
+                place_mesh(node.mesh, Transform(world[0]));
+        }
+        if (moving && (node.camera >= 0 || node.extensions.count("KHR_lights_punctual")) &&
+            !m_warned_still_pose) {
+            m_warned_still_pose = true;
+            warn("animated cameras and lights stand where the animation starts (glint moves "
+                 "meshes only)");
+        }
+        if (node.camera >= 0) add_camera(at(m_model.cameras, node.camera, "camera"), world[0]);
         if (node.extensions.count("KHR_lights_punctual")) {
             const tinygltf::Value& ext = node.extensions.at("KHR_lights_punctual");
             if (ext.Has("light") && ext.Get("light").IsNumber())
-                add_light(ext.Get("light").GetNumberAsInt(), world);
+                add_light(ext.Get("light").GetNumberAsInt(), world[0]);
         }
         for (int child : node.children) visit(child, world, path);
         path.pop_back();
+    }
+
+    // The first animation's channels, as motion keys over the import's window (see
+    // ImportTarget::animation): m_key_times are the file's seconds that the keys stand for.
+    // Without a window every node stands as the file places it.
+    void read_animation() {
+        if (!m_target.animation) {
+            m_key_times = {0.0f};
+            return;
+        }
+        const auto [start, end] = *m_target.animation;
+        if (start == end) {
+            m_key_times = {start};
+        } else {
+            for (int k = 0; k < kAnimationKeys; ++k)
+                m_key_times.push_back(start + (end - start) * static_cast<float>(k) /
+                                                  static_cast<float>(kAnimationKeys - 1));
+        }
+        if (m_model.animations.empty()) {
+            warn("'animation' is set but the file has no animations");
+            return;
+        }
+        if (m_model.animations.size() > 1)
+            warn(fmt::format("the file has {} animations; glint plays the first, '{}'",
+                             m_model.animations.size(), m_model.animations[0].name));
+        const tinygltf::Animation& animation = m_model.animations[0];
+        for (size_t c = 0; c < animation.channels.size(); ++c) {
+            const tinygltf::AnimationChannel& channel = animation.channels[c];
+            const std::string what = fmt::format("animation 0 channel {}", c);
+            const std::string& property = channel.target_path;
+            if (property == "weights") {
+                warn("morph target weights are animated; glint does not import morph targets");
+                continue;
+            }
+            if (property != "translation" && property != "rotation" && property != "scale")
+                fail(fmt::format("{}: unknown target path '{}'", what, property));
+            at(m_model.nodes, channel.target_node, "node");
+            if (!m_model.nodes[static_cast<size_t>(channel.target_node)].matrix.empty())
+                fail(fmt::format("{}: node {} is placed by a matrix, which cannot be animated",
+                                 what, channel.target_node));
+            const tinygltf::AnimationSampler& sampler =
+                at(animation.samplers, channel.sampler, "animation sampler");
+            KeyframeCurve curve;
+            curve.components = property == "rotation" ? 4 : 3;
+            if (sampler.interpolation == "STEP")
+                curve.interpolation = KeyframeCurve::Interpolation::kStep;
+            else if (sampler.interpolation == "CUBICSPLINE")
+                curve.interpolation = KeyframeCurve::Interpolation::kCubicSpline;
+            else if (sampler.interpolation.empty() || sampler.interpolation == "LINEAR")
+                curve.interpolation = KeyframeCurve::Interpolation::kLinear;
+            else
+                fail(fmt::format("{}: unknown interpolation '{}'", what, sampler.interpolation));
+            curve.times = read_floats(sampler.input, 1, what + " times");
+            curve.values = read_floats(sampler.output, curve.components, what + " values");
+            const char* reason = nullptr;
+            if (!curve.valid(&reason)) fail(fmt::format("{}: the curve {}", what, reason));
+            NodeAnimation& node = m_animations[channel.target_node];
+            (property == "translation" ? node.translation
+             : property == "rotation"  ? node.rotation
+                                       : node.scale) = std::move(curve);
+        }
+    }
+
+    // A mesh whose node moves: its primitives in a group of their own (shared by every
+    // moving placement of the mesh), placed with motion keys.
+    void place_moving_mesh(int mesh_index, const std::vector<Mat4>& world) {
+        const std::vector<Primitive>& primitives = primitives_of(mesh_index);
+        std::vector<Transform> keys;
+        keys.reserve(world.size());
+        for (const Mat4& m : world) {
+            keys.emplace_back(m);
+            for (const Primitive& p : primitives) m_bounds.expand(p.bounds.transformed(keys.back()));
+        }
+        auto [it, inserted] = m_group_of_mesh.try_emplace(mesh_index, -1);
+        if (inserted) {
+            m_desc.groups.push_back(GroupDesc{m_target.where, {}, {}});
+            it->second = static_cast<int>(m_desc.groups.size()) - 1;
+            for (const Primitive& p : primitives) add_shape(it->second, p, Transform());
+        }
+        m_desc.groups[0].instances.push_back({it->second, Transform(), m_target.where, keys});
     }
 
     struct Primitive {
@@ -1067,6 +1224,9 @@ private:
     fs::path m_directory;
     ReferencedFiles m_files;
     size_t m_node_visits = 0;  // both walks over the node graph together
+    std::vector<float> m_key_times;           // the file's seconds of each motion key
+    std::map<int, NodeAnimation> m_animations;  // node -> its curves
+    bool m_warned_still_pose = false;
     std::vector<int> m_roots;
     std::map<int, int> m_uses;           // mesh -> placements
     std::map<int, int> m_group_of_mesh;  // repeated mesh -> its group

@@ -144,6 +144,20 @@ void import_into(SceneDesc& desc, const Params& params) {
     target.emission_scale = params.get_float("emission_scale", 1.0f);
     if (!(target.emission_scale >= 0.0f) || !std::isfinite(target.emission_scale))
         params.fail("'emission_scale' must be a finite number >= 0");
+    if (params.has("animation")) {
+        const std::vector<double> times = params.get_numbers("animation");
+        const bool finite = std::all_of(times.begin(), times.end(),
+                                        [](double t) { return std::isfinite(t); });
+        if (times.empty() || times.size() > 2 || !finite || times.front() > times.back())
+            params.fail_at("animation",
+                           "'animation' must be {start, end} in seconds of the file's "
+                           "animation (start <= end), or one time for a still pose");
+        target.animation = std::array<float, 2>{static_cast<float>(times.front()),
+                                                static_cast<float>(times.back())};
+        const std::string ext = lower_extension(target.path);
+        if (ext != ".gltf" && ext != ".glb")
+            params.fail_at("animation", "'animation' applies to glTF files (.gltf, .glb) only");
+    }
     target.where = params.where();
     target.confine_references = !desc.trusted;
     params.check_all_used();

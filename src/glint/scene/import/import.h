@@ -3,6 +3,7 @@
 // description, with its meshes, materials and (glTF) node hierarchy, cameras and lights.
 #include <glint/scene/scene_desc.h>
 
+#include <array>
 #include <optional>
 #include <string>
 
@@ -20,6 +21,10 @@ struct ImportTarget {
     /// and lux become W/sr and W/m^2 (1/683, see the docs), pbrt's are glint's (1).
     std::optional<float> light_scale;
     float emission_scale = 1.0f;  ///< multiplies glTF emission (see the docs)
+    /// glTF animation: the file's times in seconds that the scene times 0 and 1 stand for;
+    /// the first animation moves the nodes over them (motion keys). Equal times: the pose at
+    /// that time, standing still. Unset: every node stands as the file places it.
+    std::optional<std::array<float, 2>> animation;
     std::string where;            ///< the script location of the import, for messages
     /// Files the model refers to (MTL libraries, glTF buffers and images) must lie inside
     /// the model's folder; a trusted scene lifts this.
