@@ -131,8 +131,13 @@ TEST(LightTree, ChoicesMatchTheStatedPmf) {
                 ++none;
                 continue;
             }
-            ASSERT_LT(c.piece, c.light->piece_count());
-            ++counts[first_count[c.light->index()] + c.piece];
+            // A light of one piece is chosen whole.
+            const uint32_t piece = c.piece == LightSampler::kWholeLight ? 0 : c.piece;
+            if (c.light->piece_count() == 1) {
+                EXPECT_EQ(c.piece, LightSampler::kWholeLight);
+            }
+            ASSERT_LT(piece, c.light->piece_count());
+            ++counts[first_count[c.light->index()] + piece];
             if (c.pmf != sampler.pmf(p, n, *c.light, c.piece)) ++mismatched_pmf;
         }
         EXPECT_EQ(mismatched_pmf, 0);
@@ -301,10 +306,12 @@ TEST(LightTree, DegenerateInputs) {
     two.push_back(quad_light(Vec3(-1, 1, 0), Vec3(0, -1, 0), 0.5f, 3.0f, false));
     expect_consistent(two);
 
+    // One light of one piece needs no tree: it is chosen with probability 1.
     std::vector<std::unique_ptr<Light>> one;
     one.push_back(std::make_unique<PointLight>(Vec3(2, 2, 2), Spectrum(1.0f)));
-    expect_consistent(one);
     const LightSampler single(one, LightSelection::kTree);
+    EXPECT_EQ(single.tree(), nullptr);
+    EXPECT_EQ(single.selection(), LightSelection::kTree);
     EXPECT_EQ(single.pmf(kPoints[0].p, kPoints[0].n, *one[0]), 1.0f);
     EXPECT_EQ(single.sample(kPoints[0].p, kPoints[0].n, 0.7f).light, one[0].get());
 }

@@ -59,7 +59,7 @@ private:
     struct Rectangle {
         Vec3 corner, edge_x, edge_y;
     };
-    size_t pick_triangle(float u_select) const;
+    [[gnu::always_inline]] inline size_t pick_triangle(float u_select) const;
     bool is_piece(uint32_t piece) const { return !m_rectangle && piece < m_normals.size(); }
     // A point on triangle `tri` seen from `ref`, with its density given the triangle.
     ShapeSample sample_triangle(const Vec3& ref, const Vec2& u, size_t tri) const;
@@ -67,7 +67,7 @@ private:
     Vec3 rectangle_centre() const {
         return m_rectangle->corner + 0.5f * (m_rectangle->edge_x + m_rectangle->edge_y);
     }
-    Vec3 point_in(size_t tri, const Vec2& u) const;
+    [[gnu::always_inline]] inline Vec3 point_in(size_t tri, const Vec2& u) const;
     size_t triangle_holding(const Vec3& p) const;
     float triangle_area(size_t tri) const;
     static bool spherical_pays(double solid_angle);

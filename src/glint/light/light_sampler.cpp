@@ -15,10 +15,10 @@ LightTree build_tree(const std::vector<std::unique_ptr<Light>>& lights) {
             // Every piece (an emitting mesh's triangle) a leaf of its own.
             for (uint32_t piece = 0; piece < pieces; ++piece) {
                 if (std::optional<LightBounds> b = light->piece_bounds(piece))
-                    bounded.push_back({light.get(), *b, piece});
+                    bounded.push_back({light.get(), *b, piece, false});
             }
         } else if (std::optional<LightBounds> b = light->bounds()) {
-            bounded.push_back({light.get(), *b, 0});
+            bounded.push_back({light.get(), *b, 0, true});
         } else {
             unbounded.push_back(light.get());
         }
@@ -51,7 +51,11 @@ LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights,
         m_cdf.push_back(static_cast<float>(running));
     }
     if (!m_cdf.empty()) m_cdf.back() = 1.0f;
-    if (selection == LightSelection::kTree) m_tree = build_tree(lights);
+    // One light of one piece (a Cornell box's lamp) is chosen with probability 1 either
+    // way: the power distribution's one-light shortcut does it without a tree walk.
+    const bool one_choice = lights.size() == 1 && lights.front()->piece_count() == 1;
+    if (selection == LightSelection::kTree && !one_choice) m_tree = build_tree(lights);
+    m_selection = selection;
 }
 
 LightSampler::Choice LightSampler::sample_among_several(float u) const {

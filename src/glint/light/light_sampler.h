@@ -33,7 +33,7 @@ public:
         /// the light was chosen as a whole (by power).
         uint32_t piece = kWholeLight;
     };
-    static constexpr uint32_t kWholeLight = UINT32_MAX;
+    static constexpr uint32_t kWholeLight = LightTree::kWholeLight;
     /// A light in proportion to power (the start of a light path).
     Choice sample(float u) const {
         // One light (a Cornell box, a studio key light) is common: no search for it.
@@ -80,10 +80,10 @@ public:
     }
 
     bool empty() const { return m_lights.empty(); }
-    LightSelection selection() const {
-        return m_tree ? LightSelection::kTree : LightSelection::kPower;
-    }
-    /// The tree, when next-event estimation uses one.
+    /// The selection the scene asked for (a scene of one light, which needs no tree, still
+    /// says kTree when it asked for one).
+    LightSelection selection() const { return m_selection; }
+    /// The tree, when next-event estimation uses one (not for a single light of one piece).
     const LightTree* tree() const { return m_tree ? &*m_tree : nullptr; }
 
 private:
@@ -93,6 +93,7 @@ private:
     std::vector<float> m_pmf;
     std::vector<float> m_cdf;
     std::optional<LightTree> m_tree;
+    LightSelection m_selection = LightSelection::kPower;
 };
 
 /// The light selection that the render setting `light_sampler` names ("tree", "power").

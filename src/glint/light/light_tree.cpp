@@ -233,7 +233,7 @@ LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbou
         for (size_t place = range.begin(); place != range.end(); ++place) {
             const Entry& e = bounded[items[place].entry];
             m_nodes[leaf_nodes[place]].bounds = e.bounds;
-            m_leaves[place] = Leaf{e.light, e.piece};
+            m_leaves[place] = Leaf{e.light, e.whole ? kWholeLight : e.piece};
         }
     });
     merge_bounds(0, count);
@@ -385,6 +385,7 @@ LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const
 }
 
 const LightTree::Trail* LightTree::trail_of(int light_index, uint32_t piece) const {
+    if (piece == kWholeLight) piece = 0;
     if (light_index < 0 || static_cast<size_t>(light_index) + 1 >= m_first_trail.size())
         return nullptr;
     const size_t place = m_first_trail[light_index] + piece;

@@ -24,7 +24,11 @@ public:
         const Light* light;
         LightBounds bounds;
         uint32_t piece = 0;
+        bool whole = true;  ///< the light is one piece: choices name kWholeLight
     };
+    /// The piece a choice names for a light of one piece: sampled whole, with no piece
+    /// lookup (the common case, a lamp, costs nothing extra); pmf() takes it as piece 0.
+    static constexpr uint32_t kWholeLight = UINT32_MAX;
     LightTree() = default;
     /// `light_count` bounds the lights' indices (Light::index), for the pmf look-up.
     LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbounded, size_t light_count);
@@ -32,7 +36,7 @@ public:
     struct Choice {
         const Light* light = nullptr;
         float pmf = 0.0f;
-        uint32_t piece = 0;
+        uint32_t piece = kWholeLight;
     };
     /// A light for the receiving point `p` with unit normal `n` (zero: a point without a
     /// surface); no light only when the scene has none.
