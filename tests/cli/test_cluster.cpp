@@ -180,14 +180,16 @@ TEST_P(MpiImageTest, ThreeRanksGiveTheSingleProcessImage) {
     expect_identical(read_image(out("mpi.exr")), read_image(out("single.exr")));
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, MpiImageTest, ::testing::Values("path", "whitted", "sppm"));
+INSTANTIATE_TEST_SUITE_P(Integrators, MpiImageTest,
+                         ::testing::Values("path", "whitted", "sppm", "vcm"));
 
-// VCM's light subpaths are not exchanged yet (docs/cluster.md): refused before any rendering.
+// bdpt's strategies are not shared among ranks (docs/cluster.md): refused before any
+// rendering.
 TEST_F(MpiTest, IntegratorsThatCannotBeSpreadAreRefused) {
-    const auto job = run_command(fmt::format("{} render {} --integrator vcm --spp 6 -o {} 2>&1",
+    const auto job = run_command(fmt::format("{} render {} --integrator bdpt --spp 6 -o {} 2>&1",
                                              mpirun(3), kCornell, out("x.exr")));
     EXPECT_NE(job.exit_code, 0) << job.output;
-    EXPECT_NE(job.output.find("every rank: --integrator: integrator 'vcm' cannot be spread"),
+    EXPECT_NE(job.output.find("every rank: --integrator: integrator 'bdpt' cannot be spread"),
               std::string::npos)
         << job.output;
     EXPECT_FALSE(fs::exists(out("x.exr")));

@@ -39,12 +39,14 @@ public:
     virtual ProgressReport receive_progress() = 0;
     /// This rank's share [first, end) of `count` items: consecutive ranges in rank order, as
     /// equal as they can be, so that the ranks' results in rank order are the items' order.
-    std::pair<uint64_t, uint64_t> share(uint64_t count) const {
-        const auto boundary = [&](int r) {
-            // count * r stays below 2^64 for any count a pass or an image has (< 2^40).
-            return count * static_cast<uint64_t>(r) / static_cast<uint64_t>(size());
+    std::pair<uint64_t, uint64_t> share(uint64_t count) const { return share_of(rank(), count); }
+    /// Rank `r`'s share of `count` items (share() on that rank).
+    std::pair<uint64_t, uint64_t> share_of(int r, uint64_t count) const {
+        const auto boundary = [&](int b) {
+            // count * b stays below 2^64 for any count a pass or an image has (< 2^40).
+            return count * static_cast<uint64_t>(b) / static_cast<uint64_t>(size());
         };
-        return {boundary(rank()), boundary(rank() + 1)};
+        return {boundary(r), boundary(r + 1)};
     }
     /// Bytes this process has sent to and received from the others so far.
     virtual uint64_t bytes_exchanged() const = 0;

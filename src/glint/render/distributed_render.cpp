@@ -158,14 +158,14 @@ std::optional<RenderReport> render_distributed(Cluster& cluster, const RenderSet
     agree(cluster, status_of([&] {
               std::tie(desc, settings) = setup();
               // Tile integrators: each rank renders a share of every pixel's samples.
-              // Others share their work themselves (sppm) and every rank ends with the
+              // Others share their work themselves (sppm, vcm) and every rank ends with the
               // whole image; the rest cannot be spread.
               const auto integrator = make_integrator(settings);
               by_samples = dynamic_cast<const TileIntegrator*>(integrator.get()) != nullptr;
               if (!by_samples && !integrator->share_work(cluster)) {
                   throw Error(
                       fmt::format("{}: integrator '{}' cannot be spread over MPI ranks "
-                                  "(tile integrators and sppm can; docs/cluster.md)",
+                                  "(tile integrators, sppm and vcm can; docs/cluster.md)",
                                   settings.where_of("integrator"), settings.integrator));
               }
               if (by_samples && settings.spp < ranks) {

@@ -98,8 +98,8 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
     if (!scene.has_motion() || capabilities.motion_blur) return;
     throw Error(
         fmt::format("{}: the '{}' integrator does not render moving scenes yet (its "
-                    "photon map or radiosity is made at one time); use path, whitted, "
-                    "sppm, light, bdpt, vcm or mlt",
+                    "radiosity solution or preview is made at one time); use path, "
+                    "whitted, photon, sppm, light, bdpt, vcm or mlt",
                     settings.where_of("integrator"), settings.integrator));
 }
 

@@ -127,6 +127,8 @@ public:
     /// the scene. Throws glint::Error for a null camera.
     void set_camera(std::unique_ptr<Camera> camera);
     const std::vector<std::unique_ptr<Light>>& lights() const { return m_lights; }
+    /// Every material the scene's surfaces use.
+    const std::vector<std::unique_ptr<Material>>& materials() const { return m_materials; }
     const LightSampler& light_sampler() const { return m_light_sampler; }
     Spectrum background() const { return m_background.spectrum(); }
     // The scene's light at infinity (an environment map), or nullptr: at most one.

@@ -1,9 +1,11 @@
+#include <glint/cluster/cluster.h>
 #include <glint/core/error.h>
 #include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/core/rng.h>
 #include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/bidirectional/bdpt.h>
+#include <glint/integrator/bidirectional/subpath_exchange.h>
 #include <glint/integrator/bidirectional/vcm.h>
 #include <glint/integrator/transport/hash_grid.h>
 #include <glint/integrator/transport/spectral_model.h>
@@ -16,6 +18,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <tuple>
 
 namespace glint {
 namespace {
@@ -50,8 +53,12 @@ struct VcmIntegrator::Iteration {
     const Sampler* light_sampler = nullptr;
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<float> light_times;                    // each light path's scene time
+    // This process's light subpaths [first_light, end_light) (all of them but in an MPI
+    // job), traced in chunks of kLightPathsPerChunk from first_light on.
+    size_t first_light = 0, end_light = 0;
     std::vector<Arena> arenas;                         // per chunk: the light BSDFs
     std::vector<std::vector<Splat>> splats;            // per chunk
+    std::vector<Arena> received_arenas;                // per rank: BSDFs of received subpaths
     std::vector<PhotonRef> photons;                    // the light vertices merges use, in the grid
     HashGrid grid;
     mutable std::atomic<uint64_t> rays{0};
@@ -142,7 +149,12 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
         static_cast<float>(static_cast<double>(n_light) / static_cast<double>(pixels));
     it.light_paths.resize(n_light);
     it.light_times.assign(n_light, 0.0f);
-    const int chunks = static_cast<int>((n_light + kLightPathsPerChunk - 1) / kLightPathsPerChunk);
+    std::tie(it.first_light, it.end_light) =
+        m_cluster ? m_cluster->share(n_light) : std::pair<uint64_t, uint64_t>{0, n_light};
+    if (m_cluster) it.received_arenas.resize(static_cast<size_t>(m_cluster->size()));
+    const size_t own_lights = it.end_light - it.first_light;
+    const int chunks =
+        static_cast<int>((own_lights + kLightPathsPerChunk - 1) / kLightPathsPerChunk);
     it.arenas.resize(chunks);
     it.splats.resize(chunks);
     it.progress = &progress;
@@ -157,7 +169,11 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
         it.merge_scale = static_cast<float>(1.0 / (static_cast<double>(n_light) * area));
 
         tbb::parallel_for(0, chunks, [&](int chunk) { trace_light_chunk(scene, film, it, chunk); });
-        for (std::vector<Splat>& splats : it.splats) film.add_splats(splats);
+        if (m_cluster) {
+            exchange_light_subpaths(scene, film, it);
+        } else {
+            for (std::vector<Splat>& splats : it.splats) film.add_splats(splats);
+        }
 
         // The photons in subpath order, vertex order within a subpath.
         it.photons.clear();
@@ -199,9 +215,8 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
 void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iteration& it,
                                       int chunk) const {
     const int w = film.width();
-    const size_t n_light = it.light_paths.size();
-    const size_t begin = static_cast<size_t>(chunk) * kLightPathsPerChunk;
-    const size_t end = std::min(n_light, begin + kLightPathsPerChunk);
+    const size_t begin = it.first_light + static_cast<size_t>(chunk) * kLightPathsPerChunk;
+    const size_t end = std::min(it.end_light, begin + kLightPathsPerChunk);
     const int max_depth = m_settings.max_depth;
     const WavelengthContext iteration_wavelengths =
         pass_wavelengths(mix_bits(m_settings.seed ^ 0x7c3a1u), static_cast<uint32_t>(it.index));
@@ -235,6 +250,38 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
         }
     }
     it.rays += counter.rays;
+}
+
+// Each rank sends its subpaths (with their times) and its splats; every rank takes the
+// others' in rank order, which is subpath order: the film receives the splats in the order
+// one process adds them, and the subpaths, BSDFs made again, are the ones it would hold.
+void VcmIntegrator::exchange_light_subpaths(const Scene& scene, Film& film, Iteration& it) const {
+    const SubpathCodec codec(scene);
+    std::vector<uint8_t> own;
+    for (size_t i = it.first_light; i < it.end_light; ++i)
+        codec.write(it.light_paths[i], it.light_times[i], own);
+    std::vector<Splat> own_splats;
+    for (const std::vector<Splat>& splats : it.splats)
+        own_splats.insert(own_splats.end(), splats.begin(), splats.end());
+    SubpathCodec::write_splats(own_splats, own);
+    const std::vector<std::vector<uint8_t>> parts = m_cluster->all_gather_bytes(own);
+    const size_t n_light = it.light_paths.size();
+    for (int r = 0; r < m_cluster->size(); ++r) {
+        if (r == m_cluster->rank()) {
+            film.add_splats(own_splats);
+            continue;
+        }
+        const auto [first, end] = m_cluster->share_of(r, n_light);
+        Arena& arena = it.received_arenas[static_cast<size_t>(r)];
+        arena.reset();
+        const std::vector<uint8_t>& bytes = parts[static_cast<size_t>(r)];
+        size_t at = 0;
+        for (size_t i = first; i < end; ++i)
+            codec.read(bytes, at, it.light_paths[i], it.light_times[i], arena);
+        std::vector<Splat> splats;
+        SubpathCodec::read_splats(bytes, at, splats);
+        film.add_splats(splats);
+    }
 }
 
 // One camera subpath per pixel of the tile: every connection with one light subpath (t >= 2,

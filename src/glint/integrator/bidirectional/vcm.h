@@ -29,6 +29,8 @@
 
 namespace glint {
 
+class Cluster;
+
 /// The settings of "vcm", from glint.render{...}. `spp` is the number of iterations, each
 /// with `light_paths` light subpaths and one camera subpath per pixel.
 struct VcmSettings {
@@ -63,17 +65,30 @@ public:
         return capabilities;
     }
 
+    /// For an MPI job: each rank traces a share of every iteration's light subpaths, and the
+    /// ranks exchange them (SubpathCodec) so that each merges and joins with all of them;
+    /// every rank renders the whole camera pass, and its film is the one process's, bit for
+    /// bit (docs/cluster.md).
+    bool share_work(Cluster& cluster) override {
+        m_cluster = &cluster;
+        return true;
+    }
+
     /// The merging radius of iteration `iteration` (0-based) from r_0 and alpha.
     static float radius_at(float r0, float alpha, int iteration);
 
 private:
     struct Iteration;
     void trace_light_chunk(const Scene& scene, const Film& film, Iteration& it, int chunk) const;
+    // Gives every rank the light subpaths and splats the others traced this iteration, and
+    // adds all the splats to `film` in subpath order.
+    void exchange_light_subpaths(const Scene& scene, Film& film, Iteration& it) const;
     void render_tile(const Scene& scene, Film& film, const Iteration& it, int tile) const;
 
     RenderSettings m_settings;
     VcmSettings m_vcm;
     std::unique_ptr<Filter> m_filter;
+    Cluster* m_cluster = nullptr;
 };
 
 }  // namespace glint

@@ -78,7 +78,9 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
     const int max_bounces = settings.max_depth >= 0 ? settings.max_depth : 32;
     // Caustic photons from point, spot and area lights go only where specular objects are.
     std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
-    if (caustic.projection_maps) {
+    // A projection map aims at where the specular objects stand at one time: in a scene that
+    // moves, photons go everywhere (each with its own time) instead.
+    if (caustic.projection_maps && !scene.has_motion()) {
         for (size_t i = 0; i < scene.lights().size(); ++i) {
             if (ProjectionMap::supports(*scene.lights()[i]))
                 projections[i].emplace(scene, *scene.lights()[i]);

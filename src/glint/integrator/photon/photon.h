@@ -55,7 +55,9 @@ public:
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
-        capabilities.motion_blur = false;  // its photons or radiosity are made at one time
+        // Each photon path draws a time of its own, as sppm's do; a camera path gathers
+        // photons of every time (docs/scene-language.md, "Motion blur").
+        capabilities.motion_blur = true;
         capabilities.spectral = false;  // its photon map is built once, for one set of wavelengths
         capabilities.debug_views.push_back(photons_debug_view());
         return capabilities;
