@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
 # MPI on one machine: the single-process render against mpirun with 1, 2 and 4 ranks, for
-# the path tracer (sample ranges) and sppm (photons shared every pass), the bytes rank 0
+# the path tracer (sample ranges), sppm (photons shared every pass) and vcm (light subpaths
+# shared every iteration), the bytes rank 0
 # exchanges, and the speed-up model of docs/cluster.md evaluated for N machines from the
 # measured times. Not part of CI. On a 2-core machine expect no speed-up beyond 2 ranks:
 # the numbers show the overhead. Settings: BUILD_DIR (build), SCENE
 # (examples/cornell-box.lua), RES (128x128), SPP (64), SPPM_PASSES (16), PHOTONS (100000),
+# VCM_ITERATIONS (8),
 # CORES (2), BANDWIDTH (bytes/s of the modelled network, 1.25e8 = 1 Gbit/s).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -13,6 +15,7 @@ SCENE=${SCENE:-examples/cornell-box.lua}
 RES=${RES:-128x128}
 SPP=${SPP:-64}
 SPPM_PASSES=${SPPM_PASSES:-16}
+VCM_ITERATIONS=${VCM_ITERATIONS:-8}
 PHOTONS=${PHOTONS:-100000}
 CORES=${CORES:-2}
 BANDWIDTH=${BANDWIDTH:-1.25e8}
@@ -56,6 +59,10 @@ for n in 1 2 4; do run "path-$n" "$n" --integrator path --spp "$SPP"; done
 echo "== sppm, $RES, $SPPM_PASSES passes of $PHOTONS photons (ranks share each pass's photons)"
 run sppm-single 0 --integrator sppm --spp "$SPPM_PASSES" --photons "$PHOTONS"
 for n in 1 2 4; do run "sppm-$n" "$n" --integrator sppm --spp "$SPPM_PASSES" --photons "$PHOTONS"; done
+
+echo "== vcm, $RES, $VCM_ITERATIONS iterations (ranks share each iteration's light subpaths)"
+run vcm-single 0 --integrator vcm --spp "$VCM_ITERATIONS"
+for n in 1 2 4; do run "vcm-$n" "$n" --integrator vcm --spp "$VCM_ITERATIONS"; done
 
 read -r t1 _ _ < "$out/path-single.numbers"
 read -r _ film_bytes _ < "$out/path-2.numbers"
