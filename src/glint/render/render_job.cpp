@@ -98,8 +98,8 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
     if (!scene.has_motion() || capabilities.motion_blur) return;
     throw Error(
         fmt::format("{}: the '{}' integrator does not render moving scenes yet (its "
-                    "radiosity solution or preview is made at one time); use path, "
-                    "whitted, photon, sppm, light, bdpt, vcm or mlt",
+                    "radiosity solution is made for one time); use path, whitted, photon, "
+                    "sppm, light, bdpt, vcm, mlt or preview",
                     settings.where_of("integrator"), settings.integrator));
 }
 

@@ -90,19 +90,25 @@ bool same_pixels(const Image& a, const Image& b) {
 
 }  // namespace
 
-TEST(MotionBlur, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
-    // K blurred renders (seeds 1..K) against K stills at times drawn uniformly: both are K
-    // independent estimates of each block's time-averaged radiance.
+// K blurred renders (seeds 1..K) against K stills at times drawn uniformly: both are K
+// independent estimates of each block's time-averaged radiance. For the path tracer, and for
+// the viewer's preview (direct light and its ambient term: the scene has no caustics, where
+// its photons of every time would meet camera rays of another).
+class MotionBlurStills : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(MotionBlurStills, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
+    const std::string integrator = GetParam();
     constexpr int kRenders = 12;
     std::mt19937 rng(2024);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     std::vector<Image> blurred, stills, at_opening;
     for (int k = 0; k < kRenders; ++k) {
-        blurred.push_back(render_lua(moving_sphere(", shutter = {0, 1}", k + 1, 16)));
+        blurred.push_back(
+            render_lua(moving_sphere(", shutter = {0, 1}", k + 1, 16, integrator)));
         const float t = uniform(rng);
-        stills.push_back(
-            render_lua(moving_sphere(fmt::format(", shutter = {{{0}, {0}}}", t), k + 101, 16)));
-        at_opening.push_back(render_lua(moving_sphere("", k + 201, 16)));
+        stills.push_back(render_lua(
+            moving_sphere(fmt::format(", shutter = {{{0}, {0}}}", t), k + 101, 16, integrator)));
+        at_opening.push_back(render_lua(moving_sphere("", k + 201, 16, integrator)));
     }
     const BlockStats blurred_stats = block_stats(blurred);
     // 48 block-channel comparisons of two 12-render means: 5 standard errors.
@@ -110,6 +116,11 @@ TEST(MotionBlur, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
     // The comparison can fail: the sphere held at its opening position is far off.
     EXPECT_GT(largest_z(blurred_stats, block_stats(at_opening)), 10.0);
 }
+
+INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlurStills, ::testing::Values("path", "preview"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             return info.param;
+                         });
 
 TEST(MotionBlur, BlurredImageIsTheSameForAnyThreadCount) {
     const std::string scene = moving_sphere(", shutter = {0, 1}", 3, 8);

@@ -212,7 +212,10 @@ void PreviewIntegrator::restart(const Scene& scene) {
 
     m_projections.assign(scene.lights().size(), std::nullopt);
     // Projection maps only aim photons: with none, many lights would cost seconds for nothing.
-    for (size_t i = 0; m_preview.photons > 0 && i < scene.lights().size(); ++i) {
+    // A projection map aims at where the specular objects stand at one time: in a scene that
+    // moves, photons (each with its own time) go everywhere instead.
+    const bool aim = m_preview.photons > 0 && !scene.has_motion();
+    for (size_t i = 0; aim && i < scene.lights().size(); ++i) {
         if (ProjectionMap::supports(*scene.lights()[i]))
             m_projections[i].emplace(scene, *scene.lights()[i]);
     }

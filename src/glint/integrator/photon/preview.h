@@ -60,6 +60,13 @@ struct PreviewSettings {
 
 class PreviewIntegrator final : public Integrator, public ProgressiveIntegrator {
 public:
+    IntegratorCapabilities capabilities() const override {
+        IntegratorCapabilities capabilities;
+        // Camera rays, shadow rays and photons carry times; a camera ray gathers photons of
+        // every time (an approximation, as the preview is).
+        capabilities.motion_blur = true;
+        return capabilities;
+    }
     PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview);
     ~PreviewIntegrator() override;
     static std::unique_ptr<Integrator> create(const RenderSettings& settings, const Params& params);
