@@ -4,6 +4,7 @@
 #include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/mlt.h>
+#include <glint/integrator/transport/spectral_model.h>
 
 #include <fmt/format.h>
 #include <tbb/blocked_range.h>
@@ -13,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <numeric>
+#include <optional>
 
 namespace glint {
 namespace {
@@ -31,9 +33,16 @@ uint64_t chain_key(uint64_t seed, uint64_t c) {
 
 // The target function the chains sample: the luminance of the contribution, 0 for
 // anything not finite (which the chain must never move to).
-float target(const Spectrum& L) {
+float target(const Rgb& L) {
     const float f = L.luminance();
     return std::isfinite(f) && f > 0.0f ? f : 0.0f;
+}
+
+Splat splat_of(Vec2 film, const Rgb& rgb) {
+    Splat splat;
+    splat.film = film;
+    splat.rgb = rgb;
+    return splat;
 }
 
 }  // namespace
@@ -76,7 +85,7 @@ int MltIntegrator::max_depth() const {
 }
 
 MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int depth,
-                                  Vec2 film_size, MltWorkspace& ws) {
+                                  Vec2 film_size, MltWorkspace& ws, bool spectral) {
     MltSample result;
     const int strategies = depth + 2;
     sampler.set_stream(PssSampler::kConnectionStream);
@@ -86,6 +95,17 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     sampler.set_stream(PssSampler::kCameraStream);
     const Vec2 u_film = sampler.get_2d();
     const Vec2 film_point = u_film * film_size;
+    // Spectral mode: the hero wavelength is one more dimension of the state, so that
+    // mutations explore the spectrum as they explore paths; the contribution is read in the
+    // film's colour while its wavelengths are active.
+    std::optional<WavelengthContext> context;
+    std::optional<WavelengthScope> wavelengths;
+    std::optional<SecondaryWavelengthsScope> terminated;
+    if (spectral) {
+        context = wavelengths_at(sampler.get_1d());
+        wavelengths.emplace(*context);
+        terminated.emplace();
+    }
     const Ray ray = scene.camera().sample_ray(film_point, sampler);
     ws.arena.reset();
     // No roulette: the depth is fixed, and roulette would only add variance.
@@ -102,7 +122,7 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     const StrategyContribution c = connect_strategy(scene, ws.light, ws.camera, s, t, sampler,
                                                     ws.counter, MisHeuristic::kBalance, ws.scratch);
     if (c.L.is_black()) return result;
-    result.L = c.L * static_cast<float>(strategies);
+    result.L = to_rgb(c.L * static_cast<float>(strategies));
     result.film = c.splat ? c.film : film_point;
     return result;
 }
@@ -132,7 +152,8 @@ RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& prog
                                    m_mlt.large_step);
                 sampler.start_iteration();
                 weights[i] =
-                    target(evaluate(scene, sampler, static_cast<int>(i % depths), film_size, ws).L);
+                    target(evaluate(scene, sampler, static_cast<int>(i % depths), film_size, ws,
+                                    m_settings.spectral).L);
             }
             rays += ws.counter.rays;
         });
@@ -190,23 +211,24 @@ void MltIntegrator::run_chain(const Scene& scene, int chain, uint64_t mutations,
     // contribution), then the chain's own random numbers from there on.
     PssSampler sampler(start_key, m_mlt.sigma, m_mlt.large_step);
     sampler.start_iteration();
-    MltSample current = evaluate(scene, sampler, depth, film_size, ws);
+    MltSample current = evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral);
     sampler.accept();
     sampler.reseed(chain_key(m_settings.seed, static_cast<uint64_t>(chain)));
     float f_current = target(current.L);
     result.splats.reserve(2 * mutations);
     for (uint64_t m = 0; m < mutations; ++m) {
         sampler.start_iteration();
-        const MltSample proposed = evaluate(scene, sampler, depth, film_size, ws);
+        const MltSample proposed =
+            evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral);
         const float f_proposed = target(proposed.L);
         // A chain that starts at f = 0 (only when b is 0, which renders nothing) moves on.
         const float a = f_current > 0.0f ? std::min(1.0f, f_proposed / f_current) : 1.0f;
         // Kelemen's expected values: both states get their share of this step, whichever
         // the chain keeps.
         if (a > 0.0f && f_proposed > 0.0f)
-            result.splats.push_back({proposed.film, proposed.L * (a / f_proposed)});
+            result.splats.push_back(splat_of(proposed.film, proposed.L * (a / f_proposed)));
         if (a < 1.0f && f_current > 0.0f)
-            result.splats.push_back({current.film, current.L * ((1.0f - a) / f_current)});
+            result.splats.push_back(splat_of(current.film, current.L * ((1.0f - a) / f_current)));
         if (sampler.uniform() < a) {
             sampler.accept();
             current = proposed;

@@ -41,8 +41,9 @@ struct MltSettings {
 
 /// One state's contribution.
 struct MltSample {
-    Spectrum L{0.0f};  ///< C(u): radiance estimate of the whole image (film-normalised, as a
-                       ///< light tracer's splat before its scale), MIS-weighted, times d + 2
+    Rgb L{0.0f};  ///< C(u): radiance estimate of the whole image (film-normalised, as a light
+                  ///< tracer's splat before its scale), MIS-weighted, times d + 2; in the
+                  ///< film's colour (spectral mode: read at the state's wavelengths)
     Vec2 film{0.0f};   ///< where it lands on the film (pixels)
 };
 
@@ -69,15 +70,17 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.motion_blur = true;  // the path's time is a dimension of its state
+        capabilities.spectral = true;     // and so is its hero wavelength
         return capabilities;
     }
 
     /// The contribution of the sampler's current state for paths of `depth` bounces on a
     /// film of `film_size` pixels. Reads, in the connection stream, the strategy (1D), then
-    /// connect_strategy's values; in the camera stream the film point (2D), the lens (2D,
-    /// if the camera has one) and the camera subpath; in the light stream the light subpath.
+    /// connect_strategy's values; in the camera stream the film point (2D), in spectral mode
+    /// the hero wavelength (1D), the lens (2D, if the camera has one) and the camera subpath;
+    /// in the light stream the light subpath.
     static MltSample evaluate(const Scene& scene, PssSampler& sampler, int depth, Vec2 film_size,
-                              MltWorkspace& workspace);
+                              MltWorkspace& workspace, bool spectral = false);
 
     /// Depths chains are spread over: 0 .. max_depth().
     int max_depth() const;

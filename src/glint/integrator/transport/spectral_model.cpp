@@ -124,6 +124,10 @@ WavelengthContext path_wavelengths(uint64_t key) {
     return {SampledWavelengths::sample_visible(key_to_unit(key)), &spectral_model()};
 }
 
+WavelengthContext wavelengths_at(float u) {
+    return {SampledWavelengths::sample_visible(u), &spectral_model()};
+}
+
 WavelengthContext pass_wavelengths(uint64_t key, uint32_t index) {
     // Van der Corput: the bits of the index mirrored about the binary point.
     uint32_t bits = index;

@@ -22,6 +22,10 @@ const SpectralModel& spectral_model();
 /// dimensions, and so RGB mode's images, are untouched.
 WavelengthContext path_wavelengths(uint64_t key);
 
+/// The wavelengths whose hero is drawn from `u` in [0, 1): for a method that keeps the
+/// wavelength among the dimensions it samples (mlt's primary sample space).
+WavelengthContext wavelengths_at(float u);
+
 /// The wavelengths of pass `index` of a progressive method whose passes each share one set
 /// (vcm's iterations, sppm's passes): a random offset from `key`, plus the radical inverse
 /// of the index spread over a quarter of the unit interval, so that the passes' hero draws,
