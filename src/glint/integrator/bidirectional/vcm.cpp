@@ -284,6 +284,39 @@ void VcmIntegrator::exchange_light_subpaths(const Scene& scene, Film& film, Iter
     }
 }
 
+namespace {
+
+// A camera subpath's joins and merges, summed for the film. In spectral mode a light subpath
+// that went through dispersive glass carries its hero wavelength alone (its other values are
+// 0); the film reads such a value at the hero alone when it stands alone, but a camera path
+// sums it with joins that carry all four wavelengths, and the film would read the sum over
+// four, a quarter of the hero's estimate. So those contributions are kept apart and, when
+// they meet others, given the weight the film's mean over four needs (Spectrum::hero_only).
+// A camera subpath that itself went through the glass is read at its hero anyway.
+class PathSum {
+public:
+    explicit PathSum(bool spectral) : m_spectral(spectral) {}
+    PathSum& operator+=(const Spectrum& value) {
+        (m_spectral && hero_alone(value) ? m_hero : m_all) += value;
+        return *this;
+    }
+    Spectrum total() const {
+        if (m_hero.is_black()) return m_all;
+        if (m_all.is_black() || secondary_wavelengths_terminated()) return m_all + m_hero;
+        return m_all + m_hero.hero_only();
+    }
+
+private:
+    static bool hero_alone(const Spectrum& v) {
+        return v.value(0) != 0.0f && v.value(1) == 0.0f && v.value(2) == 0.0f &&
+               v.value(3) == 0.0f;
+    }
+    bool m_spectral;
+    Spectrum m_all{0.0f}, m_hero{0.0f};
+};
+
+}  // namespace
+
 // One camera subpath per pixel of the tile: every connection with one light subpath (t >= 2,
 // t outer, s inner, as bdpt), then the merges at each of its vertices in order. Pixel j (row-
 // major) connects to light subpath j mod n_L: each camera subpath needs one light subpath
@@ -330,7 +363,7 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                 scene.camera().sample_ray_at(film_point, *sampler, it.light_times[light_index]);
             arena.reset();
             generate_camera_subpath(scene, ray, *sampler, arena, counter, it.camera_limits, camera);
-            Spectrum L(0.0f);
+            PathSum L(m_settings.spectral);
             const int n_camera = static_cast<int>(camera.size());
             const int n_light = std::max(1, static_cast<int>(light.size()));
             for (int t = 2; t <= n_camera; ++t) {
@@ -371,7 +404,7 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     aov = AovSample{first.si.material->albedo(first.si), first.si.shading.n(),
                                     first.si.t};
             }
-            film.add_sample(pixel, L, filter.weight, film.has_aovs() ? &aov : nullptr);
+            film.add_sample(pixel, L.total(), filter.weight, film.has_aovs() ? &aov : nullptr);
         }
     }
     it.progress->advance(static_cast<uint64_t>(x1 - x0) * (y1 - y0));

@@ -137,7 +137,7 @@ WavelengthContext pass_wavelengths(uint64_t key, uint32_t index) {
     bits = ((bits & 0x33333333u) << 2) | ((bits & 0xccccccccu) >> 2);
     bits = ((bits & 0x55555555u) << 1) | ((bits & 0xaaaaaaaau) >> 1);
     const float radical_inverse = static_cast<float>(bits >> 8) * 0x1p-24f;
-    float u = key_to_unit(key) + 0.25f * radical_inverse;
+    float u = key_to_unit(key) + radical_inverse;
     if (u >= 1.0f) u -= 1.0f;
     return {SampledWavelengths::sample_visible(u), &spectral_model()};
 }

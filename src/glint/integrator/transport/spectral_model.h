@@ -28,9 +28,11 @@ WavelengthContext wavelengths_at(float u);
 
 /// The wavelengths of pass `index` of a progressive method whose passes each share one set
 /// (vcm's iterations, sppm's passes): a random offset from `key`, plus the radical inverse
-/// of the index spread over a quarter of the unit interval, so that the passes' hero draws,
-/// with their rotated lanes, fill the visible range evenly. With the few passes such a
-/// method takes, independent draws would leave the whole image's colour noisy.
+/// of the index, so that the passes' hero draws fill the visible range evenly. With the few
+/// passes such a method takes, independent draws would leave the whole image's colour noisy.
+/// The heroes alone must cover the whole range: after dispersive glass a path is read at its
+/// hero only (with the radical inverse spread over a quarter of the interval, as the rotated
+/// lanes would allow, such paths saw a quarter of the spectrum, and their colour was wrong).
 WavelengthContext pass_wavelengths(uint64_t key, uint32_t index);
 
 }  // namespace glint
