@@ -473,7 +473,7 @@ TEST(SpectralDispersion, EachPathStartsWithFourWavelengths) {
 // lower in spectral mode, red 7.9 % lower, green 0.8 % higher, blue 16 % higher (blue is the
 // smallest channel, 0.036, and the one the orange light's spectrum leaks most into). Held:
 // the luminance within 3 %, each channel within 20 %, plus four standard errors of the two.
-TEST(SpectralCornell, MeansAgreeWithRgbWithinAFewPercent) {
+TEST(SpectralCornellSlow, MeansAgreeWithRgbWithinAFewPercent) {
     auto scene = [](bool spectral) {
         return [spectral](int seed) {
             return example_with_settings(

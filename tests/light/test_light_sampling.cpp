@@ -260,7 +260,7 @@ private:
 // rectangle stays whole); a piece is sampled in its own solid angle, or by area where the
 // thresholds say so, with the density given the piece. Checked on a quad's two triangles and
 // on a box (12 triangles, more than the whole mesh samples in solid angle) near and far.
-TEST(MeshEmitterPieces, EachTriangleMatchesItsDensity) {
+TEST(MeshEmitterPiecesSlow, EachTriangleMatchesItsDensity) {
     const TriangleMesh square("square", make_quad_mesh(Vec3(-0.5f, -0.5f, 0), Vec3(0.5f, -0.5f, 0),
                                                        Vec3(0.5f, 0.5f, 0), Vec3(-0.5f, 0.5f, 0)));
     EXPECT_EQ(square.make_sampler(Transform())->piece_count(), 1u);

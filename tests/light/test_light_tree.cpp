@@ -112,7 +112,7 @@ TEST(LightTree, PmfsOverAllLightsSumToOne) {
     }
 }
 
-TEST(LightTree, ChoicesMatchTheStatedPmf) {
+TEST(LightTreeSlow, ChoicesMatchTheStatedPmf) {
     const auto lights = mixed_lights(60);
     const LightSampler sampler(lights, LightSelection::kTree);
     const std::vector<Piece> pieces = pieces_of(lights);

@@ -124,7 +124,7 @@ TEST(SphericalTriangle, SolidAngleMatchesClosedForm) {
     }
 }
 
-TEST(SphericalTriangle, SamplesAreUniformInSolidAngle) {
+TEST(SphericalTriangleSlow, SamplesAreUniformInSolidAngle) {
     const int cases = static_cast<int>(std::size(kTriangleCases));
     for (const TriangleCase& c : kTriangleCases) {
         // The reference point in float, as the renderer holds it.
@@ -161,7 +161,7 @@ const RectangleCase kRectangleCases[] = {
 
 }  // namespace
 
-TEST(SphericalRectangle, SamplesAreUniformInSolidAngleAndOnTheRectangle) {
+TEST(SphericalRectangleSlow, SamplesAreUniformInSolidAngleAndOnTheRectangle) {
     const int cases = static_cast<int>(std::size(kRectangleCases));
     for (const RectangleCase& c : kRectangleCases) {
         const DVec3 ref = DVec3(Vec3(c.ref));

@@ -203,7 +203,7 @@ TEST(RoughConductorBsdf, SmoothFallsBackToFresnelMirror) {
 // With F = 1 every sample's weight is G2(wo, wi) / G1(wo) <= 1: a single-scattering
 // microfacet conductor only loses energy, more with roughness and at grazing angles. The
 // quadrature (independent of sample()) agrees where the lobe is wide enough for it.
-TEST(RoughConductorBsdf, PerfectReflectorNeverGainsEnergy) {
+TEST(RoughConductorBsdfSlow, PerfectReflectorNeverGainsEnergy) {
     const float angles[] = {0.0f, 30.0f, 60.0f, 75.0f, 85.0f, 89.0f};
     std::cout << "Rough conductor, F = 1: directional albedo E_ss (1e5 samples each)\n"
               << "roughness  alpha  |";
@@ -522,7 +522,7 @@ TEST(PlasticBsdfSlow, WhiteBaseReflectsAlmostAllLight) {
     }
 }
 
-TEST(BlinnPhongBsdf, SamplingMatchesPdf) {
+TEST(BlinnPhongBsdfSlow, SamplingMatchesPdf) {
     struct Case {
         float diffuse, specular, exponent;
     };

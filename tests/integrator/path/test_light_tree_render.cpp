@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
 #include <string>
 
@@ -63,6 +64,7 @@ TEST(ManyLights, TreeGivesTheSameBitsForOneAndTwoThreads) {
 // no better than choosing among all lamps by power. The tree, with a leaf per triangle,
 // must do as well as it does with 1,024 separate lamps.
 TEST(ManyLights, TreeChoosesAmongTheTrianglesOfEmissiveMeshes) {
+    if (test::kSanitizerBuild) GTEST_SKIP() << "three 256-spp references: the normal tree runs it";
     const std::string meshes = "lamps-as-one-mesh.lua";
     const Image reference = render_lua(many_lights("tree", 256, 99, meshes));
     const Image tree = render_lua(many_lights("tree", 4, 1, meshes));

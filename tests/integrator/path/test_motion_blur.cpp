@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
 #include <fmt/format.h>
 
@@ -98,6 +99,8 @@ class MotionBlurStills : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(MotionBlurStills, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
     const std::string integrator = GetParam();
+    if (test::kSanitizerBuild && integrator == "preview")
+        GTEST_SKIP() << "36 preview renders take 20 s under the sanitizers: the normal tree runs it";
     constexpr int kRenders = 12;
     std::mt19937 rng(2024);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
@@ -256,9 +259,9 @@ glint.sphere{{ radius = 0.5, material = glint.diffuse{{ reflectance = {{0.8, 0.3
 // sphere and its shadow of every method that traces light paths agree with the path
 // tracer's, block by block, and the sphere held at its opening position does not. With a
 // moving camera too: light paths join the lens where the camera stands at their time.
-class MotionBlurLightPaths : public ::testing::TestWithParam<std::string> {};
+class MotionBlurLightPathsSlow : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(MotionBlurLightPaths, AgreeWithPathOnAMovingSphere) {
+TEST_P(MotionBlurLightPathsSlow, AgreeWithPathOnAMovingSphere) {
     const std::string integrator = GetParam();
     constexpr int kRenders = 8;
     std::vector<Image> moving, path, still;
@@ -271,7 +274,7 @@ TEST_P(MotionBlurLightPaths, AgreeWithPathOnAMovingSphere) {
     EXPECT_GT(largest_z(block_stats(still), block_stats(path)), 10.0);
 }
 
-TEST_P(MotionBlurLightPaths, AgreeWithPathThroughAMovingCamera) {
+TEST_P(MotionBlurLightPathsSlow, AgreeWithPathThroughAMovingCamera) {
     const std::string integrator = GetParam();
     const std::string pan =
         ", motion = { glint.translate(-0.4, 0, 0), glint.rotate(8, {0, 1, 0}) * "
@@ -289,7 +292,7 @@ TEST_P(MotionBlurLightPaths, AgreeWithPathThroughAMovingCamera) {
     EXPECT_GT(largest_z(block_stats(still), block_stats(path)), 10.0);
 }
 
-INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlurLightPaths,
+INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlurLightPathsSlow,
                          ::testing::Values("light", "bdpt", "vcm", "mlt", "photon"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;
