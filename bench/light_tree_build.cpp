@@ -69,7 +69,8 @@ int main(int argc, char** argv) {
     entries.reserve(n);
     for (const BoundsOnlyLight& light : lights) entries.push_back({&light, *light.bounds()});
     const LightTree tree(std::move(entries), {}, n);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     fmt::print("{} lights: tree built in {:.3f} s, {} nodes, {:.1f} MB\n", n, seconds,
                tree.node_count(), static_cast<double>(tree.memory_bytes()) / 1e6);
 
@@ -95,9 +96,10 @@ int main(int argc, char** argv) {
         std::make_unique<AreaLight>(shape.make_sampler(Transform()), Spectrum(1.0f), false));
     const LightSampler sampler(scene_lights, LightSelection::kTree);
     seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    fmt::print("one mesh of {} emitting triangles: light and tree built in {:.3f} s, {} nodes, "
-               "{:.1f} MB\n",
-               scene_lights.front()->piece_count(), seconds, sampler.tree()->node_count(),
-               static_cast<double>(sampler.tree()->memory_bytes()) / 1e6);
+    fmt::print(
+        "one mesh of {} emitting triangles: light and tree built in {:.3f} s, {} nodes, "
+        "{:.1f} MB\n",
+        scene_lights.front()->piece_count(), seconds, sampler.tree()->node_count(),
+        static_cast<double>(sampler.tree()->memory_bytes()) / 1e6);
     return 0;
 }

@@ -286,7 +286,8 @@ TEST(MeshEmitterPiecesSlow, EachTriangleMatchesItsDensity) {
         EXPECT_NEAR(piece.area(), one.area(), 1e-5 * one.area());
         expect_matches(
             piece, c.ref, [&](const Vec3& w, double slack) { return one.pdf(c.ref, w, slack); },
-            c.mesh->name() + " piece " + std::to_string(c.piece), static_cast<int>(std::size(cases)));
+            c.mesh->name() + " piece " + std::to_string(c.piece),
+            static_cast<int>(std::size(cases)));
     }
 }
 

@@ -183,8 +183,8 @@ TEST(GltfAnimation, AnimatedNodeBecomesMotionKeysOverTheWindow) {
 
 TEST(GltfAnimation, OneTimeIsAStillPoseAndNoWindowTheFilesPlacement) {
     const test::TempDir dir;
-    const SceneDesc pose = import(dir, animated_gltf(kSlide + std::string(", ") + kTurn),
-                                  ", animation = {0.5, 0.5}");
+    const SceneDesc pose =
+        import(dir, animated_gltf(kSlide + std::string(", ") + kTurn), ", animation = {0.5, 0.5}");
     EXPECT_TRUE(moving(pose).empty());
     const SceneDesc plain = import(dir, animated_gltf(kSlide), "");
     EXPECT_TRUE(moving(plain).empty());
@@ -235,13 +235,14 @@ TEST(GltfAnimation, ImportedMotionRendersAsScriptedMotion) {
     std::ofstream(dir.file("model.gltf")) << animated_gltf(kSlide);
     const auto scene = [&](bool imported, int seed) {
         const std::string quad =
-            imported ? "glint.import{ file = '" + dir.file("model.gltf") +
-                           "', animation = {0, 1}, material = grey }"
-                     : "glint.quad{ vertices = {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, "
-                       "material = grey, motion = { glint.translate(0, 0, 0), "
-                       "glint.translate(2, 0, 0) } }\n"
-                       "glint.quad{ vertices = {{-1, -3, -1}, {-1, -3, 1}, {1, -3, 1}, {1, -3, -1}}, "
-                       "material = grey }";
+            imported
+                ? "glint.import{ file = '" + dir.file("model.gltf") +
+                      "', animation = {0, 1}, material = grey }"
+                : "glint.quad{ vertices = {{-1, 0, -1}, {-1, 0, 1}, {1, 0, 1}, {1, 0, -1}}, "
+                  "material = grey, motion = { glint.translate(0, 0, 0), "
+                  "glint.translate(2, 0, 0) } }\n"
+                  "glint.quad{ vertices = {{-1, -3, -1}, {-1, -3, 1}, {1, -3, 1}, {1, -3, -1}}, "
+                  "material = grey }";
         return fmt::format(R"(
 glint.camera{{ eye = {{1, 4, 0.01}}, look_at = {{1, 0, 0}}, fov = 50, shutter = {{0, 1}} }}
 glint.render{{ width = 24, height = 24, spp = 32, seed = {}, max_depth = 1 }}

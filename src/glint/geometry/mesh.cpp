@@ -38,15 +38,16 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
         m_bounds.expand(data.positions[i]);
     }
     if (!data.position_keys.empty() && !data.normals.empty()) {
-        throw Error(fmt::format("mesh '{}': a deforming mesh takes no normals (it is shaded by "
-                                "its triangles' own normals at each time)",
-                                m_name));
+        throw Error(
+            fmt::format("mesh '{}': a deforming mesh takes no normals (it is shaded by "
+                        "its triangles' own normals at each time)",
+                        m_name));
     }
     for (size_t k = 0; k < data.position_keys.size(); ++k) {
         const std::vector<Vec3>& key = data.position_keys[k];
         if (key.size() != vertex_count) {
-            throw Error(fmt::format("mesh '{}': vertex key {} has {} vertices, the mesh {}",
-                                    m_name, k + 2, key.size(), vertex_count));
+            throw Error(fmt::format("mesh '{}': vertex key {} has {} vertices, the mesh {}", m_name,
+                                    k + 2, key.size(), vertex_count));
         }
         for (size_t i = 0; i < key.size(); ++i) {
             if (!is_finite(key[i])) {
@@ -213,8 +214,9 @@ void TriangleMesh::fill_deformed(float time, const HitRecord& hit, SurfaceIntera
     for (int k = 0; k < 3; ++k) corner[k] = (1.0f - w) * a[idx[k]] + w * b[idx[k]];
     // A triangle that collapses at this time keeps the frame it has at rest.
     const bool collapsed = !(glm::length(triangle_cross(corner[0], corner[1], corner[2])) > 0.0f);
-    const TriangleFrame frame = collapsed ? m_frames[hit.primitive]
-                                          : frame_of(corner[0], corner[1], corner[2], 3 * hit.primitive);
+    const TriangleFrame frame = collapsed
+                                    ? m_frames[hit.primitive]
+                                    : frame_of(corner[0], corner[1], corner[2], 3 * hit.primitive);
     const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
     const Vec3 p = b0 * corner[0] + b1 * corner[1] + b2 * corner[2];
     Vec2 uv0(0, 0), uv1(1, 0), uv2(1, 1);

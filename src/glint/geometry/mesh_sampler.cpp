@@ -145,8 +145,8 @@ ShapeSample MeshSampler::sample_triangle(const Vec3& ref, const Vec2& u, size_t 
     const Vec3 centroid = (v[0] + v[1] + v[2]) * (1.0f / 3.0f);
     const float area = triangle_area(tri);
     const bool worth = may_pay(ref, centroid, m_normals[tri], area);
-    const SphericalTriangle st = worth ? SphericalTriangle(ref, v[0], v[1], v[2])
-                                       : SphericalTriangle(ref, v[0], v[0], v[0]);
+    const SphericalTriangle st =
+        worth ? SphericalTriangle(ref, v[0], v[1], v[2]) : SphericalTriangle(ref, v[0], v[0], v[0]);
     ShapeSample s;
     s.n = m_normals[tri];
     if (worth && spherical_pays(st.solid_angle())) {
@@ -192,8 +192,7 @@ ShapeSample MeshSampler::sample_piece(const Vec3& ref, const Vec2& u, float u_se
     return is_piece(piece) ? sample_triangle(ref, u, piece) : sample(ref, u, u_select);
 }
 
-float MeshSampler::pdf_piece(const Vec3& ref, const Vec3& p, const Vec3& n,
-                             uint32_t piece) const {
+float MeshSampler::pdf_piece(const Vec3& ref, const Vec3& p, const Vec3& n, uint32_t piece) const {
     return is_piece(piece) ? pdf_in_triangle(ref, p, n, piece) : pdf(ref, p, n);
 }
 

@@ -45,8 +45,9 @@ std::vector<std::vector<Vec3>> read_vertex_keys(const Params& params, size_t ver
         }
         std::vector<Vec3>& key = keys.emplace_back(vertex_count);
         for (size_t i = 0; i < vertex_count; ++i) {
-            key[i] = Vec3(static_cast<float>(rows[k][3 * i]), static_cast<float>(rows[k][3 * i + 1]),
-                          static_cast<float>(rows[k][3 * i + 2]));
+            key[i] =
+                Vec3(static_cast<float>(rows[k][3 * i]), static_cast<float>(rows[k][3 * i + 1]),
+                     static_cast<float>(rows[k][3 * i + 2]));
         }
     }
     return keys;

@@ -95,7 +95,8 @@ std::optional<LightBounds> AreaLight::piece_bounds(uint32_t piece) const {
     return bounds_of(m_shape->piece_bounds(piece), m_shape->piece_normal_cone(piece), phi);
 }
 
-LightBounds AreaLight::bounds_of(const Bounds3& box, const DirectionCone& normals, float phi) const {
+LightBounds AreaLight::bounds_of(const Bounds3& box, const DirectionCone& normals,
+                                 float phi) const {
     LightBounds b;
     b.bounds = box;
     b.phi = std::max(0.0f, phi);

@@ -267,9 +267,10 @@ private:
     void note_deformation(const ShapeUse& use, const std::string& placed_at) {
         if (!use.shape->deforms()) return;
         if (is_emitter(use)) {
-            use.params->fail(fmt::format("an emitting shape cannot deform{}: area lights keep "
-                                         "their form in glint",
-                                         placed_at.empty() ? "" : " (placed at " + placed_at + ")"));
+            use.params->fail(
+                fmt::format("an emitting shape cannot deform{}: area lights keep "
+                            "their form in glint",
+                            placed_at.empty() ? "" : " (placed at " + placed_at + ")"));
         }
         m_scene->m_has_motion = true;
     }

@@ -17,10 +17,9 @@ namespace {
 std::string many_lights(const std::string& light_sampler, int spp, int seed,
                         const std::string& example = "many-lights.lua") {
     return example_with_settings(
-        example,
-        fmt::format("width = 48, height = 36, spp = {}, seed = {}, max_depth = 2, "
-                    "light_sampler = '{}'",
-                    spp, seed, light_sampler));
+        example, fmt::format("width = 48, height = 36, spp = {}, seed = {}, max_depth = 2, "
+                             "light_sampler = '{}'",
+                             spp, seed, light_sampler));
 }
 
 // Relative MSE of `image` against `reference`, per pixel and channel, with a floor on the

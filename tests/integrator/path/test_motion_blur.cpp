@@ -100,14 +100,14 @@ class MotionBlurStills : public ::testing::TestWithParam<std::string> {};
 TEST_P(MotionBlurStills, MovingSphereIsTheAverageOfStillsAtDrawnTimes) {
     const std::string integrator = GetParam();
     if (test::kSanitizerBuild && integrator == "preview")
-        GTEST_SKIP() << "36 preview renders take 20 s under the sanitizers: the normal tree runs it";
+        GTEST_SKIP()
+            << "36 preview renders take 20 s under the sanitizers: the normal tree runs it";
     constexpr int kRenders = 12;
     std::mt19937 rng(2024);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
     std::vector<Image> blurred, stills, at_opening;
     for (int k = 0; k < kRenders; ++k) {
-        blurred.push_back(
-            render_lua(moving_sphere(", shutter = {0, 1}", k + 1, 16, integrator)));
+        blurred.push_back(render_lua(moving_sphere(", shutter = {0, 1}", k + 1, 16, integrator)));
         const float t = uniform(rng);
         stills.push_back(render_lua(
             moving_sphere(fmt::format(", shutter = {{{0}, {0}}}", t), k + 101, 16, integrator)));
@@ -237,8 +237,7 @@ namespace {
 // The moving sphere lit by an area light alone (light paths start at lights; the sky of
 // moving_sphere is a background, which they cannot start from).
 std::string moving_sphere_under_a_lamp(const std::string& integrator, const std::string& shutter,
-                                       int seed, int spp,
-                                       const std::string& camera_motion = "") {
+                                       int seed, int spp, const std::string& camera_motion = "") {
     return fmt::format(R"(
 glint.camera{{ eye = {{0, 1, 5}}, look_at = {{0, 0, 0}}, fov = 32, shutter = {} {} }}
 glint.render{{ width = 24, height = 24, spp = {}, seed = {}, max_depth = 3,
@@ -425,10 +424,11 @@ glint.mesh{{ vertices = {{{{-0.6, -0.5, 0}}, {{0.4, -0.5, 0}}, {{0.4, 0.5, 0}}, 
 TEST(MotionBlur, MalformedVertexKeysAreErrorsNamingTheLine) {
     const auto message_of = [](const std::string& extra) {
         try {
-            render_lua("glint.camera{ shutter = {0, 1} }\n"
-                       "glint.mesh{ vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "
-                       "indices = {1, 2, 3}, " +
-                       extra + " }");
+            render_lua(
+                "glint.camera{ shutter = {0, 1} }\n"
+                "glint.mesh{ vertices = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, "
+                "indices = {1, 2, 3}, " +
+                extra + " }");
         } catch (const Error& e) {
             return std::string(e.what());
         }
@@ -439,7 +439,8 @@ TEST(MotionBlur, MalformedVertexKeysAreErrorsNamingTheLine) {
     EXPECT_NE(short_key.find(":2:"), std::string::npos) << short_key;
     EXPECT_NE(short_key.find("need 9"), std::string::npos) << short_key;
     const std::string with_normals = message_of(
-        grey + "normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, vertex_keys = { {0, 0, 0, 1, 0, 0, 0, 1, 1} "
+        grey +
+        "normals = {{0, 0, 1}, {0, 0, 1}, {0, 0, 1}}, vertex_keys = { {0, 0, 0, 1, 0, 0, 0, 1, 1} "
         "}");
     EXPECT_NE(with_normals.find("normals"), std::string::npos) << with_normals;
     EXPECT_NE(with_normals.find(":2:"), std::string::npos) << with_normals;

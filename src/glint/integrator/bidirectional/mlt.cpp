@@ -1,9 +1,9 @@
 #include <glint/core/cancel.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
-#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/mlt.h>
+#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/spectral_model.h>
 
 #include <fmt/format.h>
@@ -115,8 +115,8 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     // s = 1 with t > 1 samples its light point afresh in connect_strategy.
     if (s > 1 || (s == 1 && t == 1)) {
         sampler.set_stream(PssSampler::kLightStream);
-        generate_light_subpath(scene, ray.time, sampler, ws.arena, ws.counter,
-                               WalkLimits{s, false}, ws.light);
+        generate_light_subpath(scene, ray.time, sampler, ws.arena, ws.counter, WalkLimits{s, false},
+                               ws.light);
     }
     sampler.set_stream(PssSampler::kConnectionStream);
     const StrategyContribution c = connect_strategy(scene, ws.light, ws.camera, s, t, sampler,
@@ -142,21 +142,21 @@ RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& prog
     const uint64_t n_bootstrap = per_depth * depths;
     std::vector<float> weights(n_bootstrap);
     std::atomic<uint64_t> rays{0};
-    tbb::parallel_for(
-        tbb::blocked_range<uint64_t>(0, n_bootstrap, 256),
-        [&](const tbb::blocked_range<uint64_t>& range) {
-            throw_if_cancelled();  // the bootstrap has no progress of its own
-            MltWorkspace ws;
-            for (uint64_t i = range.begin(); i != range.end(); ++i) {
-                PssSampler sampler(bootstrap_key(m_settings.seed, i), m_mlt.sigma,
-                                   m_mlt.large_step);
-                sampler.start_iteration();
-                weights[i] =
-                    target(evaluate(scene, sampler, static_cast<int>(i % depths), film_size, ws,
-                                    m_settings.spectral).L);
-            }
-            rays += ws.counter.rays;
-        });
+    tbb::parallel_for(tbb::blocked_range<uint64_t>(0, n_bootstrap, 256),
+                      [&](const tbb::blocked_range<uint64_t>& range) {
+                          throw_if_cancelled();  // the bootstrap has no progress of its own
+                          MltWorkspace ws;
+                          for (uint64_t i = range.begin(); i != range.end(); ++i) {
+                              PssSampler sampler(bootstrap_key(m_settings.seed, i), m_mlt.sigma,
+                                                 m_mlt.large_step);
+                              sampler.start_iteration();
+                              weights[i] =
+                                  target(evaluate(scene, sampler, static_cast<int>(i % depths),
+                                                  film_size, ws, m_settings.spectral)
+                                             .L);
+                          }
+                          rays += ws.counter.rays;
+                      });
     stats.rays = rays.load();
     // b = sum over depths of E[f at that depth]: each depth's mean is its sum / per_depth.
     // Summed in index order, in double, so b is the same for any thread count.

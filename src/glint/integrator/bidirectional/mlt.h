@@ -41,10 +41,10 @@ struct MltSettings {
 
 /// One state's contribution.
 struct MltSample {
-    Rgb L{0.0f};  ///< C(u): radiance estimate of the whole image (film-normalised, as a light
-                  ///< tracer's splat before its scale), MIS-weighted, times d + 2; in the
-                  ///< film's colour (spectral mode: read at the state's wavelengths)
-    Vec2 film{0.0f};   ///< where it lands on the film (pixels)
+    Rgb L{0.0f};      ///< C(u): radiance estimate of the whole image (film-normalised, as a light
+                      ///< tracer's splat before its scale), MIS-weighted, times d + 2; in the
+                      ///< film's colour (spectral mode: read at the state's wavelengths)
+    Vec2 film{0.0f};  ///< where it lands on the film (pixels)
 };
 
 /// What one thread evaluates states with: scratch memory reused from one state to the next.

@@ -37,9 +37,9 @@ struct VertexHeader {
     uint8_t delta;
     uint8_t infinite;
     uint8_t has_bsdf;
-    int32_t light;         // Light::index, -1 for none
-    int32_t material;      // into Scene::materials(), -1 for none
-    int32_t area_light;    // Light::index of si.area_light, -1 for none
+    int32_t light;       // Light::index, -1 for none
+    int32_t material;    // into Scene::materials(), -1 for none
+    int32_t area_light;  // Light::index of si.area_light, -1 for none
     float pdf_fwd, pdf_rev;
     Vec3 p, ng, w_sky;
     Spectrum beta;  // as it is held (every wavelength in spectral mode)

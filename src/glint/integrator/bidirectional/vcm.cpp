@@ -3,10 +3,10 @@
 #include <glint/core/memory.h>
 #include <glint/core/progress.h>
 #include <glint/core/rng.h>
-#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/bidirectional/subpath_exchange.h>
 #include <glint/integrator/bidirectional/vcm.h>
+#include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/hash_grid.h>
 #include <glint/integrator/transport/spectral_model.h>
 #include <glint/material/material.h>
@@ -56,10 +56,10 @@ struct VcmIntegrator::Iteration {
     // This process's light subpaths [first_light, end_light) (all of them but in an MPI
     // job), traced in chunks of kLightPathsPerChunk from first_light on.
     size_t first_light = 0, end_light = 0;
-    std::vector<Arena> arenas;                         // per chunk: the light BSDFs
-    std::vector<std::vector<Splat>> splats;            // per chunk
-    std::vector<Arena> received_arenas;                // per rank: BSDFs of received subpaths
-    std::vector<PhotonRef> photons;                    // the light vertices merges use, in the grid
+    std::vector<Arena> arenas;               // per chunk: the light BSDFs
+    std::vector<std::vector<Splat>> splats;  // per chunk
+    std::vector<Arena> received_arenas;      // per rank: BSDFs of received subpaths
+    std::vector<PhotonRef> photons;          // the light vertices merges use, in the grid
     HashGrid grid;
     mutable std::atomic<uint64_t> rays{0};
     Progress* progress = nullptr;
@@ -158,7 +158,8 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     it.arenas.resize(chunks);
     it.splats.resize(chunks);
     it.progress = &progress;
-    const int tiles_x = (w + kCameraTileSize - 1) / kCameraTileSize, tiles_y = (h + kCameraTileSize - 1) / kCameraTileSize;
+    const int tiles_x = (w + kCameraTileSize - 1) / kCameraTileSize,
+              tiles_y = (h + kCameraTileSize - 1) / kCameraTileSize;
     RenderStats stats;
     std::vector<Vec3> positions;  // of it.photons
     for (int iteration = 0; iteration < m_settings.spp; ++iteration) {
@@ -308,8 +309,7 @@ public:
 
 private:
     static bool hero_alone(const Spectrum& v) {
-        return v.value(0) != 0.0f && v.value(1) == 0.0f && v.value(2) == 0.0f &&
-               v.value(3) == 0.0f;
+        return v.value(0) != 0.0f && v.value(1) == 0.0f && v.value(2) == 0.0f && v.value(3) == 0.0f;
     }
     bool m_spectral;
     Spectrum m_all{0.0f}, m_hero{0.0f};

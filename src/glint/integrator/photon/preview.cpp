@@ -242,7 +242,8 @@ void PreviewIntegrator::restart(const Scene& scene) {
 }
 
 void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
-    if (m_photon_passes > 0) m_radius2 *= (m_photon_passes + kRadiusShrinkAlpha) / (m_photon_passes + 1.0f);
+    if (m_photon_passes > 0)
+        m_radius2 *= (m_photon_passes + kRadiusShrinkAlpha) / (m_photon_passes + 1.0f);
     const uint64_t count = static_cast<uint64_t>(m_preview.photons);
     PhotonEmitter emitter = [this](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
         const auto& projection = m_projections[static_cast<size_t>(light.index())];

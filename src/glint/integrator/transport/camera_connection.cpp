@@ -24,10 +24,11 @@ void check_camera_motion_joinable(const Scene& scene, const std::string& integra
                                   const std::string& where) {
     const Camera& camera = scene.camera();
     if (!camera.is_moving() || camera.motion_is_rigid()) return;
-    throw Error(fmt::format("{}: integrator '{}' joins light paths to a moving camera, whose "
-                            "motion keys may only turn and move it (these scale or shear it); "
-                            "use path or sppm",
-                            where, integrator));
+    throw Error(
+        fmt::format("{}: integrator '{}' joins light paths to a moving camera, whose "
+                    "motion keys may only turn and move it (these scale or shear it); "
+                    "use path or sppm",
+                    where, integrator));
 }
 
 std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,

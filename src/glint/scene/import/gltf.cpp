@@ -157,9 +157,9 @@ NodePose node_pose(const tinygltf::Node& node) {
     if (node.translation.size() == 3)
         pose.translation = Vec3(node.translation[0], node.translation[1], node.translation[2]);
     if (node.rotation.size() == 4) {
-        pose.rotation = glm::normalize(glm::quat(
-            static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
-            static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
+        pose.rotation = glm::normalize(
+            glm::quat(static_cast<float>(node.rotation[3]), static_cast<float>(node.rotation[0]),
+                      static_cast<float>(node.rotation[1]), static_cast<float>(node.rotation[2])));
     }
     if (node.scale.size() == 3) pose.scale = Vec3(node.scale[0], node.scale[1], node.scale[2]);
     return pose;
@@ -430,8 +430,9 @@ private:
         if (moving && (node.camera >= 0 || node.extensions.count("KHR_lights_punctual")) &&
             !m_warned_still_pose) {
             m_warned_still_pose = true;
-            warn("animated cameras and lights stand where the animation starts (glint moves "
-                 "meshes only)");
+            warn(
+                "animated cameras and lights stand where the animation starts (glint moves "
+                "meshes only)");
         }
         if (node.camera >= 0) add_camera(at(m_model.cameras, node.camera, "camera"), world[0]);
         if (node.extensions.count("KHR_lights_punctual")) {
@@ -512,7 +513,8 @@ private:
         keys.reserve(world.size());
         for (const Mat4& m : world) {
             keys.emplace_back(m);
-            for (const Primitive& p : primitives) m_bounds.expand(p.bounds.transformed(keys.back()));
+            for (const Primitive& p : primitives)
+                m_bounds.expand(p.bounds.transformed(keys.back()));
         }
         auto [it, inserted] = m_group_of_mesh.try_emplace(mesh_index, -1);
         if (inserted) {
@@ -1223,8 +1225,8 @@ private:
     tinygltf::Model m_model;
     fs::path m_directory;
     ReferencedFiles m_files;
-    size_t m_node_visits = 0;  // both walks over the node graph together
-    std::vector<float> m_key_times;           // the file's seconds of each motion key
+    size_t m_node_visits = 0;                   // both walks over the node graph together
+    std::vector<float> m_key_times;             // the file's seconds of each motion key
     std::map<int, NodeAnimation> m_animations;  // node -> its curves
     bool m_warned_still_pose = false;
     std::vector<int> m_roots;

@@ -1,6 +1,6 @@
 #include <glint/core/error.h>
-#include <glint/core/strings.h>
 #include <glint/core/file_access.h>
+#include <glint/core/strings.h>
 #include <glint/scene/import/gltf.h>
 #include <glint/scene/import/import.h>
 #include <glint/scene/import/mtl.h>
@@ -146,8 +146,8 @@ void import_into(SceneDesc& desc, const Params& params) {
         params.fail("'emission_scale' must be a finite number >= 0");
     if (params.has("animation")) {
         const std::vector<double> times = params.get_numbers("animation");
-        const bool finite = std::all_of(times.begin(), times.end(),
-                                        [](double t) { return std::isfinite(t); });
+        const bool finite =
+            std::all_of(times.begin(), times.end(), [](double t) { return std::isfinite(t); });
         if (times.empty() || times.size() > 2 || !finite || times.front() > times.back())
             params.fail_at("animation",
                            "'animation' must be {start, end} in seconds of the file's "

@@ -25,7 +25,7 @@ struct ImportTarget {
     /// the first animation moves the nodes over them (motion keys). Equal times: the pose at
     /// that time, standing still. Unset: every node stands as the file places it.
     std::optional<std::array<float, 2>> animation;
-    std::string where;            ///< the script location of the import, for messages
+    std::string where;  ///< the script location of the import, for messages
     /// Files the model refers to (MTL libraries, glTF buffers and images) must lie inside
     /// the model's folder; a trusted scene lifts this.
     bool confine_references = true;

@@ -67,8 +67,8 @@ void KeyframeCurve::evaluate(float time, float* out) const {
         std::copy_n(value(times.size() - 1), n, out);
         return finish();
     }
-    const size_t next = static_cast<size_t>(std::upper_bound(times.begin(), times.end(), time) -
-                                            times.begin());
+    const size_t next =
+        static_cast<size_t>(std::upper_bound(times.begin(), times.end(), time) - times.begin());
     const size_t key = next - 1;
     const float dt = times[next] - times[key];
     const float u = (time - times[key]) / dt;
@@ -80,7 +80,8 @@ void KeyframeCurve::evaluate(float time, float* out) const {
             if (n == 4) {
                 slerp(value(key), value(next), u, out);
             } else {
-                for (int c = 0; c < n; ++c) out[c] = (1.0f - u) * value(key)[c] + u * value(next)[c];
+                for (int c = 0; c < n; ++c)
+                    out[c] = (1.0f - u) * value(key)[c] + u * value(next)[c];
             }
             break;
         case Interpolation::kCubicSpline: {
