@@ -99,7 +99,9 @@ public:
 
 private:
     struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
-    struct RestirState;  // preview.cpp: ReSTIR's buffers and the arenas its BSDFs live in
+    struct RestirState;  // preview_restir.h: ReSTIR's buffers and the arenas its BSDFs live in
+    // Mirrors and glass a camera path follows before its first diffuse surface, at most.
+    static constexpr int kMaxCameraSegments = 16;
     void restart(const Scene& scene);
     void trace_photons(const Scene& scene, RenderStats& stats);
     Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
