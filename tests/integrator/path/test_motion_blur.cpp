@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <numbers>
 #include <random>
 #include <vector>
@@ -159,45 +160,40 @@ glint.box{ min = {-2, -1, -2}, max = {2, -0.6, 2}, material = m }
     }
 }
 
-TEST(MotionBlur, SpinningSquareMatchesTheCoveredFractionOfTheShutter) {
-    // The square [0, 1] x [-1, 1] (grey, 0.5 of a white sky) turns about the view axis by
-    // 150 degrees over the shutter, seen from above by an orthographic camera: a pixel at
-    // radius 0.85 (inside the square's reach at every angle) sees 1 - 0.5 c, with c the
-    // fraction of the shutter (and of the pixel) the square covers it.
-    constexpr int kSize = 48, kSpp = 512;
-    constexpr float kTurn = 150.0f, kHeight = 2.4f;
+namespace {
+
+// A grey (0.5) shape under a white sky, `shape` (Lua), moving over the shutter {0, 1}, seen
+// from above by an orthographic camera 2.4 units high at `size` x `size` pixels and `spp`
+// samples: each pixel whose centre (x, y) `measured` selects must see 1 - 0.5 c, with c the
+// fraction of the pixel and of the shutter that the shape covers, `covers(x, y, t)`
+// averaged on a fine grid.
+void expect_covered_fraction(const std::string& shape, int size, int spp,
+                             const std::function<bool(float, float)>& measured,
+                             const std::function<bool(float, float, float)>& covers) {
+    constexpr float kHeight = 2.4f;
     const Image image = render_lua(fmt::format(R"(
 glint.camera{{ type = "orthographic", eye = {{0, 0, 5}}, look_at = {{0, 0, 0}}, scale = {},
                shutter = {{0, 1}} }}
 glint.render{{ width = {}, height = {}, spp = {}, max_depth = 1, filter = "box" }}
 glint.background{{ radiance = 1 }}
 local grey = glint.diffuse{{ reflectance = 0.5 }}
-glint.quad{{ vertices = {{{{0, -1, 0}}, {{1, -1, 0}}, {{1, 1, 0}}, {{0, 1, 0}}}}, material = grey,
-             motion = {{ glint.rotate(0, {{0, 0, 1}}), glint.rotate({}, {{0, 0, 1}}) }} }}
+{}
 )",
-                                               kHeight, kSize, kSize, kSpp, kTurn));
-    const float pixel = kHeight / kSize;
-    // Whether the square turned by `degrees` covers the point (x, y).
-    const auto covers = [](float x, float y, float degrees) {
-        const float a = -degrees * std::numbers::pi_v<float> / 180.0f;
-        const float u = std::cos(a) * x - std::sin(a) * y, v = std::sin(a) * x + std::cos(a) * y;
-        return u >= 0.0f && u <= 1.0f && std::abs(v) <= 1.0f;
-    };
+                                               kHeight, size, size, spp, shape));
+    const float pixel = kHeight / static_cast<float>(size);
     double worst = 0.0, sum_error = 0.0;
     int count = 0;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
+    for (int py = 0; py < size; ++py) {
+        for (int px = 0; px < size; ++px) {
             const float cx = (px + 0.5f) * pixel - 0.5f * kHeight;
             const float cy = 0.5f * kHeight - (py + 0.5f) * pixel;
-            if (std::abs(std::hypot(cx, cy) - 0.85f) > 0.5f * pixel) continue;
-            // The closed form's average over the pixel and the shutter, by a fine grid.
+            if (!measured(cx, cy)) continue;
             int covered = 0, total = 0;
             for (int sy = 0; sy < 8; ++sy)
                 for (int sx = 0; sx < 8; ++sx)
                     for (int t = 0; t < 300; ++t, ++total)
-                        covered +=
-                            covers(cx + ((sx + 0.5f) / 8 - 0.5f) * pixel,
-                                   cy - ((sy + 0.5f) / 8 - 0.5f) * pixel, kTurn * (t + 0.5f) / 300);
+                        covered += covers(cx + ((sx + 0.5f) / 8 - 0.5f) * pixel,
+                                          cy - ((sy + 0.5f) / 8 - 0.5f) * pixel, (t + 0.5f) / 300);
             const double expected = 1.0 - 0.5 * covered / total;
             const double error = image.at(px, py, 1) - expected;
             worst = std::max(worst, std::abs(error));
@@ -208,10 +204,32 @@ glint.quad{{ vertices = {{{{0, -1, 0}}, {{1, -1, 0}}, {{1, 1, 0}}, {{0, 1, 0}}}}
     ASSERT_GT(count, 100);
     // Each sample is 0.5 or 1: standard deviation at most 0.25 (stratified time and pixel
     // positions only lower it), so a pixel's mean is within 0.25 / sqrt(spp) per standard
-    // error; 5 of them per pixel, and 5 for the ring's mean error.
-    const double se = 0.25 / std::sqrt(static_cast<double>(kSpp));
+    // error; 5 of them per pixel, and 5 for the measured pixels' mean error.
+    const double se = 0.25 / std::sqrt(static_cast<double>(spp));
     EXPECT_LT(worst, 5.0 * se);
     EXPECT_LT(std::abs(sum_error / count), 5.0 * se / std::sqrt(static_cast<double>(count)));
+}
+
+}  // namespace
+
+TEST(MotionBlur, SpinningSquareMatchesTheCoveredFractionOfTheShutter) {
+    // The square [0, 1] x [-1, 1] turns about the view axis by 150 degrees over the shutter
+    // (slerp turns it at a constant rate); the pixels at radius 0.85 are inside its reach at
+    // every angle.
+    constexpr float kTurn = 150.0f, kPixel = 2.4f / 48;
+    expect_covered_fraction(
+        fmt::format("glint.quad{{ vertices = {{{{0, -1, 0}}, {{1, -1, 0}}, {{1, 1, 0}}, "
+                    "{{0, 1, 0}}}}, material = grey, motion = {{ glint.rotate(0, {{0, 0, 1}}), "
+                    "glint.rotate({}, {{0, 0, 1}}) }} }}",
+                    kTurn),
+        48, 512,
+        [&](float x, float y) { return std::abs(std::hypot(x, y) - 0.85f) <= 0.5f * kPixel; },
+        [&](float x, float y, float t) {
+            const float a = -kTurn * t * std::numbers::pi_v<float> / 180.0f;
+            const float u = std::cos(a) * x - std::sin(a) * y;
+            const float v = std::sin(a) * x + std::cos(a) * y;
+            return u >= 0.0f && u <= 1.0f && std::abs(v) <= 1.0f;
+        });
 }
 
 TEST(MotionBlur, IntegratorsWithoutTimeRefuseMovingScenes) {
@@ -260,35 +278,32 @@ glint.sphere{{ radius = 0.5, material = glint.diffuse{{ reflectance = {{0.8, 0.3
 // moving camera too: light paths join the lens where the camera stands at their time.
 class MotionBlurLightPathsSlow : public ::testing::TestWithParam<std::string> {};
 
-TEST_P(MotionBlurLightPathsSlow, AgreeWithPathOnAMovingSphere) {
-    const std::string integrator = GetParam();
+// `integrator`'s blurred images of the moving sphere (the camera moved by `camera_motion`)
+// agree with path's, block by block, and its images with the sphere held at its opening
+// position do not.
+void expect_blur_agrees_with_path(const std::string& integrator, const std::string& camera_motion) {
     constexpr int kRenders = 8;
     std::vector<Image> moving, path, still;
     for (int k = 0; k < kRenders; ++k) {
-        moving.push_back(render_lua(moving_sphere_under_a_lamp(integrator, "{0, 1}", k + 1, 16)));
-        path.push_back(render_lua(moving_sphere_under_a_lamp("path", "{0, 1}", k + 101, 16)));
-        still.push_back(render_lua(moving_sphere_under_a_lamp(integrator, "{0, 0}", k + 201, 16)));
+        const auto render = [&](const std::string& with, const char* shutter, int seed) {
+            return render_lua(moving_sphere_under_a_lamp(with, shutter, seed, 16, camera_motion));
+        };
+        moving.push_back(render(integrator, "{0, 1}", k + 1));
+        path.push_back(render("path", "{0, 1}", k + 101));
+        still.push_back(render(integrator, "{0, 0}", k + 201));
     }
     EXPECT_LT(largest_z(block_stats(moving), block_stats(path)), 5.0);
     EXPECT_GT(largest_z(block_stats(still), block_stats(path)), 10.0);
 }
 
+TEST_P(MotionBlurLightPathsSlow, AgreeWithPathOnAMovingSphere) {
+    expect_blur_agrees_with_path(GetParam(), "");
+}
+
 TEST_P(MotionBlurLightPathsSlow, AgreeWithPathThroughAMovingCamera) {
-    const std::string integrator = GetParam();
-    const std::string pan =
-        ", motion = { glint.translate(-0.4, 0, 0), glint.rotate(8, {0, 1, 0}) * "
-        "glint.translate(0.4, 0.1, 0) }";
-    constexpr int kRenders = 8;
-    std::vector<Image> moving, path, still;
-    for (int k = 0; k < kRenders; ++k) {
-        moving.push_back(
-            render_lua(moving_sphere_under_a_lamp(integrator, "{0, 1}", k + 1, 16, pan)));
-        path.push_back(render_lua(moving_sphere_under_a_lamp("path", "{0, 1}", k + 101, 16, pan)));
-        still.push_back(
-            render_lua(moving_sphere_under_a_lamp(integrator, "{0, 0}", k + 201, 16, pan)));
-    }
-    EXPECT_LT(largest_z(block_stats(moving), block_stats(path)), 5.0);
-    EXPECT_GT(largest_z(block_stats(still), block_stats(path)), 10.0);
+    expect_blur_agrees_with_path(GetParam(),
+                                 ", motion = { glint.translate(-0.4, 0, 0), "
+                                 "glint.rotate(8, {0, 1, 0}) * glint.translate(0.4, 0.1, 0) }");
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, MotionBlurLightPathsSlow,
@@ -347,46 +362,17 @@ TEST(MotionBlur, MalformedMotionIsAnErrorNamingTheLine) {
 // (vertex keys), seen from above: a pixel at x is covered while the edge is past it, a
 // fraction 1 - (x - 0.2) / 0.8 of the shutter, and sees 1 - 0.5 c as the spinning square.
 TEST(MotionBlur, DeformingMeshMatchesTheCoveredFractionOfTheShutter) {
-    constexpr int kSize = 40, kSpp = 512;
-    constexpr float kHeight = 2.4f;
-    const Image image = render_lua(fmt::format(R"(
-glint.camera{{ type = "orthographic", eye = {{0, 0, 5}}, look_at = {{0, 0, 0}}, scale = {},
-               shutter = {{0, 1}} }}
-glint.render{{ width = {}, height = {}, spp = {}, max_depth = 1, filter = "box" }}
-glint.background{{ radiance = 1 }}
-glint.mesh{{ vertices = {{{{0, -1, 0}}, {{0.2, -1, 0}}, {{0.2, 1, 0}}, {{0, 1, 0}}}},
-             indices = {{1, 2, 3, 1, 3, 4}},
-             vertex_keys = {{ {{0, -1, 0,  1, -1, 0,  1, 1, 0,  0, 1, 0}} }},
-             material = glint.diffuse{{ reflectance = 0.5 }} }}
-)",
-                                               kHeight, kSize, kSize, kSpp));
-    const float pixel = kHeight / kSize;
-    double worst = 0.0, sum_error = 0.0;
-    int count = 0;
-    for (int py = 0; py < kSize; ++py) {
-        for (int px = 0; px < kSize; ++px) {
-            const float cx = (px + 0.5f) * pixel - 0.5f * kHeight;
-            const float cy = 0.5f * kHeight - (py + 0.5f) * pixel;
-            // Pixels wholly inside the band the edge sweeps, away from the top and bottom.
-            if (cx - 0.5f * pixel < 0.2f || cx + 0.5f * pixel > 1.0f || std::abs(cy) > 0.8f)
-                continue;
-            int covered = 0, total = 0;
-            for (int sx = 0; sx < 8; ++sx) {
-                const float x = cx + ((sx + 0.5f) / 8 - 0.5f) * pixel;
-                for (int t = 0; t < 400; ++t, ++total)
-                    covered += x <= 0.2f + 0.8f * (t + 0.5f) / 400;
-            }
-            const double expected = 1.0 - 0.5 * covered / total;
-            const double error = image.at(px, py, 1) - expected;
-            worst = std::max(worst, std::abs(error));
-            sum_error += error;
-            ++count;
-        }
-    }
-    ASSERT_GT(count, 100);
-    const double se = 0.25 / std::sqrt(static_cast<double>(kSpp));  // as for the square
-    EXPECT_LT(worst, 5.0 * se);
-    EXPECT_LT(std::abs(sum_error / count), 5.0 * se / std::sqrt(static_cast<double>(count)));
+    constexpr float kPixel = 2.4f / 40;
+    expect_covered_fraction(
+        "glint.mesh{ vertices = {{0, -1, 0}, {0.2, -1, 0}, {0.2, 1, 0}, {0, 1, 0}}, "
+        "indices = {1, 2, 3, 1, 3, 4}, "
+        "vertex_keys = { {0, -1, 0,  1, -1, 0,  1, 1, 0,  0, 1, 0} }, material = grey }",
+        40, 512,
+        // Pixels wholly inside the band the edge sweeps, away from the top and bottom.
+        [&](float x, float y) {
+            return x - 0.5f * kPixel >= 0.2f && x + 0.5f * kPixel <= 1.0f && std::abs(y) <= 0.8f;
+        },
+        [](float x, float, float t) { return x <= 0.2f + 0.8f * t; });
 }
 
 // A mesh whose keys translate every vertex blurs as the same mesh moved by motion keys.
