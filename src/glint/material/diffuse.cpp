@@ -12,7 +12,9 @@ public:
         if (!reflectance.is_textured()) m_uniform_bsdf.emplace(reflectance.representative());
     }
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
-        if (m_uniform_bsdf) return &*m_uniform_bsdf;
+        // The shared BSDF holds the RGB reflectance: spectral mode reads it at the path's
+        // wavelengths instead.
+        if (m_uniform_bsdf && !spectral_mode_active()) return &*m_uniform_bsdf;
         return arena.make<LambertianBsdf>(m_reflectance.eval(si));
     }
     Spectrum albedo(const SurfaceInteraction& si) const override { return m_reflectance.eval(si); }

@@ -12,7 +12,8 @@ public:
         if (!tint.is_textured()) m_uniform_bsdf.emplace(tint.representative());
     }
     const Bsdf* bsdf(const SurfaceInteraction& si, Arena& arena) const override {
-        if (m_uniform_bsdf) return &*m_uniform_bsdf;
+        // The shared BSDF holds the RGB tint: spectral mode reads it at the path's wavelengths.
+        if (m_uniform_bsdf && !spectral_mode_active()) return &*m_uniform_bsdf;
         return arena.make<SpecularReflectionBsdf>(m_tint.eval(si));
     }
     Spectrum albedo(const SurfaceInteraction& si) const override { return m_tint.eval(si); }

@@ -107,7 +107,8 @@ uint64_t WhittedIntegrator::prepare(const Scene& scene) {
     }
     uint64_t photon_rays = 0;
     if (m_whitted.caustics) {
-        m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, photon_rays);
+        m_sets = photon_wavelength_sets(m_settings, m_whitted.caustic);
+        m_caustics = build_caustic_map(scene, m_settings, m_whitted.caustic, m_sets, photon_rays);
         m_caustic_radius2 = photon_search_radius2(scene, m_whitted.caustic);
     }
     return photon_rays;
@@ -168,13 +169,13 @@ Spectrum WhittedIntegrator::trace(const Ray& ray, const Scene& scene, Sampler& s
         const Vec3 wo_local = si.to_local(si.wo);
         if (!bsdf->is_delta() && m_show_photons) {
             L += radiance_estimate(m_caustics, si, *bsdf, m_whitted.caustic.photon_neighbours,
-                                   m_caustic_radius2);
+                                   m_caustic_radius2, m_sets);
         } else if (!bsdf->is_delta()) {
             L += direct(scene, si, *bsdf, sampler, counter);
             L += m_whitted.ambient.spectrum() * si.material->albedo(si);
             if (m_caustics.size() > 0) {
                 L += radiance_estimate(m_caustics, si, *bsdf, m_whitted.caustic.photon_neighbours,
-                                       m_caustic_radius2);
+                                       m_caustic_radius2, m_sets);
             }
         } else {
             // Follow every delta lobe (reflection, refraction) with its exact weight, in the

@@ -55,6 +55,10 @@ public:
 private:
     // Checks max_depth and builds the caustic map (caustics = true).
     uint64_t prepare(const Scene& scene) override;
+    // The caustic map's sets, with caustics = true: each sample reads the map at one set.
+    const WavelengthSets* wavelength_sets() const override {
+        return m_whitted.caustics ? &m_sets : nullptr;
+    }
     // Radiance along `ray`, recursing into delta lobes. `budget` is what is left of the
     // camera sample's kRayBudget: each call takes one, and once none is left a delta hit
     // follows only its strongest lobe (see whitted.cpp).
@@ -66,6 +70,7 @@ private:
     WhittedSettings m_whitted;
     int m_max_depth;
     PhotonMap m_caustics;
+    WavelengthSets m_sets;  // the caustic map's wavelengths (spectral mode)
     float m_caustic_radius2 = 0.0f;
     bool m_show_photons = false;  // debug view: only the caustic map's estimate at diffuse hits
 };

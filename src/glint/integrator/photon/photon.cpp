@@ -21,16 +21,18 @@ struct PhotonSink {
     std::vector<Photon> photons;
     void store(const PhotonHit& hit) {
         if (caustic_only && !hit.caustic) return;
-        photons.push_back({hit.si->p, hit.wi, hit.power});
+        photons.push_back({hit.si->p, hit.wi, hit.power, hit.set});
     }
 };
 
-// Concatenates the chunks' photons in chunk order and scales them to the emitted count.
-PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted) {
+// Concatenates the chunks' photons in chunk order and scales them to the emitted count: the
+// count of their own set, when the photons took turns over `sets`.
+PhotonMap gather_map(std::vector<PhotonSink> sinks, uint64_t emitted, const WavelengthSets& sets) {
     std::vector<Photon> photons;
     for (PhotonSink& sink : sinks)
         photons.insert(photons.end(), sink.photons.begin(), sink.photons.end());
-    const float scale = emitted > 0 ? 1.0f / static_cast<float>(emitted) : 0.0f;
+    const float scale =
+        emitted > 0 ? static_cast<float>(sets.count()) / static_cast<float>(emitted) : 0.0f;
     for (Photon& p : photons) p.power *= scale;
     return PhotonMap(std::move(photons));
 }
@@ -43,6 +45,9 @@ CausticSettings CausticSettings::read(const Params& p) {
     s.photon_neighbours = p.get_int("photon_neighbours", s.photon_neighbours);
     s.projection_maps = p.get_bool("projection_maps", s.projection_maps);
     s.photon_radius = p.get_float("photon_radius", s.photon_radius);
+    s.wavelength_sets = p.get_int("wavelength_sets", s.wavelength_sets);
+    if (s.wavelength_sets < 1 || s.wavelength_sets > 256)
+        p.fail_at("wavelength_sets", "'wavelength_sets' must be in [1, 256]");
     if (s.caustic_photons < 0)
         p.fail_at("caustic_photons", "'caustic_photons' must not be negative");
     if (s.photon_neighbours < 1)
@@ -73,8 +78,15 @@ PhotonSettings PhotonSettings::read(const Params& p) {
     return s;
 }
 
+WavelengthSets photon_wavelength_sets(const RenderSettings& settings,
+                                      const CausticSettings& caustic) {
+    if (!settings.spectral) return {};
+    return WavelengthSets(caustic.wavelength_sets, settings.seed);
+}
+
 PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
-                            const CausticSettings& caustic, uint64_t& rays) {
+                            const CausticSettings& caustic, const WavelengthSets& sets,
+                            uint64_t& rays) {
     const int max_bounces = settings.max_depth >= 0 ? settings.max_depth : 32;
     // Caustic photons from point, spot and area lights go only where specular objects are.
     std::vector<std::optional<ProjectionMap>> projections(scene.lights().size());
@@ -90,13 +102,14 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
         const auto& projection = projections[static_cast<size_t>(light.index())];
         return projection ? projection->sample(light, u1, u2, u3) : light.sample_le(u1, u2, u3);
     };
-    const PhotonTracer tracer(scene, max_bounces, emitter);
+    PhotonTracer tracer(scene, max_bounces, emitter);
+    tracer.use_wavelength_sets(&sets);
     const uint64_t count = static_cast<uint64_t>(caustic.caustic_photons);
     return gather_map(tracer.trace(0, count, settings.seed + 1, rays,
                                    [] {
                                        return PhotonSink{true, {}};
                                    }),
-                      count);
+                      count, sets);
 }
 
 float photon_search_radius2(const Scene& scene, const CausticSettings& caustic) {
@@ -119,14 +132,17 @@ uint64_t PhotonIntegrator::build_maps(const Scene& scene) {
     const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
     uint64_t rays = 0;
 
-    const PhotonTracer global_tracer(scene, max_bounces);
+    m_sets = photon_wavelength_sets(m_settings, m_photon.caustic);
+
+    PhotonTracer global_tracer(scene, max_bounces);
+    global_tracer.use_wavelength_sets(&m_sets);
     const uint64_t global_count = static_cast<uint64_t>(m_photon.photons);
     m_global = gather_map(
         global_tracer.trace(0, global_count, m_settings.seed, rays, [] { return PhotonSink{}; }),
-        global_count);
+        global_count, m_sets);
 
     const auto start = std::chrono::steady_clock::now();
-    m_caustic = build_caustic_map(scene, m_settings, m_photon.caustic, rays);
+    m_caustic = build_caustic_map(scene, m_settings, m_photon.caustic, m_sets, rays);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     m_caustic_rate =
@@ -171,7 +187,8 @@ RenderStats PhotonIntegrator::render(const Scene& scene, Film& film, Progress& p
 
 Spectrum PhotonIntegrator::estimate(const PhotonMap& map, const SurfaceInteraction& si,
                                     const Bsdf& bsdf) const {
-    return radiance_estimate(map, si, bsdf, m_photon.caustic.photon_neighbours, m_max_distance2);
+    return radiance_estimate(map, si, bsdf, m_photon.caustic.photon_neighbours, m_max_distance2,
+                             m_sets);
 }
 
 Spectrum PhotonIntegrator::final_gather(const Scene& scene, const SurfaceInteraction& si,

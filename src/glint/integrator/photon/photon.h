@@ -20,6 +20,9 @@ struct CausticSettings {
     /// scene's bounding-box diagonal. Where fewer than photon_neighbours photons lie within
     /// it, the estimate uses the photons there over this radius's disc.
     float photon_radius = 0.0f;
+    /// Spectral mode: the sets of wavelengths the maps are traced at, the photons taking
+    /// turns, and one per camera sample (transport/wavelength_sets.h) (in [1, 256]).
+    int wavelength_sets = kDefaultWavelengthSets;
 
     /// Reads and validates the keys above; errors name the key's location.
     static CausticSettings read(const Params& params);
@@ -37,8 +40,14 @@ struct PhotonSettings {
 
 // The caustic map alone (light - specular+ - diffuse photons), for any integrator that wants
 // photon-mapped caustics; `rays` counts the rays traced.
+// In spectral mode its photons carry the wavelengths of `sets` (the camera paths' too).
 PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
-                            const CausticSettings& caustic, uint64_t& rays);
+                            const CausticSettings& caustic, const WavelengthSets& sets,
+                            uint64_t& rays);
+// The sets of wavelengths a render with `settings` traces its maps at: `caustic`'s count in
+// spectral mode, RGB's one otherwise.
+WavelengthSets photon_wavelength_sets(const RenderSettings& settings,
+                                      const CausticSettings& caustic);
 // The largest search radius (squared) for radiance estimates in `scene`: `photon_radius`,
 // or 1/20 of the scene's diagonal when that is 0.
 float photon_search_radius2(const Scene& scene, const CausticSettings& caustic);
@@ -58,7 +67,7 @@ public:
         // Each photon path draws a time of its own, as sppm's do; a camera path gathers
         // photons of every time (docs/scene-language.md, "Motion blur").
         capabilities.motion_blur = true;
-        capabilities.spectral = false;  // its photon map is built once, for one set of wavelengths
+        capabilities.spectral = true;  // its maps are traced in sets of wavelengths
         capabilities.debug_views.push_back(photons_debug_view());
         return capabilities;
     }
@@ -74,6 +83,7 @@ public:
 private:
     // The passes' photon maps (render() builds them itself, to time them).
     uint64_t prepare(const Scene& scene) override { return build_maps(scene); }
+    const WavelengthSets* wavelength_sets() const override { return &m_sets; }
     Spectrum estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf) const;
     Spectrum final_gather(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                           Sampler& sampler, Arena& arena, RayCounter& counter) const;
@@ -81,6 +91,7 @@ private:
     PhotonSettings m_photon;
     PhotonMap m_caustic;
     PhotonMap m_global;
+    WavelengthSets m_sets;  // the maps' wavelengths (spectral mode), made by build_maps()
     float m_max_distance2 = kInfinity;
     bool m_show_photons = false;  // debug view: only the maps' estimate at the first diffuse hit
     double m_caustic_rate = 0.0;

@@ -83,7 +83,8 @@ constexpr float kConeFilter = 1.1f;  // Jensen's k for the cone filter
 }
 
 Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf,
-                           int k, float max_distance2) {
+                           int k, float max_distance2, const WavelengthSets& sets) {
+    const int set = sets.active_set();
     thread_local std::vector<std::pair<float, uint32_t>> found;
     map.nearest(si.p, k, max_distance2, found);
     if (found.empty()) return Spectrum(0.0f);
@@ -95,6 +96,7 @@ Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, c
     Spectrum sum(0.0f);
     for (const auto& [d2, index] : found) {
         const Photon& photon = map[index];
+        if (photon.set != set) continue;  // another set's wavelengths
         if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f)
             continue;  // arrived on the other side
         const float weight = 1.0f - std::sqrt(d2) / (kConeFilter * r);

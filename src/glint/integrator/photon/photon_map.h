@@ -7,6 +7,7 @@
 // nearby plane it does not touch (its search would visit every photon within the maximum
 // radius of it in projection, a number that grows with the photon count).
 #include <glint/core/spectrum.h>
+#include <glint/integrator/transport/wavelength_sets.h>
 #include <glint/math/bounds.h>
 #include <glint/math/vector.h>
 
@@ -20,6 +21,7 @@ struct Photon {
     Vec3 p;
     Vec3 wi;  // unit, towards where the photon came from
     Spectrum power;
+    int set = 0;  // its wavelength set (transport/wavelength_sets.h); 0 in RGB mode
 };
 
 class PhotonMap {
@@ -61,7 +63,11 @@ class Bsdf;
 /// w = 1 - d / (1.1 r) and normalised by the filter's integral over the disc,
 ///   L = sum f(wo, wi_p) Phi_p w_p / ((1 - 2 / (3 * 1.1)) pi r^2).
 /// Photons that arrived on the other side of the surface are ignored.
+/// In spectral mode (`sets` spectral), the k nearest photons of every set set the radius,
+/// and only those of the calling path's set (WavelengthSets::active_set) are summed: each
+/// set's photons carry the power of all, so that is an estimate of the same radiance at
+/// the path's wavelengths.
 Spectrum radiance_estimate(const PhotonMap& map, const SurfaceInteraction& si, const Bsdf& bsdf,
-                           int k, float max_distance2);
+                           int k, float max_distance2, const WavelengthSets& sets = {});
 
 }  // namespace glint

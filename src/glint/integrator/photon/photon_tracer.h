@@ -12,6 +12,7 @@
 #include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/wavelength_sets.h>
 #include <glint/material/material.h>
 
 #include <tbb/parallel_for.h>
@@ -29,6 +30,7 @@ struct PhotonHit {
     Spectrum power;  // power of the photon (already divided by the light selection pmf)
     int bounces;     // scattering events before this hit (0: straight from the light)
     bool caustic;    // every earlier scattering event was specular (and there was one)
+    int set = 0;     // the wavelength set it carries (use_wavelength_sets; 0 in RGB mode)
 };
 
 // How a chosen light emits a photon; the default is Light::sample_le.
@@ -50,6 +52,12 @@ public:
     // Spectral mode: the photons traced from now on carry `wavelengths` (those of the camera
     // points they will meet); nullptr for RGB mode. The context must outlive the tracing.
     void use_wavelengths(const WavelengthContext* wavelengths) { m_wavelengths = wavelengths; }
+    // Spectral mode for prepared maps: photon i carries the wavelengths of set
+    // sets.set_of_particle(i), and says so in its hits; nullptr (or RGB sets) for none. The
+    // sets must outlive the tracing.
+    void use_wavelength_sets(const WavelengthSets* sets) {
+        m_sets = sets != nullptr && sets->spectral() ? sets : nullptr;
+    }
 
     // Traces photons [first, first + count); photon i is keyed by (seed, i). `make_sink()`
     // makes the sink of each chunk; the sinks come back in chunk order.
@@ -81,8 +89,11 @@ public:
 private:
     template <typename Sink>
     void trace_one(uint64_t index, uint64_t seed, Arena& arena, Sink& sink, uint64_t& rays) const {
+        std::optional<WavelengthScope> set_wavelengths;
+        const int set = m_sets != nullptr ? m_sets->set_of_particle(index) : 0;
+        if (m_sets != nullptr) set_wavelengths.emplace((*m_sets)[set]);
         std::optional<SecondaryWavelengthsScope> terminated;  // this photon's, in spectral mode
-        if (m_wavelengths != nullptr) terminated.emplace();
+        if (m_wavelengths != nullptr || m_sets != nullptr) terminated.emplace();
         Rng rng(hash_combine(mix_bits(seed ^ 0x5bd1e995u), index));
         LightPathSamples u_start;
         u_start.u_light = rng.next_float();
@@ -113,7 +124,8 @@ private:
             if (!bsdf) return;
             const Vec3 wi = -glm::normalize(ray.direction);
             if (!bsdf->is_delta()) {
-                sink.store(PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0});
+                sink.store(
+                    PhotonHit{&si, bsdf, wi, beta, bounces, specular_only && bounces > 0, set});
                 if (m_caustic_paths_only) return;
             }
             if (bounces == m_max_bounces) return;
@@ -143,6 +155,7 @@ private:
     PhotonEmitter m_emitter;
     bool m_caustic_paths_only;
     const WavelengthContext* m_wavelengths = nullptr;
+    const WavelengthSets* m_sets = nullptr;
 };
 
 }  // namespace glint

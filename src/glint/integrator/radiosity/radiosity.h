@@ -47,7 +47,7 @@ public:
         IntegratorCapabilities capabilities = TileIntegrator::capabilities();
         capabilities.motion_blur = false;  // its photons or radiosity are made at one time
         capabilities.crop_windows = false;
-        capabilities.spectral = false;  // its solution is stored per patch as RGB
+        capabilities.spectral = true;  // solved once per set of wavelengths
         return capabilities;
     }
     /// At the first surface that is not a mirror or glass (followed through them): meshed
@@ -63,13 +63,17 @@ public:
     /// The cache's file: relative to the scene's folder, and inside it unless the scene is
     /// trusted (glint::Error otherwise, naming where the setting came from).
     std::string cache_path(const Scene& scene) const;
-    const RadiosityMesh& mesh() const { return m_mesh; }
+    /// The solution (in spectral mode, that of the first set of wavelengths).
+    const RadiosityMesh& mesh() const { return m_meshes.front(); }
     const RadiositySolveStats& solve_stats() const { return m_solve_stats; }
 
 protected:
     /// solve(), and the hybrid's caustic map: what every pass reads; returns the photon
     /// rays traced.
     uint64_t prepare(const Scene& scene) override;
+    // Spectral mode: each set of wavelengths has a solution of its own, and a camera sample
+    // reads the one of its set.
+    const WavelengthSets* wavelength_sets() const override { return &m_sets; }
 
 private:
     // Radiance leaving side `side` of the mesh at `at`: the interpolated radiosity (all of
@@ -83,8 +87,14 @@ private:
                     Sampler& sampler, RayCounter& counter) const;
 
     RadiosityIntegratorSettings m_radiosity;
-    RadiosityMesh m_mesh;
-    RadiositySolveStats m_solve_stats;
+    // The solution the calling thread's path reads: that of its wavelength set.
+    const RadiosityMesh& path_mesh() const {
+        return m_meshes[static_cast<size_t>(m_sets.active_set())];
+    }
+
+    WavelengthSets m_sets;                // spectral mode's sets (RGB: one, no wavelengths)
+    std::vector<RadiosityMesh> m_meshes;  // one solution per set
+    RadiositySolveStats m_solve_stats;    // summed over the sets
     bool m_loaded = false;  // the solution came from the cache
     bool m_quiet = false;   // the solve's progress hidden (render() follows its Progress)
     PhotonMap m_caustics;

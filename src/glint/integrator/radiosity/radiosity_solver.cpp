@@ -4,6 +4,8 @@
 #include <glint/integrator/transport/visibility.h>
 #include <glint/scene/scene.h>
 
+#include <optional>
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
@@ -182,8 +184,13 @@ private:
     template <typename Receive>
     void compute(Receive& receive, uint64_t shot, size_t begin, size_t end) {
         if (begin >= end) return;
+        // Spectral mode: the solve's wavelengths are the calling thread's; the workers take
+        // them on.
+        const WavelengthContext* wavelengths = detail::t_active_wavelengths;
         tbb::parallel_for(tbb::blocked_range<size_t>(begin, end, 64),
                           [&](const tbb::blocked_range<size_t>& range) {
+                              std::optional<WavelengthScope> scope;
+                              if (wavelengths != nullptr) scope.emplace(*wavelengths);
                               uint64_t rays = 0;
                               for (size_t v = range.begin(); v < range.end(); ++v) {
                                   Rng rng(hash_combine(hash_combine(m_seed, shot), v));

@@ -371,9 +371,13 @@ TileIntegrator::PixelMoments TileIntegrator::render_pixel(const Scene& scene, Fi
                                                           int count) const {
     PixelMoments moments;
     Sampler& sampler = *worker.sampler;
+    const WavelengthSets* sets = m_settings.spectral ? wavelength_sets() : nullptr;
     for (int index = first; index < first + count; ++index) {
-        const PathWavelengths wavelengths(m_settings.spectral,
-                                          detail::pixel_sample_key(m_settings.seed, pixel, index));
+        const auto wavelengths =
+            sets != nullptr
+                ? PathWavelengths(&(*sets)[sets->set_of_sample(m_settings.seed, pixel, index)])
+                : PathWavelengths(m_settings.spectral,
+                                  detail::pixel_sample_key(m_settings.seed, pixel, index));
         const CameraSample sample = start_camera_sample(scene, pixel, index, sampler);
         AovSample aov{};
         AovSample* features = film.has_aovs() ? &aov : nullptr;

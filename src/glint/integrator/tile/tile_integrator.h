@@ -2,6 +2,7 @@
 // The tile integrator: the tile loop, sampling and film handling shared by every
 // integrator that estimates radiance per camera ray; subclasses supply li().
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/transport/wavelength_sets.h>
 
 #include <memory>
 #include <vector>
@@ -47,6 +48,11 @@ protected:
         (void)scene;
         return 0;
     }
+
+    // In spectral mode, the sets of wavelengths that what prepare() made is known at (photon
+    // maps, a radiosity solution): each camera sample then carries one of these sets
+    // (transport/wavelength_sets.h) instead of wavelengths of its own. Null by default.
+    virtual const WavelengthSets* wavelength_sets() const { return nullptr; }
 
     // render() after prepare(): the tile loop over `film`'s window, for debug views that
     // render a second image from what prepare() made.

@@ -49,6 +49,13 @@ public:
         m_scope.emplace(m_context);
         m_terminated.emplace();
     }
+    /// A path that carries wavelengths shared with others (a set of WavelengthSets), kept
+    /// where they are, so that the set can be told by its address; nothing when null.
+    explicit PathWavelengths(const WavelengthContext* shared) {
+        if (shared == nullptr) return;
+        m_scope.emplace(*shared);
+        m_terminated.emplace();
+    }
     PathWavelengths(const PathWavelengths&) = delete;
     PathWavelengths& operator=(const PathWavelengths&) = delete;
 
