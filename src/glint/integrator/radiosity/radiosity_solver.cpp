@@ -19,6 +19,13 @@ namespace {
 
 using Sides = std::array<Spectrum, 2>;
 
+// How bright a radiosity is, for choosing the next shooter, stopping, and splitting elements:
+// its luminance in RGB mode; in spectral mode (one solve per set of wavelengths) the mean of
+// its wavelengths' values, which needs no colour matching per patch and per shot.
+float brightness(const Spectrum& s) {
+    return spectral_mode_active() ? s.average() : s.luminance();
+}
+
 // The solve's state: the mesh and what the current shot gives each vertex.
 class Solver {
 public:
@@ -72,7 +79,7 @@ public:
     double unshot_power() const {
         double sum = 0.0;
         for (const RadiosityPatch& p : m_mesh.patches)
-            sum += (p.unshot[0].luminance() + p.unshot[1].luminance()) * p.triangle.area;
+            sum += (brightness(p.unshot[0]) + brightness(p.unshot[1])) * p.triangle.area;
         return sum;
     }
 
@@ -85,7 +92,7 @@ public:
         for (size_t i = 0; i < m_mesh.patches.size(); ++i) {
             for (int s = 0; s < 2; ++s) {
                 const double power =
-                    m_mesh.patches[i].unshot[s].luminance() * m_mesh.patches[i].triangle.area;
+                    brightness(m_mesh.patches[i].unshot[s]) * m_mesh.patches[i].triangle.area;
                 if (power > best) {
                     best = power;
                     best_patch = i;
@@ -209,10 +216,10 @@ private:
         for (int s = 0; s < 2; ++s) {
             float lo = kInfinity, hi = -kInfinity, top = 0.0f;
             for (uint32_t v : element.v) {
-                const float d = m_delta[v][s].luminance();
+                const float d = brightness(m_delta[v][s]);
                 lo = std::min(lo, d);
                 hi = std::max(hi, d);
-                top = std::max(top, (m_mesh.vertices[v].b[s] + m_delta[v][s]).luminance());
+                top = std::max(top, brightness(m_mesh.vertices[v].b[s] + m_delta[v][s]));
             }
             if (hi - lo > m_settings.subdivide * top && top > 0.0f &&
                 m_mesh.longest_edge(e) >= 2.0f * m_element_size)
