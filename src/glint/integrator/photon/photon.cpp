@@ -94,8 +94,7 @@ PhotonMap build_caustic_map(const Scene& scene, const RenderSettings& settings,
     // moves, photons go everywhere (each with its own time) instead.
     if (caustic.projection_maps && !scene.has_motion()) {
         for (size_t i = 0; i < scene.lights().size(); ++i) {
-            if (ProjectionMap::supports(*scene.lights()[i]))
-                projections[i].emplace(scene, *scene.lights()[i]);
+            projections[i] = ProjectionMap::make_if_useful(scene, *scene.lights()[i]);
         }
     }
     PhotonEmitter emitter = [&](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {

@@ -5,6 +5,7 @@
 #include <glint/integrator/photon/photon_tracer.h>
 #include <glint/integrator/photon/preview.h>
 #include <glint/integrator/photon/preview_restir.h>
+#include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/math/frame.h>
 #include <glint/math/warp.h>
@@ -216,8 +217,7 @@ void PreviewIntegrator::restart(const Scene& scene) {
     // moves, photons (each with its own time) go everywhere instead.
     const bool aim = m_preview.photons > 0 && !scene.has_motion();
     for (size_t i = 0; aim && i < scene.lights().size(); ++i) {
-        if (ProjectionMap::supports(*scene.lights()[i]))
-            m_projections[i].emplace(scene, *scene.lights()[i]);
+        m_projections[i] = ProjectionMap::make_if_useful(scene, *scene.lights()[i]);
     }
 
     // The ambient term stands for the light that is neither direct nor caustic, after
@@ -238,7 +238,8 @@ void PreviewIntegrator::restart(const Scene& scene) {
     const float area = 2.0f * (extent.x * extent.y + extent.y * extent.z + extent.z * extent.x);
     const Spectrum bounced = area > 0.0f ? power * (k / (1.0f - k) / (kPi * area)) : Spectrum(0.0f);
     const Spectrum sky = scene.environment() ? Spectrum(0.0f) : scene.background() * (1.0f - c);
-    m_ambient = (bounced + sky) * m_preview.ambient;
+    // Made with no wavelengths active: the Spectrum values here hold RGB.
+    m_ambient = to_rgb((bounced + sky) * m_preview.ambient);
 }
 
 void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
@@ -250,7 +251,8 @@ void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
         return projection ? projection->sample(light, u1, u2, u3) : light.sample_le(u1, u2, u3);
     };
     const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
-    const PhotonTracer tracer(scene, max_bounces, emitter, true);
+    PhotonTracer tracer(scene, max_bounces, emitter, true);
+    tracer.use_wavelengths(m_settings.spectral ? &m_pass_wavelengths : nullptr);
     // Batch g is photons [g count, (g + 1) count) of one sequence: every batch differs, and
     // the same passes trace the same photons for any thread count.
     const auto sinks = tracer.trace(static_cast<uint64_t>(m_photon_passes) * count, count,
@@ -260,7 +262,10 @@ void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
         batch.insert(batch.end(), sink.photons.begin(), sink.photons.end());
     // Each batch is an estimate on its own: its photons carry power per emitted photon.
     const float scale = count > 0 ? 1.0f / static_cast<float>(count) : 0.0f;
-    for (Photon& photon : batch) photon.power *= scale;
+    for (Photon& photon : batch) {
+        photon.power *= scale;
+        photon.set = m_photon_passes;  // its batch: spectral mode reads the newest alone
+    }
 
     const size_t window = static_cast<size_t>(m_preview.window);
     if (m_batches.size() < window)
@@ -306,13 +311,17 @@ Spectrum PreviewIntegrator::caustic_estimate(const SurfaceInteraction& si, const
     const Vec3 wo = si.to_local(si.wo);
     const float viewer_side = glm::dot(si.wo, si.ng);
     Spectrum sum(0.0f);
+    // Spectral mode: the older batches carry other passes' wavelengths, so only this pass's
+    // batch is read (it is an estimate on its own).
+    const int newest = m_photon_passes - 1;
     // Strictly within the radius.
     m_grid.for_each_near<HashGrid::Ball::kOpen>(si.p, cache, [&](uint32_t index, float) {
         const Photon& photon = m_photons[index];
+        if (m_settings.spectral && photon.set != newest) return;
         if (glm::dot(photon.wi, si.ng) * viewer_side <= 0.0f) return;  // the other side
         sum += bsdf.eval(wo, si.to_local(photon.wi)) * photon.power;
     });
-    const float batches = static_cast<float>(m_batches.size());
+    const float batches = m_settings.spectral ? 1.0f : static_cast<float>(m_batches.size());
     return sum / (kPi * m_radius2 * batches);
 }
 
@@ -326,7 +335,7 @@ Spectrum PreviewIntegrator::indirect_estimate(const Scene& scene, const SurfaceI
     if (m_preview.bounces > 0)
         reflected += bounce_estimate(scene, si, bsdf, sampler, arena, counter);
     else
-        reflected += m_ambient * si.material->albedo(si);
+        reflected += uplift(m_ambient, RgbRole::illuminant) * si.material->albedo(si);
     return reflected;
 }
 
@@ -532,6 +541,17 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     if (pass < 0) throw Error(fmt::format("preview: pass {} is negative", pass));
     RenderStats stats;
     const auto start = std::chrono::steady_clock::now();
+    if (m_settings.spectral && m_preview.restir.mode != RestirMode::kOff) {
+        throw Error(fmt::format(
+            "{}: preview_restir keeps the previous pass's surfaces, whose BSDFs hold that "
+            "pass's wavelengths; spectral mode needs preview_restir = \"off\"",
+            m_settings.where_of("spectral")));
+    }
+    // Spectral mode: this pass's camera paths and photons carry one set of wavelengths.
+    if (m_settings.spectral)
+        m_pass_wavelengths = pass_wavelengths(mix_bits(m_settings.seed ^ 0x6a09e667u),
+                                              m_spectral_passes++);
+    const WavelengthContext* wavelengths = m_settings.spectral ? &m_pass_wavelengths : nullptr;
     if (m_scene != &scene) restart(scene);
     trace_photons(scene, stats);
     m_timing.photons = seconds_since(start);
@@ -548,15 +568,24 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
         const int block_rows = (h + kBlockHeight - 1) / kBlockHeight;
         tbb::parallel_for(
             tbb::blocked_range<int>(0, block_rows, 2), [&](const tbb::blocked_range<int>& rows) {
+                std::optional<WavelengthScope> scope;
+                if (wavelengths != nullptr) scope.emplace(*wavelengths);
                 Arena arena;
                 RayCounter counter;
                 if (m_packets) {
                     auto lanes = std::make_unique<CameraLanes>();
                     for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
-                    for (int row = rows.begin(); row < rows.end(); ++row)
-                        for (int x = 0; x < w; x += kBlockWidth)
+                    for (int row = rows.begin(); row < rows.end(); ++row) {
+                        for (int x = 0; x < w; x += kBlockWidth) {
+                            // The block's paths share one dispersion state: one lane's
+                            // dispersive glass has all eight read at the hero alone (still an
+                            // estimate of their colour).
+                            std::optional<SecondaryWavelengthsScope> terminated;
+                            if (wavelengths != nullptr) terminated.emplace();
                             render_block(scene, film, Vec2i(x, row * kBlockHeight), pass, *lanes,
                                          arena, counter);
+                        }
+                    }
                 } else {
                     PassSampler sampler;
                     sampler.set_seed(m_settings.seed);
@@ -569,6 +598,8 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                             const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
                             const Ray ray = scene.camera().sample_ray(film_point, sampler);
                             arena.reset();
+                            std::optional<SecondaryWavelengthsScope> terminated;
+                            if (wavelengths != nullptr) terminated.emplace();
                             film.add_sample(
                                 pixel, camera_sample(scene, ray, sampler, arena, counter, cache),
                                 1.0f, nullptr);
@@ -590,6 +621,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
 RenderStats PreviewIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     m_scene = nullptr;  // a render starts from no photons
+    m_spectral_passes = 0;
     RenderStats stats;
     double photon_seconds = 0.0;
     for (int pass = 0; pass < m_settings.spp; ++pass) {

@@ -65,6 +65,8 @@ public:
         // Camera rays, shadow rays and photons carry times; a camera ray gathers photons of
         // every time (an approximation, as the preview is).
         capabilities.motion_blur = true;
+        // Each pass carries one set of wavelengths, its camera paths and photons alike.
+        capabilities.spectral = true;
         return capabilities;
     }
     PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview);
@@ -121,7 +123,13 @@ private:
     PreviewSettings m_preview;
     const Scene* m_scene = nullptr;  // the scene the photons were traced in
     std::vector<std::optional<ProjectionMap>> m_projections;  // per light, where supported
-    Spectrum m_ambient{0.0f};                                 // ambient radiance per unit albedo
+    // Ambient radiance per unit albedo, as a colour: spectral mode reads it at each pass's
+    // wavelengths.
+    Rgb m_ambient{0.0f};
+    // Spectral mode: the wavelengths of the current pass (its camera paths and its photon
+    // batch), and how many passes had theirs since render() began (they stratify the range).
+    WavelengthContext m_pass_wavelengths;
+    uint32_t m_spectral_passes = 0;
     std::vector<std::vector<Photon>> m_batches;               // the last `window` batches, a ring
     HashGrid m_grid;                // the photons of m_batches, indexed for the current radius
     std::vector<Photon> m_photons;  // the same photons, in m_grid's storage order
