@@ -56,6 +56,9 @@ CLI::App* add_view_command(CLI::App& app, ViewOptions& view) {
     view_cmd->add_option("--svgf", view.svgf,
                          "on|off: filter every frame with the real-time denoiser (default off; "
                          "the viewer only, never `glint render`)");
+    view_cmd->add_flag("--spectral", view.render.spectral,
+                       "Spectral mode: each pass carries four wavelengths (preview: its camera "
+                       "paths and caustic photons alike), so dispersion shows its colours");
     view_cmd->add_flag("--hide-panel", view.hide_panel, "Start with the panel hidden (key H)");
     view_cmd->add_flag("--trusted-scene", view.render.trusted_scene, trusted_scene_help());
     view_cmd->add_option("--script-time-limit", view.render.script_time_limit,

@@ -15,6 +15,7 @@
 #include <support/test_util.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <string>
@@ -526,7 +527,7 @@ TEST_P(SpectralThreads, SameBitsForOneAndTwoThreads) {
 
 INSTANTIATE_TEST_SUITE_P(Integrators, SpectralThreads,
                          ::testing::Values("path", "light", "bdpt", "vcm", "sppm", "mlt",
-                                           "photon", "radiosity"),
+                                           "photon", "radiosity", "preview"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;
                          });
@@ -640,3 +641,30 @@ INSTANTIATE_TEST_SUITE_P(Integrators, SpectralPreparedMethods,
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;
                          });
+
+// The preview's caustic photons carry their pass's wavelengths: the prism's beam, which only
+// photons bring to the wall, spreads into a rainbow, red falling to the right of blue (as in
+// examples/prism.lua's light-traced image); in RGB mode it stays white, its red and blue
+// centred together. Centroids of each channel over the image, in pixels.
+TEST(SpectralPreview, PrismSplitsTheBeamIntoARainbow) {
+    auto centroids = [](bool spectral) {
+        const std::string scene = example_with_settings(
+            "prism.lua", fmt::format("integrator = 'preview', spp = 24, width = 160, "
+                                     "height = 120, spectral = {}",
+                                     spectral ? "true" : "false"));
+        const Image image = render_lua(scene);
+        std::array<double, 3> sum{}, weighted{};
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                for (int c = 0; c < 3; ++c) {
+                    sum[c] += image.at(x, y, c);
+                    weighted[c] += x * image.at(x, y, c);
+                }
+        for (int c = 0; c < 3; ++c) EXPECT_GT(sum[c], 0.0) << "no beam on the wall";
+        return std::array<double, 2>{weighted[0] / sum[0], weighted[2] / sum[2]};
+    };
+    const auto rgb = centroids(false);
+    EXPECT_NEAR(rgb[0], rgb[1], 0.5) << "RGB mode: a white beam";
+    const auto spectral = centroids(true);
+    EXPECT_GT(spectral[0] - spectral[1], 8.0) << "red " << spectral[0] << ", blue " << spectral[1];
+}
