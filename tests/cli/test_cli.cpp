@@ -217,23 +217,24 @@ TEST_F(CliTest, FogOnAnIntegratorWithoutMediaWarns) {
     EXPECT_EQ(count_of(result.output, "warning"), 0u) << result.output;
 }
 
-// spectral = true on an integrator that renders in RGB is one warning naming the
-// setting's line; on a spectral integrator, none.
-TEST_F(CliTest, SpectralOnAnRgbIntegratorWarns) {
+// Every integrator renders spectral = true (issue 30: photon, radiosity and preview were the
+// last), so none warns that it renders in RGB; a bad value of wavelength_sets names its line.
+TEST_F(CliTest, SpectralOnEveryIntegratorRendersWithoutWarning) {
     const std::string scene = settings_scene(m_dir, "spectral = true");
-    auto result = run_glint(fmt::format("render {} --integrator photon --photons 100 -o {} --quiet",
-                                        scene, out("a.exr")));
-    EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_EQ(count_of(result.output, "warning:"), 1u) << result.output;
-    EXPECT_NE(result.output.find("settings.lua:5: the 'photon' integrator renders in RGB"),
+    for (const char* integrator : {"path", "light", "bdpt", "photon", "radiosity", "preview"}) {
+        auto result = run_glint(fmt::format("render {} --integrator {} --photons 100 -o {} --quiet",
+                                            scene, integrator, out("a.exr")));
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(count_of(result.output, "renders in RGB"), 0u)
+            << integrator << ": " << result.output;
+    }
+    const std::string bad = settings_scene(m_dir, "spectral = true, wavelength_sets = 0");
+    auto result =
+        run_glint(fmt::format("render {} --integrator photon -o {} --quiet", bad, out("b.exr")));
+    EXPECT_EQ(result.exit_code, 1) << result.output;
+    EXPECT_NE(result.output.find("settings.lua:5: render: 'wavelength_sets' must be in [1, 256]"),
               std::string::npos)
         << result.output;
-    for (const char* integrator : {"path", "light", "bdpt"}) {
-        result = run_glint(fmt::format("render {} --integrator {} -o {} --quiet", scene, integrator,
-                                       out("a.exr")));
-        EXPECT_EQ(result.exit_code, 0) << result.output;
-        EXPECT_EQ(count_of(result.output, "warning"), 0u) << integrator << ": " << result.output;
-    }
 }
 
 TEST_F(CliTest, MissingSceneAndBadOutputFormatExitWithOne) {

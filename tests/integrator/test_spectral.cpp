@@ -472,10 +472,11 @@ TEST(SpectralDispersion, EachPathStartsWithFourWavelengths) {
 // Spectral against RGB on the Cornell box (path, 32 x 32, 32 spp, four seeds each). Its light
 // is a saturated orange, (17, 12, 4): RGB multiplies that colour by the walls' colours
 // channel by channel, spectral mode multiplies their spectra, and the colour of a product of
-// spectra is not the product of the colours. Measured (docs/spectral.md): luminance 1.6 %
-// lower in spectral mode, red 7.9 % lower, green 0.8 % higher, blue 16 % higher (blue is the
-// smallest channel, 0.036, and the one the orange light's spectrum leaks most into). Held:
-// the luminance within 3 %, each channel within 20 %, plus four standard errors of the two.
+// spectra is not the product of the colours. Measured (docs/spectral.md): luminance 0.9 %
+// lower in spectral mode, red 1.3 % lower, green 0.5 % lower, blue 5.1 % lower (blue is the
+// smallest channel, 0.036). Held: the luminance within 3 %, each channel within 8 %, plus
+// four standard errors of the two. (Before stop 40 untextured diffuse surfaces shared an RGB
+// BSDF in spectral mode, and blue came out 16 % higher: the bound sees that.)
 TEST(SpectralCornellSlow, MeansAgreeWithRgbWithinAFewPercent) {
     auto scene = [](bool spectral) {
         return [spectral](int seed) {
@@ -491,7 +492,7 @@ TEST(SpectralCornellSlow, MeansAgreeWithRgbWithinAFewPercent) {
         const Estimate rgb = image_mean(scene(false), 4, c);
         const Estimate spectral = image_mean(scene(true), 4, c);
         const double noise = 4.0 * std::sqrt(rgb.se * rgb.se + spectral.se * spectral.se);
-        EXPECT_NEAR(spectral.mean, rgb.mean, 0.2 * rgb.mean + noise)
+        EXPECT_NEAR(spectral.mean, rgb.mean, 0.08 * rgb.mean + noise)
             << "channel " << c << ": rgb " << rgb.mean << ", spectral " << spectral.mean;
         std::printf("channel %d: rgb %.5f ± %.5f, spectral %.5f ± %.5f, ratio %.4f\n", c, rgb.mean,
                     rgb.se, spectral.mean, spectral.se, spectral.mean / rgb.mean);
@@ -526,8 +527,8 @@ TEST_P(SpectralThreads, SameBitsForOneAndTwoThreads) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Integrators, SpectralThreads,
-                         ::testing::Values("path", "light", "bdpt", "vcm", "sppm", "mlt",
-                                           "photon", "radiosity", "preview"),
+                         ::testing::Values("path", "light", "bdpt", "vcm", "sppm", "mlt", "photon",
+                                           "radiosity", "preview"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
                              return info.param;
                          });
@@ -553,8 +554,8 @@ TEST(SpectralWavelengthSets, LanesDifferAndHeroesSpanTheRange) {
             if (lanes[i].second) heroes.push_back(static_cast<int>(i));
         ASSERT_EQ(static_cast<int>(heroes.size()), count);
         for (size_t h = 0; h < heroes.size(); ++h) {
-            const int next = h + 1 < heroes.size() ? heroes[h + 1]
-                                                   : heroes[0] + static_cast<int>(lanes.size());
+            const int next =
+                h + 1 < heroes.size() ? heroes[h + 1] : heroes[0] + static_cast<int>(lanes.size());
             EXPECT_LE(next - heroes[h] - 1, 7) << count << " sets: heroes bunched";
         }
         std::vector<int> seen(static_cast<size_t>(count), 0);
@@ -592,13 +593,13 @@ TEST_P(SpectralSurfaceColour, MatchesRgbInTheFurnace) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Materials, SpectralSurfaceColour,
-    ::testing::Values("glint.diffuse{ reflectance = {0.63, 0.065, 0.05} }",
-                      "glint.mirror{ tint = {0.2, 0.7, 0.3} }"),
-    [](const ::testing::TestParamInfo<std::string>& info) {
-        return info.index == 0 ? std::string("diffuse") : std::string("mirror");
-    });
+INSTANTIATE_TEST_SUITE_P(Materials, SpectralSurfaceColour,
+                         ::testing::Values("glint.diffuse{ reflectance = {0.63, 0.065, 0.05} }",
+                                           "glint.mirror{ tint = {0.2, 0.7, 0.3} }"),
+                         [](const ::testing::TestParamInfo<std::string>& info) {
+                             return info.index == 0 ? std::string("diffuse")
+                                                    : std::string("mirror");
+                         });
 
 // Photon mapping, whitted's caustics and radiosity read what they prepared at the camera
 // sample's set of wavelengths: on the Cornell box their spectral images agree with spectral
@@ -615,11 +616,11 @@ TEST_P(SpectralPreparedMethods, AgreeWithSpectralPathOnTheCornellBox) {
     auto scene = [&](const std::string& integrator, int spp) {
         return [integrator, spp](int seed) {
             const std::string extra =
-                integrator == "whitted" ? ", caustics = true, caustic_photons = 20000"
+                integrator == "whitted"  ? ", caustics = true, caustic_photons = 20000"
                 : integrator == "photon" ? ", photons = 40000, caustic_photons = 20000"
                 : integrator == "radiosity"
                     ? ", wavelength_sets = 4, radiosity_samples = 4, radiosity_unshot = 0.1"
-                                            : "";
+                    : "";
             return example_with_settings(
                 "cornell-box.lua",
                 fmt::format("width = 24, height = 24, spp = {}, seed = {}, spectral = true, "
@@ -667,4 +668,48 @@ TEST(SpectralPreview, PrismSplitsTheBeamIntoARainbow) {
     EXPECT_NEAR(rgb[0], rgb[1], 0.5) << "RGB mode: a white beam";
     const auto spectral = centroids(true);
     EXPECT_GT(spectral[0] - spectral[1], 8.0) << "red " << spectral[0] << ", blue " << spectral[1];
+}
+
+// An emitter's own spectrum (`spectrum = {...}`, `blackbody`, a named illuminant) is read at
+// each path's wavelengths, not replaced by its colour uplifted to a smooth spectrum: under a
+// narrow-band lamp (a triangle from 575 to 605 nm, like a sodium lamp's line) a surface shows
+// its reflectance at those wavelengths, whatever its RGB colour says. In the furnace the
+// inner sphere's colour over the white sphere's (the lamp's own colour) is
+// film(rho s) / film(s) per channel, integrated here; RGB mode would give rho's RGB, and an
+// uplifted lamp something else again.
+TEST(SpectralEmitters, NarrowBandLampShowsTheReflectanceAtItsLine) {
+    const Rgb rho(0.15f, 0.7f, 0.2f);
+    auto lamp = [](float nm) { return std::max(0.0f, 1.0f - std::abs(nm - 590.0f) / 15.0f); };
+    const Rgb lit = integrate_visible([&](float nm) {
+        return spectral_model().observer(nm) *
+               (lamp(nm) * uplift_at(rho, RgbRole::reflectance, nm));
+    });
+    const Rgb white =
+        integrate_visible([&](float nm) { return spectral_model().observer(nm) * lamp(nm); });
+    auto scene = [](const std::string& reflectance) {
+        return [reflectance](int seed) {
+            return fmt::format(R"(
+                glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 15 }}
+                glint.render{{ width = 8, height = 8, spp = 64, seed = {}, spectral = true }}
+                glint.sphere{{ center = {{0, 0, 0}}, radius = 3, material = glint.emissive{{
+                    radiance = 1, two_sided = true,
+                    spectrum = {{ {{575, 0}}, {{590, 1}}, {{605, 0}} }} }} }}
+                glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
+                              material = glint.diffuse{{ reflectance = {} }} }}
+            )",
+                               seed, reflectance);
+        };
+    };
+    bool differs_from_rgb = false;
+    for (int c = 0; c < 3; ++c) {
+        const double expected = lit[c] / white[c];
+        differs_from_rgb |= std::abs(expected - rho[c]) > 0.2;
+        const Estimate coloured = image_mean(scene("{0.15, 0.7, 0.2}"), 4, c);
+        const Estimate plain = image_mean(scene("1"), 2, c);
+        const double ratio = coloured.mean / plain.mean;
+        const double se = ratio * std::hypot(coloured.se / coloured.mean, plain.se / plain.mean);
+        EXPECT_NEAR(ratio, expected, 0.03 * expected + 4.0 * se)
+            << "channel " << c << " (RGB mode: " << rho[c] << ")";
+    }
+    EXPECT_TRUE(differs_from_rgb) << "the check would not tell the lamp's line from its colour";
 }

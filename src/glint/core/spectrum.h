@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <memory>
 
 namespace glint {
 
@@ -250,6 +251,16 @@ inline Rgb to_rgb(const Spectrum& s) {
     return {s.m_v[0], s.m_v[1], s.m_v[2]};
 }
 
+// The spectral distribution an emitter states itself (`blackbody = 2700`, a named illuminant,
+// a table: spectral/emission_params.h), luminance 1: spectral mode reads it at a path's
+// wavelengths, where a plain colour is uplifted to a smooth spectrum (a sodium lamp's line
+// or a fluorescent tube's peaks are not smooth).
+class EmissionSpectrum {
+public:
+    virtual ~EmissionSpectrum() = default;
+    virtual float eval(float nm) const = 0;
+};
+
 // A colour the scene fixed when it was built (a light's radiance, a metal's index, an
 // absorption): kept as the Rgb and made a Spectrum where a path reads it, so that spectral
 // mode reads it at that path's wavelengths. In RGB mode spectrum() is the Rgb's Spectrum.
@@ -261,16 +272,42 @@ public:
     // builds lights from C++ writes them.
     SceneColor(const Spectrum& rgb_spectrum, RgbRole role = RgbRole::illuminant)  // NOLINT
         : m_rgb(to_rgb(rgb_spectrum)), m_role(role) {}
+    // An emitter's `factor` (its colour parameter) times a spectral `shape` whose colour is
+    // `shape_rgb`: RGB mode renders factor x shape_rgb, spectral mode the factor (uplifted)
+    // times the shape at each wavelength.
+    SceneColor(const Rgb& factor, std::shared_ptr<const EmissionSpectrum> shape,
+               const Rgb& shape_rgb)
+        : m_rgb(factor * shape_rgb),
+          m_role(RgbRole::illuminant),
+          m_factor(factor),
+          m_shape(std::move(shape)) {}
 
-    Spectrum spectrum() const { return uplift(m_rgb, m_role); }
+    Spectrum spectrum() const {
+        if (m_shape && spectral_mode_active()) return shaped_spectrum();
+        return uplift(m_rgb, m_role);
+    }
     const Rgb& rgb() const { return m_rgb; }
     RgbRole role() const { return m_role; }
     bool is_black() const { return m_rgb.is_black(); }
-    SceneColor scaled(float s) const { return {m_rgb * s, m_role}; }
+    SceneColor scaled(float s) const {
+        SceneColor c = *this;
+        c.m_rgb = m_rgb * s;
+        c.m_factor = m_factor * s;
+        return c;
+    }
 
 private:
+    Spectrum shaped_spectrum() const {
+        const EmissionSpectrum& shape = *m_shape;
+        Spectrum s = uplift(m_factor, RgbRole::unbounded);
+        s *= Spectrum::at_wavelengths([&](float nm) { return shape.eval(nm); });
+        return s;
+    }
+
     Rgb m_rgb;
     RgbRole m_role = RgbRole::illuminant;
+    Rgb m_factor{0.0f};                               // with a shape: the colour parameter
+    std::shared_ptr<const EmissionSpectrum> m_shape;  // null: the Rgb is uplifted
 };
 
 inline Spectrum operator+(Spectrum a, const Spectrum& b) {

@@ -94,7 +94,7 @@ std::optional<LightSample> PointLight::sample_li(const Vec3& ref, const Vec2&, f
     return sample_point(m_position, ref, m_intensity.spectrum());
 }
 
-SpotLight::SpotLight(const Vec3& position, const Vec3& direction, const Spectrum& intensity,
+SpotLight::SpotLight(const Vec3& position, const Vec3& direction, const SceneColor& intensity,
                      float cone_degrees, float falloff_start_degrees)
     : m_position(position),
       m_direction(glm::normalize(direction)),
@@ -149,29 +149,29 @@ namespace {
 
 // A light's colour parameter `name` (intensity or irradiance), checked, shaped by a
 // `blackbody` or `spectrum` if the table gives one, and uplifted.
-Spectrum read_emission(const Params& params, const char* name) {
-    return uplift(spectral::read_emission_rgb(params, name), RgbRole::illuminant);
+SceneColor read_emission(const Params& params, const char* name) {
+    return spectral::read_emission_color(params, name);
 }
 
 }  // namespace
 
 std::unique_ptr<Light> make_point_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
-    const Spectrum intensity = read_emission(params, "intensity");
+    const SceneColor intensity = read_emission(params, "intensity");
     return std::make_unique<PointLight>(position, intensity);
 }
 
 std::unique_ptr<Light> make_directional_light(const Params& params) {
     const Vec3 direction = params.get_vec3("direction");
     if (!(glm::length(direction) > 0.0f)) params.fail("'direction' must not be zero");
-    const Spectrum irradiance = read_emission(params, "irradiance");
+    const SceneColor irradiance = read_emission(params, "irradiance");
     return std::make_unique<DirectionalLight>(direction, irradiance);
 }
 
 std::unique_ptr<Light> make_spot_light(const Params& params) {
     const Vec3 position = params.get_vec3("position");
     const Vec3 target = params.get_vec3("look_at");
-    const Spectrum intensity = read_emission(params, "intensity");
+    const SceneColor intensity = read_emission(params, "intensity");
     const float cone = params.get_float("cone_angle", 30.0f);
     const float falloff_start = params.get_float("falloff_start", cone * 0.8f);
     if (!(cone > 0.0f && cone <= 90.0f)) params.fail("'cone_angle' must be in (0, 90] degrees");

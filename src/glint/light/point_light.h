@@ -9,7 +9,7 @@ namespace glint {
 // Isotropic point light of a given intensity (W/sr).
 class PointLight final : public Light {
 public:
-    PointLight(const Vec3& position, const Spectrum& intensity)
+    PointLight(const Vec3& position, const SceneColor& intensity)
         : m_position(position), m_intensity(intensity) {}
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
@@ -32,7 +32,7 @@ private:
 // Point light restricted to a cone, with a smooth falloff between two half-angles.
 class SpotLight final : public Light {
 public:
-    SpotLight(const Vec3& position, const Vec3& direction, const Spectrum& intensity,
+    SpotLight(const Vec3& position, const Vec3& direction, const SceneColor& intensity,
               float cone_degrees, float falloff_start_degrees);
     std::optional<LightSample> sample_li(const Vec3& ref, const Vec2& u,
                                          float u_select) const override;
@@ -60,7 +60,7 @@ private:
 // Parallel light from one direction (the sun): `irradiance` on a surface facing it.
 class DirectionalLight final : public Light {
 public:
-    DirectionalLight(const Vec3& direction, const Spectrum& irradiance)
+    DirectionalLight(const Vec3& direction, const SceneColor& irradiance)
         : m_direction(glm::normalize(direction)), m_irradiance(irradiance) {}
     void preprocess(const Vec3& scene_center, float scene_radius) override {
         m_center = scene_center;

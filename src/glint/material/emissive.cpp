@@ -22,8 +22,7 @@ private:
 
 std::unique_ptr<Material> make_emissive_material(const Params& params, TextureTable&) {
     // `radiance` may be shaped by `blackbody = T` or `spectrum = ...` (emission_params.h).
-    const Rgb radiance = spectral::read_emission_rgb(params, "radiance");
-    return std::make_unique<EmissiveMaterial>(SceneColor(radiance, RgbRole::illuminant),
+    return std::make_unique<EmissiveMaterial>(spectral::read_emission_color(params, "radiance"),
                                               params.get_bool("two_sided", false));
 }
 

@@ -90,4 +90,27 @@ Rgb read_emission_rgb(const Params& params, const char* name) {
     return shape ? colour * shape->rgb() : colour;
 }
 
+namespace {
+
+// An emission shape as the colour of a light reads it.
+class ShapeSpectrum final : public EmissionSpectrum {
+public:
+    explicit ShapeSpectrum(EmissionShape shape) : m_shape(std::move(shape)) {}
+    float eval(float nm) const override { return static_cast<float>(m_shape.eval(nm)); }
+
+private:
+    EmissionShape m_shape;
+};
+
+}  // namespace
+
+SceneColor read_emission_color(const Params& params, const char* name) {
+    const std::optional<EmissionShape> shape = read_emission_shape(params);
+    if (!shape) return {read_emission_rgb(params, name), RgbRole::illuminant};
+    const Rgb colour = params.get_rgb(name, Rgb(1.0f));
+    if (colour.min_value() < 0.0f) params.fail(fmt::format("'{}' must not be negative", name));
+    const Rgb shape_rgb = shape->rgb();
+    return {colour, std::make_shared<const ShapeSpectrum>(*shape), shape_rgb};
+}
+
 }  // namespace glint::spectral

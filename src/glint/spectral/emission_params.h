@@ -6,6 +6,7 @@
 // `intensity = 100, blackbody = 2700` is as bright as `intensity = 100`, but warm.
 #include <glint/core/params.h>
 #include <glint/core/rgb.h>
+#include <glint/core/spectrum.h>
 #include <glint/spectral/tabulated_spectrum.h>
 
 #include <optional>
@@ -40,5 +41,9 @@ std::optional<EmissionShape> read_emission_shape(const Params& params);
 // The emitter colour parameter `name` times the shape, if any: with a shape, `name` may be
 // left out (1). Negative colours fail.
 Rgb read_emission_rgb(const Params& params, const char* name);
+
+// The same, as the colour an emitter keeps: with a shape, spectral mode reads the shape
+// itself at each wavelength (RGB mode renders read_emission_rgb's colour).
+SceneColor read_emission_color(const Params& params, const char* name);
 
 }  // namespace glint::spectral

@@ -32,9 +32,10 @@ WavelengthSets::WavelengthSets(int count, uint64_t seed) {
 
 int WavelengthSets::set_of_sample(uint64_t seed, Vec2i pixel, int index) const {
     if (!spectral()) return 0;
-    const uint64_t offset = hash_combine(mix_bits(seed ^ 0xa54ff53au),
-                                         (static_cast<uint64_t>(static_cast<uint32_t>(pixel.y)) << 32) |
-                                             static_cast<uint32_t>(pixel.x));
+    const uint64_t offset =
+        hash_combine(mix_bits(seed ^ 0xa54ff53au),
+                     (static_cast<uint64_t>(static_cast<uint32_t>(pixel.y)) << 32) |
+                         static_cast<uint32_t>(pixel.x));
     return static_cast<int>((offset + static_cast<uint64_t>(index)) % m_sets.size());
 }
 
@@ -43,8 +44,9 @@ int WavelengthSets::active_set() const {
     const WavelengthContext* active = detail::t_active_wavelengths;
     for (size_t set = 0; set < m_sets.size(); ++set)
         if (active == &m_sets[set]) return static_cast<int>(set);
-    throw Error("internal: a camera path reads a prepared spectral estimate outside its sets' "
-                "wavelengths");
+    throw Error(
+        "internal: a camera path reads a prepared spectral estimate outside its sets' "
+        "wavelengths");
 }
 
 }  // namespace glint

@@ -28,9 +28,7 @@ public:
     /// Sets there are (1 in RGB mode).
     int count() const { return spectral() ? static_cast<int>(m_sets.size()) : 1; }
     /// The wavelengths of set `set` (spectral mode only).
-    const WavelengthContext& operator[](int set) const {
-        return m_sets[static_cast<size_t>(set)];
-    }
+    const WavelengthContext& operator[](int set) const { return m_sets[static_cast<size_t>(set)]; }
     /// The set of sample `index` of `pixel` (0 in RGB mode).
     int set_of_sample(uint64_t seed, Vec2i pixel, int index) const;
     /// The set of particle `index` (a photon): the sets take turns.
