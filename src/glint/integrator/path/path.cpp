@@ -160,7 +160,7 @@ template <typename SamplerType>
     // Russian roulette on the throughput without the radiance scaling of refraction,
     // which would otherwise kill paths that are about to leave the glass.
     float survival;
-    if (!survives_throughput_roulette(
+    if (!survives_path_roulette(
             depth, (path.beta * path.eta_scale).max_value(), [&] { return sampler.get_1d(); },
             survival))
         return false;

@@ -175,7 +175,7 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
     if (outcome == MediumStep::kScattered) {
         // Roulette as at a surface, on the throughput the ratios leave.
         float survival;
-        if (!survives_throughput_roulette(
+        if (!survives_path_roulette(
                 walk.depth, (walk.beta / walk.r_u.average()).max_value(),
                 [&] { return walk.sampler->get_1d(); }, survival))
             return MediumStep::kEnded;
@@ -310,7 +310,7 @@ bool VolPathIntegrator::scatter_at_surface(const Scene& scene, Walk& walk, Arena
     walk.medium = medium_beyond(si, scattering->wi, walk.medium);
     continue_ray(walk.ray, si, *scattering);
     float survival;
-    if (!survives_throughput_roulette(
+    if (!survives_path_roulette(
             walk.depth, (walk.beta * walk.eta_scale / walk.r_u.average()).max_value(),
             [&] { return sampler.get_1d(); }, survival))
         return false;

