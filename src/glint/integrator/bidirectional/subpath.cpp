@@ -75,8 +75,8 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         if (mode == TransportMode::kRadiance && bs.is_transmission()) eta_scale *= bs.eta * bs.eta;
         continue_ray(ray, v.si, *scattering);
 
-        // The path tracer's roulette: from the third hit on (depth 2), survival in proportion
-        // to the throughput, where it is below 1.
+        // Throughput roulette: from the third hit on (depth 2), survival in proportion to the
+        // throughput, where it is below 1 (not path's square root: transport/roulette.h).
         const int depth = static_cast<int>(path.size()) - 2;
         float survival = 1.0f;
         if (limits.roulette && !survives_throughput_roulette(

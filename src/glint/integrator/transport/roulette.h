@@ -2,16 +2,16 @@
 // Russian roulette, the two rules glint's walks end paths by. Each walk decides which rule
 // it follows; the rules themselves are written once here.
 //
-//   throughput roulette   camera walks: from the third hit on, a path whose throughput
-//                         fell below 1 survives with a probability that falls with it, so
-//                         that dim paths end and bright ones are never cut. The camera
-//                         subpaths of bdpt/vcm/mlt survive in proportion to the throughput;
-//                         the unidirectional tracers (path, volpath) with its square root
-//                         (as Cycles does), which keeps more of the dim paths that still
-//                         carry light. On the Cornell box (256 x 256, 2 threads) the square
-//                         root took 10 % more time for 24 % lower relative MSE at 64 spp
-//                         (efficiency +16 to +24 % at 16 to 256 spp); for bdpt and vcm, whose
-//                         camera vertices each pay for connections, it lost 6 and 9 %
+//   throughput roulette   camera walks (path, volpath) and the subpaths of bdpt, vcm and
+//                         mlt: from the third hit on, a walk whose throughput fell below 1
+//                         survives with a probability that falls with it, so that dim
+//                         walks end and bright ones are never cut. The subpaths survive in
+//                         proportion to the throughput; path and volpath with its square
+//                         root (as Cycles does), which keeps more of the dim paths that
+//                         still carry light. On the Cornell box (256 x 256, 2 threads) the
+//                         square root took 10 % more time for 24 % lower relative MSE at
+//                         64 spp (efficiency +16 to +24 % at 16 to 256 spp); for bdpt and
+//                         vcm, whose vertices each pay for connections, it lost 6 and 9 %
 //   power roulette        particles (photons, light-tracing paths): a particle survives
 //                         with the fraction of power its scattering kept, so the power it
 //                         carries stays roughly constant (Jensen 2001)
