@@ -549,8 +549,8 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     }
     // Spectral mode: this pass's camera paths and photons carry one set of wavelengths.
     if (m_settings.spectral)
-        m_pass_wavelengths = pass_wavelengths(mix_bits(m_settings.seed ^ 0x6a09e667u),
-                                              m_spectral_passes++);
+        m_pass_wavelengths =
+            pass_wavelengths(mix_bits(m_settings.seed ^ 0x6a09e667u), m_spectral_passes++);
     const WavelengthContext* wavelengths = m_settings.spectral ? &m_pass_wavelengths : nullptr;
     if (m_scene != &scene) restart(scene);
     trace_photons(scene, stats);

@@ -130,7 +130,7 @@ private:
     // batch), and how many passes had theirs since render() began (they stratify the range).
     WavelengthContext m_pass_wavelengths;
     uint32_t m_spectral_passes = 0;
-    std::vector<std::vector<Photon>> m_batches;               // the last `window` batches, a ring
+    std::vector<std::vector<Photon>> m_batches;  // the last `window` batches, a ring
     HashGrid m_grid;                // the photons of m_batches, indexed for the current radius
     std::vector<Photon> m_photons;  // the same photons, in m_grid's storage order
     int m_photon_passes = 0;        // batches traced since the restart

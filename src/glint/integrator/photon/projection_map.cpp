@@ -1,9 +1,9 @@
 #include <glint/core/arena.h>
 #include <glint/integrator/photon/projection_map.h>
 
-#include <cmath>
 #include <glint/integrator/transport/shading.h>
 #include <glint/material/material.h>
+#include <cmath>
 
 namespace glint {
 
@@ -156,7 +156,8 @@ float ProjectionMap::carrying_fraction(const Light& light) const {
     for (int i = 0; i < kSide; ++i) {
         for (int j = 0; j < kSide; ++j) {
             const Vec2 u((i + 0.5f) / kSide, (j + 0.5f) / kSide);
-            const float u_cell = ((i * kSide + j) * 0.618034f) - std::floor((i * kSide + j) * 0.618034f);
+            const float u_cell =
+                ((i * kSide + j) * 0.618034f) - std::floor((i * kSide + j) * 0.618034f);
             const std::optional<LightEmission> e = sample(light, Vec2(0.5f), u, u_cell);
             if (e && !e->Le.is_black()) ++carrying;
         }
@@ -164,8 +165,7 @@ float ProjectionMap::carrying_fraction(const Light& light) const {
     return static_cast<float>(carrying) / (kSide * kSide);
 }
 
-std::optional<ProjectionMap> ProjectionMap::make_if_useful(const Scene& scene,
-                                                           const Light& light) {
+std::optional<ProjectionMap> ProjectionMap::make_if_useful(const Scene& scene, const Light& light) {
     if (!supports(light)) return std::nullopt;
     ProjectionMap map(scene, light);
     if (map.carrying_fraction(light) < 0.5f) return std::nullopt;

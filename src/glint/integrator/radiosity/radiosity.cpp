@@ -83,9 +83,9 @@ void RadiosityIntegrator::solve(const Scene& scene, bool quiet) {
             m_loaded = true;
             return;
         }
-        const std::string label =
-            m_sets.spectral() ? fmt::format("radiosity (wavelengths {}/{})", set + 1, m_sets.count())
-                              : std::string("radiosity");
+        const std::string label = m_sets.spectral() ? fmt::format("radiosity (wavelengths {}/{})",
+                                                                  set + 1, m_sets.count())
+                                                    : std::string("radiosity");
         Progress progress(label, 100, quiet, "%");
         const RadiositySolveStats stats =
             solve_radiosity(scene, mesh, m_radiosity.solve, m_settings.seed, progress);
@@ -94,7 +94,8 @@ void RadiosityIntegrator::solve(const Scene& scene, bool quiet) {
         m_solve_stats.light_shots += stats.light_shots;
         m_solve_stats.rays += stats.rays;
         m_solve_stats.seconds += stats.seconds;
-        m_solve_stats.unshot_fraction = std::max(m_solve_stats.unshot_fraction, stats.unshot_fraction);
+        m_solve_stats.unshot_fraction =
+            std::max(m_solve_stats.unshot_fraction, stats.unshot_fraction);
         if (!cache.empty()) save_radiosity_cache(mesh, cache);
     }
 }

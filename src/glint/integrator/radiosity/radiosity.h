@@ -95,8 +95,8 @@ private:
     WavelengthSets m_sets;                // spectral mode's sets (RGB: one, no wavelengths)
     std::vector<RadiosityMesh> m_meshes;  // one solution per set
     RadiositySolveStats m_solve_stats;    // summed over the sets
-    bool m_loaded = false;  // the solution came from the cache
-    bool m_quiet = false;   // the solve's progress hidden (render() follows its Progress)
+    bool m_loaded = false;                // the solution came from the cache
+    bool m_quiet = false;  // the solve's progress hidden (render() follows its Progress)
     PhotonMap m_caustics;
     float m_caustic_radius2 = 0.0f;
 };
