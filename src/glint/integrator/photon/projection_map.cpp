@@ -1,8 +1,8 @@
 #include <glint/core/arena.h>
 #include <glint/integrator/photon/projection_map.h>
-
 #include <glint/integrator/transport/shading.h>
 #include <glint/material/material.h>
+
 #include <cmath>
 
 namespace glint {
