@@ -511,6 +511,9 @@ TEST(SpectralCornellSlow, MeansAgreeWithRgbWithinAFewPercent) {
 class SpectralThreads : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SpectralThreads, SameBitsForOneAndTwoThreads) {
+    if (test::kSanitizerBuild && (GetParam() == "photon" || GetParam() == "radiosity" ||
+                                  GetParam() == "preview" || GetParam() == "mlt"))
+        GTEST_SKIP() << "renders of seconds under the sanitizers: the normal tree runs it";
     const std::string scene = example_with_settings(
         "cornell-spheres.lua",
         fmt::format("width = 48, height = 48, spp = 4, seed = 7, spectral = true, "
@@ -647,6 +650,7 @@ TEST(SpectralPreparedMethods, AgreeWithSpectralPathOnTheCornellBox) {
 // examples/prism.lua's light-traced image); in RGB mode it stays white, its red and blue
 // centred together. Centroids of each channel over the image, in pixels.
 TEST(SpectralPreview, PrismSplitsTheBeamIntoARainbow) {
+    if (test::kSanitizerBuild) GTEST_SKIP() << "renders of seconds each: the normal tree runs it";
     auto centroids = [](bool spectral) {
         const std::string scene = example_with_settings(
             "prism.lua", fmt::format("integrator = 'preview', spp = 24, width = 160, "

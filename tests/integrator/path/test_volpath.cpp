@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 #include <support/image_comparison.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
 #include <cmath>
 #include <string>
@@ -182,7 +183,9 @@ TEST(VolPath, CsgSolidBoundsAMediumWithAHollow) {
         )",
                            seed);
     };
-    for (int c = 0; c < 3; ++c) expect_channel_mean(furnace, c, 2.0, 1e-5);
+    // The furnace's six renders take seconds under the sanitizers; the ink below stays.
+    if (!test::kSanitizerBuild)
+        for (int c = 0; c < 3; ++c) expect_channel_mean(furnace, c, 2.0, 1e-5);
 
     const Image ink = render_lua(R"(
         glint.camera{ eye = {0, 0, 5}, look_at = {0, 0, 0}, fov = 0.5 }
