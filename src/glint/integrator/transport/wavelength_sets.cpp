@@ -4,6 +4,7 @@
 #include <glint/integrator/transport/wavelength_sets.h>
 
 #include <algorithm>
+#include <functional>
 
 namespace glint {
 
@@ -41,9 +42,13 @@ int WavelengthSets::set_of_sample(uint64_t seed, Vec2i pixel, int index) const {
 
 int WavelengthSets::active_set() const {
     if (!spectral()) return 0;
+    // The active context is one of m_sets' elements: its index is its offset (read once
+    // per photon estimate or radiosity lookup, so no search).
     const WavelengthContext* active = detail::t_active_wavelengths;
-    for (size_t set = 0; set < m_sets.size(); ++set)
-        if (active == &m_sets[set]) return static_cast<int>(set);
+    const std::less<const WavelengthContext*> before;
+    const WavelengthContext* first = m_sets.data();
+    if (active != nullptr && !before(active, first) && before(active, first + m_sets.size()))
+        return static_cast<int>(active - first);
     throw Error(
         "internal: a camera path reads a prepared spectral estimate outside its sets' "
         "wavelengths");
