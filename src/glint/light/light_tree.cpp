@@ -14,18 +14,6 @@
 namespace glint {
 namespace {
 
-// The first child's share of the light reaching p, from the two importances. Where neither
-// child can reach p (the parent's looser bounds could), the walk goes on by power: every
-// light then keeps a positive probability unless a sibling branch certainly outweighs it, so
-// the probabilities over all lights sum to 1, and a light that gets 0 certainly sends p
-// nothing.
-float first_share(const LightBounds& first, const LightBounds& second, const Vec3& p,
-                  const Vec3& n) {
-    const float a = first.importance(p, n), b = second.importance(p, n);
-    if (a + b > 0.0f) return a / (a + b);
-    return first.phi / (first.phi + second.phi);
-}
-
 constexpr float kPiF = 3.14159265358979f;
 // Bins of the centroids along the widest axis when a node looks for its split.
 constexpr int kBins = 16;
@@ -124,7 +112,7 @@ struct LightTree::BuildItem {
     float phi = 0.0f;
     float cos_theta_e = 1.0f;
     uint32_t entry = 0;  // in the entries
-    int64_t trail = -1;  // where its Trail goes in m_trails (-1: none)
+    int64_t slot = -1;   // where its leaf's index goes in m_leaf_of (-1: none)
 
     Vec3 centroid() const { return bounds.center(); }
 };
@@ -193,16 +181,16 @@ Bounds3 centroid_bounds(const Item* first, const Item* last) {
 LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbounded,
                      size_t light_count)
     : m_unbounded(std::move(unbounded)) {
-    // Each light's trails take as many places as it has pieces here.
+    // Each light's leaves take as many places as it has pieces here.
     std::vector<size_t> pieces(light_count, 0);
     for (const Entry& e : bounded) {
         const int index = e.light->index();
         if (index >= 0 && static_cast<size_t>(index) < light_count)
             pieces[index] = std::max<size_t>(pieces[index], size_t(e.piece) + 1);
     }
-    m_first_trail.resize(light_count + 1, 0);
-    for (size_t i = 0; i < light_count; ++i) m_first_trail[i + 1] = m_first_trail[i] + pieces[i];
-    m_trails.resize(m_first_trail.back());
+    m_first_piece.resize(light_count + 1, 0);
+    for (size_t i = 0; i < light_count; ++i) m_first_piece[i + 1] = m_first_piece[i] + pieces[i];
+    m_leaf_of.assign(m_first_piece.back(), UINT32_MAX);
     // Lights that emit nothing never need a sample: leaving them out keeps their pmf 0.
     std::erase_if(bounded, [](const Entry& e) { return !(e.bounds.phi > 0.0f); });
     if (bounded.empty()) return;
@@ -215,36 +203,39 @@ LightTree::LightTree(std::vector<Entry> bounded, std::vector<const Light*> unbou
             const LightBounds& b = bounded[i].bounds;
             const int index = bounded[i].light->index();
             const bool indexed = index >= 0 && static_cast<size_t>(index) < light_count;
-            const int64_t trail =
-                indexed ? static_cast<int64_t>(m_first_trail[index] + bounded[i].piece) : -1;
+            const int64_t slot =
+                indexed ? static_cast<int64_t>(m_first_piece[index] + bounded[i].piece) : -1;
             items[i] = BuildItem{b.bounds,      DirectionBox::of(b.normals), b.phi,
-                                 b.cos_theta_e, static_cast<uint32_t>(i),    trail};
+                                 b.cos_theta_e, static_cast<uint32_t>(i),    slot};
         }
     });
-    m_nodes.resize(2 * count - 1);
+    std::vector<BinaryNode> nodes(2 * count - 1);
     m_leaves.resize(count);
     std::vector<uint32_t> leaf_nodes(count);
     const Bounds3 centroids = centroid_bounds(items.data(), items.data() + count);
-    build_shape(items, 0, count, centroids, 0, 0, 0, leaf_nodes);
+    build_shape(nodes, items, 0, count, centroids, 0, 0, leaf_nodes);
     // The leaves read their entries in no order that memory can guess: in a flat loop of
     // independent reads the processor keeps many of those misses in flight at once, where
     // inside the recursion it would wait for each in turn.
     tbb::parallel_for(tbb::blocked_range<size_t>(0, count), [&](const auto& range) {
         for (size_t place = range.begin(); place != range.end(); ++place) {
             const Entry& e = bounded[items[place].entry];
-            m_nodes[leaf_nodes[place]].bounds = e.bounds;
-            m_leaves[place] = Leaf{e.light, e.whole ? kWholeLight : e.piece};
+            nodes[leaf_nodes[place]].bounds = e.bounds;
+            m_leaves[place].light = e.light;
+            m_leaves[place].piece = e.whole ? kWholeLight : e.piece;
         }
     });
-    merge_bounds(0, count);
+    merge_bounds(nodes, 0, count);
+    collapse(nodes);
 }
 
 // Where to split items[begin, end) (at least two): at the cheapest of the boundaries between
 // bins of the centroids along the widest axis, the cost of a side being its Bin::cost; the
 // items are partitioned accordingly. At the median instead (balanced) for small nodes, when
 // the centroids all coincide, and when a lopsided split could take the tree deeper than the
-// 64 levels a Trail records: a binned split is allowed only while median splits from its
-// children on would still end within 64 levels, and median splits keep that so.
+// 64 levels pmf() allows: a binned split is allowed only while median splits from its
+// children on would still end within 64 levels, and median splits keep that so (pmf()
+// retraces a leaf's path in a fixed array, and the recursions stay shallow).
 LightTree::Split LightTree::choose_split(std::vector<BuildItem>& items, size_t begin, size_t end,
                                          const Bounds3& centroids, uint32_t depth) {
     const size_t count = end - begin;
@@ -304,27 +295,27 @@ LightTree::Split LightTree::choose_split(std::vector<BuildItem>& items, size_t b
                  centroid_bounds(items.data() + middle, last)};
 }
 
-void LightTree::build_shape(std::vector<BuildItem>& items, size_t begin, size_t end,
-                            const Bounds3& centroids, uint32_t index, uint64_t turns,
+void LightTree::build_shape(std::vector<BinaryNode>& nodes, std::vector<BuildItem>& items,
+                            size_t begin, size_t end, const Bounds3& centroids, uint32_t index,
                             uint32_t depth, std::vector<uint32_t>& leaf_nodes) {
     if (end - begin == 1) {
-        m_nodes[index].second_child_or_light = static_cast<uint32_t>(begin);
-        m_nodes[index].leaf = true;
+        nodes[index].second_child_or_leaf = static_cast<uint32_t>(begin);
+        nodes[index].leaf = true;
         leaf_nodes[begin] = index;
-        if (items[begin].trail >= 0) m_trails[items[begin].trail] = Trail{turns, depth, true};
+        if (items[begin].slot >= 0) m_leaf_of[items[begin].slot] = static_cast<uint32_t>(begin);
         return;
     }
     const Split split = choose_split(items, begin, end, centroids, depth);
     const uint32_t second = index + 2 * static_cast<uint32_t>(split.middle - begin);
-    m_nodes[index].second_child_or_light = second;
-    m_nodes[index].leaf = false;
+    nodes[index].second_child_or_leaf = second;
+    nodes[index].leaf = false;
     const auto build_first = [&] {
-        build_shape(items, begin, split.middle, split.first_centroids, index + 1, turns, depth + 1,
+        build_shape(nodes, items, begin, split.middle, split.first_centroids, index + 1, depth + 1,
                     leaf_nodes);
     };
     const auto build_second = [&] {
-        build_shape(items, split.middle, end, split.second_centroids, second,
-                    turns | (uint64_t(1) << depth), depth + 1, leaf_nodes);
+        build_shape(nodes, items, split.middle, end, split.second_centroids, second, depth + 1,
+                    leaf_nodes);
     };
     if (end - begin >= kParallelFrom) {
         tbb::parallel_invoke(build_first, build_second);
@@ -336,24 +327,130 @@ void LightTree::build_shape(std::vector<BuildItem>& items, size_t begin, size_t 
 
 // Each inner node's bounds from its children's, bottom up; subtrees in parallel as in
 // build_shape, each merge in the same order for any thread count.
-void LightTree::merge_bounds(uint32_t index, size_t count) {
+void LightTree::merge_bounds(std::vector<BinaryNode>& nodes, uint32_t index, size_t count) {
     if (count == 1) return;
-    const uint32_t second = m_nodes[index].second_child_or_light;
+    const uint32_t second = nodes[index].second_child_or_leaf;
     const size_t first_count = (second - index) / 2;
     if (count >= kParallelFrom) {
-        tbb::parallel_invoke([&] { merge_bounds(index + 1, first_count); },
-                             [&] { merge_bounds(second, count - first_count); });
+        tbb::parallel_invoke([&] { merge_bounds(nodes, index + 1, first_count); },
+                             [&] { merge_bounds(nodes, second, count - first_count); });
     } else {
-        merge_bounds(index + 1, first_count);
-        merge_bounds(second, count - first_count);
+        merge_bounds(nodes, index + 1, first_count);
+        merge_bounds(nodes, second, count - first_count);
     }
-    m_nodes[index].bounds = LightBounds::merged(m_nodes[index + 1].bounds, m_nodes[second].bounds);
+    nodes[index].bounds = LightBounds::merged(nodes[index + 1].bounds, nodes[second].bounds);
+}
+
+// The binary tree as a 4-wide one: each wide node takes a binary node's two children, and
+// opens the inner ones among them (the one of most power times squared size first, the
+// cluster the walk gains most by seeing into) until it has four. Sequential and in a fixed
+// order, so the same for any thread count.
+void LightTree::collapse(const std::vector<BinaryNode>& nodes) {
+    const auto weight = [&](uint32_t b) {
+        const Vec3 diagonal = nodes[b].bounds.bounds.extent();
+        return static_cast<double>(nodes[b].bounds.phi) *
+               static_cast<double>(glm::dot(diagonal, diagonal));
+    };
+    struct Pending {
+        uint32_t binary, wide;
+    };
+    std::vector<Pending> pending{{0, 0}};
+    m_nodes.reserve(std::max<size_t>(1, nodes.size() / 2));
+    m_nodes.emplace_back();
+    while (!pending.empty()) {
+        const Pending at = pending.back();
+        pending.pop_back();
+        std::array<uint32_t, 4> group{};
+        int size = 0;
+        if (nodes[at.binary].leaf) {
+            group[size++] = at.binary;  // a tree of one light
+        } else {
+            group[size++] = at.binary + 1;
+            group[size++] = nodes[at.binary].second_child_or_leaf;
+        }
+        while (size < 4) {
+            int open = -1;
+            for (int i = 0; i < size; ++i) {
+                if (!nodes[group[i]].leaf && (open < 0 || weight(group[i]) > weight(group[open])))
+                    open = i;
+            }
+            if (open < 0) break;
+            const uint32_t opened = group[open];
+            for (int i = size; i > open + 1; --i) group[i] = group[i - 1];
+            group[open] = opened + 1;
+            group[open + 1] = nodes[opened].second_child_or_leaf;
+            ++size;
+        }
+        for (int lane = 0; lane < size; ++lane) {
+            const BinaryNode& b = nodes[group[lane]];
+            m_nodes[at.wide].children.set(lane, b.bounds);
+            if (b.leaf) {
+                m_nodes[at.wide].child[lane] = kLeafChild | b.second_child_or_leaf;
+                m_leaves[b.second_child_or_leaf].node = at.wide;
+                m_leaves[b.second_child_or_leaf].lane = static_cast<uint32_t>(lane);
+                continue;
+            }
+            const auto wide = static_cast<uint32_t>(m_nodes.size());
+            m_nodes.emplace_back();
+            m_nodes[wide].parent = at.wide;
+            m_nodes[wide].lane_in_parent = static_cast<uint32_t>(lane);
+            m_nodes[at.wide].child[lane] = wide;
+            pending.push_back({group[lane], wide});
+        }
+    }
 }
 
 // The tree as a whole is one choice among the unbounded lights, all equally likely.
 float LightTree::probability_of_tree() const {
     if (m_nodes.empty()) return 0.0f;
     return 1.0f / static_cast<float>(m_unbounded.size() + 1);
+}
+
+namespace {
+
+// The weights of a node's four lanes at p: their importances, or, where none of them can
+// reach p (the parent's looser bounds could), their powers. Every light then keeps a
+// positive probability unless a sibling branch certainly outweighs it, so the probabilities
+// over all lights sum to 1, and a light that gets 0 certainly sends p nothing.
+struct LaneWeights {
+    std::array<float, 4> weight;
+    float total;
+};
+LaneWeights lane_weights(const LightBoundsX4& children, const Vec3& p, const Vec3& n) {
+    LaneWeights w{children.importances(p, n), 0.0f};
+    w.total = ((w.weight[0] + w.weight[1]) + w.weight[2]) + w.weight[3];
+    if (!(w.total > 0.0f) || !std::isfinite(w.total)) {
+        w.weight = children.phi;
+        w.total = ((w.weight[0] + w.weight[1]) + w.weight[2]) + w.weight[3];
+    }
+    return w;
+}
+
+}  // namespace
+
+LightTree::Step LightTree::choose_child(const WideNode& node, const Vec3& p, const Vec3& n,
+                                        float& u) {
+    const LaneWeights w = lane_weights(node.children, p, n);
+    const float target = u * w.total;
+    float before = 0.0f;
+    uint32_t lane = 4;
+    float lane_start = 0.0f;
+    for (uint32_t k = 0; k < 4; ++k) {
+        if (!(w.weight[k] > 0.0f)) continue;
+        lane = k;  // the last lane of any weight, should rounding carry target past all
+        lane_start = before;
+        if (target < before + w.weight[k]) break;
+        before += w.weight[k];
+    }
+    const float weight = w.weight[lane];
+    u = std::clamp((target - lane_start) / weight, 0.0f, kOneMinusEpsilon);
+    return {lane, weight / w.total};
+}
+
+float LightTree::child_probability(const WideNode& node, uint32_t lane, const Vec3& p,
+                                   const Vec3& n) {
+    const LaneWeights w = lane_weights(node.children, p, n);
+    return w.weight[lane] / w.total;
 }
 
 LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const {
@@ -367,59 +464,59 @@ LightTree::Choice LightTree::sample(const Vec3& p, const Vec3& n, float u) const
     u = std::min((u - p_unbounded) / p_tree, kOneMinusEpsilon);
     float pmf = p_tree;
     uint32_t node = 0;
-    while (!m_nodes[node].leaf) {
-        const uint32_t second = m_nodes[node].second_child_or_light;
-        const float share = first_share(m_nodes[node + 1].bounds, m_nodes[second].bounds, p, n);
-        if (u < share) {
-            u = std::min(u / share, kOneMinusEpsilon);
-            pmf *= share;
-            ++node;
-        } else {
-            u = std::min((u - share) / (1.0f - share), kOneMinusEpsilon);
-            pmf *= 1.0f - share;
-            node = second;
+    for (;;) {
+        const Step step = choose_child(m_nodes[node], p, n, u);
+        pmf *= step.probability;
+        const uint32_t child = m_nodes[node].child[step.lane];
+        if (child & kLeafChild) {
+            const Leaf& leaf = m_leaves[child & ~kLeafChild];
+            return {leaf.light, pmf, leaf.piece};
         }
+        node = child;
     }
-    const Leaf& leaf = m_leaves[m_nodes[node].second_child_or_light];
-    return {leaf.light, pmf, leaf.piece};
 }
 
-const LightTree::Trail* LightTree::trail_of(int light_index, uint32_t piece) const {
+const LightTree::Leaf* LightTree::leaf_of(int light_index, uint32_t piece) const {
     if (piece == kWholeLight) piece = 0;
-    if (light_index < 0 || static_cast<size_t>(light_index) + 1 >= m_first_trail.size())
+    if (light_index < 0 || static_cast<size_t>(light_index) + 1 >= m_first_piece.size())
         return nullptr;
-    const size_t place = m_first_trail[light_index] + piece;
-    if (place >= m_first_trail[light_index + 1]) return nullptr;
-    return &m_trails[place];
+    const size_t place = m_first_piece[light_index] + piece;
+    if (place >= m_first_piece[light_index + 1] || m_leaf_of[place] == UINT32_MAX) return nullptr;
+    return &m_leaves[m_leaf_of[place]];
 }
 
 float LightTree::pmf(const Vec3& p, const Vec3& n, const Light& light, uint32_t piece) const {
     const float p_tree = probability_of_tree();
     if (std::find(m_unbounded.begin(), m_unbounded.end(), &light) != m_unbounded.end())
         return (1.0f - p_tree) / static_cast<float>(m_unbounded.size());
-    const Trail* found = trail_of(light.index(), piece);
-    if (!found || !found->in_tree) return 0.0f;
-    const Trail& trail = *found;
+    const Leaf* leaf = leaf_of(light.index(), piece);
+    if (!leaf) return 0.0f;
+    // The steps from the leaf up to the root, then their probabilities multiplied from the
+    // root down, in the order sample() multiplies them, so that both give the same bits.
+    // The binary tree is at most 64 levels deep (choose_split), the wide one no deeper.
+    struct Turn {
+        uint32_t node, lane;
+    };
+    std::array<Turn, 64> path;
+    size_t depth = 0;
+    Turn turn{leaf->node, leaf->lane};
+    for (;;) {
+        path[depth++] = turn;
+        if (turn.node == 0 || depth == path.size()) break;
+        turn = {m_nodes[turn.node].parent, m_nodes[turn.node].lane_in_parent};
+    }
     float pmf = p_tree;
-    uint32_t node = 0;
-    for (uint32_t level = 0; level < trail.depth; ++level) {
-        const uint32_t second = m_nodes[node].second_child_or_light;
-        const float share = first_share(m_nodes[node + 1].bounds, m_nodes[second].bounds, p, n);
-        if ((trail.turns >> level) & 1u) {
-            pmf *= 1.0f - share;
-            node = second;
-        } else {
-            pmf *= share;
-            ++node;
-        }
+    while (depth > 0) {
+        const Turn& t = path[--depth];
+        pmf *= child_probability(m_nodes[t.node], t.lane, p, n);
     }
     return pmf;
 }
 
 size_t LightTree::memory_bytes() const {
-    return m_nodes.capacity() * sizeof(Node) + m_leaves.capacity() * sizeof(Leaf) +
-           m_unbounded.capacity() * sizeof(const Light*) + m_trails.capacity() * sizeof(Trail) +
-           m_first_trail.capacity() * sizeof(size_t);
+    return m_nodes.capacity() * sizeof(WideNode) + m_leaves.capacity() * sizeof(Leaf) +
+           m_unbounded.capacity() * sizeof(const Light*) + m_leaf_of.capacity() * sizeof(uint32_t) +
+           m_first_piece.capacity() * sizeof(size_t);
 }
 
 }  // namespace glint
