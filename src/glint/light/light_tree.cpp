@@ -355,7 +355,9 @@ void LightTree::collapse(const std::vector<BinaryNode>& nodes) {
         uint32_t binary, wide;
     };
     std::vector<Pending> pending{{0, 0}};
-    m_nodes.reserve(std::max<size_t>(1, nodes.size() / 2));
+    // A binary tree of k leaves collapses to about k / 2 wide nodes (k / 3 where all are
+    // full): the excess is given back at the end.
+    m_nodes.reserve(nodes.size() / 4 + 1);
     m_nodes.emplace_back();
     while (!pending.empty()) {
         const Pending at = pending.back();
@@ -398,6 +400,7 @@ void LightTree::collapse(const std::vector<BinaryNode>& nodes) {
             pending.push_back({group[lane], wide});
         }
     }
+    m_nodes.shrink_to_fit();
 }
 
 // The tree as a whole is one choice among the unbounded lights, all equally likely.
