@@ -332,6 +332,48 @@ TEST(LightTree, DeepChainStaysWithin64Levels) {
     expect_consistent(lights);
 }
 
+// The four lanes of LightBoundsX4 are computed at once: each must give what its bounds give
+// alone, whatever the other lanes hold, and the simple cases their closed forms.
+TEST(LightBoundsX4, LanesAreIndependentAndMatchClosedForms) {
+    // A point light of power 4 at the origin (a point box, every direction), seen from 2
+    // away by a surface facing it: 4 / 2^2.
+    LightBounds point;
+    point.bounds = Bounds3{Vec3(0.0f), Vec3(0.0f)};
+    point.phi = 4.0f;
+    point.normals = DirectionCone::whole_sphere();
+    point.cos_theta_e = std::cos(0.5f * kPi);
+    const Vec3 p(0, 0, 2), facing(0, 0, -1);
+    EXPECT_NEAR(point.importance(p, facing), 1.0f, 1e-6f);
+    // A one-sided panel facing +z below p reaches it; facing -z it cannot.
+    LightBounds up;
+    up.bounds = Bounds3{Vec3(-0.1f, -0.1f, 0.0f), Vec3(0.1f, 0.1f, 0.0f)};
+    up.phi = 2.0f;
+    up.normals = DirectionCone{Vec3(0, 0, 1), 1.0f, false};
+    up.cos_theta_e = 0.0f;
+    LightBounds down = up;
+    down.normals.axis = Vec3(0, 0, -1);
+    EXPECT_GT(up.importance(p, facing), 0.0f);
+    EXPECT_EQ(down.importance(p, facing), 0.0f);
+    // Straight above the panel's centre its box subtends a small cone, so the bound is
+    // phi / d^2 with both cosines 1.
+    EXPECT_NEAR(up.importance(p, facing), 2.0f / 4.0f, 1e-6f);
+
+    // Every arrangement of these (and an empty lane) gives each lane its own value.
+    const LightBounds lanes[] = {point, up, down, LightBounds{}};
+    Rng rng(23);
+    for (int trial = 0; trial < 200; ++trial) {
+        const Vec3 q(4.0f * rng.next_float() - 2.0f, 4.0f * rng.next_float() - 2.0f,
+                     4.0f * rng.next_float() - 2.0f);
+        const Vec3 n = trial % 3 == 0 ? Vec3(0.0f) : random_unit(rng);
+        LightBoundsX4 four;
+        int order[4] = {trial % 4, (trial + 1) % 4, (trial + 2) % 4, (trial + 3) % 4};
+        for (int lane = 0; lane < 4; ++lane) four.set(lane, lanes[order[lane]]);
+        const std::array<float, 4> got = four.importances(q, n);
+        for (int lane = 0; lane < 4; ++lane)
+            ASSERT_EQ(got[lane], lanes[order[lane]].importance(q, n)) << "lane " << lane;
+    }
+}
+
 TEST(DirectionCone, MergedHoldsBothCones) {
     Rng rng(5);
     int checked = 0;
