@@ -2,6 +2,8 @@
 #include <glint/core/progress.h>
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/transport/camera_connection.h>
+#include <glint/integrator/transport/media.h>
+#include <glint/integrator/transport/visibility.h>
 #include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/material/material.h>
@@ -23,6 +25,17 @@ constexpr int kTilesPerBatch = 64;
 
 bool is_point_like(const PathVertex& v) {
     return v.infinite || v.ng == Vec3(0.0f);
+}
+
+// The transmittance of the shadow ray from the connectible vertex `from` to `target`,
+// leaving along `w` (unit): from a surface offset as its rays are, from a point in a medium
+// where it is; in the medium it leaves into, through interfaces and their media.
+Spectrum shadow_transmittance(const Scene& scene, const PathVertex& from, const Vec3& target,
+                              const Vec3& w, MediaWalk& media) {
+    const Scene::ShadowRay shadow = from.is_medium()
+                                        ? Scene::ShadowRay{from.p, target - from.p, from.si.time}
+                                        : Scene::shadow_ray(from.si, target);
+    return transmittance_through_interfaces(scene, shadow, medium_leaving(from, w), &media.rng);
 }
 
 }  // namespace
@@ -161,7 +174,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
                                       std::vector<MisVertex>& scratch, float merge_eta,
-                                      float light_tracing_count) {
+                                      float light_tracing_count, MediaWalk* media) {
     StrategyContribution result;
     // The draws come first, so that later draws never depend on what a strategy found.
     Vec2 u_lens(0.0f), u_light(0.0f);
@@ -187,6 +200,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
             if (!pt.light) {
                 // A constant background is no light: only this strategy sees it.
                 result.L = pt.beta * scene.background();
+                if (media) result.L /= pt.r_u.average();
                 result.weight = 1.0f;
                 return result;
             }
@@ -206,11 +220,16 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         }
         // qs.pdf_fwd of the light's own point is the light's choice times its area density.
         // The light's point keeps its subpath's time (PathVertex::si.time), as hits do.
-        const std::optional<CameraConnection> connection =
-            s == 1
-                ? connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.si.time,
-                                                qs.pdf_fwd, u_lens, counter.rays)
-                : connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens, counter.rays);
+        std::optional<CameraConnection> connection;
+        if (s == 1)
+            connection = connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.si.time,
+                                                       qs.pdf_fwd, u_lens, counter.rays, qs.medium);
+        else if (qs.is_medium())
+            connection = connect_medium_point_to_camera(scene, qs.p, -qs.si.wo, qs.si.time,
+                                                        *qs.medium, qs.beta, u_lens, counter.rays);
+        else
+            connection = connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens,
+                                                   counter.rays, qs.medium);
         if (!connection) return result;
         const CameraWiSample* const lens = &connection->lens;
         L = connection->L;
@@ -228,13 +247,23 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         const LightSampler::Choice& choice = point.choice;
         const std::optional<LightSample>& ls = point.sample;
         if (!ls || ls->L.is_black() || !(ls->pdf > 0.0f)) return result;
-        const Vec3 wi_local = pt.si.to_local(ls->wi);
-        const Spectrum f = pt.bsdf->eval(pt.si.to_local(pt.si.wo), wi_local);
-        if (f.is_black()) return result;
-        ++counter.rays;
-        const Spectrum visible = transmittance(scene, pt.si, ls->p);
-        if (visible.is_black()) return result;
-        L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf)) * visible;
+        if (media) {
+            const Spectrum f = scattering_towards(pt, ls->wi, TransportMode::kRadiance);
+            if (f.is_black()) return result;
+            ++counter.rays;
+            const Spectrum visible = shadow_transmittance(scene, pt, ls->p, ls->wi, *media);
+            if (visible.is_black()) return result;
+            L = pt.beta * f * ls->L * (1.0f / (choice.pmf * ls->pdf)) * visible;
+        } else {
+            const Vec3 wi_local = pt.si.to_local(ls->wi);
+            const Spectrum f = pt.bsdf->eval(pt.si.to_local(pt.si.wo), wi_local);
+            if (f.is_black()) return result;
+            ++counter.rays;
+            const Spectrum visible = transmittance(scene, pt.si, ls->p);
+            if (visible.is_black()) return result;
+            L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf)) *
+                visible;
+        }
         sampled.kind = PathVertex::Kind::kLight;
         sampled.light = choice.light;
         sampled.infinite = choice.light->is_infinite() || choice.light->is_delta_direction();
@@ -251,20 +280,45 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         const float dist2 = glm::dot(d, d);
         if (!(dist2 > 0.0f)) return result;
         const Vec3 w = d / std::sqrt(dist2);  // from the light side to the camera side
-        const Vec3 w_light = qs.si.to_local(w), w_camera = pt.si.to_local(-w);
-        const Spectrum f_light =
-            qs.bsdf->eval(qs.si.to_local(qs.si.wo), w_light, TransportMode::kImportance,
-                          qs.si.to_local(qs.si.ng));
-        if (f_light.is_black()) return result;
-        const Spectrum f_camera = pt.bsdf->eval(pt.si.to_local(pt.si.wo), w_camera);
-        if (f_camera.is_black()) return result;
-        const float g = abs_cos_theta(w_light) * abs_cos_theta(w_camera) / dist2;
-        ++counter.rays;
-        const Spectrum visible = transmittance(scene, pt.si, qs.p);
-        if (visible.is_black()) return result;
-        L = qs.beta * f_light * f_camera * pt.beta * g * visible;
+        if (media) {
+            // Surfaces and medium points alike: the scattering towards the other vertex with
+            // its cosine (none in a medium), and the media between.
+            const Spectrum f_light = scattering_towards(qs, w, TransportMode::kImportance);
+            if (f_light.is_black()) return result;
+            const Spectrum f_camera = scattering_towards(pt, -w, TransportMode::kRadiance);
+            if (f_camera.is_black()) return result;
+            ++counter.rays;
+            const Spectrum visible = shadow_transmittance(scene, pt, qs.p, -w, *media);
+            if (visible.is_black()) return result;
+            L = qs.beta * f_light * f_camera * pt.beta * (1.0f / dist2) * visible;
+        }
+        else {
+            const Vec3 w_light = qs.si.to_local(w), w_camera = pt.si.to_local(-w);
+            const Spectrum f_light =
+                qs.bsdf->eval(qs.si.to_local(qs.si.wo), w_light, TransportMode::kImportance,
+                              qs.si.to_local(qs.si.ng));
+            if (f_light.is_black()) return result;
+            const Spectrum f_camera = pt.bsdf->eval(pt.si.to_local(pt.si.wo), w_camera);
+            if (f_camera.is_black()) return result;
+            const float g = abs_cos_theta(w_light) * abs_cos_theta(w_camera) / dist2;
+            ++counter.rays;
+            const Spectrum visible = transmittance(scene, pt.si, qs.p);
+            if (visible.is_black()) return result;
+            L = qs.beta * f_light * f_camera * pt.beta * g * visible;
+        }
     }
     if (L.is_black()) return result;
+    if (media) {
+        // The hero channel's one-sample MIS over the channels (volpath's r_u): the density
+        // of the whole path had channel c been the hero, over the hero's, is the product of
+        // both subpaths' ratios; the sampled light point and lens add none.
+        Spectrum r_u(1.0f);
+        if (s > 0 && !(s == 1 && t > 1)) r_u *= light[s - 1].r_u;
+        r_u *= camera[t - 1].r_u;
+        const float mean = r_u.average();
+        if (!(mean > 0.0f)) return result;
+        L /= mean;
+    }
     result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch,
                                         merge_eta, light_tracing_count);
     result.L = L * result.weight;
@@ -324,6 +378,7 @@ int BdptIntegrator::debug_count() {
 RenderStats BdptIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "bdpt", m_settings.where_of("integrator"));
+    m_media = subpath_media(scene);
     const int w = film.width(), h = film.height();
     // One light subpath per camera sample: the splats of spp paths per pixel (camera.h).
     const double splat_scale = 1.0 / static_cast<double>(m_settings.spp);
@@ -399,10 +454,12 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                 const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
                 const Ray ray = scene.camera().sample_ray(film_point, sampler);
                 worker.arena.reset();
+                std::optional<MediaWalk> media_walk = start_media_walk(m_media, sampler);
+                MediaWalk* const media = media_walk ? &*media_walk : nullptr;
                 generate_camera_subpath(scene, ray, sampler, worker.arena, worker.counter,
-                                        camera_limits, worker.camera);
+                                        camera_limits, worker.camera, media);
                 generate_light_subpath(scene, ray.time, sampler, worker.arena, worker.counter,
-                                       light_limits, worker.light);
+                                       light_limits, worker.light, media);
                 std::fill(worker.strategy_L.begin(), worker.strategy_L.end(), Spectrum(0.0f));
                 Spectrum L(0.0f);
                 const int n_camera = static_cast<int>(worker.camera.size());
@@ -412,7 +469,7 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                         if (s + t < 2 || (max_depth >= 0 && s + t - 2 > max_depth)) continue;
                         const StrategyContribution c = connect_strategy(
                             scene, worker.light, worker.camera, s, t, sampler, worker.counter,
-                            MisHeuristic::kBalance, worker.scratch);
+                            MisHeuristic::kBalance, worker.scratch, 0.0f, 1.0f, media);
                         if (c.L.is_black()) continue;
                         if (c.splat) {
                             result.splats.push_back({c.film, c.L});
@@ -429,6 +486,8 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                     const PathVertex& first = worker.camera[1];
                     if (first.kind == PathVertex::Kind::kEscape)
                         aov = AovSample{scene.escaped_radiance(first.w_sky), Vec3(0.0f), kInfinity};
+                    else if (first.is_medium())
+                        aov = AovSample{Spectrum(0.0f), Vec3(0.0f), glm::length(first.p - ray.origin)};
                     else
                         aov = AovSample{first.si.material->albedo(first.si), first.si.shading.n(),
                                         first.si.t};

@@ -11,7 +11,8 @@
 //                position it lands on (light tracing)
 //   s, t >= 2    a vertex of each subpath joined by a shadow ray
 // It finds what the path tracer finds and what the light tracer finds: caustics of point
-// lights seen directly and through glass, mirrors and glass seen directly, lights at infinity.
+// lights seen directly and through glass, mirrors and glass seen directly, lights at infinity,
+// and in participating media the volumetric caustics (subpaths scatter in media, subpath.h).
 //
 // Settings: the common ones (spp, seed, sampler, filter, max_depth: bounces, as the path
 // tracer counts them, i.e. s + t - 2 <= max_depth). Each camera sample takes one light
@@ -45,12 +46,16 @@ struct StrategyContribution {
 /// the merges of vertex connection and merging too (vcm_strategy_weight); 0 is bdpt.
 /// `light_tracing_count` is n_L / n_C, light subpaths per camera subpath (vcm_strategy_weight);
 /// the contribution of t = 1 is that of one light subpath either way (the film's splat scale
-/// divides by the number of them).
+/// divides by the number of them). `media`: the path sample's media walk, when the subpaths
+/// were made with one (their shadow rays then take on the transmittance of the media they
+/// cross, drawing from its stream, and the result is divided by the hero channel's MIS
+/// denominator, the mean over channels of both subpaths' r_u).
 StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVertex> light,
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
                                       std::vector<MisVertex>& scratch, float merge_eta = 0.0f,
-                                      float light_tracing_count = 1.0f);
+                                      float light_tracing_count = 1.0f,
+                                      MediaWalk* media = nullptr);
 
 /// The MIS weight of strategy (s, t) for the path made of light[0, s) and camera[0, t), where
 /// `sampled` stands for light[0] when s = 1 and t > 1 (the light point chosen by the
@@ -91,6 +96,7 @@ public:
         capabilities.debug_views = {{"strategies", "--integrator bdpt"}};
         capabilities.spectral = true;
         capabilities.motion_blur = true;  // one time per camera and light subpath pair
+        capabilities.scattering_media = true;
         return capabilities;
     }
 
@@ -108,6 +114,7 @@ private:
     RenderSettings m_settings;
     std::unique_ptr<Filter> m_filter;
     bool m_debug_strategies = false;
+    std::optional<SubpathMedia> m_media;  // this render's media (subpath_media)
 };
 
 }  // namespace glint

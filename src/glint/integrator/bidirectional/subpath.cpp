@@ -1,8 +1,14 @@
 #include <glint/integrator/bidirectional/subpath.h>
 #include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/media.h>
 #include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/shading.h>
 #include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/visibility.h>
+#include <glint/medium/delta_tracking.h>
+#include <glint/medium/henyey_greenstein.h>
+
+#include <bit>
 
 namespace glint {
 namespace {
@@ -12,20 +18,137 @@ Vec3 direction_to(const PathVertex& from, const PathVertex& to) {
     return to.infinite ? to.w_sky : glm::normalize(to.p - from.p);
 }
 
+// How a walk's segment through a medium ended.
+enum class SegmentEnd { kReached, kScattered, kAbsorbed };
+
+// The segment of `ray` through `medium` up to t_hit (kInfinity: the ray left the scene):
+// delta tracking on the walk's hero channel, as volpath's. `weight` receives the factor of
+// the throughput (and of r_u: the same, volpath.cpp) to the segment's end or its scattering
+// point, at parameter `t_scatter`. A medium that only absorbs is not sampled.
+SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, MediaWalk& walk,
+                          Spectrum& weight, float& t_scatter) {
+    weight = Spectrum(1.0f);
+    if (!samples_distances(medium)) {
+        weight = medium.transmittance(ray, std::isinf(t_hit) ? 1e30f : t_hit, walk.rng);
+        return weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kReached;
+    }
+    const int hero = walk.hero;
+    SegmentEnd end = SegmentEnd::kReached;
+    const Spectrum T_maj = sample_collisions(
+        medium, ray, t_hit, hero, walk.rng,
+        [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
+            const float sigma_hero = sigma_maj.value(hero), T_hero = T.value(hero);
+            const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
+            const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
+            const float u = walk.rng.next_float();
+            if (u < p_absorb) {
+                end = SegmentEnd::kAbsorbed;
+                return false;
+            }
+            if (u < p_absorb + p_scatter) {
+                weight *= T * point.sigma_s / (T_hero * point.sigma_s.value(hero));
+                end = weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kScattered;
+                t_scatter = t;
+                return false;
+            }
+            // A null collision: on, each channel weighted by its null share.
+            const Spectrum sigma_n =
+                (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
+            const float pdf = T_hero * sigma_n.value(hero);
+            if (!(pdf > 0.0f)) {
+                end = SegmentEnd::kAbsorbed;
+                return false;
+            }
+            weight *= T * sigma_n / pdf;
+            if (weight.is_black()) {
+                end = SegmentEnd::kAbsorbed;
+                return false;
+            }
+            return true;
+        });
+    if (end != SegmentEnd::kReached) return end;
+    const float T_hero = T_maj.value(hero);
+    if (!(T_hero > 0.0f)) return SegmentEnd::kAbsorbed;
+    weight *= T_maj / T_hero;
+    return SegmentEnd::kReached;
+}
+
+// Crossings of interfaces (surfaces that only bound media) a walk may make in a row before
+// it is given up: a ray caught between coincident interfaces would never end.
+constexpr int kMaxCrossings = 1024;
+
 // Appends to `path` the vertices a ray leaving path.back() finds, scattering in `mode`.
 // `beta` is the throughput carried by `ray`, `pdf_dir` the solid-angle density with which
-// path.back() chose it.
+// path.back() chose it; with `media`, `medium` is the medium the ray starts in.
 void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, TransportMode mode,
                  Sampler& sampler, Arena& arena, RayCounter& counter, const WalkLimits& limits,
-                 std::vector<PathVertex>& path) {
+                 std::vector<PathVertex>& path, MediaWalk* media, const Medium* medium) {
     // Roulette looks at the throughput of the scattering alone (the path tracer's rule), with
     // the radiance scaling of refraction taken out, so light about to leave glass survives.
     Spectrum rr_beta(1.0f);
     float eta_scale = 1.0f;
+    Spectrum r_u(1.0f);
+    int crossings = 0;
+    // Throughput roulette: from the third hit on (depth 2), survival in proportion to the
+    // throughput, where it is below 1 (not path's square root: transport/roulette.h). In
+    // media over the hero's density averaged with the other channels' (volpath's rule).
+    const auto survives_roulette = [&] {
+        const int depth = static_cast<int>(path.size()) - 2;
+        float survival = 1.0f;
+        const float throughput = media ? (rr_beta * eta_scale / r_u.average()).max_value()
+                                       : (rr_beta * eta_scale).max_value();
+        if (limits.roulette &&
+            !survives_throughput_roulette(
+                depth, throughput, [&] { return sampler.get_1d(); }, survival))
+            return false;
+        if (survival < 1.0f) {
+            beta /= survival;
+            rr_beta /= survival;
+        }
+        return !beta.is_black();
+    };
     while (static_cast<int>(path.size()) < limits.max_vertices) {
         ++counter.rays;
         PathVertex vertex;
-        if (!scene.intersect(ray, vertex.si)) {
+        const bool hit =
+            media ? scene.intersect_surface(ray, vertex.si) : scene.intersect(ray, vertex.si);
+        if (media && medium) {
+            Spectrum weight;
+            float t_scatter = 0.0f;
+            const SegmentEnd end =
+                through_medium(*medium, ray, hit ? vertex.si.t : kInfinity, *media, weight,
+                               t_scatter);
+            beta *= weight;
+            rr_beta *= weight;
+            r_u *= weight;
+            if (end == SegmentEnd::kAbsorbed) return;
+            if (end == SegmentEnd::kScattered) {
+                vertex.kind = PathVertex::Kind::kMedium;
+                vertex.p = ray.at(t_scatter);
+                vertex.si.p = vertex.p;
+                vertex.si.wo = -glm::normalize(ray.direction);
+                vertex.si.time = ray.time;
+                vertex.medium = medium;
+                vertex.beta = beta;
+                vertex.r_u = r_u;
+                vertex.pdf_fwd = solid_angle_to_area(pdf_dir, path.back(), vertex);
+                path.push_back(std::move(vertex));
+                PathVertex& v = path.back();
+                PathVertex& prev = path[path.size() - 2];
+                if (static_cast<int>(path.size()) >= limits.max_vertices) return;
+                // Phase sampling is exact: the throughput keeps its value. Henyey-Greenstein
+                // is symmetric, so the reverse density is the forward one.
+                const HenyeyGreenstein phase(medium->phase_asymmetry());
+                const PhaseSample ps = phase.sample(v.si.wo, sampler.get_2d());
+                if (!(ps.p > 0.0f)) return;
+                pdf_dir = ps.p;
+                prev.pdf_rev = solid_angle_to_area(ps.p, v, prev);
+                ray = Ray{v.p, ps.wi, 0.0f, kInfinity, ray.time};
+                if (!survives_roulette()) return;
+                continue;
+            }
+        }
+        if (!hit) {
             // A camera walk that escapes sees the environment (or the background) there.
             if (mode == TransportMode::kRadiance) {
                 vertex.kind = PathVertex::Kind::kEscape;
@@ -33,19 +156,32 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
                 vertex.w_sky = glm::normalize(ray.direction);
                 vertex.light = scene.environment();
                 vertex.beta = beta;
+                vertex.r_u = r_u;
+                vertex.medium = medium;
                 vertex.pdf_fwd = pdf_dir;
                 path.push_back(std::move(vertex));
             }
             return;
         }
-        const Spectrum transmittance = segment_transmittance(ray, vertex.si);
-        beta *= transmittance;
-        rr_beta *= transmittance;
+        if (media && vertex.si.material->is_interface()) {
+            // Only the medium changes: the ray goes straight on, and no vertex is made.
+            medium = medium_beyond(vertex.si, ray.direction, medium);
+            ray = spawn_ray(vertex.si, ray.direction);
+            if (++crossings > kMaxCrossings) return;
+            continue;
+        }
+        if (!media) {
+            const Spectrum transmittance = segment_transmittance(ray, vertex.si);
+            beta *= transmittance;
+            rr_beta *= transmittance;
+        }
         vertex.kind = PathVertex::Kind::kSurface;
         vertex.p = vertex.si.p;
         vertex.ng = vertex.si.ng;
         vertex.light = vertex.si.area_light;
         vertex.beta = beta;
+        vertex.r_u = r_u;
+        vertex.medium = medium;
         vertex.pdf_fwd = solid_angle_to_area(pdf_dir, path.back(), vertex);
         vertex.bsdf = shade(scene, ray, vertex.si, arena);
         path.push_back(std::move(vertex));
@@ -74,20 +210,9 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         rr_beta *= scattering->weight;
         if (mode == TransportMode::kRadiance && bs.is_transmission()) eta_scale *= bs.eta * bs.eta;
         continue_ray(ray, v.si, *scattering);
-
-        // Throughput roulette: from the third hit on (depth 2), survival in proportion to the
-        // throughput, where it is below 1 (not path's square root: transport/roulette.h).
-        const int depth = static_cast<int>(path.size()) - 2;
-        float survival = 1.0f;
-        if (limits.roulette && !survives_throughput_roulette(
-                                   depth, (rr_beta * eta_scale).max_value(),
-                                   [&] { return sampler.get_1d(); }, survival))
-            return;
-        if (survival < 1.0f) {
-            beta /= survival;
-            rr_beta /= survival;
-        }
-        if (beta.is_black()) return;
+        if (media) medium = medium_beyond(v.si, ray.direction, medium);
+        crossings = 0;
+        if (!survives_roulette()) return;
     }
 }
 
@@ -105,7 +230,7 @@ float solid_angle_to_area(float pdf_solid, const PathVertex& from, const PathVer
 
 void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                              RayCounter& counter, const WalkLimits& limits,
-                             std::vector<PathVertex>& path) {
+                             std::vector<PathVertex>& path, MediaWalk* media) {
     path.clear();
     const CameraPdf pdf = scene.camera().pdf_we_at(ray);
     PathVertex lens;
@@ -115,14 +240,16 @@ void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sample
     // The camera ray's weight We cos / (pdf_pos pdf_dir) is 1 (camera.h).
     lens.beta = Spectrum(1.0f);
     lens.pdf_fwd = pdf.pos;
+    lens.medium = media ? media->media->camera : nullptr;
+    const Medium* const start_medium = lens.medium;
     path.push_back(std::move(lens));
     random_walk(scene, ray, Spectrum(1.0f), pdf.dir, TransportMode::kRadiance, sampler, arena,
-                counter, limits, path);
+                counter, limits, path, media, start_medium);
 }
 
 void generate_light_subpath(const Scene& scene, float time, Sampler& sampler, Arena& arena,
                             RayCounter& counter, const WalkLimits& limits,
-                            std::vector<PathVertex>& path) {
+                            std::vector<PathVertex>& path, MediaWalk* media) {
     path.clear();
     LightPathSamples u_start;
     u_start.time = time;
@@ -147,11 +274,18 @@ void generate_light_subpath(const Scene& scene, float time, Sampler& sampler, Ar
     // A light at infinity starts with its direction (solid angle), then a point on the disc
     // its rays cross; every other light with its point, then a direction.
     start.pdf_fwd = begun->pmf * (start.infinite ? emission->pdf_dir : emission->pdf_pos);
+    if (media) {
+        const auto& starts = media->media->light_start;
+        const int index = light.index();
+        start.medium = index >= 0 && static_cast<size_t>(index) < starts.size() ? starts[index]
+                                                                                 : nullptr;
+    }
+    const Medium* const start_medium = start.medium;
     path.push_back(std::move(start));
     const Spectrum& beta = begun->beta;
     if (beta.is_black() || limits.max_vertices < 2) return;
     random_walk(scene, emission->ray, beta, emission->pdf_dir, TransportMode::kImportance, sampler,
-                arena, counter, limits, path);
+                arena, counter, limits, path, media, start_medium);
     if (path.front().infinite && path.size() > 1) {
         PathVertex& first = path[1];
         first.pdf_fwd = emission->pdf_pos;
@@ -166,12 +300,63 @@ float continuation_pdf(const Scene& scene, const PathVertex* prev, const PathVer
     float pdf = 0.0f;
     if (v.kind == PathVertex::Kind::kCamera) {
         pdf = scene.camera().pdf_we_at(Ray{v.p, w_next, 0.0f, kInfinity, v.si.time}).dir;
+    } else if (v.is_medium()) {
+        if (!prev) return 0.0f;
+        pdf = HenyeyGreenstein(v.medium->phase_asymmetry()).eval(direction_to(v, *prev), w_next);
     } else {
         if (!v.bsdf || !prev) return 0.0f;
         const Vec3 w_prev = direction_to(v, *prev);
         pdf = v.bsdf->pdf(v.si.to_local(w_prev), v.si.to_local(w_next));
     }
     return solid_angle_to_area(pdf, v, next);
+}
+
+std::optional<SubpathMedia> subpath_media(const Scene& scene) {
+    const auto& media = scene.media();
+    if (std::none_of(media.begin(), media.end(),
+                     [](const auto& m) { return m->scatters(); }))
+        return std::nullopt;
+    SubpathMedia result;
+    result.camera = scene.camera_medium();
+    // A light names no medium: the one round a point it emits from (light_tracer.cpp's rule).
+    const auto& lights = scene.lights();
+    for (const auto& light : lights) {
+        const int index = light->index();
+        if (index < 0) continue;
+        if (static_cast<size_t>(index) >= result.light_start.size())
+            result.light_start.resize(index + 1, nullptr);
+        const std::optional<LightEmission> e =
+            light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
+        if (e) result.light_start[index] = medium_containing(scene, e->ray.origin);
+    }
+    return result;
+}
+
+std::optional<MediaWalk> start_media_walk(const std::optional<SubpathMedia>& media,
+                                          Sampler& sampler) {
+    if (!media) return std::nullopt;
+    MediaWalk walk;
+    walk.media = &*media;
+    walk.hero = std::min(static_cast<int>(sampler.get_1d() * Spectrum::active_values()),
+                         Spectrum::active_values() - 1);
+    walk.rng.seed(mix_bits(std::bit_cast<uint32_t>(sampler.get_1d()) + 0x5eedULL));
+    return walk;
+}
+
+Spectrum scattering_towards(const PathVertex& v, const Vec3& w, TransportMode mode) {
+    if (v.is_medium())
+        return Spectrum(HenyeyGreenstein(v.medium->phase_asymmetry()).eval(v.si.wo, w));
+    const Vec3 w_local = v.si.to_local(w);
+    const Vec3 wo_local = v.si.to_local(v.si.wo);
+    const Spectrum f = mode == TransportMode::kImportance
+                           ? v.bsdf->eval(wo_local, w_local, mode, v.si.to_local(v.si.ng))
+                           : v.bsdf->eval(wo_local, w_local);
+    return f * abs_cos_theta(w_local);
+}
+
+const Medium* medium_leaving(const PathVertex& v, const Vec3& w) {
+    if (v.is_surface()) return medium_beyond(v.si, w, v.medium);
+    return v.medium;
 }
 
 float emission_pdf(const PathVertex& v, const PathVertex& next) {

@@ -13,7 +13,15 @@
 // the vertex), except at a vertex at infinity (an environment or directional light), where
 // they are per unit solid angle of its direction. A vertex left through a delta lobe
 // (mirror, smooth glass) has both set to 0 and `delta` true: no strategy can connect there.
+//
+// In participating media (a SubpathMedia passed in) the walks sample distances by delta
+// tracking on a hero channel, as volpath does, and scatter in media with the phase function:
+// medium vertices have no normal, so their densities per unit area take no cosine. The
+// densities leave out the distance sampling (the transmittance and the collision density
+// are alike both ways along a segment, pbrt-v3's choice): the weights of a path's strategies
+// still come from one set of numbers and sum to 1.
 #include <glint/core/arena.h>
+#include <glint/core/rng.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
 
@@ -28,6 +36,7 @@ struct PathVertex {
         kLight,    ///< a light subpath's start, or a light sampled to end a camera subpath
         kSurface,  ///< a surface hit (it may emit: `light` is then its area light)
         kEscape,   ///< a camera subpath that left the scene, towards `w_sky`
+        kMedium,   ///< a scattering point in a participating medium (`medium`)
     };
     Kind kind = Kind::kSurface;
     bool delta = false;     ///< the walk left this vertex through a delta lobe
@@ -45,13 +54,49 @@ struct PathVertex {
                                    ///< environment for an escape; null: constant background)
     const Bsdf* bsdf = nullptr;    ///< surfaces; null where the surface only emits
     SurfaceInteraction si;         ///< surfaces
+    const Medium* medium = nullptr;  ///< the medium the walk reached this vertex through (a
+                                     ///< medium vertex: the one it scatters in); null: vacuum
+    Spectrum r_u{1.0f};  ///< in media, per channel: the density of the walk to here had that
+                         ///< channel been the hero, over the hero's (volpath's r_u); 1 elsewhere
 
     bool is_surface() const { return kind == Kind::kSurface; }
-    /// Whether a strategy can join a subpath here (a surface with a BSDF not purely delta).
-    bool connectible() const { return bsdf && !bsdf->is_delta(); }
+    bool is_medium() const { return kind == Kind::kMedium; }
+    /// Whether a strategy can join a subpath here (a surface with a BSDF not purely delta,
+    /// or a point in a medium).
+    bool connectible() const { return is_medium() || (bsdf && !bsdf->is_delta()); }
     /// Whether a camera subpath that reached this vertex sees a light here (s = 0).
     bool is_emitter() const { return kind == Kind::kEscape || (is_surface() && light); }
 };
+
+/// The participating media the walks go through, found once per render (subpath_media).
+struct SubpathMedia {
+    const Medium* camera = nullptr;  ///< the medium the lens is in
+    /// The medium around each light, by Light::index (medium_containing at a point it
+    /// emits from).
+    std::vector<const Medium*> light_start;
+};
+/// The scene's media for the subpaths; nullopt when no medium scatters (absorbing glass
+/// alone is taken at each hit, as without media, and the walks draw nothing more).
+std::optional<SubpathMedia> subpath_media(const Scene& scene);
+
+/// One path sample's state in media: the hero channel that samples distances, and the
+/// stream that delta and ratio tracking draw from. Drawn from the sampler before the camera
+/// subpath: the hero (1D), then the stream's seed (1D).
+struct MediaWalk {
+    const SubpathMedia* media = nullptr;
+    int hero = 0;
+    Rng rng;
+};
+/// The media walk for one path sample (draws as MediaWalk says); none without media.
+std::optional<MediaWalk> start_media_walk(const std::optional<SubpathMedia>& media,
+                                          Sampler& sampler);
+
+/// The value of the scattering at `v` (a connectible vertex) from where its walk came from
+/// (`v.si.wo`: back along the arriving ray, for medium vertices too) towards `w` (unit,
+/// leaving v): the BSDF times |cos| at a surface (in `mode`), the phase function in a medium.
+Spectrum scattering_towards(const PathVertex& v, const Vec3& w, TransportMode mode);
+/// The medium a ray leaving `v` along `w` travels through.
+const Medium* medium_leaving(const PathVertex& v, const Vec3& w);
 
 /// What bounds a subpath's walk.
 struct WalkLimits {
@@ -62,10 +107,11 @@ struct WalkLimits {
 /// The camera subpath of `ray` (a camera ray, as Camera::sample_ray makes it) into `path`
 /// (cleared first): the lens vertex, then one vertex per hit, and an escape vertex when the
 /// walk leaves the scene. Draws per hit that scatters: the BSDF sample (2D, 1D), then
-/// roulette (1D) where it applies.
+/// roulette (1D) where it applies; per scattering in a medium the phase sample (2D), then
+/// roulette (1D).
 void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                              RayCounter& counter, const WalkLimits& limits,
-                             std::vector<PathVertex>& path);
+                             std::vector<PathVertex>& path, MediaWalk* media = nullptr);
 
 /// A light subpath into `path` (cleared first): a light chosen by the light sampler, a ray
 /// from it (Light::sample_le), then one vertex per hit, scattering in importance mode.
@@ -75,11 +121,11 @@ void generate_camera_subpath(const Scene& scene, const Ray& ray, Sampler& sample
 /// camera subpath's that it joins: one time per path, so joins see one scene).
 void generate_light_subpath(const Scene& scene, float time, Sampler& sampler, Arena& arena,
                             RayCounter& counter, const WalkLimits& limits,
-                            std::vector<PathVertex>& path);
+                            std::vector<PathVertex>& path, MediaWalk* media = nullptr);
 
 /// Density (per unit area at `next`, or solid angle when `next` is at infinity) with which a
 /// walk at `v`, having arrived from `prev`, continues to `next`. `v` is the lens (prev
-/// unused, may be null) or a surface with a BSDF.
+/// unused, may be null), a surface with a BSDF or a medium vertex.
 float continuation_pdf(const Scene& scene, const PathVertex* prev, const PathVertex& v,
                        const PathVertex& next);
 
