@@ -220,16 +220,19 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         }
         // qs.pdf_fwd of the light's own point is the light's choice times its area density.
         // The light's point keeps its subpath's time (PathVertex::si.time), as hits do.
+        Rng* const rng = media ? &media->rng : nullptr;
         std::optional<CameraConnection> connection;
         if (s == 1)
             connection = connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.si.time,
-                                                       qs.pdf_fwd, u_lens, counter.rays, qs.medium);
+                                                       qs.pdf_fwd, u_lens, counter.rays, qs.medium,
+                                                       rng);
         else if (qs.is_medium())
             connection = connect_medium_point_to_camera(scene, qs.p, -qs.si.wo, qs.si.time,
-                                                        *qs.medium, qs.beta, u_lens, counter.rays);
+                                                        *qs.medium, qs.beta, u_lens, counter.rays,
+                                                        rng);
         else
             connection = connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens,
-                                                   counter.rays, qs.medium);
+                                                   counter.rays, qs.medium, rng);
         if (!connection) return result;
         const CameraWiSample* const lens = &connection->lens;
         L = connection->L;

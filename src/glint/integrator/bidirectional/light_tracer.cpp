@@ -250,7 +250,7 @@ LightTracer::MediumEvent LightTracer::collide(const Scene& scene, Particle& part
         const Vec2 u_lens = chunk.next_2d();
         const std::optional<CameraConnection> connection = connect_medium_point_to_camera(
             scene, p, wi_arrival, particle.ray.time, *particle.medium, particle.splat_weight(),
-            u_lens, chunk.rays);
+            u_lens, chunk.rays, &chunk.rng);
         if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
         if (particle.bounce++ == particle.max_bounces) return MediumEvent::kEnded;
         // The phase function's arguments point away from p: -wi_arrival is where the light
@@ -276,7 +276,8 @@ void LightTracer::connect_to_camera(const Scene& scene, const SurfaceInteraction
                                     const Bsdf& bsdf, const Particle& particle, const Vec2& u_lens,
                                     Chunk& chunk) const {
     const std::optional<CameraConnection> connection = connect_surface_to_camera(
-        scene, si, bsdf, particle.splat_weight(), u_lens, chunk.rays, particle.medium);
+        scene, si, bsdf, particle.splat_weight(), u_lens, chunk.rays, particle.medium,
+        &chunk.rng);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 
@@ -290,7 +291,7 @@ void LightTracer::connect_light_to_camera(const Scene& scene, const LightEmissio
     if (!has_surface || light.is_infinite() || !(emission.pdf_pos > 0.0f)) return;
     const std::optional<CameraConnection> connection = connect_light_point_to_camera(
         scene, light, emission.ray.origin, emission.n, emission.ray.time,
-        light_pmf * emission.pdf_pos, u_lens, chunk.rays, medium);
+        light_pmf * emission.pdf_pos, u_lens, chunk.rays, medium, &chunk.rng);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 

@@ -35,7 +35,7 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
                                                           const SurfaceInteraction& si,
                                                           const Bsdf& bsdf, const Spectrum& beta,
                                                           const Vec2& u_lens, uint64_t& rays,
-                                                          const Medium* medium) {
+                                                          const Medium* medium, Rng* rng) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, si.p, u_lens, si.time);
     if (!lens) return std::nullopt;
     const Vec3 wi_local = si.to_local(lens->wi);
@@ -45,7 +45,7 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
     if (f.is_black()) return std::nullopt;
     ++rays;
     const Spectrum visible =
-        transmittance(scene, si, lens->p_lens, medium_beyond(si, lens->wi, medium));
+        transmittance(scene, si, lens->p_lens, medium_beyond(si, lens->wi, medium), rng);
     if (visible.is_black()) return std::nullopt;
     return CameraConnection{*lens,
                             beta * f * (abs_cos_theta(wi_local) / lens->pdf) * lens->We * visible};
@@ -53,7 +53,7 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
 
 std::optional<CameraConnection> connect_light_point_to_camera(
     const Scene& scene, const Light& light, const Vec3& p, const Vec3& n, float time,
-    float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium) {
+    float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium, Rng* rng) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
     if (!lens) return std::nullopt;
     const float cosine = glm::dot(n, lens->wi);
@@ -63,7 +63,7 @@ std::optional<CameraConnection> connect_light_point_to_camera(
     const float side_pdf = light.emitted(p, n, -n).is_black() ? 1.0f : 0.5f;
     ++rays;
     const Spectrum visible =
-        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, medium);
+        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, medium, rng);
     if (visible.is_black()) return std::nullopt;
     // p was chosen with density pdf_origin per area and the lens point with lens->pdf per
     // solid angle at p: Le |cos| We / (pdf_origin side_pdf pdf).
@@ -75,7 +75,8 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
                                                                const Vec3& wi_arrival, float time,
                                                                const Medium& medium,
                                                                const Spectrum& beta,
-                                                               const Vec2& u_lens, uint64_t& rays) {
+                                                               const Vec2& u_lens, uint64_t& rays,
+                                                               Rng* rng) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
     if (!lens) return std::nullopt;
     // The phase function's arguments point away from p: where the light came from
@@ -84,7 +85,7 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
     if (!(phase > 0.0f)) return std::nullopt;
     ++rays;
     const Spectrum visible =
-        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium);
+        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium, rng);
     if (visible.is_black()) return std::nullopt;
     // A point in a medium has no cosine: the phase function is a density per solid angle.
     return CameraConnection{*lens, beta * (phase / lens->pdf) * lens->We * visible};

@@ -23,6 +23,9 @@ struct CameraConnection {
     Spectrum L;
 };
 
+/// Each connection's shadow ray draws from `rng` in media without a closed form (the path's
+/// own stream: see transmittance() in visibility.h for why not null there).
+///
 /// Connects a non-specular surface vertex of a light path to the lens with `u_lens`: `beta`
 /// is the power the path carries to `si`, `bsdf` its BSDF (evaluated in importance mode,
 /// from where the particle came, si.wo, to the lens). nullopt when the lens cannot see the
@@ -33,7 +36,8 @@ std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
                                                           const SurfaceInteraction& si,
                                                           const Bsdf& bsdf, const Spectrum& beta,
                                                           const Vec2& u_lens, uint64_t& rays,
-                                                          const Medium* medium = nullptr);
+                                                          const Medium* medium = nullptr,
+                                                          Rng* rng = nullptr);
 
 /// Connects a scattering point `p` of a light path inside `medium` to the lens with
 /// `u_lens`: `beta` is the power the path carries to p, arriving along `wi_arrival` (unit,
@@ -44,7 +48,8 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
                                                                const Vec3& wi_arrival, float time,
                                                                const Medium& medium,
                                                                const Spectrum& beta,
-                                                               const Vec2& u_lens, uint64_t& rays);
+                                                               const Vec2& u_lens, uint64_t& rays,
+                                                               Rng* rng = nullptr);
 
 /// Connects the starting point `p` of a light path on an emitting surface (normal `n`, the
 /// side Light::sample_le chose) to the lens with `u_lens`. `pdf_origin` is the density the
@@ -56,6 +61,7 @@ std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scen
 /// medium around the light (null: vacuum).
 std::optional<CameraConnection> connect_light_point_to_camera(
     const Scene& scene, const Light& light, const Vec3& p, const Vec3& n, float time,
-    float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium = nullptr);
+    float pdf_origin, const Vec2& u_lens, uint64_t& rays, const Medium* medium = nullptr,
+    Rng* rng = nullptr);
 
 }  // namespace glint

@@ -27,23 +27,28 @@ inline bool samples_distances(const Medium& medium) {
 
 /// The transmittance of a shadow ray that starts in `medium`: Embree's occlusion query alone
 /// where neither an interface nor a medium can change the answer from 0 or 1.
+/// Media without a closed form draw from `rng`: pass the walk's own stream wherever one
+/// exists (with null, every shadow ray draws the same fixed stream, and the same tentative
+/// collisions along every ray bias an image's sum over many rays in a heterogeneous medium).
 [[gnu::always_inline]] inline Spectrum transmittance(const Scene& scene,
                                                      const Scene::ShadowRay& shadow,
-                                                     const Medium* medium = nullptr) {
+                                                     const Medium* medium = nullptr,
+                                                     Rng* rng = nullptr) {
     if (!scene.has_interfaces() && !medium) {
         const bool blocked = scene.accel().occluded(shadow.origin, shadow.direction, 0.0f,
                                                     kShadowRayEnd, shadow.time);
         return Spectrum(blocked ? 0.0f : 1.0f);
     }
-    return transmittance_through_interfaces(scene, shadow, medium);
+    return transmittance_through_interfaces(scene, shadow, medium, rng);
 }
 
 /// The transmittance from `si` (its origin offset as spawn_ray's) to just short of `target`.
 [[gnu::always_inline]] inline Spectrum transmittance(const Scene& scene,
                                                      const SurfaceInteraction& si,
                                                      const Vec3& target,
-                                                     const Medium* medium = nullptr) {
-    return transmittance(scene, Scene::shadow_ray(si, target), medium);
+                                                     const Medium* medium = nullptr,
+                                                     Rng* rng = nullptr) {
+    return transmittance(scene, Scene::shadow_ray(si, target), medium, rng);
 }
 
 /// The transmittance from `origin` (already off any surface) to just short of `target`.
