@@ -3,9 +3,9 @@
 #include <glint/integrator/bidirectional/bdpt.h>
 #include <glint/integrator/transport/camera_connection.h>
 #include <glint/integrator/transport/media.h>
-#include <glint/integrator/transport/visibility.h>
 #include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/visibility.h>
 #include <glint/material/material.h>
 
 #include <fmt/format.h>
@@ -223,13 +223,12 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         Rng* const rng = media ? &media->rng : nullptr;
         std::optional<CameraConnection> connection;
         if (s == 1)
-            connection = connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.si.time,
-                                                       qs.pdf_fwd, u_lens, counter.rays, qs.medium,
-                                                       rng);
+            connection =
+                connect_light_point_to_camera(scene, *qs.light, qs.p, qs.ng, qs.si.time, qs.pdf_fwd,
+                                              u_lens, counter.rays, qs.medium, rng);
         else if (qs.is_medium())
-            connection = connect_medium_point_to_camera(scene, qs.p, -qs.si.wo, qs.si.time,
-                                                        *qs.medium, qs.beta, u_lens, counter.rays,
-                                                        rng);
+            connection = connect_medium_point_to_camera(
+                scene, qs.p, -qs.si.wo, qs.si.time, *qs.medium, qs.beta, u_lens, counter.rays, rng);
         else
             connection = connect_surface_to_camera(scene, qs.si, *qs.bsdf, qs.beta, u_lens,
                                                    counter.rays, qs.medium, rng);
@@ -264,8 +263,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
             ++counter.rays;
             const Spectrum visible = transmittance(scene, pt.si, ls->p);
             if (visible.is_black()) return result;
-            L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf)) *
-                visible;
+            L = pt.beta * f * ls->L * (abs_cos_theta(wi_local) / (choice.pmf * ls->pdf)) * visible;
         }
         sampled.kind = PathVertex::Kind::kLight;
         sampled.light = choice.light;
@@ -294,8 +292,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
             const Spectrum visible = shadow_transmittance(scene, pt, qs.p, -w, *media);
             if (visible.is_black()) return result;
             L = qs.beta * f_light * f_camera * pt.beta * (1.0f / dist2) * visible;
-        }
-        else {
+        } else {
             const Vec3 w_light = qs.si.to_local(w), w_camera = pt.si.to_local(-w);
             const Spectrum f_light =
                 qs.bsdf->eval(qs.si.to_local(qs.si.wo), w_light, TransportMode::kImportance,
@@ -490,7 +487,8 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                     if (first.kind == PathVertex::Kind::kEscape)
                         aov = AovSample{scene.escaped_radiance(first.w_sky), Vec3(0.0f), kInfinity};
                     else if (first.is_medium())
-                        aov = AovSample{Spectrum(0.0f), Vec3(0.0f), glm::length(first.p - ray.origin)};
+                        aov = AovSample{Spectrum(0.0f), Vec3(0.0f),
+                                        glm::length(first.p - ray.origin)};
                     else
                         aov = AovSample{first.si.material->albedo(first.si), first.si.shading.n(),
                                         first.si.t};

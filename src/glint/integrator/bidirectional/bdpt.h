@@ -54,8 +54,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
                                       std::vector<MisVertex>& scratch, float merge_eta = 0.0f,
-                                      float light_tracing_count = 1.0f,
-                                      MediaWalk* media = nullptr);
+                                      float light_tracing_count = 1.0f, MediaWalk* media = nullptr);
 
 /// The MIS weight of strategy (s, t) for the path made of light[0, s) and camera[0, t), where
 /// `sampled` stands for light[0] when s = 1 and t > 1 (the light point chosen by the

@@ -276,8 +276,7 @@ void LightTracer::connect_to_camera(const Scene& scene, const SurfaceInteraction
                                     const Bsdf& bsdf, const Particle& particle, const Vec2& u_lens,
                                     Chunk& chunk) const {
     const std::optional<CameraConnection> connection = connect_surface_to_camera(
-        scene, si, bsdf, particle.splat_weight(), u_lens, chunk.rays, particle.medium,
-        &chunk.rng);
+        scene, si, bsdf, particle.splat_weight(), u_lens, chunk.rays, particle.medium, &chunk.rng);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
 }
 

@@ -97,9 +97,8 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         float survival = 1.0f;
         const float throughput = media ? (rr_beta * eta_scale / r_u.average()).max_value()
                                        : (rr_beta * eta_scale).max_value();
-        if (limits.roulette &&
-            !survives_throughput_roulette(
-                depth, throughput, [&] { return sampler.get_1d(); }, survival))
+        if (limits.roulette && !survives_throughput_roulette(
+                                   depth, throughput, [&] { return sampler.get_1d(); }, survival))
             return false;
         if (survival < 1.0f) {
             beta /= survival;
@@ -115,9 +114,8 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         if (media && medium) {
             Spectrum weight;
             float t_scatter = 0.0f;
-            const SegmentEnd end =
-                through_medium(*medium, ray, hit ? vertex.si.t : kInfinity, *media, weight,
-                               t_scatter);
+            const SegmentEnd end = through_medium(*medium, ray, hit ? vertex.si.t : kInfinity,
+                                                  *media, weight, t_scatter);
             beta *= weight;
             rr_beta *= weight;
             r_u *= weight;
@@ -277,8 +275,8 @@ void generate_light_subpath(const Scene& scene, float time, Sampler& sampler, Ar
     if (media) {
         const auto& starts = media->media->light_start;
         const int index = light.index();
-        start.medium = index >= 0 && static_cast<size_t>(index) < starts.size() ? starts[index]
-                                                                                 : nullptr;
+        start.medium =
+            index >= 0 && static_cast<size_t>(index) < starts.size() ? starts[index] : nullptr;
     }
     const Medium* const start_medium = start.medium;
     path.push_back(std::move(start));
@@ -313,8 +311,7 @@ float continuation_pdf(const Scene& scene, const PathVertex* prev, const PathVer
 
 std::optional<SubpathMedia> subpath_media(const Scene& scene) {
     const auto& media = scene.media();
-    if (std::none_of(media.begin(), media.end(),
-                     [](const auto& m) { return m->scatters(); }))
+    if (std::none_of(media.begin(), media.end(), [](const auto& m) { return m->scatters(); }))
         return std::nullopt;
     SubpathMedia result;
     result.camera = scene.camera_medium();
@@ -325,8 +322,7 @@ std::optional<SubpathMedia> subpath_media(const Scene& scene) {
         if (index < 0) continue;
         if (static_cast<size_t>(index) >= result.light_start.size())
             result.light_start.resize(index + 1, nullptr);
-        const std::optional<LightEmission> e =
-            light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
+        const std::optional<LightEmission> e = light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
         if (e) result.light_start[index] = medium_containing(scene, e->ray.origin);
     }
     return result;

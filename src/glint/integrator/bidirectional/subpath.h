@@ -50,10 +50,10 @@ struct PathVertex {
     Vec3 ng{0.0f};     ///< geometric normal of a surface; the emitting side's normal of an
                        ///< area light's start; zero for points without a surface
     Vec3 w_sky{0.0f};  ///< infinite vertices: unit direction from the scene towards the light
-    const Light* light = nullptr;  ///< the light of a light vertex or emitting surface (the
-                                   ///< environment for an escape; null: constant background)
-    const Bsdf* bsdf = nullptr;    ///< surfaces; null where the surface only emits
-    SurfaceInteraction si;         ///< surfaces
+    const Light* light = nullptr;    ///< the light of a light vertex or emitting surface (the
+                                     ///< environment for an escape; null: constant background)
+    const Bsdf* bsdf = nullptr;      ///< surfaces; null where the surface only emits
+    SurfaceInteraction si;           ///< surfaces
     const Medium* medium = nullptr;  ///< the medium the walk reached this vertex through (a
                                      ///< medium vertex: the one it scatters in); null: vacuum
     Spectrum r_u{1.0f};  ///< in media, per channel: the density of the walk to here had that

@@ -71,12 +71,9 @@ std::optional<CameraConnection> connect_light_point_to_camera(
         *lens, Le * lens->We * (cosine / (pdf_origin * side_pdf * lens->pdf)) * visible};
 }
 
-std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scene, const Vec3& p,
-                                                               const Vec3& wi_arrival, float time,
-                                                               const Medium& medium,
-                                                               const Spectrum& beta,
-                                                               const Vec2& u_lens, uint64_t& rays,
-                                                               Rng* rng) {
+std::optional<CameraConnection> connect_medium_point_to_camera(
+    const Scene& scene, const Vec3& p, const Vec3& wi_arrival, float time, const Medium& medium,
+    const Spectrum& beta, const Vec2& u_lens, uint64_t& rays, Rng* rng) {
     const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
     if (!lens) return std::nullopt;
     // The phase function's arguments point away from p: where the light came from

@@ -32,24 +32,18 @@ struct CameraConnection {
 /// point or the shadow ray is blocked; the shadow ray is counted in `rays`. `medium` is the
 /// medium the particle travelled through to `si` (null: vacuum); the shadow ray starts in
 /// the medium on the lens's side of the surface and takes on the transmittance of its media.
-std::optional<CameraConnection> connect_surface_to_camera(const Scene& scene,
-                                                          const SurfaceInteraction& si,
-                                                          const Bsdf& bsdf, const Spectrum& beta,
-                                                          const Vec2& u_lens, uint64_t& rays,
-                                                          const Medium* medium = nullptr,
-                                                          Rng* rng = nullptr);
+std::optional<CameraConnection> connect_surface_to_camera(
+    const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, const Spectrum& beta,
+    const Vec2& u_lens, uint64_t& rays, const Medium* medium = nullptr, Rng* rng = nullptr);
 
 /// Connects a scattering point `p` of a light path inside `medium` to the lens with
 /// `u_lens`: `beta` is the power the path carries to p, arriving along `wi_arrival` (unit,
 /// the direction it travelled), and the medium's Henyey–Greenstein phase function scatters
 /// it towards the lens; `time` is the path's scene time. nullopt when the lens cannot see p or the
 /// media and surfaces between let nothing through; the shadow ray is counted in `rays`.
-std::optional<CameraConnection> connect_medium_point_to_camera(const Scene& scene, const Vec3& p,
-                                                               const Vec3& wi_arrival, float time,
-                                                               const Medium& medium,
-                                                               const Spectrum& beta,
-                                                               const Vec2& u_lens, uint64_t& rays,
-                                                               Rng* rng = nullptr);
+std::optional<CameraConnection> connect_medium_point_to_camera(
+    const Scene& scene, const Vec3& p, const Vec3& wi_arrival, float time, const Medium& medium,
+    const Spectrum& beta, const Vec2& u_lens, uint64_t& rays, Rng* rng = nullptr);
 
 /// Connects the starting point `p` of a light path on an emitting surface (normal `n`, the
 /// side Light::sample_le chose) to the lens with `u_lens`. `pdf_origin` is the density the
