@@ -5,7 +5,8 @@
 -- BSDF and phase sampling hitting the small light through the glass, so it converges
 -- slowly; the light tracer follows the light through the glass into the fog and sees the
 -- beam at once (`glint render examples/volumetric-caustics.lua --integrator light`), but
--- cannot see the glass itself (bench/volumetric_caustics.sh compares the two).
+-- cannot see the glass itself; bdpt does both (`--integrator bdpt`: the beam, the glass
+-- and the caustic seen through it). bench/volumetric_caustics.sh compares the three.
 local fog = glint.medium{ density = 0.1, albedo = 0.9, g = 0.4 }
 local glass = glint.dielectric{ ior = 1.5 }
 local floor = glint.diffuse{ reflectance = 0.6 }

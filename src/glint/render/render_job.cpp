@@ -116,7 +116,7 @@ void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
     if (!capabilities.scattering_media &&
         any_medium([](const Medium& m) { return m.scatters() || m.emits(); })) {
         warn(control, fmt::format("{}: the '{}' integrator ignores participating media that "
-                                  "scatter or emit (glint.medium); 'volpath' and 'light' render "
+                                  "scatter or emit (glint.medium); 'volpath', 'light' and 'bdpt' render "
                                   "them",
                                   settings.where_of("integrator"), settings.integrator));
     } else if (!capabilities.emitting_media &&
