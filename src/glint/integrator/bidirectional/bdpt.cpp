@@ -454,7 +454,7 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                 const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
                 const Ray ray = scene.camera().sample_ray(film_point, sampler);
                 worker.arena.reset();
-                std::optional<MediaWalk> media_walk = start_media_walk(m_media, sampler);
+                std::optional<MediaWalk> media_walk = start_media_walk(m_media ? &*m_media : nullptr, sampler);
                 MediaWalk* const media = media_walk ? &*media_walk : nullptr;
                 generate_camera_subpath(scene, ray, sampler, worker.arena, worker.counter,
                                         camera_limits, worker.camera, media);

@@ -85,7 +85,8 @@ int MltIntegrator::max_depth() const {
 }
 
 MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int depth,
-                                  Vec2 film_size, MltWorkspace& ws, bool spectral) {
+                                  Vec2 film_size, MltWorkspace& ws, bool spectral,
+                                  const SubpathMedia* media) {
     MltSample result;
     const int strategies = depth + 2;
     sampler.set_stream(PssSampler::kConnectionStream);
@@ -108,19 +109,24 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     }
     const Ray ray = scene.camera().sample_ray(film_point, sampler);
     ws.arena.reset();
+    // In media the hero channel and the tracking stream's seed are dimensions of the state
+    // too (a mutation of the seed draws a new stream: those steps are large ones).
+    std::optional<MediaWalk> media_walk = start_media_walk(media, sampler);
+    MediaWalk* const walk = media_walk ? &*media_walk : nullptr;
     // No roulette: the depth is fixed, and roulette would only add variance.
     generate_camera_subpath(scene, ray, sampler, ws.arena, ws.counter, WalkLimits{t, false},
-                            ws.camera);
+                            ws.camera, walk);
     ws.light.clear();
     // s = 1 with t > 1 samples its light point afresh in connect_strategy.
     if (s > 1 || (s == 1 && t == 1)) {
         sampler.set_stream(PssSampler::kLightStream);
         generate_light_subpath(scene, ray.time, sampler, ws.arena, ws.counter, WalkLimits{s, false},
-                               ws.light);
+                               ws.light, walk);
     }
     sampler.set_stream(PssSampler::kConnectionStream);
-    const StrategyContribution c = connect_strategy(scene, ws.light, ws.camera, s, t, sampler,
-                                                    ws.counter, MisHeuristic::kBalance, ws.scratch);
+    const StrategyContribution c =
+        connect_strategy(scene, ws.light, ws.camera, s, t, sampler, ws.counter,
+                         MisHeuristic::kBalance, ws.scratch, 0.0f, 1.0f, walk);
     if (c.L.is_black()) return result;
     result.L = to_rgb(c.L * static_cast<float>(strategies));
     result.film = c.splat ? c.film : film_point;
@@ -130,6 +136,8 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
 RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "mlt", m_settings.where_of("integrator"));
+    m_media = subpath_media(scene);
+    const SubpathMedia* const media = m_media ? &*m_media : nullptr;
     const Vec2 film_size(static_cast<float>(film.width()), static_cast<float>(film.height()));
     const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();
     const uint64_t mutations = pixels * static_cast<uint64_t>(m_settings.spp);
@@ -152,7 +160,7 @@ RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& prog
                               sampler.start_iteration();
                               weights[i] =
                                   target(evaluate(scene, sampler, static_cast<int>(i % depths),
-                                                  film_size, ws, m_settings.spectral)
+                                                  film_size, ws, m_settings.spectral, media)
                                              .L);
                           }
                           rays += ws.counter.rays;
@@ -211,7 +219,8 @@ void MltIntegrator::run_chain(const Scene& scene, int chain, uint64_t mutations,
     // contribution), then the chain's own random numbers from there on.
     PssSampler sampler(start_key, m_mlt.sigma, m_mlt.large_step);
     sampler.start_iteration();
-    MltSample current = evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral);
+    const SubpathMedia* const media = m_media ? &*m_media : nullptr;
+    MltSample current = evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral, media);
     sampler.accept();
     sampler.reseed(chain_key(m_settings.seed, static_cast<uint64_t>(chain)));
     float f_current = target(current.L);
@@ -219,7 +228,7 @@ void MltIntegrator::run_chain(const Scene& scene, int chain, uint64_t mutations,
     for (uint64_t m = 0; m < mutations; ++m) {
         sampler.start_iteration();
         const MltSample proposed =
-            evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral);
+            evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral, media);
         const float f_proposed = target(proposed.L);
         // A chain that starts at f = 0 (only when b is 0, which renders nothing) moves on.
         const float a = f_current > 0.0f ? std::min(1.0f, f_proposed / f_current) : 1.0f;

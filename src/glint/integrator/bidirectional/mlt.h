@@ -69,18 +69,22 @@ public:
     RenderStats render(const Scene& scene, Film& film, Progress& progress) override;
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
-        capabilities.motion_blur = true;  // the path's time is a dimension of its state
-        capabilities.spectral = true;     // and so is its hero wavelength
+        capabilities.motion_blur = true;       // the path's time is a dimension of its state
+        capabilities.spectral = true;          // and so is its hero wavelength
+        capabilities.scattering_media = true;  // subpaths in media (subpath.h)
         return capabilities;
     }
 
     /// The contribution of the sampler's current state for paths of `depth` bounces on a
     /// film of `film_size` pixels. Reads, in the connection stream, the strategy (1D), then
     /// connect_strategy's values; in the camera stream the film point (2D), in spectral mode
-    /// the hero wavelength (1D), the lens (2D, if the camera has one) and the camera subpath;
-    /// in the light stream the light subpath.
+    /// the hero wavelength (1D), the lens (2D, if the camera has one), with `media` the
+    /// media walk's hero channel and stream seed (2 x 1D, start_media_walk), and the camera
+    /// subpath; in the light stream the light subpath. `media`: the scene's media for the
+    /// subpaths (subpath_media), null for none.
     static MltSample evaluate(const Scene& scene, PssSampler& sampler, int depth, Vec2 film_size,
-                              MltWorkspace& workspace, bool spectral = false);
+                              MltWorkspace& workspace, bool spectral = false,
+                              const SubpathMedia* media = nullptr);
 
     /// Depths chains are spread over: 0 .. max_depth().
     int max_depth() const;
@@ -92,6 +96,7 @@ private:
 
     RenderSettings m_settings;
     MltSettings m_mlt;
+    std::optional<SubpathMedia> m_media;  // this render's media (subpath_media)
 };
 
 }  // namespace glint

@@ -328,11 +328,10 @@ std::optional<SubpathMedia> subpath_media(const Scene& scene) {
     return result;
 }
 
-std::optional<MediaWalk> start_media_walk(const std::optional<SubpathMedia>& media,
-                                          Sampler& sampler) {
+std::optional<MediaWalk> start_media_walk(const SubpathMedia* media, Sampler& sampler) {
     if (!media) return std::nullopt;
     MediaWalk walk;
-    walk.media = &*media;
+    walk.media = media;
     walk.hero = std::min(static_cast<int>(sampler.get_1d() * Spectrum::active_values()),
                          Spectrum::active_values() - 1);
     walk.rng.seed(mix_bits(std::bit_cast<uint32_t>(sampler.get_1d()) + 0x5eedULL));

@@ -88,8 +88,7 @@ struct MediaWalk {
     Rng rng;
 };
 /// The media walk for one path sample (draws as MediaWalk says); none without media.
-std::optional<MediaWalk> start_media_walk(const std::optional<SubpathMedia>& media,
-                                          Sampler& sampler);
+std::optional<MediaWalk> start_media_walk(const SubpathMedia* media, Sampler& sampler);
 
 /// The value of the scattering at `v` (a connectible vertex) from where its walk came from
 /// (`v.si.wo`: back along the arriving ray, for medium vertices too) towards `w` (unit,
