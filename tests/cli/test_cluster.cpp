@@ -183,6 +183,20 @@ TEST_P(MpiImageTest, ThreeRanksGiveTheSingleProcessImage) {
 INSTANTIATE_TEST_SUITE_P(Integrators, MpiImageTest,
                          ::testing::Values("path", "whitted", "sppm", "vcm"));
 
+// vcm's light subpaths cross the ranks with their medium vertices (the medium by index, the
+// hero's weights r_u): in fog too the job's image is the single process's.
+TEST_F(MpiTest, VcmInFogGivesTheSingleProcessImage) {
+    const std::string scene = GLINT_SOURCE_DIR "/examples/foggy-cornell.lua";
+    const std::string flags = "--integrator vcm --res 24x18 --spp 6 --quiet";
+    const auto single =
+        run_glint(fmt::format("render {} {} -o {}", scene, flags, out("single.exr")));
+    ASSERT_EQ(single.exit_code, 0) << single.output;
+    const auto job = run_command(
+        fmt::format("{} render {} {} -o {} 2>&1", mpirun(3), scene, flags, out("mpi.exr")));
+    ASSERT_EQ(job.exit_code, 0) << job.output;
+    expect_identical(read_image(out("mpi.exr")), read_image(out("single.exr")));
+}
+
 // bdpt's strategies are not shared among ranks (docs/cluster.md): refused before any
 // rendering.
 TEST_F(MpiTest, IntegratorsThatCannotBeSpreadAreRefused) {

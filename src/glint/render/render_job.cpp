@@ -118,7 +118,8 @@ void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
         warn(control,
              fmt::format(
                  "{}: the '{}' integrator ignores participating media that "
-                 "scatter or emit (glint.medium); 'volpath', 'light', 'bdpt' and 'mlt' render "
+                 "scatter or emit (glint.medium); 'volpath', 'light', 'bdpt', 'vcm' and 'mlt' "
+                 "render "
                  "them",
                  settings.where_of("integrator"), settings.integrator));
     } else if (!capabilities.emitting_media &&

@@ -3,7 +3,8 @@
 // box with a glass sphere (its volumetric caustic) converges to volpath's image, in RGB and
 // spectral; a smoke grid (no closed-form transmittance: ratio tracking on every shadow ray)
 // agrees with volpath, and so does the light tracer; the same bits for one and
-// two threads. mlt, which drives the same subpaths, agrees with bdpt in the fog box.
+// two threads. mlt, which drives the same subpaths, and vcm (joins in media, merges on
+// surfaces) agree with bdpt in the fog box; vcm agrees with volpath in the smoke.
 #include <glint/medium/henyey_greenstein.h>
 #include <glint/scene/build.h>
 
@@ -173,14 +174,14 @@ TEST(BdptMediaSlow, SpectralMeansAgreeWithVolpathInAFogBox) {
 // Media without a closed-form transmittance: every shadow ray estimates it by ratio tracking,
 // drawing from the path's own stream. With one fixed stream for every shadow ray (as camera
 // connections once had) the light tracer came out 7 % dark on examples/smoke.lua.
-TEST(BdptMediaSlow, SmokeGridAgreesWithVolpathForBdptAndTheLightTracer) {
+TEST(BdptMediaSlow, SmokeGridAgreesWithVolpathForBdptVcmAndTheLightTracer) {
     constexpr int kImages = 6;
     const Estimate volpath_mean[3] = {
         image_mean([](int seed) { return smoke("volpath", 512, seed); }, kImages, 0),
         image_mean([](int seed) { return smoke("volpath", 512, seed); }, kImages, 1),
         image_mean([](int seed) { return smoke("volpath", 512, seed); }, kImages, 2)};
-    for (const char* integrator : {"bdpt", "light"}) {
-        const int spp = std::string(integrator) == "bdpt" ? 64 : 256;
+    for (const char* integrator : {"bdpt", "light", "vcm"}) {
+        const int spp = std::string(integrator) == "light" ? 256 : 64;
         for (int c = 0; c < 3; ++c) {
             const Estimate e = image_mean(
                 [&](int seed) { return smoke(integrator, spp, seed + 100); }, kImages, c);
@@ -188,6 +189,21 @@ TEST(BdptMediaSlow, SmokeGridAgreesWithVolpathForBdptAndTheLightTracer) {
             EXPECT_LT(4.0 * se, 0.03 * volpath_mean[c].mean) << integrator << " channel " << c;
             EXPECT_NEAR(e.mean, volpath_mean[c].mean, 4.0 * se) << integrator << " channel " << c;
         }
+    }
+}
+
+// vcm joins in media as bdpt does, each subpath with a hero of its own, and merges on
+// surfaces only: its image means agree with bdpt's per channel.
+TEST(BdptMediaSlow, VcmMeansAgreeWithBdptInAFogBox) {
+    constexpr int kImages = 6;
+    for (int c = 0; c < 3; ++c) {
+        const Estimate vcm =
+            image_mean([](int seed) { return fog_box("vcm", 32, seed); }, kImages, c);
+        const Estimate bdpt =
+            image_mean([](int seed) { return fog_box("bdpt", 48, seed + 50); }, kImages, c);
+        const double se = std::hypot(vcm.se, bdpt.se);
+        EXPECT_LT(4.0 * se, 0.02 * bdpt.mean) << "channel " << c;
+        EXPECT_NEAR(vcm.mean, bdpt.mean, 4.0 * se) << "channel " << c;
     }
 }
 
@@ -210,7 +226,7 @@ TEST(BdptMediaSlow, MltMeansAgreeWithBdptInAFogBox) {
 
 TEST(BdptMedia, SameBitsForOneAndTwoThreads) {
     for (const std::string& scene :
-         {fog_box("bdpt", 4, 3), smoke("bdpt", 4, 3), fog_box("mlt", 4, 3)}) {
+         {fog_box("bdpt", 4, 3), smoke("bdpt", 4, 3), fog_box("mlt", 4, 3), fog_box("vcm", 4, 3)}) {
         const Image one = render_lua(scene, 1);
         const Image two = render_lua(scene, 2);
         ASSERT_EQ(one.pixels.size(), two.pixels.size());

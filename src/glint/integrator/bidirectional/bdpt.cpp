@@ -105,11 +105,11 @@ bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
     scratch.resize(k);
     for (int i = 0; i < s; ++i) {
         const PathVertex& v = light_at(i);
-        scratch[i] = MisVertex{v.pdf_fwd, v.pdf_rev, v.delta};
+        scratch[i] = MisVertex{v.pdf_fwd, v.pdf_rev, v.delta, !v.is_medium()};
     }
     for (int j = 0; j < t; ++j) {
         const PathVertex& v = camera_at(j);
-        scratch[k - 1 - j] = MisVertex{v.pdf_rev, v.pdf_fwd, v.delta};
+        scratch[k - 1 - j] = MisVertex{v.pdf_rev, v.pdf_fwd, v.delta, !v.is_medium()};
     }
     // The densities the subpaths stored were for their own continuations; at the join the
     // path goes on to the other subpath, which changes four of them: each join vertex as the
@@ -312,10 +312,12 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         // The hero channel's one-sample MIS over the channels (volpath's r_u): the density
         // of the whole path had channel c been the hero, over the hero's, is the product of
         // both subpaths' ratios; the sampled light point and lens add none.
-        Spectrum r_u(1.0f);
-        if (s > 0 && !(s == 1 && t > 1)) r_u *= light[s - 1].r_u;
-        r_u *= camera[t - 1].r_u;
-        const float mean = r_u.average();
+        const bool light_vertex = s > 0 && !(s == 1 && t > 1);
+        const Spectrum r_light = light_vertex ? light[s - 1].r_u : Spectrum(1.0f);
+        const Spectrum& r_camera = camera[t - 1].r_u;
+        // Subpaths with heroes of their own (vcm) are weighted each over its own channels.
+        const float mean = media->own_hero ? r_light.average() * r_camera.average()
+                                           : (r_light * r_camera).average();
         if (!(mean > 0.0f)) return result;
         L /= mean;
     }
@@ -454,7 +456,8 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                 const Vec2 film_point = Vec2(pixel) + Vec2(0.5f) + filter.offset;
                 const Ray ray = scene.camera().sample_ray(film_point, sampler);
                 worker.arena.reset();
-                std::optional<MediaWalk> media_walk = start_media_walk(m_media ? &*m_media : nullptr, sampler);
+                std::optional<MediaWalk> media_walk =
+                    start_media_walk(m_media ? &*m_media : nullptr, sampler);
                 MediaWalk* const media = media_walk ? &*media_walk : nullptr;
                 generate_camera_subpath(scene, ray, sampler, worker.arena, worker.counter,
                                         camera_limits, worker.camera, media);

@@ -19,7 +19,9 @@ float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bo
     // Every density below is relative to p_s, that of the connection with s light vertices.
     const bool merging = merge_eta > 0.0f;
     const double eta = merge_eta;
-    auto can_merge = [&](int i) { return merging && i >= 1 && i <= k - 2 && !path[i].delta; };
+    auto can_merge = [&](int i) {
+        return merging && i >= 1 && i <= k - 2 && !path[i].delta && path[i].mergeable;
+    };
     // The merge at x_i relative to p_s, given ratio = p_i / p_s.
     auto merge_term = [&](int i, double ratio) {
         return term(ratio * remap(path[i].pdf_light) * eta);

@@ -42,6 +42,8 @@ struct MisVertex {
     float pdf_light = 0.0f;   ///< p_L: density of the vertex from the light's walk
     float pdf_camera = 0.0f;  ///< p_C: density of the vertex from the camera's walk
     bool delta = false;       ///< a delta lobe scatters here: no strategy joins here
+    bool mergeable = true;    ///< vertex merging may happen here (a surface; not a point in a
+                              ///< medium, which merging on surfaces cannot find)
 };
 
 enum class MisHeuristic {

@@ -86,6 +86,11 @@ struct MediaWalk {
     const SubpathMedia* media = nullptr;
     int hero = 0;
     Rng rng;
+    /// The subpath this walk makes has a hero of its own, not shared with the subpaths it
+    /// joins (vcm: a camera subpath merges with many light subpaths). Each subpath is then
+    /// weighted over its own channels: a join divides by the product of the two means of
+    /// r_u, not by the mean of the product; each factor is an unbiased estimate on its own.
+    bool own_hero = false;
 };
 /// The media walk for one path sample (draws as MediaWalk says); none without media.
 std::optional<MediaWalk> start_media_walk(const SubpathMedia* media, Sampler& sampler);

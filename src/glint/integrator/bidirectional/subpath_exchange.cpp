@@ -43,6 +43,8 @@ struct VertexHeader {
     float pdf_fwd, pdf_rev;
     Vec3 p, ng, w_sky;
     Spectrum beta;  // as it is held (every wavelength in spectral mode)
+    Spectrum r_u;
+    int32_t medium;  // into Scene::media(), -1 for none
 };
 
 int32_t index_of(const Light* light) {
@@ -55,6 +57,15 @@ SubpathCodec::SubpathCodec(const Scene& scene) : m_scene(scene) {
     const auto& materials = scene.materials();
     for (size_t i = 0; i < materials.size(); ++i)
         m_material_index.emplace(materials[i].get(), static_cast<int32_t>(i));
+}
+
+int32_t SubpathCodec::index_of_medium(const Medium* medium) const {
+    if (!medium) return -1;
+    const auto& media = m_scene.media();
+    for (size_t i = 0; i < media.size(); ++i) {
+        if (media[i].get() == medium) return static_cast<int32_t>(i);
+    }
+    throw Error("a light subpath met a medium the scene does not list");
 }
 
 int32_t SubpathCodec::index_of_material(const Material* material) const {
@@ -84,6 +95,8 @@ void SubpathCodec::write(const std::vector<PathVertex>& path, float time,
         h.ng = v.ng;
         h.w_sky = v.w_sky;
         h.beta = v.beta;
+        h.r_u = v.r_u;
+        h.medium = index_of_medium(v.medium);
         put(out, h);
         SurfaceInteraction si = v.si;
         si.material = nullptr;
@@ -119,6 +132,14 @@ void SubpathCodec::read(const std::vector<uint8_t>& bytes, size_t& at,
         v.ng = h.ng;
         v.w_sky = h.w_sky;
         v.beta = h.beta;
+        v.r_u = h.r_u;
+        if (h.kind > static_cast<uint8_t>(PathVertex::Kind::kMedium))
+            throw Error("exchanged light subpaths hold a vertex of no known kind");
+        if (h.medium >= 0) {
+            if (static_cast<size_t>(h.medium) >= m_scene.media().size())
+                throw Error("exchanged light subpaths name a medium the scene does not have");
+            v.medium = m_scene.media()[static_cast<size_t>(h.medium)].get();
+        }
         v.si = take<SurfaceInteraction>(bytes, at);
         if (h.material >= 0) {
             if (static_cast<size_t>(h.material) >= materials.size())

@@ -32,6 +32,7 @@ public:
 
 private:
     int32_t index_of_material(const Material* material) const;
+    int32_t index_of_medium(const Medium* medium) const;  // a media() search: media are few
 
     const Scene& m_scene;
     std::unordered_map<const Material*, int32_t> m_material_index;

@@ -53,6 +53,7 @@ struct VcmIntegrator::Iteration {
     const Sampler* light_sampler = nullptr;
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<float> light_times;                    // each light path's scene time
+    const SubpathMedia* media = nullptr;               // the scene's, null for none
     // This process's light subpaths [first_light, end_light) (all of them but in an MPI
     // job), traced in chunks of kLightPathsPerChunk from first_light on.
     size_t first_light = 0, end_light = 0;
@@ -111,6 +112,7 @@ float VcmIntegrator::radius_at(float r0, float alpha, int iteration) {
 RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "vcm", m_settings.where_of("integrator"));
+    const std::optional<SubpathMedia> media = subpath_media(scene);
     const int w = film.width(), h = film.height();
     const size_t pixels = static_cast<size_t>(w) * h;
     const size_t n_light = m_vcm.light_paths > 0 ? static_cast<size_t>(m_vcm.light_paths) : pixels;
@@ -148,6 +150,7 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
     it.light_tracing_count =
         static_cast<float>(static_cast<double>(n_light) / static_cast<double>(pixels));
     it.light_paths.resize(n_light);
+    it.media = media ? &*media : nullptr;
     it.light_times.assign(n_light, 0.0f);
     std::tie(it.first_light, it.end_light) =
         m_cluster ? m_cluster->share(n_light) : std::pair<uint64_t, uint64_t>{0, n_light};
@@ -240,13 +243,17 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
         std::vector<PathVertex>& light = it.light_paths[i];
         // One time per light subpath; the camera subpaths that join it take the same.
         const float time = scene.camera().sample_time(*sampler);
-        generate_light_subpath(scene, time, *sampler, arena, counter, it.light_limits, light);
+        // In media a hero of its own (a camera subpath merges with many light subpaths).
+        std::optional<MediaWalk> media_walk = start_media_walk(it.media, *sampler);
+        MediaWalk* const walk = media_walk ? &*media_walk : nullptr;
+        if (walk) walk->own_hero = true;
+        generate_light_subpath(scene, time, *sampler, arena, counter, it.light_limits, light, walk);
         it.light_times[i] = time;
         for (int s = 1; s <= static_cast<int>(light.size()); ++s) {
             if (max_depth >= 0 && s - 1 > max_depth) break;
-            const StrategyContribution c =
-                connect_strategy(scene, light, no_camera, s, 1, *sampler, counter,
-                                 MisHeuristic::kBalance, scratch, it.eta, it.light_tracing_count);
+            const StrategyContribution c = connect_strategy(
+                scene, light, no_camera, s, 1, *sampler, counter, MisHeuristic::kBalance, scratch,
+                it.eta, it.light_tracing_count, walk);
             if (!c.L.is_black()) splats.push_back({c.film, c.L});
         }
     }
@@ -362,7 +369,11 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
             const Ray ray =
                 scene.camera().sample_ray_at(film_point, *sampler, it.light_times[light_index]);
             arena.reset();
-            generate_camera_subpath(scene, ray, *sampler, arena, counter, it.camera_limits, camera);
+            std::optional<MediaWalk> media_walk = start_media_walk(it.media, *sampler);
+            MediaWalk* const walk = media_walk ? &*media_walk : nullptr;
+            if (walk) walk->own_hero = true;
+            generate_camera_subpath(scene, ray, *sampler, arena, counter, it.camera_limits, camera,
+                                    walk);
             PathSum L(m_settings.spectral);
             const int n_camera = static_cast<int>(camera.size());
             const int n_light = std::max(1, static_cast<int>(light.size()));
@@ -371,7 +382,7 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     if (max_depth >= 0 && s + t - 2 > max_depth) continue;
                     L += connect_strategy(scene, light, camera, s, t, *sampler, counter,
                                           MisHeuristic::kBalance, scratch, it.eta,
-                                          it.light_tracing_count)
+                                          it.light_tracing_count, walk)
                              .L;
                 }
             }
@@ -392,7 +403,10 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     const float weight = merge_mis_weight(
                         scene, std::span(path).first(ref.vertex), camera, s, t, it.eta,
                         MisHeuristic::kBalance, scratch, it.light_tracing_count);
-                    L += pt.beta * f * photon.beta * (it.merge_scale * weight);
+                    // In media each subpath is weighted over its own hero's channels.
+                    const float r_u = walk ? pt.r_u.average() * photon.r_u.average() : 1.0f;
+                    if (!(r_u > 0.0f)) return;
+                    L += pt.beta * f * photon.beta * (it.merge_scale * weight / r_u);
                 });
             }
             AovSample aov{};
@@ -400,6 +414,8 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                 const PathVertex& first = camera[1];
                 if (first.kind == PathVertex::Kind::kEscape)
                     aov = AovSample{scene.escaped_radiance(first.w_sky), Vec3(0.0f), kInfinity};
+                else if (first.is_medium())
+                    aov = AovSample{Spectrum(0.0f), Vec3(0.0f), glm::length(first.p - ray.origin)};
                 else
                     aov = AovSample{first.si.material->albedo(first.si), first.si.shading.n(),
                                     first.si.t};

@@ -61,7 +61,8 @@ public:
     IntegratorCapabilities capabilities() const override {
         IntegratorCapabilities capabilities;
         capabilities.spectral = true;
-        capabilities.motion_blur = true;  // one time per camera and light subpath pair
+        capabilities.motion_blur = true;       // one time per camera and light subpath pair
+        capabilities.scattering_media = true;  // joins in media; merges on surfaces only
         return capabilities;
     }
 
