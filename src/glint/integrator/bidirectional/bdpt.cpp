@@ -94,7 +94,7 @@ void weigh_specular_chains(std::vector<MisVertex>& path, VertexAt&& vertex_at) {
 // vertex t - 1, which stands for both (merge true). Returns whether x_0 is a delta light.
 bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
                    std::span<const PathVertex> camera, int s, int t, const PathVertex& sampled,
-                   bool merge, std::vector<MisVertex>& scratch) {
+                   bool merge, std::vector<MisVertex>& scratch, float volume_merge_scale) {
     const int k = s + t;
     auto light_at = [&](int i) -> const PathVertex& {
         return s == 1 && t > 1 && i == 0 && !merge ? sampled : light[i];
@@ -105,11 +105,13 @@ bool fill_mis_path(const Scene& scene, std::span<const PathVertex> light,
     scratch.resize(k);
     for (int i = 0; i < s; ++i) {
         const PathVertex& v = light_at(i);
-        scratch[i] = MisVertex{v.pdf_fwd, v.pdf_rev, v.delta, !v.is_medium()};
+        scratch[i] =
+            MisVertex{v.pdf_fwd, v.pdf_rev, v.delta, v.is_medium() ? volume_merge_scale : 1.0f};
     }
     for (int j = 0; j < t; ++j) {
         const PathVertex& v = camera_at(j);
-        scratch[k - 1 - j] = MisVertex{v.pdf_rev, v.pdf_fwd, v.delta, !v.is_medium()};
+        scratch[k - 1 - j] =
+            MisVertex{v.pdf_rev, v.pdf_fwd, v.delta, v.is_medium() ? volume_merge_scale : 1.0f};
     }
     // The densities the subpaths stored were for their own continuations; at the join the
     // path goes on to the other subpath, which changes four of them: each join vertex as the
@@ -150,12 +152,13 @@ float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                           std::span<const PathVertex> camera, int s, int t,
                           const PathVertex& sampled, MisHeuristic heuristic,
                           std::vector<MisVertex>& scratch, float merge_eta,
-                          float light_tracing_count) {
+                          float light_tracing_count, float volume_merge_scale) {
     // A light seen directly by the lens is made by (0, 2) or (1, 1); but (1, 1) is only done
     // for lights with a surface: a point, spot or infinite light seen directly is (0, 2)'s
     // alone (the environment) or nobody's (the others, invisible in every glint integrator).
     if (s + t == 2 && is_point_like(s == 0 ? camera[t - 1] : light[0])) return 1.0f;
-    const bool delta_light = fill_mis_path(scene, light, camera, s, t, sampled, false, scratch);
+    const bool delta_light =
+        fill_mis_path(scene, light, camera, s, t, sampled, false, scratch, volume_merge_scale);
     return vcm_strategy_weight(scratch, s, false, delta_light, merge_eta, heuristic,
                                light_tracing_count);
 }
@@ -163,9 +166,9 @@ float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
 float merge_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                        std::span<const PathVertex> camera, int s, int t, float merge_eta,
                        MisHeuristic heuristic, std::vector<MisVertex>& scratch,
-                       float light_tracing_count) {
+                       float light_tracing_count, float volume_merge_scale) {
     const bool delta_light =
-        fill_mis_path(scene, light, camera, s, t, camera[t - 1], true, scratch);
+        fill_mis_path(scene, light, camera, s, t, camera[t - 1], true, scratch, volume_merge_scale);
     return vcm_strategy_weight(scratch, s, true, delta_light, merge_eta, heuristic,
                                light_tracing_count);
 }
@@ -174,7 +177,8 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
                                       std::vector<MisVertex>& scratch, float merge_eta,
-                                      float light_tracing_count, MediaWalk* media) {
+                                      float light_tracing_count, MediaWalk* media,
+                                      float volume_merge_scale) {
     StrategyContribution result;
     // The draws come first, so that later draws never depend on what a strategy found.
     Vec2 u_lens(0.0f), u_light(0.0f);
@@ -322,7 +326,7 @@ StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVe
         L /= mean;
     }
     result.weight = strategy_mis_weight(scene, light, camera, s, t, sampled, heuristic, scratch,
-                                        merge_eta, light_tracing_count);
+                                        merge_eta, light_tracing_count, volume_merge_scale);
     result.L = L * result.weight;
     return result;
 }

@@ -49,12 +49,14 @@ struct StrategyContribution {
 /// divides by the number of them). `media`: the path sample's media walk, when the subpaths
 /// were made with one (their shadow rays then take on the transmittance of the media they
 /// cross, drawing from its stream, and the result is divided by the hero channel's MIS
-/// denominator, the mean over channels of both subpaths' r_u).
+/// denominator, the mean over channels of both subpaths' r_u). `volume_merge_scale` > 0:
+/// vertex merging happens at points in media too, with that MisVertex::merge_scale (4 r / 3).
 StrategyContribution connect_strategy(const Scene& scene, std::span<const PathVertex> light,
                                       std::span<const PathVertex> camera, int s, int t,
                                       Sampler& sampler, RayCounter& counter, MisHeuristic heuristic,
                                       std::vector<MisVertex>& scratch, float merge_eta = 0.0f,
-                                      float light_tracing_count = 1.0f, MediaWalk* media = nullptr);
+                                      float light_tracing_count = 1.0f, MediaWalk* media = nullptr,
+                                      float volume_merge_scale = 0.0f);
 
 /// The MIS weight of strategy (s, t) for the path made of light[0, s) and camera[0, t), where
 /// `sampled` stands for light[0] when s = 1 and t > 1 (the light point chosen by the
@@ -64,17 +66,18 @@ float strategy_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                           std::span<const PathVertex> camera, int s, int t,
                           const PathVertex& sampled, MisHeuristic heuristic,
                           std::vector<MisVertex>& scratch, float merge_eta = 0.0f,
-                          float light_tracing_count = 1.0f);
+                          float light_tracing_count = 1.0f, float volume_merge_scale = 0.0f);
 
 /// The MIS weight (vcm_strategy_weight) of merging light subpath vertex s (a photon, not in
 /// `light`: light[0, s) are the vertices before it) with camera vertex t - 1 (t >= 2, s >= 1,
-/// a surface that is not purely delta), which stands for the photon's position: the path
-/// light[0, s), camera[t - 1] ... camera[0]. `merge_eta` = n pi r^2 for n light paths merged
-/// per camera path within radius r; `light_tracing_count` as for connect_strategy.
+/// a surface that is not purely delta, or a point in a medium with volume_merge_scale > 0), which
+/// stands for the photon's position: the path light[0, s), camera[t - 1] ... camera[0]. `merge_eta`
+/// = n pi r^2 for n light paths merged per camera path within radius r; `light_tracing_count` as
+/// for connect_strategy.
 float merge_mis_weight(const Scene& scene, std::span<const PathVertex> light,
                        std::span<const PathVertex> camera, int s, int t, float merge_eta,
                        MisHeuristic heuristic, std::vector<MisVertex>& scratch,
-                       float light_tracing_count = 1.0f);
+                       float light_tracing_count = 1.0f, float volume_merge_scale = 0.0f);
 
 class BdptIntegrator final : public Integrator {
 public:

@@ -20,11 +20,11 @@ float vcm_strategy_weight(std::span<const MisVertex> path, int s, bool merge, bo
     const bool merging = merge_eta > 0.0f;
     const double eta = merge_eta;
     auto can_merge = [&](int i) {
-        return merging && i >= 1 && i <= k - 2 && !path[i].delta && path[i].mergeable;
+        return merging && i >= 1 && i <= k - 2 && !path[i].delta && path[i].merge_scale > 0.0f;
     };
     // The merge at x_i relative to p_s, given ratio = p_i / p_s.
     auto merge_term = [&](int i, double ratio) {
-        return term(ratio * remap(path[i].pdf_light) * eta);
+        return term(ratio * remap(path[i].pdf_light) * eta * path[i].merge_scale);
     };
     // The sample count of connection j: light tracing (j = k - 1) is done n_L / n_C times per
     // camera subpath, every other connection once.

@@ -42,8 +42,11 @@ struct MisVertex {
     float pdf_light = 0.0f;   ///< p_L: density of the vertex from the light's walk
     float pdf_camera = 0.0f;  ///< p_C: density of the vertex from the camera's walk
     bool delta = false;       ///< a delta lobe scatters here: no strategy joins here
-    bool mergeable = true;    ///< vertex merging may happen here (a surface; not a point in a
-                              ///< medium, which merging on surfaces cannot find)
+    /// A merge here against one on a surface: 1 on a surface, 0 where no merge happens (a
+    /// point in a medium when merging is on surfaces only), and at a point in a medium the
+    /// ball's volume over the disc's area, 4 r / 3 (its merges count n_L 4/3 pi r^3 where
+    /// a surface's count n_L pi r^2).
+    float merge_scale = 1.0f;
 };
 
 enum class MisHeuristic {

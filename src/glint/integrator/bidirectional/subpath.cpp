@@ -26,7 +26,7 @@ enum class SegmentEnd { kReached, kScattered, kAbsorbed };
 // the throughput (and of r_u: the same, volpath.cpp) to the segment's end or its scattering
 // point, at parameter `t_scatter`. A medium that only absorbs is not sampled.
 SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, MediaWalk& walk,
-                          Spectrum& weight, float& t_scatter) {
+                          Spectrum& weight, float& t_scatter, float& sigma_t) {
     weight = Spectrum(1.0f);
     if (!samples_distances(medium)) {
         weight = medium.transmittance(ray, std::isinf(t_hit) ? 1e30f : t_hit, walk.rng);
@@ -49,6 +49,7 @@ SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, Med
                 weight *= T * point.sigma_s / (T_hero * point.sigma_s.value(hero));
                 end = weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kScattered;
                 t_scatter = t;
+                sigma_t = (point.sigma_a + point.sigma_s).average();
                 return false;
             }
             // A null collision: on, each channel weighted by its null share.
@@ -113,9 +114,9 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
             media ? scene.intersect_surface(ray, vertex.si) : scene.intersect(ray, vertex.si);
         if (media && medium) {
             Spectrum weight;
-            float t_scatter = 0.0f;
+            float t_scatter = 0.0f, sigma_t = 0.0f;
             const SegmentEnd end = through_medium(*medium, ray, hit ? vertex.si.t : kInfinity,
-                                                  *media, weight, t_scatter);
+                                                  *media, weight, t_scatter, sigma_t);
             beta *= weight;
             rr_beta *= weight;
             r_u *= weight;
@@ -127,6 +128,7 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
                 vertex.si.wo = -glm::normalize(ray.direction);
                 vertex.si.time = ray.time;
                 vertex.medium = medium;
+                vertex.sigma_t = sigma_t;
                 vertex.beta = beta;
                 vertex.r_u = r_u;
                 vertex.pdf_fwd = solid_angle_to_area(pdf_dir, path.back(), vertex);
@@ -223,6 +225,7 @@ float solid_angle_to_area(float pdf_solid, const PathVertex& from, const PathVer
     if (!(dist2 > 0.0f)) return 0.0f;
     float pdf = pdf_solid / dist2;
     if (to.ng != Vec3(0.0f)) pdf *= std::abs(glm::dot(to.ng, d)) / std::sqrt(dist2);
+    if (to.is_medium()) pdf *= to.sigma_t;
     return pdf;
 }
 

@@ -15,11 +15,13 @@
 // (mirror, smooth glass) has both set to 0 and `delta` true: no strategy can connect there.
 //
 // In participating media (a SubpathMedia passed in) the walks sample distances by delta
-// tracking on a hero channel, as volpath does, and scatter in media with the phase function:
-// medium vertices have no normal, so their densities per unit area take no cosine. The
-// densities leave out the distance sampling (the transmittance and the collision density
-// are alike both ways along a segment, pbrt-v3's choice): the weights of a path's strategies
-// still come from one set of numbers and sum to 1.
+// tracking on a hero channel, as volpath does, and scatter in media with the phase function.
+// A medium vertex's densities are per unit volume: per solid angle over distance squared (no
+// cosine: it has no normal) times the extinction there, the density of a collision per unit
+// length. They leave out the transmittance (alike both ways along a segment, pbrt-v3's
+// choice): the weights of a path's strategies still come from one set of numbers and sum to
+// 1, and with the extinction in, a merge in a medium (per unit volume) weighs fairly against
+// the joins.
 #include <glint/core/arena.h>
 #include <glint/core/rng.h>
 #include <glint/core/sampler.h>
@@ -56,8 +58,10 @@ struct PathVertex {
     SurfaceInteraction si;           ///< surfaces
     const Medium* medium = nullptr;  ///< the medium the walk reached this vertex through (a
                                      ///< medium vertex: the one it scatters in); null: vacuum
-    Spectrum r_u{1.0f};  ///< in media, per channel: the density of the walk to here had that
-                         ///< channel been the hero, over the hero's (volpath's r_u); 1 elsewhere
+    Spectrum r_u{1.0f};    ///< in media, per channel: the density of the walk to here had that
+                           ///< channel been the hero, over the hero's (volpath's r_u); 1 elsewhere
+    float sigma_t = 0.0f;  ///< a medium vertex: the extinction there (mean over channels), the
+                           ///< collision density per unit length its densities take on
 
     bool is_surface() const { return kind == Kind::kSurface; }
     bool is_medium() const { return kind == Kind::kMedium; }
@@ -144,7 +148,7 @@ float emission_pdf(const PathVertex& v, const PathVertex& next);
 float emission_origin_pdf(const Scene& scene, const PathVertex& v, const PathVertex& next);
 
 /// A density `pdf_solid` (per unit solid angle at `from`) converted to one per unit area
-/// at `to` (unchanged when `to` is at infinity).
+/// at `to` (unchanged when `to` is at infinity; per unit volume at a medium vertex).
 float solid_angle_to_area(float pdf_solid, const PathVertex& from, const PathVertex& to);
 
 }  // namespace glint

@@ -10,6 +10,7 @@
 #include <glint/integrator/transport/hash_grid.h>
 #include <glint/integrator/transport/spectral_model.h>
 #include <glint/material/material.h>
+#include <glint/medium/henyey_greenstein.h>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
@@ -54,6 +55,12 @@ struct VcmIntegrator::Iteration {
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<float> light_times;                    // each light path's scene time
     const SubpathMedia* media = nullptr;               // the scene's, null for none
+    // Merging at points in media (with media only): the light vertices there, their grid,
+    // MisVertex::merge_scale there (4 r / 3) and the ball's kernel 1 / (n_L 4/3 pi r^3).
+    std::vector<PhotonRef> volume_photons;
+    HashGrid volume_grid;
+    float volume_merge_scale = 0.0f;
+    float volume_kernel = 0.0f;
     // This process's light subpaths [first_light, end_light) (all of them but in an MPI
     // job), traced in chunks of kLightPathsPerChunk from first_light on.
     size_t first_light = 0, end_light = 0;
@@ -71,6 +78,7 @@ VcmSettings VcmSettings::read(const Params& p) {
     s.radius = p.get_float("vcm_radius", s.radius);
     s.alpha = p.get_float("vcm_alpha", s.alpha);
     s.light_paths = p.get_int("vcm_light_paths", s.light_paths);
+    s.volume_merging = p.get_bool("vcm_volume_merging", s.volume_merging);
     if (!(s.radius >= 0.0f && s.radius <= 1e12f))
         p.fail_at("vcm_radius", "'vcm_radius' must be in [0, 1e12] (0: from the scene's size)");
     if (!(s.alpha > 0.0f && s.alpha <= 1.0f))
@@ -171,6 +179,11 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
         const double area = kPi * static_cast<double>(it.radius) * it.radius;
         it.eta = static_cast<float>(static_cast<double>(n_light) * area);
         it.merge_scale = static_cast<float>(1.0 / (static_cast<double>(n_light) * area));
+        if (it.media && m_vcm.volume_merging) {
+            const double volume = 4.0 / 3.0 * area * it.radius;
+            it.volume_merge_scale = 4.0f / 3.0f * it.radius;
+            it.volume_kernel = static_cast<float>(1.0 / (static_cast<double>(n_light) * volume));
+        }
 
         tbb::parallel_for(0, chunks, [&](int chunk) { trace_light_chunk(scene, film, it, chunk); });
         if (m_cluster) {
@@ -192,6 +205,20 @@ RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& prog
             }
         }
         it.grid.build(positions, it.radius);
+        if (it.volume_merge_scale > 0.0f) {
+            it.volume_photons.clear();
+            positions.clear();
+            for (size_t i = 0; i < n_light; ++i) {
+                const std::vector<PathVertex>& path = it.light_paths[i];
+                for (size_t v = 1; v < path.size(); ++v) {
+                    if (!path[v].is_medium()) continue;
+                    it.volume_photons.push_back(
+                        {static_cast<uint32_t>(i), static_cast<uint32_t>(v)});
+                    positions.push_back(path[v].p);
+                }
+            }
+            it.volume_grid.build(positions, it.radius);
+        }
 
         tbb::parallel_for(0, tiles_x * tiles_y,
                           [&](int tile) { render_tile(scene, film, it, tile); });
@@ -253,7 +280,7 @@ void VcmIntegrator::trace_light_chunk(const Scene& scene, const Film& film, Iter
             if (max_depth >= 0 && s - 1 > max_depth) break;
             const StrategyContribution c = connect_strategy(
                 scene, light, no_camera, s, 1, *sampler, counter, MisHeuristic::kBalance, scratch,
-                it.eta, it.light_tracing_count, walk);
+                it.eta, it.light_tracing_count, walk, it.volume_merge_scale);
             if (!c.L.is_black()) splats.push_back({c.film, c.L});
         }
     }
@@ -345,6 +372,7 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
     if (m_settings.spectral) wavelengths.emplace(iteration_wavelengths);
     auto sampler = it.camera_sampler->clone();
     HashGrid::Cache cache;  // a tile's camera vertices are near each other
+    HashGrid::Cache volume_cache;
     Arena arena;
     RayCounter counter;
     std::vector<PathVertex> camera;
@@ -382,9 +410,40 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     if (max_depth >= 0 && s + t - 2 > max_depth) continue;
                     L += connect_strategy(scene, light, camera, s, t, *sampler, counter,
                                           MisHeuristic::kBalance, scratch, it.eta,
-                                          it.light_tracing_count, walk)
+                                          it.light_tracing_count, walk, it.volume_merge_scale)
                              .L;
                 }
+            }
+            // Merges at the camera subpath's points in media, with the light subpaths' there:
+            // the photons in a ball of radius r estimate sigma_s times the phase-weighted
+            // radiance arriving (their density of collisions holds sigma_s), so each merge is
+            // divided by sigma_s at the camera point (volumetric photon mapping's estimate,
+            // UPBP's point-point merge).
+            for (int t = 2; it.volume_merge_scale > 0.0f && t <= n_camera; ++t) {
+                const PathVertex& pt = camera[t - 1];
+                if (!pt.is_medium()) continue;
+                const Spectrum sigma_s = pt.medium->at(pt.p).sigma_s;
+                const HenyeyGreenstein phase(pt.medium->phase_asymmetry());
+                it.volume_grid.for_each_near(pt.p, volume_cache, [&](uint32_t index, float) {
+                    const PhotonRef& ref = it.volume_photons[index];
+                    const int s = static_cast<int>(ref.vertex);
+                    if (max_depth >= 0 && s + t - 2 > max_depth) return;
+                    const std::vector<PathVertex>& path = it.light_paths[ref.path];
+                    const PathVertex& photon = path[ref.vertex];
+                    if (photon.medium != pt.medium) return;
+                    const float f = phase.eval(pt.si.wo, photon.si.wo);
+                    if (!(f > 0.0f)) return;
+                    const float weight =
+                        merge_mis_weight(scene, std::span(path).first(ref.vertex), camera, s, t,
+                                         it.eta, MisHeuristic::kBalance, scratch,
+                                         it.light_tracing_count, it.volume_merge_scale);
+                    const float r_u = pt.r_u.average() * photon.r_u.average();
+                    if (!(r_u > 0.0f)) return;
+                    const Spectrum per_sigma_s =
+                        sigma_s.map([](float v) { return v > 0.0f ? 1.0f / v : 0.0f; });
+                    L +=
+                        pt.beta * photon.beta * per_sigma_s * (f * it.volume_kernel * weight / r_u);
+                });
             }
             for (int t = 2; t <= n_camera; ++t) {
                 const PathVertex& pt = camera[t - 1];
