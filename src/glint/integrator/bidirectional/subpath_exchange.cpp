@@ -45,6 +45,7 @@ struct VertexHeader {
     Spectrum beta;  // as it is held (every wavelength in spectral mode)
     Spectrum r_u;
     int32_t medium;  // into Scene::media(), -1 for none
+    float sigma_t;
 };
 
 int32_t index_of(const Light* light) {
@@ -96,6 +97,7 @@ void SubpathCodec::write(const std::vector<PathVertex>& path, float time,
         h.w_sky = v.w_sky;
         h.beta = v.beta;
         h.r_u = v.r_u;
+        h.sigma_t = v.sigma_t;
         h.medium = index_of_medium(v.medium);
         put(out, h);
         SurfaceInteraction si = v.si;
@@ -133,6 +135,7 @@ void SubpathCodec::read(const std::vector<uint8_t>& bytes, size_t& at,
         v.w_sky = h.w_sky;
         v.beta = h.beta;
         v.r_u = h.r_u;
+        v.sigma_t = h.sigma_t;
         if (h.kind > static_cast<uint8_t>(PathVertex::Kind::kMedium))
             throw Error("exchanged light subpaths hold a vertex of no known kind");
         if (h.medium >= 0) {
