@@ -3,8 +3,9 @@
 // box with a glass sphere (its volumetric caustic) converges to volpath's image, in RGB and
 // spectral; a smoke grid (no closed-form transmittance: ratio tracking on every shadow ray)
 // agrees with volpath, and so does the light tracer; the same bits for one and
-// two threads. mlt, which drives the same subpaths, and vcm (joins in media, merges on
-// surfaces) agree with bdpt in the fog box; vcm agrees with volpath in the smoke.
+// two threads. mlt, which drives the same subpaths, and vcm agree with bdpt in the fog box;
+// vcm agrees with volpath in the smoke, and its merging in media sees fog lit through glass
+// behind a glass window, which no join can.
 #include <glint/medium/henyey_greenstein.h>
 #include <glint/scene/build.h>
 
@@ -80,6 +81,31 @@ std::string smoke(const std::string& integrator, int spp, int seed) {
                           cone_angle = 30, falloff_start = 26 }}
     )",
                        GLINT_SOURCE_DIR, spp, seed, integrator);
+}
+
+// Fog lit only through glass: a point light inside a glass ball (vacuum inside, fog
+// outside) in a fog box, seen by the camera directly or through a glass window. Through the
+// window the fog's single scattering is light -> glass -> fog -> glass -> camera: no join can
+// reach it (each side of the fog point is a specular chain), only merging in the medium.
+std::string fog_behind_glass(const std::string& integrator, bool window, bool merge_in_media,
+                             int spp, int seed) {
+    return fmt::format(R"(
+        local fog = glint.medium{{ sigma_a = 0.05, sigma_s = 0.5, g = 0.3 }}
+        glint.camera{{ eye = {{0, 1.2, 4}}, look_at = {{0, 1.2, 0}}, fov = 30 }}
+        glint.render{{ width = 24, height = 24, spp = {}, seed = {}, integrator = '{}',
+                      max_depth = 6, vcm_radius = 0.05, vcm_light_paths = 4096,
+                      vcm_volume_merging = {} }}
+        glint.box{{ min = {{-1, 0.2, -1}}, max = {{1, 2.2, 1}},
+                   material = glint.interface{{ interior = fog }} }}
+        glint.sphere{{ center = {{0, 1.2, 0}}, radius = 0.25,
+                      material = glint.dielectric{{ ior = 1.5, exterior = fog }} }}
+        glint.point_light{{ position = {{0, 1.2, 0}}, intensity = 5 }}
+        {}
+    )",
+                       spp, seed, integrator, merge_in_media ? "true" : "false",
+                       window ? "glint.box{ min = {-2, -1, 2.5}, max = {2, 3, 2.51}, material = "
+                                "glint.dielectric{ ior = 1.5 } }"
+                              : "");
 }
 
 }  // namespace
@@ -205,6 +231,32 @@ TEST(BdptMediaSlow, VcmMeansAgreeWithBdptInAFogBox) {
         EXPECT_LT(4.0 * se, 0.02 * bdpt.mean) << "channel " << c;
         EXPECT_NEAR(vcm.mean, bdpt.mean, 4.0 * se) << "channel " << c;
     }
+}
+
+// The fog behind a window, by vcm with merging in media, is the fog seen directly (bdpt)
+// times the window's transmission, (1 - R) / (1 + R) = 0.923 with R = 0.04 for glass of
+// index 1.5 near normal incidence (the view is within 15 degrees of it); without merging in
+// media, and for bdpt, the single scattering is missing and the image is far darker.
+TEST(BdptMediaSlow, VcmMergingInMediaSeesFogThroughAWindow) {
+    constexpr int kImages = 6;
+    constexpr double kWindow = 0.96 / 1.04;
+    const Estimate direct = image_mean(
+        [](int seed) { return fog_behind_glass("bdpt", false, false, 128, seed); }, kImages, 0);
+    const Estimate merged = image_mean(
+        [](int seed) { return fog_behind_glass("vcm", true, true, 128, seed + 10); }, kImages, 0);
+    const double expected = kWindow * direct.mean;
+    const double se = std::hypot(merged.se, kWindow * direct.se);
+    fmt::print("fog through a window: vcm {} +- {}, expected {} +- {}\n", merged.mean, merged.se,
+               expected, kWindow * direct.se);
+    EXPECT_LT(4.0 * se, 0.08 * expected);
+    // Merging in media comes out 2-5 % dark here, whatever the radius (0.1, 0.05, 0.02), and
+    // 2 % bright on the same scene seen without the window; without the glass ball it agrees
+    // with bdpt. The cause is not found (docs/integrators.md), hence `vcm_volume_merging` is
+    // off by default, and 6 % is allowed. Missing merges (0.27 of the expected), a wrong
+    // kernel volume or sigma_s left out (2x) are far outside it.
+    EXPECT_NEAR(merged.mean, expected, 4.0 * se + 0.06 * expected);
+    const Image without = render_lua(fog_behind_glass("vcm", true, false, 64, 1));
+    EXPECT_LT(mean_channel(without, 0, 0, 0, without.width, without.height), 0.5 * expected);
 }
 
 // mlt's states hold the media walk's hero and stream seed as dimensions; its image means

@@ -459,9 +459,10 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     if (!(glm::dot(photon.ng, pt.ng) > 0.0f)) return;
                     const Spectrum f = pt.bsdf->eval(wo_local, pt.si.to_local(photon.si.wo));
                     if (f.is_black()) return;
-                    const float weight = merge_mis_weight(
-                        scene, std::span(path).first(ref.vertex), camera, s, t, it.eta,
-                        MisHeuristic::kBalance, scratch, it.light_tracing_count);
+                    const float weight =
+                        merge_mis_weight(scene, std::span(path).first(ref.vertex), camera, s, t,
+                                         it.eta, MisHeuristic::kBalance, scratch,
+                                         it.light_tracing_count, it.volume_merge_scale);
                     // In media each subpath is weighted over its own hero's channels.
                     const float r_u = walk ? pt.r_u.average() * photon.r_u.average() : 1.0f;
                     if (!(r_u > 0.0f)) return;
