@@ -15,7 +15,9 @@
 #include <support/render_helpers.h>
 #include <support/test_util.h>
 
+#include <array>
 #include <cmath>
+#include <functional>
 #include <string>
 
 using namespace glint;
@@ -108,14 +110,28 @@ std::string fog_behind_glass(const std::string& integrator, bool window, bool me
                               : "");
 }
 
+// The image means per channel of K renders of `scene(seed)`, rendered once for all three.
+std::array<Estimate, 3> channel_means(const std::function<std::string(int)>& scene, int k) {
+    const std::vector<Image> images = render_seeds(scene, k);
+    std::array<Estimate, 3> result;
+    for (int c = 0; c < 3; ++c) {
+        std::vector<double> means;
+        for (const Image& image : images)
+            means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
+        result[c] = estimate(means, 1.0);
+    }
+    return result;
+}
+
 }  // namespace
 
 TEST(BdptMedia, AlbedoOneMediumDisappearsInTheFurnace) {
     // Six renders of long paths in a dense medium: 20 s under the sanitizers, which the
     // single-scattering and thread tests below exercise on the same code.
     if (test::kSanitizerBuild) GTEST_SKIP() << "seconds-long renders under the sanitizers";
+    const std::array<Estimate, 3> means = channel_means(furnace, 6);
     for (int c = 0; c < 3; ++c) {
-        const Estimate e = image_mean(furnace, 6, c);
+        const Estimate& e = means[c];
         EXPECT_LT(4.0 * e.se, 0.03 * 2.0) << "channel " << c;
         EXPECT_NEAR(e.mean, 2.0, 4.0 * e.se + 1e-5 * 2.0) << "channel " << c;
     }
@@ -205,15 +221,14 @@ TEST(BdptMediaSlow, SpectralMeansAgreeWithVolpathInAFogBox) {
 // connections once had) the light tracer came out 7 % dark on examples/smoke.lua.
 TEST(BdptMediaSlow, SmokeGridAgreesWithVolpathForBdptVcmAndTheLightTracer) {
     constexpr int kImages = 6;
-    const Estimate volpath_mean[3] = {
-        image_mean([](int seed) { return smoke("volpath", 512, seed); }, kImages, 0),
-        image_mean([](int seed) { return smoke("volpath", 512, seed); }, kImages, 1),
-        image_mean([](int seed) { return smoke("volpath", 512, seed); }, kImages, 2)};
+    const std::array<Estimate, 3> volpath_mean =
+        channel_means([](int seed) { return smoke("volpath", 512, seed); }, kImages);
     for (const char* integrator : {"bdpt", "light", "vcm"}) {
         const int spp = std::string(integrator) == "light" ? 256 : 64;
+        const std::array<Estimate, 3> means =
+            channel_means([&](int seed) { return smoke(integrator, spp, seed + 100); }, kImages);
         for (int c = 0; c < 3; ++c) {
-            const Estimate e = image_mean(
-                [&](int seed) { return smoke(integrator, spp, seed + 100); }, kImages, c);
+            const Estimate& e = means[c];
             const double se = std::hypot(e.se, volpath_mean[c].se);
             EXPECT_LT(4.0 * se, 0.03 * volpath_mean[c].mean) << integrator << " channel " << c;
             EXPECT_NEAR(e.mean, volpath_mean[c].mean, 4.0 * se) << integrator << " channel " << c;
@@ -225,11 +240,13 @@ TEST(BdptMediaSlow, SmokeGridAgreesWithVolpathForBdptVcmAndTheLightTracer) {
 // surfaces only: its image means agree with bdpt's per channel.
 TEST(BdptMediaSlow, VcmMeansAgreeWithBdptInAFogBox) {
     constexpr int kImages = 6;
+    const std::array<Estimate, 3> vcm_means =
+        channel_means([](int seed) { return fog_box("vcm", 32, seed); }, kImages);
+    const std::array<Estimate, 3> bdpt_means =
+        channel_means([](int seed) { return fog_box("bdpt", 48, seed + 50); }, kImages);
     for (int c = 0; c < 3; ++c) {
-        const Estimate vcm =
-            image_mean([](int seed) { return fog_box("vcm", 32, seed); }, kImages, c);
-        const Estimate bdpt =
-            image_mean([](int seed) { return fog_box("bdpt", 48, seed + 50); }, kImages, c);
+        const Estimate& vcm = vcm_means[c];
+        const Estimate& bdpt = bdpt_means[c];
         const double se = std::hypot(vcm.se, bdpt.se);
         EXPECT_LT(4.0 * se, 0.02 * bdpt.mean) << "channel " << c;
         EXPECT_NEAR(vcm.mean, bdpt.mean, 4.0 * se) << "channel " << c;
@@ -268,11 +285,13 @@ TEST(BdptMediaSlow, VcmMergingInMediaSeesFogThroughAWindow) {
 // noisy here, the glass ball's caustic being its weak spot).
 TEST(BdptMediaSlow, MltMeansAgreeWithBdptInAFogBox) {
     constexpr int kImages = 6;
+    const std::array<Estimate, 3> mlt_means =
+        channel_means([](int seed) { return fog_box("mlt", 128, seed); }, kImages);
+    const std::array<Estimate, 3> bdpt_means =
+        channel_means([](int seed) { return fog_box("bdpt", 48, seed + 50); }, kImages);
     for (int c = 0; c < 3; ++c) {
-        const Estimate mlt =
-            image_mean([](int seed) { return fog_box("mlt", 128, seed); }, kImages, c);
-        const Estimate bdpt =
-            image_mean([](int seed) { return fog_box("bdpt", 48, seed + 50); }, kImages, c);
+        const Estimate& mlt = mlt_means[c];
+        const Estimate& bdpt = bdpt_means[c];
         const double se = std::hypot(mlt.se, bdpt.se);
         EXPECT_LT(4.0 * se, 0.05 * bdpt.mean) << "channel " << c;
         EXPECT_NEAR(mlt.mean, bdpt.mean, 4.0 * se) << "channel " << c;
