@@ -103,6 +103,19 @@ inline Estimate image_mean(const std::function<std::string(int)>& scene, int k, 
     return estimate(means, 1.0);
 }
 
+// image_mean for all three channels, rendering the K images once.
+inline std::array<Estimate, 3> channel_means(const std::function<std::string(int)>& scene, int k) {
+    const std::vector<Image> images = render_seeds(scene, k);
+    std::array<Estimate, 3> result;
+    for (int c = 0; c < 3; ++c) {
+        std::vector<double> means;
+        for (const Image& image : images)
+            means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
+        result[c] = estimate(means, 1.0);
+    }
+    return result;
+}
+
 // The noise of one pixel of `scene` in channel `c`: half the mean squared difference of two
 // renders with independent seeds, over all pixels (for a scene whose pixels all have the same
 // expected value, such as a furnace). With hundreds of pixels it is known to a few per cent,

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/image_comparison.h>
+#include <support/media_scenes.h>
 #include <support/render_helpers.h>
 #include <support/test_util.h>
 
@@ -24,45 +25,6 @@ using namespace glint;
 using namespace glint::test;
 
 namespace {
-
-// A sphere of medium that scatters everything it stops (albedo 1, a different density per
-// channel, forward scattering) behind an interface, inside a closed sphere emitting Le = 2:
-// radiance is 2 everywhere, so the sphere disappears whatever the hero channel.
-std::string furnace(int seed) {
-    return fmt::format(R"(
-        glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
-        glint.render{{ width = 16, height = 16, spp = 48, seed = {}, integrator = 'bdpt' }}
-        glint.sphere{{ center = {{0, 0, 0}}, radius = 3,
-                      material = glint.emissive{{ radiance = 2, two_sided = true }} }}
-        local fog = glint.medium{{ density = {{0.5, 2, 6}}, albedo = 1, g = 0.6 }}
-        glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
-                      material = glint.interface{{ interior = fog }} }}
-    )",
-                       seed);
-}
-
-// A fog box lit by a small two-sided lamp inside it, above a glass sphere that focuses the
-// lamp into the fog and onto the floor, in front of a wall; the camera looks in from outside
-// the box (test_light_media.cpp's scene).
-std::string fog_box(const std::string& integrator, int spp, int seed, bool spectral = false) {
-    return fmt::format(R"(
-        local fog = glint.medium{{ sigma_a = 0.05, sigma_s = {{0.5, 0.7, 0.9}}, g = 0.3 }}
-        glint.camera{{ eye = {{0, 1, 4}}, look_at = {{0, 0.9, 0}}, fov = 45 }}
-        glint.render{{ width = 24, height = 24, spp = {}, seed = {}, integrator = '{}',
-                      max_depth = 6, spectral = {} }}
-        glint.box{{ min = {{-1.5, 0.01, -1.5}}, max = {{1.5, 2.5, 1.5}},
-                   material = glint.interface{{ interior = fog }} }}
-        glint.quad{{ vertices = {{ {{-2, 0, -2}}, {{-2, 0, 2}}, {{2, 0, 2}}, {{2, 0, -2}} }},
-                    material = glint.diffuse{{ reflectance = 0.6 }} }}
-        glint.quad{{ vertices = {{ {{-3, 0, -2}}, {{3, 0, -2}}, {{3, 4, -2}}, {{-3, 4, -2}} }},
-                    material = glint.diffuse{{ reflectance = 0.5 }} }}
-        glint.sphere{{ center = {{0, 0.8, 0}}, radius = 0.4, material = glint.dielectric{{ ior = 1.5 }} }}
-        glint.quad{{ vertices = {{ {{-0.3, 1.9, -0.3}}, {{0.3, 1.9, -0.3}}, {{0.3, 1.9, 0.3}},
-                                  {{-0.3, 1.9, 0.3}} }},
-                    material = glint.emissive{{ radiance = 20, two_sided = true }} }}
-    )",
-                       spp, seed, integrator, spectral ? "true" : "false");
-}
 
 // The smoke of examples/smoke.lua (a NanoVDB density grid: ratio tracking on every shadow
 // ray, delta tracking against its majorant grid) over a floor, lit by a spot light outside.
@@ -110,26 +72,14 @@ std::string fog_behind_glass(const std::string& integrator, bool window, bool me
                               : "");
 }
 
-// The image means per channel of K renders of `scene(seed)`, rendered once for all three.
-std::array<Estimate, 3> channel_means(const std::function<std::string(int)>& scene, int k) {
-    const std::vector<Image> images = render_seeds(scene, k);
-    std::array<Estimate, 3> result;
-    for (int c = 0; c < 3; ++c) {
-        std::vector<double> means;
-        for (const Image& image : images)
-            means.push_back(mean_channel(image, c, 0, 0, image.width, image.height));
-        result[c] = estimate(means, 1.0);
-    }
-    return result;
-}
-
 }  // namespace
 
 TEST(BdptMedia, AlbedoOneMediumDisappearsInTheFurnace) {
     // Six renders of long paths in a dense medium: 20 s under the sanitizers, which the
     // single-scattering and thread tests below exercise on the same code.
     if (test::kSanitizerBuild) GTEST_SKIP() << "seconds-long renders under the sanitizers";
-    const std::array<Estimate, 3> means = channel_means(furnace, 6);
+    const std::array<Estimate, 3> means =
+        channel_means([](int seed) { return albedo_one_furnace("bdpt", 48, seed); }, 6);
     for (int c = 0; c < 3; ++c) {
         const Estimate& e = means[c];
         EXPECT_LT(4.0 * e.se, 0.03 * 2.0) << "channel " << c;

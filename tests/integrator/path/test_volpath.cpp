@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/image_comparison.h>
+#include <support/media_scenes.h>
 #include <support/render_helpers.h>
 #include <support/test_util.h>
 
@@ -34,18 +35,7 @@ void expect_channel_mean(const std::function<std::string(int)>& scene, int c, do
 // channel, forward scattering) behind an interface, inside a closed sphere emitting Le = 2:
 // radiance is 2 everywhere, so the sphere disappears whatever the hero channel.
 TEST(VolPath, AlbedoOneMediumDisappearsInTheFurnace) {
-    auto scene = [](int seed) {
-        return fmt::format(R"(
-            glint.camera{{ eye = {{0, 0, 1.8}}, look_at = {{0, 0, 0}}, fov = 30 }}
-            glint.render{{ width = 16, height = 16, spp = 16, seed = {}, integrator = 'volpath' }}
-            glint.sphere{{ center = {{0, 0, 0}}, radius = 3,
-                          material = glint.emissive{{ radiance = 2, two_sided = true }} }}
-            local fog = glint.medium{{ density = {{0.5, 2, 6}}, albedo = 1, g = 0.6 }}
-            glint.sphere{{ center = {{0, 0, 0}}, radius = 1,
-                          material = glint.interface{{ interior = fog }} }}
-        )",
-                           seed);
-    };
+    auto scene = [](int seed) { return albedo_one_furnace("volpath", 16, seed); };
     for (int c = 0; c < 3; ++c) expect_channel_mean(scene, c, 2.0, 1e-5);
 }
 

@@ -337,7 +337,7 @@ std::optional<MediaWalk> start_media_walk(const SubpathMedia* media, Sampler& sa
     walk.media = media;
     walk.hero = std::min(static_cast<int>(sampler.get_1d() * Spectrum::active_values()),
                          Spectrum::active_values() - 1);
-    walk.rng.seed(mix_bits(std::bit_cast<uint32_t>(sampler.get_1d()) + 0x5eedULL));
+    walk.rng.seed(stream_seed(sampler.get_1d()));
     return walk;
 }
 

@@ -422,7 +422,8 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
             for (int t = 2; it.volume_merge_scale > 0.0f && t <= n_camera; ++t) {
                 const PathVertex& pt = camera[t - 1];
                 if (!pt.is_medium()) continue;
-                const Spectrum sigma_s = pt.medium->at(pt.p).sigma_s;
+                const Spectrum per_sigma_s = pt.medium->at(pt.p).sigma_s.map(
+                    [](float v) { return v > 0.0f ? 1.0f / v : 0.0f; });
                 const HenyeyGreenstein phase(pt.medium->phase_asymmetry());
                 it.volume_grid.for_each_near(pt.p, volume_cache, [&](uint32_t index, float) {
                     const PhotonRef& ref = it.volume_photons[index];
@@ -439,8 +440,6 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                                          it.light_tracing_count, it.volume_merge_scale);
                     const float r_u = pt.r_u.average() * photon.r_u.average();
                     if (!(r_u > 0.0f)) return;
-                    const Spectrum per_sigma_s =
-                        sigma_s.map([](float v) { return v > 0.0f ? 1.0f / v : 0.0f; });
                     L +=
                         pt.beta * photon.beta * per_sigma_s * (f * it.volume_kernel * weight / r_u);
                 });

@@ -86,11 +86,6 @@ void add_emission(WalkState& walk, const Spectrum& Le, LightPdf&& light_pdf) {
     if (mean > 0.0f) walk.L += walk.beta * Le / mean;
 }
 
-// A seed for a path's random stream from one sampler draw, so that the stream is the
-// pixel sample's as every other draw is (the same for any thread count).
-uint64_t stream_seed(float u) {
-    return mix_bits(std::bit_cast<uint32_t>(u) + 0x5eedULL);
-}
 
 }  // namespace
 

@@ -9,8 +9,12 @@
 // media switches the ray to the medium on the side it goes to; any other surface leaves the
 // ray in the medium it was in.
 #include <glint/core/interaction.h>
+#include <glint/core/rng.h>
 #include <glint/core/medium.h>
 #include <glint/material/material.h>
+
+#include <bit>
+#include <cstdint>
 
 namespace glint {
 
@@ -22,6 +26,13 @@ inline const Medium* medium_beyond(const SurfaceInteraction& si, const Vec3& dir
                                    const Medium* current) {
     const MediumInterface media = si.material->medium_interface();
     return media.is_transition() ? media.leaving(glm::dot(direction, si.ng) > 0.0f) : current;
+}
+
+/// A seed for a path's random stream (delta and ratio tracking, whose number of draws varies
+/// from path to path) from one sampler draw, so that the stream is the pixel sample's as
+/// every other draw is (the same for any thread count).
+inline uint64_t stream_seed(float u) {
+    return mix_bits(std::bit_cast<uint32_t>(u) + 0x5eedULL);
 }
 
 /// The medium that contains `p`: the side a probe ray from p arrives at on the first surface
