@@ -103,7 +103,7 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
                     settings.where_of("integrator"), settings.integrator));
 }
 
-// Only volpath and light sample scattering in media, and only volpath collects their
+// Only some integrators sample scattering in media, and only volpath collects their
 // emission; the others would show the scene as if its fog (or its glow) were not there, so
 // say so.
 void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
@@ -118,9 +118,8 @@ void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
         warn(control,
              fmt::format(
                  "{}: the '{}' integrator ignores participating media that "
-                 "scatter or emit (glint.medium); 'volpath', 'light', 'bdpt', 'vcm' and 'mlt' "
-                 "render "
-                 "them",
+                 "scatter or emit (glint.medium); 'volpath', 'light', 'bdpt', 'vcm', 'mlt' "
+                 "and 'preview' render them",
                  settings.where_of("integrator"), settings.integrator));
     } else if (!capabilities.emitting_media &&
                any_medium([](const Medium& m) { return m.emits(); })) {

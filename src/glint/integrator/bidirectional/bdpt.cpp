@@ -384,7 +384,7 @@ int BdptIntegrator::debug_count() {
 RenderStats BdptIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "bdpt", m_settings.where_of("integrator"));
-    m_media = subpath_media(scene);
+    m_media = walk_media(scene);
     const int w = film.width(), h = film.height();
     // One light subpath per camera sample: the splats of spp paths per pixel (camera.h).
     const double splat_scale = 1.0 / static_cast<double>(m_settings.spp);

@@ -116,7 +116,7 @@ private:
     RenderSettings m_settings;
     std::unique_ptr<Filter> m_filter;
     bool m_debug_strategies = false;
-    std::optional<SubpathMedia> m_media;  // this render's media (subpath_media)
+    std::optional<WalkMedia> m_media;  // this render's media (walk_media)
 };
 
 }  // namespace glint

@@ -86,7 +86,7 @@ int MltIntegrator::max_depth() const {
 
 MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int depth,
                                   Vec2 film_size, MltWorkspace& ws, bool spectral,
-                                  const SubpathMedia* media) {
+                                  const WalkMedia* media) {
     MltSample result;
     const int strategies = depth + 2;
     sampler.set_stream(PssSampler::kConnectionStream);
@@ -136,8 +136,8 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
 RenderStats MltIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "mlt", m_settings.where_of("integrator"));
-    m_media = subpath_media(scene);
-    const SubpathMedia* const media = m_media ? &*m_media : nullptr;
+    m_media = walk_media(scene);
+    const WalkMedia* const media = m_media ? &*m_media : nullptr;
     const Vec2 film_size(static_cast<float>(film.width()), static_cast<float>(film.height()));
     const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();
     const uint64_t mutations = pixels * static_cast<uint64_t>(m_settings.spp);
@@ -219,7 +219,7 @@ void MltIntegrator::run_chain(const Scene& scene, int chain, uint64_t mutations,
     // contribution), then the chain's own random numbers from there on.
     PssSampler sampler(start_key, m_mlt.sigma, m_mlt.large_step);
     sampler.start_iteration();
-    const SubpathMedia* const media = m_media ? &*m_media : nullptr;
+    const WalkMedia* const media = m_media ? &*m_media : nullptr;
     MltSample current = evaluate(scene, sampler, depth, film_size, ws, m_settings.spectral, media);
     sampler.accept();
     sampler.reseed(chain_key(m_settings.seed, static_cast<uint64_t>(chain)));

@@ -81,10 +81,10 @@ public:
     /// the hero wavelength (1D), the lens (2D, if the camera has one), with `media` the
     /// media walk's hero channel and stream seed (2 x 1D, start_media_walk), and the camera
     /// subpath; in the light stream the light subpath. `media`: the scene's media for the
-    /// subpaths (subpath_media), null for none.
+    /// subpaths (walk_media), null for none.
     static MltSample evaluate(const Scene& scene, PssSampler& sampler, int depth, Vec2 film_size,
                               MltWorkspace& workspace, bool spectral = false,
-                              const SubpathMedia* media = nullptr);
+                              const WalkMedia* media = nullptr);
 
     /// Depths chains are spread over: 0 .. max_depth().
     int max_depth() const;
@@ -96,7 +96,7 @@ private:
 
     RenderSettings m_settings;
     MltSettings m_mlt;
-    std::optional<SubpathMedia> m_media;  // this render's media (subpath_media)
+    std::optional<WalkMedia> m_media;  // this render's media (walk_media)
 };
 
 }  // namespace glint

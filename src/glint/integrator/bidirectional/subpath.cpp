@@ -18,62 +18,6 @@ Vec3 direction_to(const PathVertex& from, const PathVertex& to) {
     return to.infinite ? to.w_sky : glm::normalize(to.p - from.p);
 }
 
-// How a walk's segment through a medium ended.
-enum class SegmentEnd { kReached, kScattered, kAbsorbed };
-
-// The segment of `ray` through `medium` up to t_hit (kInfinity: the ray left the scene):
-// delta tracking on the walk's hero channel, as volpath's. `weight` receives the factor of
-// the throughput (and of r_u: the same, volpath.cpp) to the segment's end or its scattering
-// point, at parameter `t_scatter`. A medium that only absorbs is not sampled.
-SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, MediaWalk& walk,
-                          Spectrum& weight, float& t_scatter, float& sigma_t) {
-    weight = Spectrum(1.0f);
-    if (!samples_distances(medium)) {
-        weight = medium.transmittance(ray, std::isinf(t_hit) ? 1e30f : t_hit, walk.rng);
-        return weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kReached;
-    }
-    const int hero = walk.hero;
-    SegmentEnd end = SegmentEnd::kReached;
-    const Spectrum T_maj = sample_collisions(
-        medium, ray, t_hit, hero, walk.rng,
-        [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
-            const float sigma_hero = sigma_maj.value(hero), T_hero = T.value(hero);
-            const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
-            const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
-            const float u = walk.rng.next_float();
-            if (u < p_absorb) {
-                end = SegmentEnd::kAbsorbed;
-                return false;
-            }
-            if (u < p_absorb + p_scatter) {
-                weight *= T * point.sigma_s / (T_hero * point.sigma_s.value(hero));
-                end = weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kScattered;
-                t_scatter = t;
-                sigma_t = (point.sigma_a + point.sigma_s).average();
-                return false;
-            }
-            // A null collision: on, each channel weighted by its null share.
-            const Spectrum sigma_n =
-                (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
-            const float pdf = T_hero * sigma_n.value(hero);
-            if (!(pdf > 0.0f)) {
-                end = SegmentEnd::kAbsorbed;
-                return false;
-            }
-            weight *= T * sigma_n / pdf;
-            if (weight.is_black()) {
-                end = SegmentEnd::kAbsorbed;
-                return false;
-            }
-            return true;
-        });
-    if (end != SegmentEnd::kReached) return end;
-    const float T_hero = T_maj.value(hero);
-    if (!(T_hero > 0.0f)) return SegmentEnd::kAbsorbed;
-    weight *= T_maj / T_hero;
-    return SegmentEnd::kReached;
-}
-
 // Crossings of interfaces (surfaces that only bound media) a walk may make in a row before
 // it is given up: a ray caught between coincident interfaces would never end.
 constexpr int kMaxCrossings = 1024;
@@ -116,7 +60,7 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
             Spectrum weight;
             float t_scatter = 0.0f, sigma_t = 0.0f;
             const SegmentEnd end = through_medium(*medium, ray, hit ? vertex.si.t : kInfinity,
-                                                  *media, weight, t_scatter, sigma_t);
+                                                  media->hero, media->rng, weight, t_scatter, sigma_t);
             beta *= weight;
             rr_beta *= weight;
             r_u *= weight;
@@ -312,26 +256,7 @@ float continuation_pdf(const Scene& scene, const PathVertex* prev, const PathVer
     return solid_angle_to_area(pdf, v, next);
 }
 
-std::optional<SubpathMedia> subpath_media(const Scene& scene) {
-    const auto& media = scene.media();
-    if (std::none_of(media.begin(), media.end(), [](const auto& m) { return m->scatters(); }))
-        return std::nullopt;
-    SubpathMedia result;
-    result.camera = scene.camera_medium();
-    // A light names no medium: the one round a point it emits from (light_tracer.cpp's rule).
-    const auto& lights = scene.lights();
-    for (const auto& light : lights) {
-        const int index = light->index();
-        if (index < 0) continue;
-        if (static_cast<size_t>(index) >= result.light_start.size())
-            result.light_start.resize(index + 1, nullptr);
-        const std::optional<LightEmission> e = light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
-        if (e) result.light_start[index] = medium_containing(scene, e->ray.origin);
-    }
-    return result;
-}
-
-std::optional<MediaWalk> start_media_walk(const SubpathMedia* media, Sampler& sampler) {
+std::optional<MediaWalk> start_media_walk(const WalkMedia* media, Sampler& sampler) {
     if (!media) return std::nullopt;
     MediaWalk walk;
     walk.media = media;

@@ -14,7 +14,7 @@
 // they are per unit solid angle of its direction. A vertex left through a delta lobe
 // (mirror, smooth glass) has both set to 0 and `delta` true: no strategy can connect there.
 //
-// In participating media (a SubpathMedia passed in) the walks sample distances by delta
+// In participating media (a WalkMedia passed in) the walks sample distances by delta
 // tracking on a hero channel, as volpath does, and scatter in media with the phase function.
 // A medium vertex's densities are per unit volume: per solid angle over distance squared (no
 // cosine: it has no normal) times the extinction there, the density of a collision per unit
@@ -26,6 +26,7 @@
 #include <glint/core/rng.h>
 #include <glint/core/sampler.h>
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/transport/media.h>
 
 #include <vector>
 
@@ -72,22 +73,11 @@ struct PathVertex {
     bool is_emitter() const { return kind == Kind::kEscape || (is_surface() && light); }
 };
 
-/// The participating media the walks go through, found once per render (subpath_media).
-struct SubpathMedia {
-    const Medium* camera = nullptr;  ///< the medium the lens is in
-    /// The medium around each light, by Light::index (medium_containing at a point it
-    /// emits from).
-    std::vector<const Medium*> light_start;
-};
-/// The scene's media for the subpaths; nullopt when no medium scatters (absorbing glass
-/// alone is taken at each hit, as without media, and the walks draw nothing more).
-std::optional<SubpathMedia> subpath_media(const Scene& scene);
-
 /// One path sample's state in media: the hero channel that samples distances, and the
 /// stream that delta and ratio tracking draw from. Drawn from the sampler before the camera
 /// subpath: the hero (1D), then the stream's seed (1D).
 struct MediaWalk {
-    const SubpathMedia* media = nullptr;
+    const WalkMedia* media = nullptr;
     int hero = 0;
     Rng rng;
     /// The subpath this walk makes has a hero of its own, not shared with the subpaths it
@@ -97,7 +87,7 @@ struct MediaWalk {
     bool own_hero = false;
 };
 /// The media walk for one path sample (draws as MediaWalk says); none without media.
-std::optional<MediaWalk> start_media_walk(const SubpathMedia* media, Sampler& sampler);
+std::optional<MediaWalk> start_media_walk(const WalkMedia* media, Sampler& sampler);
 
 /// The value of the scattering at `v` (a connectible vertex) from where its walk came from
 /// (`v.si.wo`: back along the arriving ray, for medium vertices too) towards `w` (unit,

@@ -54,7 +54,7 @@ struct VcmIntegrator::Iteration {
     const Sampler* light_sampler = nullptr;
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<float> light_times;                    // each light path's scene time
-    const SubpathMedia* media = nullptr;               // the scene's, null for none
+    const WalkMedia* media = nullptr;               // the scene's, null for none
     // Merging at points in media (with media only): the light vertices there, their grid,
     // MisVertex::merge_scale there (4 r / 3) and the ball's kernel 1 / (n_L 4/3 pi r^3).
     std::vector<PhotonRef> volume_photons;
@@ -120,7 +120,7 @@ float VcmIntegrator::radius_at(float r0, float alpha, int iteration) {
 RenderStats VcmIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "vcm", m_settings.where_of("integrator"));
-    const std::optional<SubpathMedia> media = subpath_media(scene);
+    const std::optional<WalkMedia> media = walk_media(scene);
     const int w = film.width(), h = film.height();
     const size_t pixels = static_cast<size_t>(w) * h;
     const size_t n_light = m_vcm.light_paths > 0 ? static_cast<size_t>(m_vcm.light_paths) : pixels;

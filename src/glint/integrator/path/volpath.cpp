@@ -181,7 +181,14 @@ VolPathIntegrator::MediumStep VolPathIntegrator::scatter_in_medium(const Scene& 
     if (T_hero <= 0.0f) return MediumStep::kEnded;
     walk.beta *= T_maj / T_hero;
     walk.r_u *= T_maj / T_hero;
-    walk.r_l /= T_hero;
+    // Light sampling's density for MIS takes the transmittance as its shadow ray estimated
+    // it: the closed form in a homogeneous medium, so here the probability of crossing,
+    // T_hero; ratio tracking elsewhere, so here the ratios along this walk's own tentative
+    // collisions, as pbrt-v4's r_l (the null collisions' share is in collide()).
+    if (medium.is_homogeneous())
+        walk.r_l /= T_hero;
+    else
+        walk.r_l *= T_maj / T_hero;
     return MediumStep::kCrossed;
 }
 
@@ -221,7 +228,9 @@ VolPathIntegrator::MediumStep VolPathIntegrator::collide(const Scene& scene, Wal
     if (pdf <= 0.0f) return MediumStep::kEnded;
     walk.beta *= T * sigma_n / pdf;
     walk.r_u *= T * sigma_n / pdf;
-    walk.r_l /= pdf;
+    // Ratio tracking of a shadow ray along these collisions would weigh by sigma_n / sigma_maj
+    // (the density of null collisions is in neither strategy's ratio): see scatter_in_medium.
+    walk.r_l *= T * sigma_maj / pdf;
     return walk.beta.is_black() || walk.r_u.is_black() ? MediumStep::kEnded : MediumStep::kCrossed;
 }
 

@@ -133,6 +133,7 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     s.photons = p.get_int("preview_photons", s.photons);
     s.window = p.get_int("preview_window", s.window);
     s.radius = p.get_float("preview_radius", s.radius);
+    s.volume_radius = p.get_float("preview_volume_radius", s.volume_radius);
     s.ambient = p.get_float("preview_ambient", s.ambient);
     s.bounces = p.get_int("preview_bounces", s.bounces);
     const std::string restir = p.get_string("preview_restir", "off");
@@ -152,6 +153,9 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     if (!(s.radius >= 0.0f && s.radius <= 1e12f))
         p.fail_at("preview_radius",
                   "'preview_radius' must be in [0, 1e12] (0: from the scene's size)");
+    if (!(s.volume_radius >= 0.0f && s.volume_radius <= 1e12f))
+        p.fail_at("preview_volume_radius",
+                  "'preview_volume_radius' must be in [0, 1e12] (0: from the scene's size)");
     if (!(s.ambient >= 0.0f && s.ambient <= 1e6f))
         p.fail_at("preview_ambient", "'preview_ambient' must be in [0, 1e6] (0: no ambient term)");
     if (s.bounces < 0 || s.bounces > 16)
@@ -205,11 +209,17 @@ void PreviewIntegrator::restart(const Scene& scene) {
     m_grid = HashGrid();
     m_photons.clear();
     m_photon_passes = 0;
+    m_media = walk_media(scene);
+    m_volume_batches.clear();
+    m_volume_view = VolumePhotonView();
     const Bounds3& bounds = scene.stats().bounds;
     const Vec3 extent = bounds.is_empty() ? Vec3(1.0f) : bounds.extent();
     const float diagonal = glm::length(extent);
     const float r0 = m_preview.radius > 0.0f ? m_preview.radius : diagonal / 400.0f;
     m_radius2 = r0 * r0;
+    const float volume_r0 =
+        m_preview.volume_radius > 0.0f ? m_preview.volume_radius : diagonal / 100.0f;
+    m_volume_radius2 = volume_r0 * volume_r0;
 
     m_projections.assign(scene.lights().size(), std::nullopt);
     // Projection maps only aim photons: with none, many lights would cost seconds for nothing.
@@ -243,35 +253,50 @@ void PreviewIntegrator::restart(const Scene& scene) {
 }
 
 void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
-    if (m_photon_passes > 0)
-        m_radius2 *= (m_photon_passes + kRadiusShrinkAlpha) / (m_photon_passes + 1.0f);
+    if (m_photon_passes > 0) {
+        const float shrink = (m_photon_passes + kRadiusShrinkAlpha) / (m_photon_passes + 1.0f);
+        m_radius2 *= shrink;
+        m_volume_radius2 *= shrink;
+    }
     const uint64_t count = static_cast<uint64_t>(m_preview.photons);
     PhotonEmitter emitter = [this](const Light& light, const Vec2& u1, const Vec2& u2, float u3) {
         const auto& projection = m_projections[static_cast<size_t>(light.index())];
         return projection ? projection->sample(light, u1, u2, u3) : light.sample_le(u1, u2, u3);
     };
     const int max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : 32;
-    PhotonTracer tracer(scene, max_bounces, emitter, true);
-    tracer.use_wavelengths(m_settings.spectral ? &m_pass_wavelengths : nullptr);
     // Batch g is photons [g count, (g + 1) count) of one sequence: every batch differs, and
     // the same passes trace the same photons for any thread count.
-    const auto sinks = tracer.trace(static_cast<uint64_t>(m_photon_passes) * count, count,
-                                    m_settings.seed + 1, stats.rays, [] { return CausticSink{}; });
+    const uint64_t first = static_cast<uint64_t>(m_photon_passes) * count;
     std::vector<Photon> batch;
-    for (const CausticSink& sink : sinks)
-        batch.insert(batch.end(), sink.photons.begin(), sink.photons.end());
+    std::vector<VolumePhoton> volume_batch;
+    if (m_media) {
+        trace_photons_in_media(scene, emitter, first, count, m_settings.seed + 1, max_bounces,
+                               batch, volume_batch, stats.rays);
+    } else {
+        PhotonTracer tracer(scene, max_bounces, emitter, true);
+        tracer.use_wavelengths(m_settings.spectral ? &m_pass_wavelengths : nullptr);
+        const auto sinks = tracer.trace(first, count, m_settings.seed + 1, stats.rays,
+                                        [] { return CausticSink{}; });
+        for (const CausticSink& sink : sinks)
+            batch.insert(batch.end(), sink.photons.begin(), sink.photons.end());
+    }
     // Each batch is an estimate on its own: its photons carry power per emitted photon.
     const float scale = count > 0 ? 1.0f / static_cast<float>(count) : 0.0f;
     for (Photon& photon : batch) {
         photon.power *= scale;
         photon.set = m_photon_passes;  // its batch: spectral mode reads the newest alone
     }
+    for (VolumePhoton& photon : volume_batch) photon.power *= scale;
 
     const size_t window = static_cast<size_t>(m_preview.window);
-    if (m_batches.size() < window)
+    const size_t slot = static_cast<size_t>(m_photon_passes) % window;
+    if (m_batches.size() < window) {
         m_batches.push_back(std::move(batch));
-    else
-        m_batches[static_cast<size_t>(m_photon_passes) % window] = std::move(batch);
+        m_volume_batches.push_back(std::move(volume_batch));
+    } else {
+        m_batches[slot] = std::move(batch);
+        m_volume_batches[slot] = std::move(volume_batch);
+    }
     ++m_photon_passes;
 
     // The kept photons, batch after batch: the grid holds their positions, and the photons
@@ -554,12 +579,20 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     const WavelengthContext* wavelengths = m_settings.spectral ? &m_pass_wavelengths : nullptr;
     if (m_scene != &scene) restart(scene);
     trace_photons(scene, stats);
+    // Volume photons are seen from this pass's camera (it may have moved since they were traced).
+    if (m_media) {
+        m_volume_view.build(scene, m_media->camera, m_volume_batches,
+                            m_settings.spectral ? m_photon_passes - 1 : -1, m_volume_radius2,
+                            film.origin(), Vec2i(film.width(), film.height()));
+    }
     m_timing.photons = seconds_since(start);
 
     const auto camera_start = std::chrono::steady_clock::now();
     const int w = film.width(), h = film.height();
     std::atomic<uint64_t> camera_rays{0};
-    if (m_preview.restir.mode != RestirMode::kOff) {
+    // In media that scatter the camera paths carry their medium one ray at a time
+    // (preview_media.h); ReSTIR and the packets serve scenes without.
+    if (!m_media && m_preview.restir.mode != RestirMode::kOff) {
         render_restir_pass(scene, film, pass, stats);
     } else {
         // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
@@ -572,7 +605,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                 if (wavelengths != nullptr) scope.emplace(*wavelengths);
                 Arena arena;
                 RayCounter counter;
-                if (m_packets) {
+                if (m_packets && !m_media) {
                     auto lanes = std::make_unique<CameraLanes>();
                     for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
                     for (int row = rows.begin(); row < rows.end(); ++row) {
@@ -600,9 +633,11 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                             arena.reset();
                             std::optional<SecondaryWavelengthsScope> terminated;
                             if (wavelengths != nullptr) terminated.emplace();
-                            film.add_sample(
-                                pixel, camera_sample(scene, ray, sampler, arena, counter, cache),
-                                1.0f, nullptr);
+                            const Spectrum L =
+                                m_media ? camera_sample_in_media(scene, pixel, ray, sampler, arena,
+                                                                 counter, cache)
+                                        : camera_sample(scene, ray, sampler, arena, counter, cache);
+                            film.add_sample(pixel, L, 1.0f, nullptr);
                         }
                     }
                 }
@@ -618,6 +653,12 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     return stats;
 }
 
+size_t PreviewIntegrator::stored_volume_photons() const {
+    size_t total = 0;
+    for (const std::vector<VolumePhoton>& batch : m_volume_batches) total += batch.size();
+    return total;
+}
+
 RenderStats PreviewIntegrator::render(const Scene& scene, Film& film, Progress& progress) {
     const auto start = std::chrono::steady_clock::now();
     m_scene = nullptr;  // a render starts from no photons
@@ -631,6 +672,14 @@ RenderStats PreviewIntegrator::render(const Scene& scene, Film& film, Progress& 
         photon_seconds += m_timing.photons;
     }
     stats.seconds = seconds_since(start);
+    if (m_media) {
+        stats.notes.push_back(fmt::format(
+            "preview: {} volume photons kept, final volume radius {:.4g}; single scattering "
+            "and volumetric caustics only (multiple scattering in media is volpath's)",
+            stored_volume_photons(), volume_radius()));
+        if (m_preview.restir.mode != RestirMode::kOff)
+            stats.notes.push_back("preview: preview_restir is not used in media that scatter");
+    }
     stats.notes.push_back(fmt::format(
         "preview: {} passes, {} caustic photons kept from the last {} batches, final radius "
         "{:.4g}; photon passes took {:.2f} s of {:.2f} s",

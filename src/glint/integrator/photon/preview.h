@@ -17,11 +17,14 @@
 // numbers from a cheap sampler of its own, and the photon grid caches its cells per thread;
 // see docs/integrators.md.
 #include <glint/integrator/photon/photon_map.h>
+#include <glint/integrator/photon/photon_tracer.h>
+#include <glint/integrator/photon/preview_media.h>
 #include <glint/integrator/photon/projection_map.h>
 #include <glint/integrator/progressive.h>
 #include <glint/integrator/realtime/restir_di.h>
 #include <glint/integrator/tile/tile_integrator.h>
 #include <glint/integrator/transport/hash_grid.h>
+#include <glint/integrator/transport/media.h>
 
 #include <optional>
 #include <vector>
@@ -37,6 +40,9 @@ struct PreviewSettings {
     /// Radius of the first pass's caustic estimate, in scene units (>= 0); 0 means 1/400 of
     /// the scene's bounding-box diagonal.
     float radius = 0.0f;
+    /// Radius of the first pass's volume photon estimate (media), in scene units (>= 0);
+    /// 0 means 1/100 of the scene's bounding-box diagonal. It shrinks as `radius` does.
+    float volume_radius = 0.0f;
     /// Scale of the ambient term (>= 0; 0 turns it off), an estimate of the light of all
     /// bounces after the first from the lights' power, the scene's size and how closed it
     /// is, plus the constant background for the directions that escape (see restart()).
@@ -67,6 +73,8 @@ public:
         capabilities.motion_blur = true;
         // Each pass carries one set of wavelengths, its camera paths and photons alike.
         capabilities.spectral = true;
+        // Single scattering and volumetric caustics (preview_media.h); not their emission.
+        capabilities.scattering_media = true;
         return capabilities;
     }
     PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview);
@@ -93,6 +101,10 @@ public:
     int photon_passes() const { return m_photon_passes; }
     /// The radius the next pass's caustic estimate uses (0 before the first pass).
     float radius() const { return m_photon_passes > 0 ? std::sqrt(m_radius2) : 0.0f; }
+    /// Volume photons kept now (scenes with media that scatter; see preview_media.h).
+    size_t stored_volume_photons() const;
+    /// The radius of the volume photons' estimate in the last pass (0 before the first).
+    float volume_radius() const { return m_photon_passes > 0 ? std::sqrt(m_volume_radius2) : 0.0f; }
 
     /// Whether the camera pass traces its rays in packets (the default) or one at a time:
     /// the same image bit for bit, the one-ray form being the plain loop the packet form is
@@ -113,6 +125,16 @@ private:
                                RayCounter& counter, HashGrid::Cache& cache) const;
     Spectrum bounce_estimate(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                              Sampler& sampler, Arena& arena, RayCounter& counter) const;
+    // preview_media.cpp: the preview in media that scatter.
+    void trace_photons_in_media(const Scene& scene, const PhotonEmitter& emitter, uint64_t first,
+                                uint64_t count, uint64_t seed, int max_bounces,
+                                std::vector<Photon>& surface, std::vector<VolumePhoton>& volume,
+                                uint64_t& rays) const;
+    Spectrum in_scattering(const Scene& scene, const Ray& ray, float t_end, const Medium& medium,
+                           Sampler& sampler, Rng& rng, RayCounter& counter) const;
+    Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray, Sampler& sampler,
+                                    Arena& arena, RayCounter& counter,
+                                    HashGrid::Cache& cache) const;
     void render_restir_pass(const Scene& scene, Film& film, int pass, RenderStats& stats);
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                            RayCounter& counter, HashGrid::Cache& cache) const;
@@ -135,6 +157,12 @@ private:
     std::vector<Photon> m_photons;  // the same photons, in m_grid's storage order
     int m_photon_passes = 0;        // batches traced since the restart
     float m_radius2 = 0.0f;         // squared radius of the current pass's estimate
+    // Media that scatter (none: the preview ignores media but absorbing glass), their volume
+    // photons' batches (a ring as m_batches), their radius, and how this pass sees them.
+    std::optional<WalkMedia> m_media;
+    std::vector<std::vector<VolumePhoton>> m_volume_batches;
+    float m_volume_radius2 = 0.0f;
+    VolumePhotonView m_volume_view;
     PassTiming m_timing;
     bool m_packets = true;
     // ReSTIR's state per film size (at most two: the viewer's reduced first pass after a

@@ -1,5 +1,10 @@
 #include <glint/integrator/transport/media.h>
+#include <glint/integrator/transport/visibility.h>
+#include <glint/medium/delta_tracking.h>
 #include <glint/scene/scene.h>
+
+#include <algorithm>
+#include <cmath>
 
 #include <optional>
 
@@ -35,6 +40,74 @@ const Medium* medium_containing(const Scene& scene, const Vec3& p) {
     // is out there too.
     const Ray eye = scene.camera().generate_ray(Vec2(0.5f), Vec2(0.5f));
     return probe(scene, eye.origin) ? nullptr : scene.camera_medium();
+}
+
+std::optional<WalkMedia> walk_media(const Scene& scene) {
+    const auto& media = scene.media();
+    if (std::none_of(media.begin(), media.end(), [](const auto& m) { return m->scatters(); }))
+        return std::nullopt;
+    WalkMedia result;
+    result.camera = scene.camera_medium();
+    // A light names no medium: the one round a point it emits from (light_tracer.cpp's rule).
+    const auto& lights = scene.lights();
+    for (const auto& light : lights) {
+        const int index = light->index();
+        if (index < 0) continue;
+        if (static_cast<size_t>(index) >= result.light_start.size())
+            result.light_start.resize(index + 1, nullptr);
+        const std::optional<LightEmission> e = light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
+        if (e) result.light_start[index] = medium_containing(scene, e->ray.origin);
+    }
+    return result;
+}
+
+
+SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
+                          Spectrum& weight, float& t_scatter, float& sigma_t) {
+    weight = Spectrum(1.0f);
+    if (!samples_distances(medium)) {
+        weight = medium.transmittance(ray, std::isinf(t_hit) ? 1e30f : t_hit, rng);
+        return weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kReached;
+    }
+    SegmentEnd end = SegmentEnd::kReached;
+    const Spectrum T_maj = sample_collisions(
+        medium, ray, t_hit, hero, rng,
+        [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
+            const float sigma_hero = sigma_maj.value(hero), T_hero = T.value(hero);
+            const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
+            const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
+            const float u = rng.next_float();
+            if (u < p_absorb) {
+                end = SegmentEnd::kAbsorbed;
+                return false;
+            }
+            if (u < p_absorb + p_scatter) {
+                weight *= T * point.sigma_s / (T_hero * point.sigma_s.value(hero));
+                end = weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kScattered;
+                t_scatter = t;
+                sigma_t = (point.sigma_a + point.sigma_s).average();
+                return false;
+            }
+            // A null collision: on, each channel weighted by its null share.
+            const Spectrum sigma_n =
+                (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
+            const float pdf = T_hero * sigma_n.value(hero);
+            if (!(pdf > 0.0f)) {
+                end = SegmentEnd::kAbsorbed;
+                return false;
+            }
+            weight *= T * sigma_n / pdf;
+            if (weight.is_black()) {
+                end = SegmentEnd::kAbsorbed;
+                return false;
+            }
+            return true;
+        });
+    if (end != SegmentEnd::kReached) return end;
+    const float T_hero = T_maj.value(hero);
+    if (!(T_hero > 0.0f)) return SegmentEnd::kAbsorbed;
+    weight *= T_maj / T_hero;
+    return SegmentEnd::kReached;
 }
 
 }  // namespace glint

@@ -4,6 +4,9 @@
 //   medium_beyond      the medium a ray leaving a surface enters
 //   medium_containing  the medium around a point, found by a probe ray: where a light path
 //                      starts (a light names no medium of its own)
+//   walk_media         the media a render's walks start in: the camera's, each light's
+//   through_medium     one segment of a walk through a medium by delta tracking: where it
+//                      scatters, or what reaches the segment's end
 //
 // Media fill closed shapes (glint.interface, glass with an interior): a surface that names
 // media switches the ray to the medium on the side it goes to; any other surface leaves the
@@ -15,6 +18,8 @@
 
 #include <bit>
 #include <cstdint>
+#include <optional>
+#include <vector>
 
 namespace glint {
 
@@ -40,5 +45,27 @@ inline uint64_t stream_seed(float u) {
 /// the camera's `medium` is when the camera is outside them too (an unbounded atmosphere, as
 /// the foggy Cornell box's), and vacuum otherwise.
 const Medium* medium_containing(const Scene& scene, const Vec3& p);
+
+/// The participating media a render's walks start in, found once per render (walk_media).
+struct WalkMedia {
+    const Medium* camera = nullptr;  ///< the medium the lens is in
+    /// The medium around each light, by Light::index (medium_containing at a point it
+    /// emits from).
+    std::vector<const Medium*> light_start;
+};
+/// The scene's media for walks that sample them; nullopt when no medium scatters (absorbing
+/// glass alone is taken at each hit, as without media, and the walks draw nothing more).
+std::optional<WalkMedia> walk_media(const Scene& scene);
+
+/// How a walk's segment through a medium ended.
+enum class SegmentEnd { kReached, kScattered, kAbsorbed };
+
+/// The segment of `ray` through `medium` up to t_hit (kInfinity: the ray left the scene) by
+/// delta tracking on channel `hero`, drawing from `rng`, as volpath's. `weight` receives the
+/// factor of the throughput (and of r_u: the same, volpath.cpp) to the segment's end or to
+/// its scattering point, at parameter `t_scatter`, where the extinction (mean over channels)
+/// is `sigma_t`. A medium that only absorbs is not sampled: its transmittance is the weight.
+SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
+                          Spectrum& weight, float& t_scatter, float& sigma_t);
 
 }  // namespace glint

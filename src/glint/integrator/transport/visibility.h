@@ -39,6 +39,14 @@ inline bool samples_distances(const Medium& medium) {
                                                     kShadowRayEnd, shadow.time);
         return Spectrum(blocked ? 0.0f : 1.0f);
     }
+    // Nothing at all in the way: one medium along the whole ray, and Embree's cheaper
+    // occlusion query tells. The walk below would find no surface and draw the same.
+    if (medium && !scene.accel().occluded(shadow.origin, shadow.direction, 0.0f, kShadowRayEnd,
+                                          shadow.time)) {
+        Rng fixed_stream;
+        const Ray ray{shadow.origin, shadow.direction, 0.0f, kShadowRayEnd, shadow.time};
+        return medium->transmittance(ray, kShadowRayEnd, rng ? *rng : fixed_stream);
+    }
     return transmittance_through_interfaces(scene, shadow, medium, rng);
 }
 

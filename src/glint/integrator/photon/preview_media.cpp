@@ -1,0 +1,378 @@
+#include <glint/core/rng.h>
+#include <glint/integrator/photon/preview.h>
+#include <glint/integrator/photon/preview_media.h>
+#include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/media.h>
+#include <glint/integrator/transport/roulette.h>
+#include <glint/integrator/transport/transport.h>
+#include <glint/integrator/transport/visibility.h>
+#include <glint/math/frame.h>
+#include <glint/medium/delta_tracking.h>
+#include <glint/medium/henyey_greenstein.h>
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+
+namespace glint {
+namespace {
+
+// Interfaces a camera path or photon may cross in a row before it is given up (a ray caught
+// between coincident surfaces).
+constexpr int kMaxCrossings = 256;
+
+// The photons a chunk of the batch found: on surfaces (the caustics) and in media.
+struct MediaPhotonChunk {
+    std::vector<Photon> surface;
+    std::vector<VolumePhoton> volume;
+};
+
+int choose_channel(float u) {
+    const int channels = Spectrum::active_values();
+    return std::min(static_cast<int>(u * static_cast<float>(channels)), channels - 1);
+}
+
+}  // namespace
+
+void VolumePhotonView::build(const Scene& scene, const Medium* camera_medium,
+                             const std::vector<std::vector<VolumePhoton>>& batches, int only_set,
+                             float radius2, Vec2i origin, Vec2i size) {
+    m_photons.clear();
+    m_origin = origin;
+    m_radius2 = radius2;
+    m_tiles = Vec2i((size.x + kTile - 1) / kTile, (size.y + kTile - 1) / kTile);
+    const size_t tile_count = static_cast<size_t>(m_tiles.x) * static_cast<size_t>(m_tiles.y);
+    m_bin_start.assign(tile_count + 1, 0);
+    m_bin_photons.clear();
+    std::vector<const VolumePhoton*> all;
+    for (const std::vector<VolumePhoton>& batch : batches)
+        for (const VolumePhoton& photon : batch)
+            if (only_set < 0 || photon.set == only_set) all.push_back(&photon);
+    if (all.empty() || !(radius2 > 0.0f)) return;
+    const float batches_read = only_set < 0 ? static_cast<float>(batches.size()) : 1.0f;
+    const float kernel = 1.0f / (kPi * radius2 * batches_read);
+    const float radius = std::sqrt(radius2);
+    const Camera& camera = scene.camera();
+    const Vec3 eye = camera.generate_ray(Vec2(0.5f), Vec2(0.5f)).origin;
+
+    // Each photon's film footprint (a square round its projection, one pixel wider for the
+    // jitter of the pixels' rays) and transmittance from the lens, in parallel.
+    struct Footprint {
+        Vec2i lo{0}, hi{-1};  // tiles, inclusive; hi < lo: not seen
+        Spectrum T{0.0f};
+    };
+    std::vector<Footprint> footprints(all.size());
+    tbb::parallel_for(size_t{0}, all.size(), [&](size_t i) {
+        const VolumePhoton& photon = *all[i];
+        const std::optional<FilmProjection> centre = camera.project(photon.p);
+        if (!centre) return;
+        // The footprint's radius in pixels, from two points at the radius across the view.
+        const Frame across = Frame::from_normal(glm::normalize(photon.p - eye));
+        float pixels = 0.0f;
+        for (const Vec3& axis : {across.to_world(Vec3(1, 0, 0)), across.to_world(Vec3(0, 1, 0))}) {
+            const std::optional<FilmProjection> edge = camera.project(photon.p + radius * axis);
+            if (!edge) return;
+            pixels = std::max(pixels, glm::length(edge->film - centre->film));
+        }
+        pixels = pixels * 1.05f + 1.5f;
+        const Vec2 lo = centre->film - Vec2(pixels) - Vec2(origin);
+        const Vec2 hi = centre->film + Vec2(pixels) - Vec2(origin);
+        if (hi.x < 0.0f || hi.y < 0.0f || lo.x >= static_cast<float>(size.x) ||
+            lo.y >= static_cast<float>(size.y))
+            return;
+        Footprint& f = footprints[i];
+        f.lo = glm::max(Vec2i(glm::floor(lo)) / kTile, Vec2i(0));
+        f.hi = glm::min(Vec2i(glm::floor(hi)) / kTile, m_tiles - Vec2i(1));
+        // Ratio tracking in grid media draws from a stream keyed by the photon.
+        Rng rng(hash_combine(0x766f6c756d65ull, i));
+        f.T = transmittance_through_interfaces(scene, Scene::ShadowRay{eye, photon.p - eye, 0.0f},
+                                               camera_medium, &rng);
+        if (f.T.is_black()) f.hi = Vec2i(-1);
+    });
+
+    // Counting sort into the tiles, photons in their order: the same bins for any threads.
+    std::vector<uint32_t> index_of(all.size(), UINT32_MAX);
+    for (size_t i = 0; i < all.size(); ++i) {
+        const Footprint& f = footprints[i];
+        if (f.hi.x < f.lo.x || f.hi.y < f.lo.y) continue;
+        index_of[i] = static_cast<uint32_t>(m_photons.size());
+        m_photons.push_back({all[i]->p, all[i]->wi, all[i]->power * f.T * kernel, all[i]->g});
+        for (int ty = f.lo.y; ty <= f.hi.y; ++ty)
+            for (int tx = f.lo.x; tx <= f.hi.x; ++tx)
+                ++m_bin_start[static_cast<size_t>(ty * m_tiles.x + tx) + 1];
+    }
+    for (size_t t = 0; t < tile_count; ++t) m_bin_start[t + 1] += m_bin_start[t];
+    m_bin_photons.resize(m_bin_start[tile_count]);
+    std::vector<uint32_t> fill(m_bin_start.begin(), m_bin_start.end() - 1);
+    for (size_t i = 0; i < all.size(); ++i) {
+        if (index_of[i] == UINT32_MAX) continue;
+        const Footprint& f = footprints[i];
+        for (int ty = f.lo.y; ty <= f.hi.y; ++ty)
+            for (int tx = f.lo.x; tx <= f.hi.x; ++tx)
+                m_bin_photons[fill[static_cast<size_t>(ty * m_tiles.x + tx)]++] = index_of[i];
+    }
+}
+
+Spectrum VolumePhotonView::estimate(Vec2i pixel, const Ray& ray, float t_end) const {
+    if (m_photons.empty()) return Spectrum(0.0f);
+    const Vec2i tile = (pixel - m_origin) / kTile;
+    if (tile.x < 0 || tile.y < 0 || tile.x >= m_tiles.x || tile.y >= m_tiles.y)
+        return Spectrum(0.0f);
+    const size_t t = static_cast<size_t>(tile.y * m_tiles.x + tile.x);
+    const Vec3 wo = -ray.direction;
+    Spectrum sum(0.0f);
+    for (uint32_t k = m_bin_start[t]; k < m_bin_start[t + 1]; ++k) {
+        const Seen& photon = m_photons[m_bin_photons[k]];
+        const Vec3 v = photon.p - ray.origin;
+        const float along = glm::dot(v, ray.direction);
+        if (along <= 0.0f || along >= t_end) continue;
+        if (glm::dot(v, v) - along * along >= m_radius2) continue;
+        sum += photon.power * HenyeyGreenstein(photon.g).eval(wo, photon.wi);
+    }
+    return sum;
+}
+
+// The batch of caustic photons in a scene with media: as trace_photons' PhotonTracer, but
+// each photon carries the medium it travels through (from the one round its light), samples
+// distances there by delta tracking on a hero channel, and crosses interfaces. A photon that
+// reached a medium through mirrors and glass and scatters there is a volume photon; one that
+// reaches its first non-specular surface through them is a caustic photon; either way it
+// ends there (the preview keeps caustic light alone). Powers are divided by the mean of the
+// photon's r_u, as the light tracer's splats are.
+void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonEmitter& emitter,
+                                               uint64_t first, uint64_t count, uint64_t seed,
+                                               int max_bounces, std::vector<Photon>& surface,
+                                               std::vector<VolumePhoton>& volume,
+                                               uint64_t& rays) const {
+    constexpr uint64_t kChunk = 2048;
+    const uint64_t chunks = (count + kChunk - 1) / kChunk;
+    std::vector<MediaPhotonChunk> found(chunks);
+    std::atomic<uint64_t> total_rays{0};
+    const WavelengthContext* wavelengths = m_settings.spectral ? &m_pass_wavelengths : nullptr;
+    const int set = m_photon_passes;
+    tbb::parallel_for(uint64_t{0}, chunks, [&](uint64_t chunk) {
+        std::optional<WavelengthScope> scope;
+        if (wavelengths != nullptr) scope.emplace(*wavelengths);
+        Arena arena;
+        uint64_t chunk_rays = 0;
+        MediaPhotonChunk& sink = found[chunk];
+        const uint64_t end = std::min(count, (chunk + 1) * kChunk);
+        for (uint64_t i = chunk * kChunk; i < end; ++i) {
+            std::optional<SecondaryWavelengthsScope> terminated;
+            if (wavelengths != nullptr) terminated.emplace();
+            Rng rng(hash_combine(mix_bits(seed ^ 0x5bd1e995u), first + i));
+            LightPathSamples u_start;
+            u_start.u_light = rng.next_float();
+            u_start.u_position = Vec2(rng.next_float(), rng.next_float());
+            u_start.u_direction = Vec2(rng.next_float(), rng.next_float());
+            u_start.u_select = rng.next_float();
+            if (scene.camera().time_sampled())
+                u_start.time = scene.camera().time_of_sample(rng.next_float());
+            const std::optional<LightPathStart> start = start_light_path(scene, u_start, emitter);
+            if (!start || start->beta.is_black()) continue;
+            const int index = start->light->index();
+            const Medium* medium =
+                index >= 0 && static_cast<size_t>(index) < m_media->light_start.size()
+                    ? m_media->light_start[static_cast<size_t>(index)]
+                    : nullptr;
+            const int hero = choose_channel(rng.next_float());
+            Spectrum beta = start->beta, r_u(1.0f);
+            Ray ray = start->emission.ray;
+            bool specular_only = true;
+            int bounces = 0, crossings = 0;
+            SurfaceInteraction si;
+            while (bounces <= max_bounces && crossings <= kMaxCrossings) {
+                arena.reset();
+                ++chunk_rays;
+                const bool hit = scene.intersect_surface(ray, si);
+                if (medium) {
+                    Spectrum weight;
+                    float t_scatter = 0.0f, sigma_t = 0.0f;
+                    const SegmentEnd segment = through_medium(*medium, ray, hit ? si.t : kInfinity,
+                                                              hero, rng, weight, t_scatter, sigma_t);
+                    beta *= weight;
+                    r_u *= weight;
+                    if (segment == SegmentEnd::kAbsorbed) break;
+                    if (segment == SegmentEnd::kScattered) {
+                        const float mean = r_u.average();
+                        if (specular_only && bounces > 0 && mean > 0.0f) {
+                            sink.volume.push_back({ray.at(t_scatter),
+                                                   -glm::normalize(ray.direction), beta / mean,
+                                                   medium->phase_asymmetry(), set});
+                        }
+                        break;
+                    }
+                }
+                if (!hit) break;
+                if (si.material->is_interface()) {
+                    medium = medium_beyond(si, ray.direction, medium);
+                    ray = spawn_ray(si, ray.direction);
+                    ++crossings;
+                    continue;
+                }
+                const Bsdf* bsdf = shade(scene, ray, si, arena);
+                if (!bsdf) break;
+                const Vec3 wi = -glm::normalize(ray.direction);
+                if (!bsdf->is_delta()) {
+                    const float mean = r_u.average();
+                    if (specular_only && bounces > 0 && mean > 0.0f)
+                        sink.surface.push_back({si.p, wi, beta / mean});
+                    break;
+                }
+                if (bounces == max_bounces) break;
+                const Vec2 u(rng.next_float(), rng.next_float());
+                const std::optional<Scattering> scattering = sample_scattering(
+                    si, *bsdf, si.to_local(wi), u, rng.next_float(), TransportMode::kImportance);
+                if (!scattering) break;
+                const BsdfSample& bs = scattering->sample;
+                const Spectrum next = beta * bs.f * (abs_cos_theta(bs.wi) / bs.pdf);
+                float survive;
+                if (!survives_power_roulette(
+                        next.max_value() / beta.max_value(), [&] { return rng.next_float(); },
+                        survive))
+                    break;
+                beta = next / survive;
+                medium = medium_beyond(si, scattering->wi, medium);
+                continue_ray(ray, si, *scattering);
+                ++bounces;
+            }
+        }
+        total_rays += chunk_rays;
+    });
+    rays += total_rays.load();
+    for (MediaPhotonChunk& chunk : found) {
+        surface.insert(surface.end(), chunk.surface.begin(), chunk.surface.end());
+        volume.insert(volume.end(), chunk.volume.begin(), chunk.volume.end());
+    }
+}
+
+// Light scattered towards the camera at a point along `ray` (unit direction) in `medium`
+// before parameter t_end, straight from a light: one point on the segment and one light
+// sample there. In a homogeneous medium the point is drawn in proportion to the extinction
+// times the transmittance on the segment, one channel's chosen uniformly and weighted over
+// all channels (one-sample MIS: colour noise stays bounded in chromatic fog); in any other,
+// uniformly over the segment (which must then be finite), with the transmittance estimated.
+Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, float t_end,
+                                          const Medium& medium, Sampler& sampler, Rng& rng,
+                                          RayCounter& counter) const {
+    const float u_channel = sampler.get_1d();
+    const float u_distance = sampler.get_1d();
+    const Vec2 u_light = sampler.get_2d();
+    const float u_choose = sampler.get_1d();
+    const float u_select = sampler.get_1d();
+    float t;
+    Spectrum weight;  // transmittance to t times sigma_s there, over the density of t
+    if (medium.is_homogeneous()) {
+        const MediumPoint point = medium.at(ray.origin);
+        const Spectrum sigma_t = point.sigma_a + point.sigma_s;
+        const float sigma = sigma_t.value(choose_channel(u_channel));
+        // Inverse of the truncated exponential on [0, t_end) (t_end may be infinite).
+        const float reach = std::isinf(t_end) ? 1.0f : -std::expm1(-sigma * t_end);
+        if (sigma > 0.0f)
+            t = -std::log1p(-u_distance * reach) / sigma;
+        else if (!std::isinf(t_end))
+            t = u_distance * t_end;
+        else
+            return Spectrum(0.0f);
+        if (!(t < t_end)) return Spectrum(0.0f);
+        float pdf = 0.0f;
+        const int channels = Spectrum::active_values();
+        for (int c = 0; c < channels; ++c) {
+            const float s = sigma_t.value(c);
+            const float covered = std::isinf(t_end) ? 1.0f : -std::expm1(-s * t_end);
+            pdf += s > 0.0f ? s * std::exp(-s * t) / covered
+                            : (std::isinf(t_end) ? 0.0f : 1.0f / t_end);
+        }
+        pdf /= static_cast<float>(channels);
+        if (!(pdf > 0.0f)) return Spectrum(0.0f);
+        weight = attenuation(sigma_t, t) * point.sigma_s / pdf;
+    } else {
+        if (std::isinf(t_end)) return Spectrum(0.0f);
+        t = u_distance * t_end;
+        weight = medium.transmittance(ray, t, rng) * medium.at(ray.at(t)).sigma_s * t_end;
+    }
+    if (weight.is_black() || scene.light_sampler().empty()) return Spectrum(0.0f);
+    const Vec3 p = ray.at(t);
+    const LightPoint light = sample_light_point(scene, p, Vec3(0.0f), u_light, u_choose, u_select);
+    const std::optional<LightSample>& ls = light.sample;
+    if (!ls || ls->L.is_black() || !(ls->pdf > 0.0f) || !(light.choice.pmf > 0.0f))
+        return Spectrum(0.0f);
+    const float phase = HenyeyGreenstein(medium.phase_asymmetry()).eval(-ray.direction, ls->wi);
+    ++counter.rays;
+    const Spectrum T = transmittance(scene, Scene::ShadowRay{p, ls->p - p, ray.time}, &medium, &rng);
+    return weight * T * ls->L * (phase / (light.choice.pmf * ls->pdf));
+}
+
+// camera_sample() in a scene with media that scatter: the camera path carries its medium
+// through interfaces, mirrors and glass to the first surface that is not purely specular,
+// and on every segment through a scattering medium gathers single scattering
+// (in_scattering) and takes on the transmittance; the primary ray, up to the first surface
+// that is not an interface, gathers the volume photons. Direct light at the surface sees
+// the media its shadow ray crosses. The draws come from a PassSampler: their number varies.
+Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray,
+                                                   Sampler& sampler, Arena& arena,
+                                                   RayCounter& counter,
+                                                   HashGrid::Cache& cache) const {
+    Rng rng(stream_seed(sampler.get_1d()));
+    ray.direction = glm::normalize(ray.direction);
+    const Ray primary = ray;
+    float primary_reach = 0.0f;  // along the primary ray, to the surface being tested
+    bool on_primary = true;
+    const Medium* medium = m_media->camera;
+    Spectrum L(0.0f), beta(1.0f);
+    SurfaceInteraction si;
+    for (int segment = 0, crossings = 0; segment < kMaxCameraSegments;) {
+        ++counter.rays;
+        const bool hit = scene.intersect_surface(ray, si);
+        const float t_end = hit ? si.t : kInfinity;
+        if (medium && medium->scatters())
+            L += beta * in_scattering(scene, ray, t_end, *medium, sampler, rng, counter);
+        if (medium) beta *= medium->transmittance(ray, std::isinf(t_end) ? 1e30f : t_end, rng);
+        if (hit && on_primary) primary_reach += si.t;
+        const bool interface = hit && si.material->is_interface();
+        if (on_primary && !interface) {
+            L += m_volume_view.estimate(pixel, primary, hit ? primary_reach : kInfinity);
+            on_primary = false;
+        }
+        if (!hit) return L + beta * scene.escaped_radiance(ray.direction);
+        if (beta.is_black()) return L;
+        if (interface) {
+            medium = medium_beyond(si, ray.direction, medium);
+            ray = spawn_ray(si, ray.direction);
+            if (++crossings > kMaxCrossings) return L;
+            continue;
+        }
+        L += beta * emitted_radiance(si);
+        const Bsdf* bsdf = shade(scene, ray, si, arena);
+        if (!bsdf) return L;
+        if (bsdf->is_delta()) {
+            const std::optional<Scattering> scattering = sample_scattering(
+                si, *bsdf, si.to_local(si.wo), sampler.get_2d(), sampler.get_1d());
+            if (!scattering) return L;
+            beta *= scattering->weight;
+            medium = medium_beyond(si, scattering->wi, medium);
+            ray = spawn_specular_ray(si, ray, scattering->wi, scattering->sample.is_transmission(),
+                                     scattering->sample.eta);
+            ray.direction = glm::normalize(ray.direction);
+            ++segment;
+            continue;
+        }
+        // The first surface that is not purely specular: direct light through the media.
+        Spectrum direct(0.0f);
+        if (const std::optional<DirectLight> light = sample_direct_light(
+                scene, si, *bsdf, si.to_local(si.wo), sampler, LightWeighting::kNone)) {
+            ++counter.rays;
+            const Vec3 towards = light->target - si.p;
+            direct = light->contribution *
+                     transmittance(scene, si, light->target, medium_beyond(si, towards, medium),
+                                   &rng);
+        }
+        return L + beta * indirect_estimate(scene, si, *bsdf, direct, sampler, arena, counter,
+                                            cache);
+    }
+    return L;
+}
+
+}  // namespace glint
