@@ -199,7 +199,7 @@ TEST(VolPath, CsgSolidBoundsAMediumWithAHollow) {
 // the image: volpath's mean must equal bdpt's within four standard errors. Before r_l
 // counted the null collisions this way, volpath was 0.56 % dark here (about ten standard
 // errors).
-TEST(VolPath, CloudSingleScatteringAgreesWithBdpt) {
+TEST(VolPathSlow, CloudSingleScatteringAgreesWithBdpt) {
     const auto scene = [](const std::string& integrator, int spp) {
         return [integrator, spp](int seed) {
             return fmt::format(R"(
