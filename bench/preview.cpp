@@ -5,7 +5,8 @@
 //                       [--snapshots "0.25 1 4" --prefix OUT]
 // Prints the median ms per pass, split into the photon pass and the camera pass, the
 // frames per second that gives, and the median ms of the first pass after a camera move
-// (scene_changed(camera), a cleared film, one pass). --packets 0 traces the camera pass one
+// (scene_changed(camera), a cleared film, one pass) and after a light move (the same with
+// scene_changed(lights_or_objects): the photons are dropped). --packets 0 traces the camera pass one
 // ray at a time (the same image; to measure what the packets gain). --set takes a number, true,
 // false or else a string (e.g. --set preview_restir=off). With --snapshots, then renders
 // from no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
@@ -130,14 +131,24 @@ int run(int argc, char** argv) {
         preview.render_pass(*scene, film, 0, progress);
         moved_ms.push_back(1e3 * seconds_since(start));
     }
+    // After a light move the photons are dropped: the first pass traces a new batch alone.
+    std::vector<double> relit_ms;
+    for (int move = 0; move < moves; ++move) {
+        preview.scene_changed(SceneChange::lights_or_objects);
+        film.clear();
+        const auto start = std::chrono::steady_clock::now();
+        preview.render_pass(*scene, film, 0, progress);
+        relit_ms.push_back(1e3 * seconds_since(start));
+    }
     const double total = median(total_ms);
     fmt::print(
         "{} {}x{} threads {}: {:.1f} fps, {:.1f} ms/frame (photon pass {:.1f} ms, camera "
         "pass {:.1f} ms, display: measured in the viewer), first pass after a camera "
-        "move {:.1f} ms; CPU time per frame / threads {:.1f} ms; {} photons kept; medians "
-        "of {} passes and {} moves\n",
+        "move {:.1f} ms, after a light move {:.1f} ms; CPU time per frame / threads {:.1f} ms; "
+        "{} photons kept ({} in media); medians of {} passes and {} moves\n",
         path, width, height, used_threads, 1e3 / total, total, median(photon_ms), median(camera_ms),
-        median(moved_ms), median(cpu_ms), preview.stored_photons(), frames, moves);
+        median(moved_ms), median(relit_ms), median(cpu_ms), preview.stored_photons(),
+        preview.stored_volume_photons(), frames, moves);
 
     if (!snapshots.empty()) {
         preview.scene_changed(SceneChange::lights_or_objects);  // from no photons

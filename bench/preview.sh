@@ -3,8 +3,9 @@
 # resolution, glint_bench_preview (bench/preview.cpp) calls render_pass() as the viewer does
 # each frame and prints the median frames per second and ms per frame, split into the photon
 # pass and the camera pass (the window's display is measured in the viewer), the first pass
-# after a camera move, and the CPU time per frame divided by the threads (what the frame
-# would take on an otherwise idle machine). Then, on examples/caustics.lua at 640x480, it
+# after a camera move and after a light move, and the CPU time per frame divided by the threads
+# (what the frame would take on an otherwise idle machine); then the same for the fog of
+# examples/volumetric-caustics.lua. Then, on examples/caustics.lua at 640x480, it
 # renders from no photons for 4 s, keeps the image reached after 0.25, 1 and 4 s, and prints
 # each one's relative MSE over the caustics against a converged sppm image.
 # About 4 minutes on 2 idle cores (the sppm reference takes about half).
@@ -35,6 +36,13 @@ for scene in $SCENES; do
     for res in $RESOLUTIONS; do
         "$bench" "$scene" --res "$res" --threads "$THREADS" --frames "$FRAMES" --moves 5
     done
+done
+
+# Fog and volumetric caustics (issue 29): the frame rate at 640x480, and the viewer's first
+# pass after a camera or light move, which it renders at a quarter of the size (160x120).
+echo
+for res in 640x480 160x120; do
+    "$bench" examples/volumetric-caustics.lua --res "$res" --threads "$THREADS" --frames "$FRAMES" --moves 5
 done
 
 # The caustics of examples/caustics.lua at 640x480: the glass sphere's spot and its shadow,

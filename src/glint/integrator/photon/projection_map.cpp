@@ -3,6 +3,9 @@
 #include <glint/integrator/transport/shading.h>
 #include <glint/material/material.h>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <cmath>
 
 namespace glint {
@@ -50,25 +53,30 @@ bool ProjectionMap::supports(const Light& light) {
 template <typename Emits>
 void ProjectionMap::probe(const Scene& scene, const Vec3& origin, const Emits& emits,
                           std::vector<uint8_t>& specular) const {
-    Arena arena;
     const Vec2 probes[] = {
         {0.25f, 0.25f}, {0.75f, 0.25f}, {0.25f, 0.75f}, {0.75f, 0.75f}, {0.5f, 0.5f}};
-    for (int cell = 0; cell < kThetaCells * kPhiCells; ++cell) {
-        if (specular[cell]) continue;
-        for (const Vec2& u : probes) {
-            const Vec3 w = direction(cell, u);
-            if (!emits(w)) continue;
-            const Ray ray{origin, w};
-            auto hit = scene.intersect(ray);
-            if (!hit) continue;
-            arena.reset();
-            const Bsdf* bsdf = shade(scene, ray, *hit, arena);
-            if (bsdf && bsdf->is_delta()) {
-                specular[cell] = 1;
-                break;
-            }
-        }
-    }
+    // Cells are independent (each writes its own flag): in parallel, the same map for any
+    // thread count. A light move rebuilds the maps, so this is on the viewer's first pass.
+    tbb::parallel_for(tbb::blocked_range<int>(0, kThetaCells * kPhiCells, 256),
+                      [&](const tbb::blocked_range<int>& cells) {
+                          Arena arena;
+                          for (int cell = cells.begin(); cell < cells.end(); ++cell) {
+                              if (specular[cell]) continue;
+                              for (const Vec2& u : probes) {
+                                  const Vec3 w = direction(cell, u);
+                                  if (!emits(w)) continue;
+                                  const Ray ray{origin, w};
+                                  auto hit = scene.intersect(ray);
+                                  if (!hit) continue;
+                                  arena.reset();
+                                  const Bsdf* bsdf = shade(scene, ray, *hit, arena);
+                                  if (bsdf && bsdf->is_delta()) {
+                                      specular[cell] = 1;
+                                      break;
+                                  }
+                              }
+                          }
+                      });
 }
 
 ProjectionMap::ProjectionMap(const Scene& scene, const Light& light) {
