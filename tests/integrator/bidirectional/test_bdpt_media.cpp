@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -255,5 +256,43 @@ TEST(BdptMedia, SameBitsForOneAndTwoThreads) {
         const Image two = render_lua(scene, 2);
         ASSERT_EQ(one.pixels.size(), two.pixels.size());
         EXPECT_TRUE(one.pixels == two.pixels);
+    }
+}
+
+// A glowing gas: a sphere of medium that absorbs, scatters and emits (chromatic emission)
+// over a floor, beside a small lamp. Only the camera subpaths collect what the gas emits
+// (weighted over their channels as volpath weights it), the light subpaths scatter the
+// lamp's light in it: bdpt's and vcm's image means agree with volpath's per channel.
+TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptAndVcm) {
+    const auto glow = [](const std::string& integrator, int spp) {
+        return [integrator, spp](int seed) {
+            return fmt::format(R"(
+                local gas = glint.medium{{ sigma_a = {{1, 1.5, 2}}, sigma_s = 0.6, g = 0.2,
+                                          emission = {{2, 1, 0.4}} }}
+                glint.camera{{ eye = {{0, 1, 4}}, look_at = {{0, 0.8, 0}}, fov = 40 }}
+                glint.render{{ width = 16, height = 16, integrator = '{}', spp = {}, seed = {},
+                              max_depth = 6 }}
+                glint.quad{{ vertices = {{ {{-3, 0, -3}}, {{-3, 0, 3}}, {{3, 0, 3}}, {{3, 0, -3}} }},
+                            material = glint.diffuse{{ reflectance = 0.6 }} }}
+                glint.sphere{{ center = {{0, 0.9, 0}}, radius = 0.7,
+                              material = glint.interface{{ interior = gas }} }}
+                glint.sphere{{ center = {{1.4, 1.8, 0.5}}, radius = 0.15,
+                              material = glint.emissive{{ radiance = 10 }} }}
+            )",
+                               integrator, spp, seed);
+        };
+    };
+    constexpr int kImages = 6;
+    const std::array<Estimate, 3> volpath_mean = channel_means(glow("volpath", 2048), kImages);
+    for (const char* integrator : {"bdpt", "vcm"}) {
+        const std::array<Estimate, 3> means = channel_means(glow(integrator, 512), kImages);
+        for (int c = 0; c < 3; ++c) {
+            const Estimate& e = means[c];
+            const double se = std::hypot(e.se, volpath_mean[c].se);
+            std::printf("%s channel %d: %.5f +- %.5f, volpath %.5f +- %.5f\n", integrator, c,
+                        e.mean, e.se, volpath_mean[c].mean, volpath_mean[c].se);
+            EXPECT_LT(4.0 * se, 0.03 * volpath_mean[c].mean) << integrator << " channel " << c;
+            EXPECT_NEAR(e.mean, volpath_mean[c].mean, 4.0 * se) << integrator << " channel " << c;
+        }
     }
 }

@@ -488,6 +488,8 @@ void BdptIntegrator::render_tile(const Scene& scene, Film& film, std::span<Film>
                         }
                     }
                 }
+                // Light that media emit along the camera subpath: only it samples that.
+                if (media) L += media->emitted;
                 AovSample aov{};
                 if (film.has_aovs() && n_camera > 1) {
                     const PathVertex& first = worker.camera[1];

@@ -59,8 +59,15 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         if (media && medium) {
             Spectrum weight;
             float t_scatter = 0.0f, sigma_t = 0.0f;
+            // Emission along the segment: a camera walk collects it where the path so far
+            // (the scattering vertices before it) leaves room under max_vertices.
+            const bool collect = mode == TransportMode::kRadiance && medium->emits() &&
+                                 static_cast<int>(path.size()) + 1 < limits.max_vertices;
+            Spectrum emitted;
             const SegmentEnd end = through_medium(*medium, ray, hit ? vertex.si.t : kInfinity,
-                                                  media->hero, media->rng, weight, t_scatter, sigma_t);
+                                                  media->hero, media->rng, weight, t_scatter,
+                                                  sigma_t, collect ? &emitted : nullptr, r_u);
+            if (collect) media->emitted += beta * emitted;
             beta *= weight;
             rr_beta *= weight;
             r_u *= weight;

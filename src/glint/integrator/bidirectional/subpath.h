@@ -85,6 +85,11 @@ struct MediaWalk {
     /// weighted over its own channels: a join divides by the product of the two means of
     /// r_u, not by the mean of the product; each factor is an unbiased estimate on its own.
     bool own_hero = false;
+    /// Radiance that media emit along the camera subpath's segments, weighted as volpath
+    /// weights it (generate_camera_subpath adds it up). Only the camera subpath samples it:
+    /// no other strategy makes such a path, so it needs no MIS weight, and the integrators
+    /// add it to the pixel as it is.
+    Spectrum emitted{0.0f};
 };
 /// The media walk for one path sample (draws as MediaWalk says); none without media.
 std::optional<MediaWalk> start_media_walk(const WalkMedia* media, Sampler& sampler);

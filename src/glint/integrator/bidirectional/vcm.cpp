@@ -468,6 +468,8 @@ void VcmIntegrator::render_tile(const Scene& scene, Film& film, const Iteration&
                     L += pt.beta * f * photon.beta * (it.merge_scale * weight / r_u);
                 });
             }
+            // Light that media emit along the camera subpath: only it samples that.
+            if (walk) L += walk->emitted;
             AovSample aov{};
             if (film.has_aovs() && n_camera > 1) {
                 const PathVertex& first = camera[1];

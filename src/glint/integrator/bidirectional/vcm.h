@@ -66,6 +66,7 @@ public:
         capabilities.spectral = true;
         capabilities.motion_blur = true;       // one time per camera and light subpath pair
         capabilities.scattering_media = true;  // joins in media; merges on surfaces only
+        capabilities.emitting_media = true;    // collected by the camera subpaths (subpath.h)
         return capabilities;
     }
 

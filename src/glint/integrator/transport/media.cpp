@@ -44,7 +44,8 @@ const Medium* medium_containing(const Scene& scene, const Vec3& p) {
 
 std::optional<WalkMedia> walk_media(const Scene& scene) {
     const auto& media = scene.media();
-    if (std::none_of(media.begin(), media.end(), [](const auto& m) { return m->scatters(); }))
+    if (std::none_of(media.begin(), media.end(),
+                     [](const auto& m) { return m->scatters() || m->emits(); }))
         return std::nullopt;
     WalkMedia result;
     result.camera = scene.camera_medium();
@@ -63,8 +64,11 @@ std::optional<WalkMedia> walk_media(const Scene& scene) {
 
 
 SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
-                          Spectrum& weight, float& t_scatter, float& sigma_t) {
+                          Spectrum& weight, float& t_scatter, float& sigma_t, Spectrum* emission,
+                          const Spectrum& r_u) {
     weight = Spectrum(1.0f);
+    if (emission) *emission = Spectrum(0.0f);
+    const bool collect = emission && medium.emits();
     if (!samples_distances(medium)) {
         weight = medium.transmittance(ray, std::isinf(t_hit) ? 1e30f : t_hit, rng);
         return weight.is_black() ? SegmentEnd::kAbsorbed : SegmentEnd::kReached;
@@ -74,6 +78,13 @@ SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int
         medium, ray, t_hit, hero, rng,
         [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
             const float sigma_hero = sigma_maj.value(hero), T_hero = T.value(hero);
+            if (collect && !point.emission.is_black()) {
+                // The source sigma_a Le at a tentative collision, over the density of the
+                // collision, weighted over the channels that could have been the hero.
+                const float pdf = sigma_hero * T_hero;
+                const float r_e = (r_u * weight * sigma_maj * T / pdf).average();
+                if (r_e > 0.0f) *emission += weight * T * point.sigma_a * point.emission / (pdf * r_e);
+            }
             const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
             const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
             const float u = rng.next_float();

@@ -53,8 +53,9 @@ struct WalkMedia {
     /// emits from).
     std::vector<const Medium*> light_start;
 };
-/// The scene's media for walks that sample them; nullopt when no medium scatters (absorbing
-/// glass alone is taken at each hit, as without media, and the walks draw nothing more).
+/// The scene's media for walks that sample them; nullopt when no medium scatters or emits
+/// (absorbing glass alone is taken at each hit, as without media, and the walks draw nothing
+/// more).
 std::optional<WalkMedia> walk_media(const Scene& scene);
 
 /// How a walk's segment through a medium ended.
@@ -65,7 +66,13 @@ enum class SegmentEnd { kReached, kScattered, kAbsorbed };
 /// factor of the throughput (and of r_u: the same, volpath.cpp) to the segment's end or to
 /// its scattering point, at parameter `t_scatter`, where the extinction (mean over channels)
 /// is `sigma_t`. A medium that only absorbs is not sampled: its transmittance is the weight.
+///
+/// With `emission` (a walk from the camera through a medium that emits), it receives the
+/// radiance the medium emits along the segment towards the ray's origin, collected at every
+/// tentative collision as volpath does, over the walk's channels: the caller multiplies by
+/// the throughput at the segment's start. `r_u` is the walk's r_u there.
 SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
-                          Spectrum& weight, float& t_scatter, float& sigma_t);
+                          Spectrum& weight, float& t_scatter, float& sigma_t,
+                          Spectrum* emission = nullptr, const Spectrum& r_u = Spectrum(1.0f));
 
 }  // namespace glint
