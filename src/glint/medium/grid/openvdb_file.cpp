@@ -16,9 +16,13 @@ namespace {
 
 // A library's message made fit to print: OpenVDB quotes bytes from a corrupt file verbatim,
 // so control characters become spaces, runs of spaces one, and the length is capped.
-std::string printable(const std::string& message) {
+std::string printable(const char* message) {
     std::string result;
-    for (const char c : message) {
+    // A corrupt file can put a string of any length read from it into OpenVDB's message:
+    // look at its start only, never copying or measuring the whole of it.
+    constexpr size_t kMaxScanned = 4096;
+    for (size_t i = 0; i < kMaxScanned && message[i] != '\0'; ++i) {
+        const char c = message[i];
         const char shown = (c >= 32 && c < 127) ? c : ' ';
         if (shown == ' ' && (result.empty() || result.back() == ' ')) continue;
         result += shown;
@@ -73,7 +77,10 @@ VoxelGrid read_openvdb_grid(const std::string& path, const std::string& grid_nam
         // io::File, which reads a grid's last block leniently: a file cut short by a byte or
         // two would give garbage voxels there. The stream fails instead.
         std::istringstream stream(read_regular_file(path, "grid file"));
-        openvdb::io::Stream reader(stream);
+        // A read past the end throws at once: OpenVDB would otherwise go on with the length
+        // it failed to read (whatever was in memory) and allocate that much.
+        stream.exceptions(std::ios::failbit | std::ios::badbit);
+        openvdb::io::Stream reader(stream, /*delayLoad=*/false);
         const openvdb::GridPtrVecPtr grids = reader.getGrids();
         if (!stream) throw Error(fmt::format("grid file '{}': truncated", path));
         openvdb::FloatGrid::Ptr grid;
@@ -108,6 +115,8 @@ VoxelGrid read_openvdb_grid(const std::string& path, const std::string& grid_nam
         const std::string message = e.what();
         if (message.find(path) != std::string::npos) throw;
         throw Error(fmt::format("grid file '{}': {}", path, message));
+    } catch (const std::ios_base::failure&) {
+        throw Error(fmt::format("grid file '{}': truncated (it ends inside its grid)", path));
     } catch (const std::exception& e) {
         throw Error(fmt::format("grid file '{}': not a readable OpenVDB file: {}", path,
                                 printable(e.what())));
