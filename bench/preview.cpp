@@ -6,8 +6,8 @@
 // Prints the median ms per pass, split into the photon pass and the camera pass, the
 // frames per second that gives, and the median ms of the first pass after a camera move
 // (scene_changed(camera), a cleared film, one pass) and after a light move (the same with
-// scene_changed(lights_or_objects): the photons are dropped). --packets 0 traces the camera pass one
-// ray at a time (the same image; to measure what the packets gain). --set takes a number, true,
+// scene_changed(lights_or_objects): the photons are dropped). --packets 0 traces the camera pass
+// one ray at a time (the same image; to measure what the packets gain). --set takes a number, true,
 // false or else a string (e.g. --set preview_restir=off). With --snapshots, then renders
 // from no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
 // ended within each time t (seconds), for glint_bench_region_error.

@@ -191,7 +191,8 @@ TEST_P(CliSignal, StopsARunawayScript) {
 
 // The long phases that report no progress of their own stop too (issue 28: they ran to their
 // end first): the MLT bootstrap, photon emission for a photon map, the radiosity solve. Each
-// scene's phase takes far longer than the 5 s allowed after the signal.
+// scene's phase takes far longer than the 5 s allowed after the signal. SIGINT stops each
+// phase; SIGTERM and SIGHUP, which reach the same handler, the first.
 TEST_P(CliSignal, StopsTheLongPhasesBeforeTheTiles) {
     const int signal = GetParam();
     if (glint::test::kSanitizerBuild)
@@ -203,6 +204,9 @@ TEST_P(CliSignal, StopsTheLongPhasesBeforeTheTiles) {
         "integrator = 'radiosity', radiosity_patch_size = 4, radiosity_unshot = 1e-9",
     };
     for (const char* phase : phases) {
+        // Every signal takes the one handler: SIGINT checks each phase, the others the first
+        // (each phase costs seconds of waiting).
+        if (signal != SIGINT && phase != phases[0]) continue;
         SCOPED_TRACE(phase);
         const std::string scene = (m_root / "phase.lua").string();
         std::ofstream(scene) << glint::test::example_with_settings(

@@ -116,11 +116,10 @@ void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
     if (!capabilities.scattering_media &&
         any_medium([](const Medium& m) { return m.scatters() || m.emits(); })) {
         warn(control,
-             fmt::format(
-                 "{}: the '{}' integrator ignores participating media that "
-                 "scatter or emit (glint.medium); 'volpath', 'light', 'bdpt', 'vcm', 'mlt' "
-                 "and 'preview' render them",
-                 settings.where_of("integrator"), settings.integrator));
+             fmt::format("{}: the '{}' integrator ignores participating media that "
+                         "scatter or emit (glint.medium); 'volpath', 'light', 'bdpt', 'vcm', 'mlt' "
+                         "and 'preview' render them",
+                         settings.where_of("integrator"), settings.integrator));
     } else if (!capabilities.emitting_media &&
                any_medium([](const Medium& m) { return m.emits(); })) {
         warn(control, fmt::format("{}: the '{}' integrator ignores the light media emit "

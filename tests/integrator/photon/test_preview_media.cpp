@@ -42,7 +42,8 @@ std::string fog_without_glass(const std::string& render, const std::string& medi
                        medium, render);
 }
 
-const char* const kChromaticFog = "glint.medium{ sigma_a = 0.05, sigma_s = {0.3, 0.6, 1.2}, g = 0.3 }";
+const char* const kChromaticFog =
+    "glint.medium{ sigma_a = 0.05, sigma_s = {0.3, 0.6, 1.2}, g = 0.3 }";
 const char* const kCloud =
     "glint.medium{ type = 'cloud', min = {-1.5, 0.01, -1.5}, max = {1.5, 2.5, 1.5}, "
     "density = 3, albedo = 0.9, resolution = 24, seed = 2 }";
@@ -71,7 +72,8 @@ void expect_converges(const std::function<std::string(int)>& preview,
         for (const Image& r : references) sum += r.pixels[i];
         ref.pixels[i] = sum / kRenders;
     }
-    const double reference_noise = compare_images(references[0], references[1]).rel_mse / 2.0 / kRenders;
+    const double reference_noise =
+        compare_images(references[0], references[1]).rel_mse / 2.0 / kRenders;
     const double noise = compare_images(previews[0], previews[1]).rel_mse / 2.0;
     const double error = compare_images(previews[0], ref).rel_mse;
     std::printf("relative MSE %.5f (preview noise %.5f, reference noise %.5f)\n", error, noise,
@@ -83,8 +85,8 @@ void expect_converges(const std::function<std::string(int)>& preview,
         for (const Image& image : references) r.push_back(mean_of(image, c));
         const test::Estimate ep = test::estimate(p, 1.0), er = test::estimate(r, 1.0);
         const double sigma = std::sqrt(ep.se * ep.se + er.se * er.se);
-        std::printf("channel %d: preview %.5f +- %.5f, reference %.5f +- %.5f\n", c, ep.mean,
-                    ep.se, er.mean, er.se);
+        std::printf("channel %d: preview %.5f +- %.5f, reference %.5f +- %.5f\n", c, ep.mean, ep.se,
+                    er.mean, er.se);
         EXPECT_LT(std::abs(ep.mean - er.mean), 4.0 * sigma) << "channel " << c;
     }
 }
@@ -173,9 +175,11 @@ TEST(PreviewMediaSlow, VolumetricCausticAgreesWithBdpt) {
     constexpr int kRenders = 4;
     const std::vector<Image> previews = test::render_seeds(
         [](int seed) {
-            return volumetric_caustic(fmt::format(
-                "integrator = 'preview', spp = 64, preview_ambient = 0, preview_volume_radius = 0.02, "
-                "seed = {}", seed));
+            return volumetric_caustic(
+                fmt::format("integrator = 'preview', spp = 64, preview_ambient = 0, "
+                            "preview_volume_radius = 0.02, "
+                            "seed = {}",
+                            seed));
         },
         kRenders);
     const std::vector<Image> bdpts = test::render_seeds(
@@ -190,7 +194,8 @@ TEST(PreviewMediaSlow, VolumetricCausticAgreesWithBdpt) {
     };
     for (const Region& r : {Region{"core", 15, 12, 17, 22}, Region{"beam", 12, 8, 20, 26}}) {
         std::vector<double> p, b;
-        for (const Image& image : previews) p.push_back(region_mean(image, 1, r.x0, r.y0, r.x1, r.y1));
+        for (const Image& image : previews)
+            p.push_back(region_mean(image, 1, r.x0, r.y0, r.x1, r.y1));
         for (const Image& image : bdpts) b.push_back(region_mean(image, 1, r.x0, r.y0, r.x1, r.y1));
         const test::Estimate ep = test::estimate(p, 1.0), eb = test::estimate(b, 1.0);
         const double sigma = std::sqrt(ep.se * ep.se + eb.se * eb.se);

@@ -64,13 +64,15 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
             const bool collect = mode == TransportMode::kRadiance && medium->emits() &&
                                  static_cast<int>(path.size()) + 1 < limits.max_vertices;
             Spectrum emitted;
-            const SegmentEnd end = through_medium(*medium, ray, hit ? vertex.si.t : kInfinity,
-                                                  media->hero, media->rng, weight, t_scatter,
-                                                  sigma_t, collect ? &emitted : nullptr, r_u);
+            const SegmentEnd end =
+                through_medium(*medium, ray, hit ? vertex.si.t : kInfinity, media->hero, media->rng,
+                               weight, t_scatter, sigma_t, collect ? &emitted : nullptr, r_u);
             if (collect) media->emitted += beta * emitted;
             beta *= weight;
             rr_beta *= weight;
-            r_u *= weight;
+            // The ratios of the channels' densities change only where distances are sampled: a
+            // medium that only absorbs gives its transmittance, the same whatever the hero.
+            if (samples_distances(*medium)) r_u *= weight;
             if (end == SegmentEnd::kAbsorbed) return;
             if (end == SegmentEnd::kScattered) {
                 vertex.kind = PathVertex::Kind::kMedium;

@@ -54,7 +54,7 @@ struct VcmIntegrator::Iteration {
     const Sampler* light_sampler = nullptr;
     std::vector<std::vector<PathVertex>> light_paths;  // n_L of them
     std::vector<float> light_times;                    // each light path's scene time
-    const WalkMedia* media = nullptr;               // the scene's, null for none
+    const WalkMedia* media = nullptr;                  // the scene's, null for none
     // Merging at points in media (with media only): the light vertices there, their grid,
     // MisVertex::merge_scale there (4 r / 3) and the ball's kernel 1 / (n_L 4/3 pi r^3).
     std::vector<PhotonRef> volume_photons;

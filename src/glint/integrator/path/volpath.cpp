@@ -86,7 +86,6 @@ void add_emission(WalkState& walk, const Spectrum& Le, LightPdf&& light_pdf) {
     if (mean > 0.0f) walk.L += walk.beta * Le / mean;
 }
 
-
 }  // namespace
 
 std::unique_ptr<Integrator> VolPathIntegrator::create(const RenderSettings& settings,

@@ -190,10 +190,14 @@ void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonE
                 if (medium) {
                     Spectrum weight;
                     float t_scatter = 0.0f, sigma_t = 0.0f;
-                    const SegmentEnd segment = through_medium(*medium, ray, hit ? si.t : kInfinity,
-                                                              hero, rng, weight, t_scatter, sigma_t);
+                    const SegmentEnd segment =
+                        through_medium(*medium, ray, hit ? si.t : kInfinity, hero, rng, weight,
+                                       t_scatter, sigma_t);
                     beta *= weight;
-                    r_u *= weight;
+                    // The ratios of the channels' densities change only where distances are
+                    // sampled: a medium that only absorbs gives its transmittance, the same
+                    // whatever the hero.
+                    if (samples_distances(*medium)) r_u *= weight;
                     if (segment == SegmentEnd::kAbsorbed) break;
                     if (segment == SegmentEnd::kScattered) {
                         const float mean = r_u.average();
@@ -301,7 +305,8 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
         return Spectrum(0.0f);
     const float phase = HenyeyGreenstein(medium.phase_asymmetry()).eval(-ray.direction, ls->wi);
     ++counter.rays;
-    const Spectrum T = transmittance(scene, Scene::ShadowRay{p, ls->p - p, ray.time}, &medium, &rng);
+    const Spectrum T =
+        transmittance(scene, Scene::ShadowRay{p, ls->p - p, ray.time}, &medium, &rng);
     return weight * T * ls->L * (phase / (light.choice.pmf * ls->pdf));
 }
 
@@ -365,12 +370,11 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                 scene, si, *bsdf, si.to_local(si.wo), sampler, LightWeighting::kNone)) {
             ++counter.rays;
             const Vec3 towards = light->target - si.p;
-            direct = light->contribution *
-                     transmittance(scene, si, light->target, medium_beyond(si, towards, medium),
-                                   &rng);
+            direct = light->contribution * transmittance(scene, si, light->target,
+                                                         medium_beyond(si, towards, medium), &rng);
         }
-        return L + beta * indirect_estimate(scene, si, *bsdf, direct, sampler, arena, counter,
-                                            cache);
+        return L +
+               beta * indirect_estimate(scene, si, *bsdf, direct, sampler, arena, counter, cache);
     }
     return L;
 }

@@ -51,8 +51,8 @@ public:
     /// `scene`, which sits in `camera_medium`, for the film window at `origin` of `size`
     /// pixels, with kernel radius sqrt(radius2).
     void build(const Scene& scene, const Medium* camera_medium,
-               const std::vector<std::vector<VolumePhoton>>& batches, int only_set,
-               float radius2, Vec2i origin, Vec2i size);
+               const std::vector<std::vector<VolumePhoton>>& batches, int only_set, float radius2,
+               Vec2i origin, Vec2i size);
 
     /// The beam radiance estimate along `ray` (unit direction, from the lens) up to t_end,
     /// the distance to the first surface that is not an interface: the photons of `pixel`'s

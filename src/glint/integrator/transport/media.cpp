@@ -62,7 +62,6 @@ std::optional<WalkMedia> walk_media(const Scene& scene) {
     return result;
 }
 
-
 SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
                           Spectrum& weight, float& t_scatter, float& sigma_t, Spectrum* emission,
                           const Spectrum& r_u) {
@@ -83,7 +82,8 @@ SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int
                 // collision, weighted over the channels that could have been the hero.
                 const float pdf = sigma_hero * T_hero;
                 const float r_e = (r_u * weight * sigma_maj * T / pdf).average();
-                if (r_e > 0.0f) *emission += weight * T * point.sigma_a * point.emission / (pdf * r_e);
+                if (r_e > 0.0f)
+                    *emission += weight * T * point.sigma_a * point.emission / (pdf * r_e);
             }
             const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
             const float p_scatter = point.sigma_s.value(hero) / sigma_hero;

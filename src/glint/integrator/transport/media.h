@@ -12,8 +12,8 @@
 // media switches the ray to the medium on the side it goes to; any other surface leaves the
 // ray in the medium it was in.
 #include <glint/core/interaction.h>
-#include <glint/core/rng.h>
 #include <glint/core/medium.h>
+#include <glint/core/rng.h>
 #include <glint/material/material.h>
 
 #include <bit>
@@ -65,7 +65,8 @@ enum class SegmentEnd { kReached, kScattered, kAbsorbed };
 /// delta tracking on channel `hero`, drawing from `rng`, as volpath's. `weight` receives the
 /// factor of the throughput (and of r_u: the same, volpath.cpp) to the segment's end or to
 /// its scattering point, at parameter `t_scatter`, where the extinction (mean over channels)
-/// is `sigma_t`. A medium that only absorbs is not sampled: its transmittance is the weight.
+/// is `sigma_t`. A medium that only absorbs is not sampled: its transmittance is the weight,
+/// and (unlike a sampled medium's ratios) it is not a factor of the walk's r_u.
 ///
 /// With `emission` (a walk from the camera through a medium that emits), it receives the
 /// radiance the medium emits along the segment towards the ray's origin, collected at every
