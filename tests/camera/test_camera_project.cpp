@@ -32,12 +32,15 @@ TEST(CameraProject, PerspectiveInvertsGenerateRay) {
     const PerspectiveCamera camera(Vec3(1, 2, 3), Vec3(0, 0.5f, -1), Vec3(0, 1, 0), 50.0f,
                                    kResolution, 0.0f, 1.0f);
     expect_round_trip(camera);
+    // A copy outlives the camera (ReSTIR projects onto the previous pass's) and projects alike.
+    expect_round_trip(*camera.clone());
 }
 
 TEST(CameraProject, OrthographicInvertsGenerateRay) {
     const OrthographicCamera camera(Vec3(1, 2, 3), Vec3(0, 0.5f, -1), Vec3(0, 1, 0), 3.0f,
                                     kResolution);
     expect_round_trip(camera);
+    expect_round_trip(*camera.clone());
 }
 
 TEST(CameraProject, PointsBehindHaveNoFilmPositionAndOutsideTheFrameLieOffIt) {

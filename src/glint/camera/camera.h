@@ -142,6 +142,10 @@ public:
     /// (view/reprojection.h) and warping images by their depth (view/image_warp.h).
     virtual std::optional<FilmProjection> project(const Vec3& p) const = 0;
 
+    /// A copy of this camera, motion and all: what outlives the scene's camera when the viewer
+    /// replaces it (ReSTIR's temporal reuse projects onto the previous pass's camera).
+    virtual std::unique_ptr<Camera> clone() const = 0;
+
     // How far a point p on a surface with normal n moves per pixel step, for hits that
     // carry no ray differentials (after a bounce): pbrt-v4's approximation, which sees the
     // point from the camera as a camera ray would.
@@ -182,6 +186,9 @@ public:
     CameraPdf pdf_we(const Ray& ray) const override;
     Vec3 forward() const override { return m_forward; }
     std::optional<FilmProjection> project(const Vec3& p) const override;
+    std::unique_ptr<Camera> clone() const override {
+        return std::make_unique<PerspectiveCamera>(*this);
+    }
 
 private:
     // Where a ray leaving the lens comes from on the film, with cos theta to the forward

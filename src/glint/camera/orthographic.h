@@ -26,6 +26,9 @@ public:
     CameraPdf pdf_we(const Ray& ray) const override;
     Vec3 forward() const override { return m_forward; }
     std::optional<FilmProjection> project(const Vec3& p) const override;
+    std::unique_ptr<Camera> clone() const override {
+        return std::make_unique<OrthographicCamera>(*this);
+    }
 
     /// A_film: the area of the film rectangle, in scene units squared.
     float film_area() const { return m_half_width * m_half_height * 4.0f; }

@@ -155,13 +155,13 @@ TEST(PreviewMediaSlow, SingleScatteringInACloudMatchesVolpath) {
     expect_converges(
         [](int seed) {
             return fog_without_glass(
-                fmt::format("integrator = 'preview', spp = 256, preview_ambient = 0, seed = {}",
+                fmt::format("integrator = 'preview', spp = 128, preview_ambient = 0, seed = {}",
                             seed),
                 kCloud);
         },
         [](int seed) {
             return fog_without_glass(
-                fmt::format("integrator = 'volpath', spp = 512, max_depth = 1, seed = {}", seed),
+                fmt::format("integrator = 'volpath', spp = 256, max_depth = 1, seed = {}", seed),
                 kCloud);
         },
         0.0005);
@@ -176,8 +176,8 @@ TEST(PreviewMediaSlow, VolumetricCausticAgreesWithBdpt) {
     const std::vector<Image> previews = test::render_seeds(
         [](int seed) {
             return volumetric_caustic(
-                fmt::format("integrator = 'preview', spp = 64, preview_ambient = 0, "
-                            "preview_volume_radius = 0.02, "
+                fmt::format("integrator = 'preview', spp = 64, preview_photons = 10000, "
+                            "preview_ambient = 0, preview_volume_radius = 0.02, "
                             "seed = {}",
                             seed));
         },

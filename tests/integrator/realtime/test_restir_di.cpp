@@ -184,27 +184,6 @@ TEST(RestirDi, SameImageForOneAndTwoThreads) {
     }
 }
 
-// The projection built from three camera rays puts points where the camera's own
-// connection to the lens centre does.
-TEST(RestirDi, ProjectionMatchesTheCamera) {
-    const test::BuiltScene b = test::build_lua(lights_scene("integrator = 'preview'"));
-    const PinholeProjection projection(b.scene->camera());
-    ASSERT_TRUE(projection.valid());
-    int checked = 0;
-    for (const Vec3 p :
-         {Vec3(0.0f), Vec3(1.0f, 0.5f, -1.0f), Vec3(-2.0f, 0.0f, 1.5f), Vec3(0.3f, 1.2f, 0.2f)}) {
-        const std::optional<CameraWiSample> wi = b.scene->camera().sample_wi(p, Vec2(0.5f));
-        const std::optional<Vec2> film = projection.film_point(p);
-        if (!wi) continue;
-        ASSERT_TRUE(film.has_value());
-        EXPECT_NEAR(film->x, wi->film.x, 1e-2f);
-        EXPECT_NEAR(film->y, wi->film.y, 1e-2f);
-        ++checked;
-    }
-    EXPECT_GE(checked, 3);
-    EXPECT_FALSE(projection.film_point(Vec3(0.0f, 3.0f, 7.0f)).has_value());  // behind the eye
-}
-
 TEST(RestirDi, BadSettingsNameTheKey) {
     for (const std::string& bad :
          {std::string("preview_restir = 'fast'"), std::string("preview_restir_candidates = 0"),

@@ -199,75 +199,38 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
     }
 }
 
-// The particle's segment through its medium up to t_hit: absorbed (kEnded), scattered at a
-// collision (kScattered: connected to the lens there, its ray turned by the phase function),
-// or across to t_hit with its throughput and ratios carried (kCrossed). Distances come from
-// delta tracking on the hero channel; a medium that only absorbs is not sampled.
+// The particle's segment through its medium up to t_hit, by delta tracking on its hero
+// channel (transport/media.h): absorbed (kEnded), across to t_hit with its throughput and
+// ratios carried (kCrossed), or scattered at a collision (kScattered), where the light path
+// has a vertex: it connects to the lens there, then the phase function turns the ray
+// (exactly sampled, so the throughput keeps its value).
 LightTracer::MediumEvent LightTracer::through_medium(const Scene& scene, Particle& particle,
                                                      float t_hit, Chunk& chunk) const {
     const Medium& medium = *particle.medium;
-    if (!samples_distances(medium)) {
-        const float t = std::isinf(t_hit) ? 1e30f : t_hit;
-        particle.beta *= medium.transmittance(particle.ray, t, chunk.rng);
-        return particle.beta.is_black() ? MediumEvent::kEnded : MediumEvent::kCrossed;
-    }
-    MediumEvent event = MediumEvent::kCrossed;
-    const Spectrum T_maj = sample_collisions(
-        medium, particle.ray, t_hit, particle.hero, chunk.rng,
-        [&](float t, const MediumPoint& point, const Spectrum& sigma_maj, const Spectrum& T) {
-            event = collide(scene, particle, t, point, sigma_maj, T, chunk);
-            return event == MediumEvent::kCrossed;
-        });
-    if (event != MediumEvent::kCrossed) return event;
-    const float T_hero = T_maj.value(particle.hero);
-    if (!(T_hero > 0.0f)) return MediumEvent::kEnded;
-    particle.beta *= T_maj / T_hero;
-    particle.r_u *= T_maj / T_hero;
-    return MediumEvent::kCrossed;
-}
-
-// A tentative collision at parameter t of the particle's ray: absorption, real scattering
-// or a null collision, chosen with the hero channel's probabilities (as volpath's collide).
-// A real scattering is a vertex of the light path: it connects to the lens, then the phase
-// function turns the ray (exactly sampled, so the throughput keeps its value).
-LightTracer::MediumEvent LightTracer::collide(const Scene& scene, Particle& particle, float t,
-                                              const MediumPoint& point, const Spectrum& sigma_maj,
-                                              const Spectrum& T, Chunk& chunk) const {
-    const int hero = particle.hero;
-    const float sigma_hero = sigma_maj.value(hero);
-    const float T_hero = T.value(hero);
-    const float p_absorb = point.sigma_a.value(hero) / sigma_hero;
-    const float p_scatter = point.sigma_s.value(hero) / sigma_hero;
-    const float u = chunk.rng.next_float();
-    if (u < p_absorb) return MediumEvent::kEnded;
-    if (u < p_absorb + p_scatter) {
-        const float pdf = T_hero * point.sigma_s.value(hero);
-        particle.beta *= T * point.sigma_s / pdf;
-        particle.r_u *= T * point.sigma_s / pdf;
-        if (particle.beta.is_black() || particle.r_u.is_black()) return MediumEvent::kEnded;
-        const Vec3 p = particle.ray.at(t);
-        const Vec3 wi_arrival = glm::normalize(particle.ray.direction);
-        const Vec2 u_lens = chunk.next_2d();
-        const std::optional<CameraConnection> connection = connect_medium_point_to_camera(
-            scene, p, wi_arrival, particle.ray.time, *particle.medium, particle.splat_weight(),
-            u_lens, chunk.rays, &chunk.rng);
-        if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
-        if (particle.bounce++ == particle.max_bounces) return MediumEvent::kEnded;
-        // The phase function's arguments point away from p: -wi_arrival is where the light
-        // came from, and the sample is where it goes.
-        const HenyeyGreenstein phase(particle.medium->phase_asymmetry());
-        const PhaseSample next = phase.sample(-wi_arrival, chunk.next_2d());
-        particle.ray = Ray{p, next.wi, 0.0f, kInfinity, particle.ray.time};
-        return MediumEvent::kScattered;
-    }
-    // A null collision: the ray goes on, each channel weighted by its null share.
-    const Spectrum sigma_n = (sigma_maj - point.sigma_a - point.sigma_s).clamped(0.0f, kInfinity);
-    const float pdf = T_hero * sigma_n.value(hero);
-    if (!(pdf > 0.0f)) return MediumEvent::kEnded;
-    particle.beta *= T * sigma_n / pdf;
-    particle.r_u *= T * sigma_n / pdf;
-    return particle.beta.is_black() || particle.r_u.is_black() ? MediumEvent::kEnded
-                                                               : MediumEvent::kCrossed;
+    Spectrum weight;
+    float t = 0.0f, sigma_t = 0.0f;
+    const SegmentEnd end = glint::through_medium(medium, particle.ray, t_hit, particle.hero,
+                                                 chunk.rng, weight, t, sigma_t);
+    particle.beta *= weight;
+    // A medium that only absorbs changes no ratio between the channels' densities.
+    if (samples_distances(medium)) particle.r_u *= weight;
+    if (end == SegmentEnd::kAbsorbed || particle.beta.is_black() || particle.r_u.is_black())
+        return MediumEvent::kEnded;
+    if (end == SegmentEnd::kReached) return MediumEvent::kCrossed;
+    const Vec3 p = particle.ray.at(t);
+    const Vec3 wi_arrival = glm::normalize(particle.ray.direction);
+    const Vec2 u_lens = chunk.next_2d();
+    const std::optional<CameraConnection> connection =
+        connect_medium_point_to_camera(scene, p, wi_arrival, particle.ray.time, medium,
+                                       particle.splat_weight(), u_lens, chunk.rays, &chunk.rng);
+    if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
+    if (particle.bounce++ == particle.max_bounces) return MediumEvent::kEnded;
+    // The phase function's arguments point away from p: -wi_arrival is where the light came
+    // from, and the sample is where it goes.
+    const HenyeyGreenstein phase(medium.phase_asymmetry());
+    const PhaseSample next = phase.sample(-wi_arrival, chunk.next_2d());
+    particle.ray = Ray{p, next.wi, 0.0f, kInfinity, particle.ray.time};
+    return MediumEvent::kScattered;
 }
 
 // The strategy that sees a non-specular surface lit by the path: the surface point

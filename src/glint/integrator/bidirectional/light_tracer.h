@@ -49,8 +49,6 @@ private:
     void trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const;
     MediumEvent through_medium(const Scene& scene, Particle& particle, float t_hit,
                                Chunk& chunk) const;
-    MediumEvent collide(const Scene& scene, Particle& particle, float t, const MediumPoint& point,
-                        const Spectrum& sigma_maj, const Spectrum& T, Chunk& chunk) const;
     void connect_to_camera(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
                            const Particle& particle, const Vec2& u_lens, Chunk& chunk) const;
     void connect_light_to_camera(const Scene& scene, const LightEmission& emission,

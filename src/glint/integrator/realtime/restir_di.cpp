@@ -65,41 +65,6 @@ RestirMode restir_mode_named(const std::string& name) {
         fmt::format("unknown ReSTIR mode '{}' (expected 'unbiased', 'biased' or 'off')", name));
 }
 
-PinholeProjection::PinholeProjection(const Camera& camera) {
-    const Vec2 centre(0.5f);
-    const Ray r00 = camera.generate_ray(Vec2(0.0f, 0.0f), centre);
-    const Ray r10 = camera.generate_ray(Vec2(1.0f, 0.0f), centre);
-    const Ray r01 = camera.generate_ray(Vec2(0.0f, 1.0f), centre);
-    // A pinhole's rays share their origin; an orthographic camera's do not.
-    const float scale = 1e-4f * (1.0f + glm::length(r00.origin));
-    if (glm::length(r10.origin - r00.origin) > scale ||
-        glm::length(r01.origin - r00.origin) > scale)
-        return;
-    m_eye = r00.origin;
-    m_forward = camera.forward();
-    // The directions scaled onto the plane at distance 1 along the view: film positions map
-    // affinely onto it.
-    auto on_plane = [&](const Vec3& d) { return d / glm::dot(d, m_forward); };
-    m_origin = on_plane(r00.direction);
-    m_dx = on_plane(r10.direction) - m_origin;
-    m_dy = on_plane(r01.direction) - m_origin;
-    m_valid = glm::length(m_dx) > 0.0f && glm::length(m_dy) > 0.0f;
-}
-
-std::optional<Vec2> PinholeProjection::film_point(const Vec3& p) const {
-    if (!m_valid) return std::nullopt;
-    const Vec3 v = p - m_eye;
-    const float along = glm::dot(v, m_forward);
-    if (!(along > 0.0f)) return std::nullopt;
-    const Vec3 q = v / along - m_origin;
-    // q = x dx + y dy, solved by the normal equations (dx and dy are nearly orthogonal).
-    const float a = glm::dot(m_dx, m_dx), b = glm::dot(m_dx, m_dy), c = glm::dot(m_dy, m_dy);
-    const float det = a * c - b * b;
-    if (!(std::abs(det) > 0.0f)) return std::nullopt;
-    const float qx = glm::dot(q, m_dx), qy = glm::dot(q, m_dy);
-    return Vec2((c * qx - b * qy) / det, (a * qy - b * qx) / det);
-}
-
 float RestirDi::target_of(const Spectrum& contribution) {
     const float y = contribution.luminance();
     return y > 0.0f && std::isfinite(y) ? y : 0.0f;
@@ -164,8 +129,8 @@ void RestirDi::begin_pass(const Scene& scene, int width, int height, Vec2i origi
                                      static_cast<float>(height) * static_cast<float>(height));
     m_radius =
         m_settings.radius > 0.0f ? m_settings.radius : std::clamp(diagonal / 64.0f, 3.0f, 30.0f);
-    m_previous_projection = m_projection;
-    m_projection = PinholeProjection(scene.camera());
+    m_previous_camera = std::move(m_camera);
+    m_camera = scene.camera().clone();
 }
 
 void RestirDi::end_pass() {
@@ -286,15 +251,17 @@ void RestirDi::generate(const Scene& scene, int x, int y, Sampler& sampler, RayC
 
     if (m_history && s.seen_directly) {
         const int previous = m_current ^ 1;
-        if (const std::optional<Vec2> film = m_previous_projection.film_point(s.p)) {
-            const int px = static_cast<int>(std::floor(film->x)) - m_origin.x;
-            const int py = static_cast<int>(std::floor(film->y)) - m_origin.y;
+        const std::optional<FilmProjection> projected =
+            m_previous_camera ? m_previous_camera->project(s.p) : std::nullopt;
+        if (projected) {
+            const int px = static_cast<int>(std::floor(projected->film.x)) - m_origin.x;
+            const int py = static_cast<int>(std::floor(projected->film.y)) - m_origin.y;
             if (px >= 0 && py >= 0 && px < m_width && py < m_height) {
                 const size_t j = index(px, py);
                 const ReuseSurface& ps = m_surfaces[previous][j];
                 // The depth the previous pass would have seen this point at.
                 ReuseSurface expected = s;
-                expected.depth = glm::length(s.p - m_previous_projection.eye());
+                expected.depth = projected->depth;
                 if (ps.seen_directly && similar(expected, ps)) {
                     LightReservoir history = m_final[previous][j];
                     history.count =

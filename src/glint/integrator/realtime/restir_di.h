@@ -86,24 +86,6 @@ struct ReuseSurface {
     bool seen_directly = false;  ///< reached without mirrors or glass (temporal reuse needs it)
 };
 
-/// Where a point lands on the film of a pinhole camera (a thin lens's centre): the film
-/// position, in pixels, of the ray from the eye through the point. Built from three of the
-/// camera's rays, so that it outlives the camera (the viewer replaces the camera when it
-/// moves, and the previous pass's projection is what temporal reuse needs).
-class PinholeProjection {
-public:
-    PinholeProjection() = default;
-    explicit PinholeProjection(const Camera& camera);
-    /// nullopt behind the eye, or when the camera is not a pinhole (orthographic).
-    std::optional<Vec2> film_point(const Vec3& p) const;
-    const Vec3& eye() const { return m_eye; }
-    bool valid() const { return m_valid; }
-
-private:
-    Vec3 m_eye{0.0f}, m_forward{0.0f}, m_origin{0.0f}, m_dx{0.0f}, m_dy{0.0f};
-    bool m_valid = false;
-};
-
 class RestirDi {
 public:
     using LightReservoir = Reservoir<LightCandidate>;
@@ -172,7 +154,9 @@ private:
     float m_radius = 3.0f;  // of spatial reuse, in pixels
     int m_current = 0;
     bool m_history = false;
-    PinholeProjection m_projection, m_previous_projection;
+    // This pass's camera and the previous pass's (copies: the viewer replaces the scene's
+    // camera when it moves), onto which temporal reuse projects (Camera::project).
+    std::unique_ptr<Camera> m_camera, m_previous_camera;
     std::vector<ReuseSurface> m_surfaces[2];
     std::vector<LightReservoir> m_temporal;  // after the first stage
     std::vector<LightReservoir> m_final[2];  // after spatial reuse; [previous] is the history
