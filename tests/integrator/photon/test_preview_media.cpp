@@ -149,6 +149,26 @@ TEST(PreviewMediaSlow, SingleScatteringInChromaticFogMatchesVolpath) {
         0.0005);
 }
 
+// Spectral mode: each pass's camera paths carry one set of wavelengths, at which the fog's
+// coefficients and the transmittance are taken (volpath's paths each their own set).
+TEST(PreviewMediaSlow, SpectralSingleScatteringMatchesVolpath) {
+    expect_converges(
+        [](int seed) {
+            return fog_without_glass(fmt::format("integrator = 'preview', spp = 256, "
+                                                 "preview_ambient = 0, spectral = true, seed = {}",
+                                                 seed),
+                                     kChromaticFog);
+        },
+        [](int seed) {
+            return fog_without_glass(
+                fmt::format(
+                    "integrator = 'volpath', spp = 256, max_depth = 1, spectral = true, seed = {}",
+                    seed),
+                kChromaticFog);
+        },
+        0.0005);
+}
+
 // The same in a procedural cloud: points along the camera rays are drawn uniformly and the
 // transmittance estimated by ratio tracking.
 TEST(PreviewMediaSlow, SingleScatteringInACloudMatchesVolpath) {
@@ -171,21 +191,23 @@ TEST(PreviewMediaSlow, SingleScatteringInACloudMatchesVolpath) {
 // beam's edges (where the estimate's radius blurs it): the beam's core, and the whole beam
 // with its blur, agree within four standard errors plus 2 % for what the two leave out
 // differently (light reflected inside the glass) and for the radius' blur at the core.
-TEST(PreviewMediaSlow, VolumetricCausticAgreesWithBdpt) {
+// The beam's core and the whole beam of volumetric_caustic(): the preview's and bdpt's
+// means (green) over four renders each, within four standard errors plus 2 %.
+static void expect_beam_agrees_with_bdpt(bool spectral) {
     constexpr int kRenders = 4;
+    const char* const mode = spectral ? "spectral = true, " : "";
     const std::vector<Image> previews = test::render_seeds(
-        [](int seed) {
+        [&](int seed) {
             return volumetric_caustic(
                 fmt::format("integrator = 'preview', spp = 64, preview_photons = 10000, "
-                            "preview_ambient = 0, preview_volume_radius = 0.02, "
-                            "seed = {}",
-                            seed));
+                            "preview_ambient = 0, preview_volume_radius = 0.02, {}seed = {}",
+                            mode, seed));
         },
         kRenders);
     const std::vector<Image> bdpts = test::render_seeds(
-        [](int seed) {
-            return volumetric_caustic(
-                fmt::format("integrator = 'bdpt', spp = 1024, max_depth = 3, seed = {}", seed));
+        [&](int seed) {
+            return volumetric_caustic(fmt::format(
+                "integrator = 'bdpt', spp = 1024, max_depth = 3, {}seed = {}", mode, seed));
         },
         kRenders);
     struct Region {
@@ -199,11 +221,21 @@ TEST(PreviewMediaSlow, VolumetricCausticAgreesWithBdpt) {
         for (const Image& image : bdpts) b.push_back(region_mean(image, 1, r.x0, r.y0, r.x1, r.y1));
         const test::Estimate ep = test::estimate(p, 1.0), eb = test::estimate(b, 1.0);
         const double sigma = std::sqrt(ep.se * ep.se + eb.se * eb.se);
-        std::printf("%s: preview %.5f +- %.5f, bdpt %.5f +- %.5f\n", r.name, ep.mean, ep.se,
+        std::printf("%s%s: preview %.5f +- %.5f, bdpt %.5f +- %.5f\n", mode, r.name, ep.mean, ep.se,
                     eb.mean, eb.se);
         EXPECT_GT(eb.mean, 0.0) << r.name;
         EXPECT_LT(std::abs(ep.mean - eb.mean), 4.0 * sigma + 0.02 * eb.mean) << r.name;
     }
+}
+
+TEST(PreviewMediaSlow, VolumetricCausticAgreesWithBdpt) {
+    expect_beam_agrees_with_bdpt(false);
+}
+
+// Spectral mode: the volume photons carry their pass's wavelengths, and the transmittance
+// from the lens to each is taken at them.
+TEST(PreviewMediaSlow, SpectralVolumetricCausticAgreesWithBdpt) {
+    expect_beam_agrees_with_bdpt(true);
 }
 
 // The volume photons are traced in chunks and binned in their order: the same image for

@@ -583,7 +583,8 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     if (m_media) {
         m_volume_view.build(scene, m_media->camera, m_volume_batches,
                             m_settings.spectral ? m_photon_passes - 1 : -1, m_volume_radius2,
-                            film.origin(), Vec2i(film.width(), film.height()));
+                            film.origin(), Vec2i(film.width(), film.height()),
+                            m_settings.spectral ? &m_pass_wavelengths : nullptr);
     }
     m_timing.photons = seconds_since(start);
 

@@ -38,7 +38,8 @@ int choose_channel(float u) {
 
 void VolumePhotonView::build(const Scene& scene, const Medium* camera_medium,
                              const std::vector<std::vector<VolumePhoton>>& batches, int only_set,
-                             float radius2, Vec2i origin, Vec2i size) {
+                             float radius2, Vec2i origin, Vec2i size,
+                             const WavelengthContext* wavelengths) {
     m_photons.clear();
     m_origin = origin;
     m_radius2 = radius2;
@@ -65,6 +66,8 @@ void VolumePhotonView::build(const Scene& scene, const Medium* camera_medium,
     };
     std::vector<Footprint> footprints(all.size());
     tbb::parallel_for(size_t{0}, all.size(), [&](size_t i) {
+        std::optional<WavelengthScope> scope;
+        if (wavelengths != nullptr) scope.emplace(*wavelengths);
         const VolumePhoton& photon = *all[i];
         const std::optional<FilmProjection> centre = camera.project(photon.p);
         if (!centre) return;

@@ -46,13 +46,14 @@ class VolumePhotonView {
 public:
     static constexpr int kTile = 16;  ///< pixels per tile side
 
-    /// Sees `batches` (each an estimate on its own; `batches_used` of them are read, in
-    /// spectral mode only set `only_set`, else every set: pass -1) from the camera of
-    /// `scene`, which sits in `camera_medium`, for the film window at `origin` of `size`
-    /// pixels, with kernel radius sqrt(radius2).
+    /// Sees `batches` (each an estimate on its own; in spectral mode only the photons of set
+    /// `only_set` are read, else every set: pass -1) from the camera of `scene`, which sits
+    /// in `camera_medium`, for the film window at `origin` of `size` pixels, with kernel
+    /// radius sqrt(radius2). In spectral mode `wavelengths` are the photons' (the lens
+    /// transmittance is taken at them); nullptr in RGB mode.
     void build(const Scene& scene, const Medium* camera_medium,
                const std::vector<std::vector<VolumePhoton>>& batches, int only_set, float radius2,
-               Vec2i origin, Vec2i size);
+               Vec2i origin, Vec2i size, const WavelengthContext* wavelengths);
 
     /// The beam radiance estimate along `ray` (unit direction, from the lens) up to t_end,
     /// the distance to the first surface that is not an interface: the photons of `pixel`'s
