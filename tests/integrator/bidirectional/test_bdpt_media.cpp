@@ -261,9 +261,10 @@ TEST(BdptMedia, SameBitsForOneAndTwoThreads) {
 
 // A glowing gas: a sphere of medium that absorbs, scatters and emits (chromatic emission)
 // over a floor, beside a small lamp. Only the camera subpaths collect what the gas emits
-// (weighted over their channels as volpath weights it), the light subpaths scatter the
-// lamp's light in it: bdpt's and vcm's image means agree with volpath's per channel.
-TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptAndVcm) {
+// (weighted over their channels as volpath weights it; mlt's s = 0 states, each its depth's
+// segment), the light subpaths scatter the lamp's light in it: bdpt's, vcm's and mlt's image
+// means agree with volpath's per channel.
+TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptVcmAndMlt) {
     const auto glow = [](const std::string& integrator, int spp) {
         return [integrator, spp](int seed) {
             return fmt::format(R"(
@@ -284,14 +285,19 @@ TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptAndVcm) {
     };
     constexpr int kImages = 6;
     const std::array<Estimate, 3> volpath_mean = channel_means(glow("volpath", 2048), kImages);
-    for (const char* integrator : {"bdpt", "vcm"}) {
-        const std::array<Estimate, 3> means = channel_means(glow(integrator, 512), kImages);
+    for (const char* integrator : {"bdpt", "vcm", "mlt"}) {
+        // mlt's image brightness varies from render to render with its normalisation (the
+        // bootstrap's estimate of the image's total), so its means are less precise.
+        const bool mlt = std::string(integrator) == "mlt";
+        const std::array<Estimate, 3> means =
+            channel_means(glow(integrator, mlt ? 2048 : 512), kImages);
         for (int c = 0; c < 3; ++c) {
             const Estimate& e = means[c];
             const double se = std::hypot(e.se, volpath_mean[c].se);
             std::printf("%s channel %d: %.5f +- %.5f, volpath %.5f +- %.5f\n", integrator, c,
                         e.mean, e.se, volpath_mean[c].mean, volpath_mean[c].se);
-            EXPECT_LT(4.0 * se, 0.03 * volpath_mean[c].mean) << integrator << " channel " << c;
+            EXPECT_LT(4.0 * se, (mlt ? 0.08 : 0.03) * volpath_mean[c].mean)
+                << integrator << " channel " << c;
             EXPECT_NEAR(e.mean, volpath_mean[c].mean, 4.0 * se) << integrator << " channel " << c;
         }
     }

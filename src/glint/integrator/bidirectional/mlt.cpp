@@ -113,6 +113,11 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     // too (a mutation of the seed draws a new stream: those steps are large ones).
     std::optional<MediaWalk> media_walk = start_media_walk(media, sampler);
     MediaWalk* const walk = media_walk ? &*media_walk : nullptr;
+    // The glow of emitting media along the camera subpath belongs to the s = 0 strategy: no
+    // other strategy makes those paths. The emitting point counts as a vertex, as in volpath
+    // and bdpt (glow after k scatterings is a path of k + 1 bounces): depth d takes the
+    // segment after d - 1 scattering vertices, and depth 0 none.
+    if (walk) walk->emission_depth = s == 0 && depth > 0 ? depth - 1 : MediaWalk::kNoDepth;
     // No roulette: the depth is fixed, and roulette would only add variance.
     generate_camera_subpath(scene, ray, sampler, ws.arena, ws.counter, WalkLimits{t, false},
                             ws.camera, walk);
@@ -127,8 +132,9 @@ MltSample MltIntegrator::evaluate(const Scene& scene, PssSampler& sampler, int d
     const StrategyContribution c =
         connect_strategy(scene, ws.light, ws.camera, s, t, sampler, ws.counter,
                          MisHeuristic::kBalance, ws.scratch, 0.0f, 1.0f, walk);
-    if (c.L.is_black()) return result;
-    result.L = to_rgb(c.L * static_cast<float>(strategies));
+    const Spectrum L = walk ? c.L + walk->emitted : c.L;
+    if (L.is_black()) return result;
+    result.L = to_rgb(L * static_cast<float>(strategies));
     result.film = c.splat ? c.film : film_point;
     return result;
 }

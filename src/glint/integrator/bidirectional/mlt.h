@@ -72,6 +72,7 @@ public:
         capabilities.motion_blur = true;       // the path's time is a dimension of its state
         capabilities.spectral = true;          // and so is its hero wavelength
         capabilities.scattering_media = true;  // subpaths in media (subpath.h)
+        capabilities.emitting_media = true;    // the s = 0 states collect it (evaluate())
         return capabilities;
     }
 

@@ -61,8 +61,11 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
             float t_scatter = 0.0f, sigma_t = 0.0f;
             // Emission along the segment: a camera walk collects it where the path so far
             // (the scattering vertices before it) leaves room under max_vertices.
-            const bool collect = mode == TransportMode::kRadiance && medium->emits() &&
-                                 static_cast<int>(path.size()) + 1 < limits.max_vertices;
+            const int depth = static_cast<int>(path.size()) - 1;  // scattering vertices so far
+            const bool collect =
+                mode == TransportMode::kRadiance && medium->emits() &&
+                (media->emission_depth == MediaWalk::kEveryDepth ? depth + 2 < limits.max_vertices
+                                                                 : depth == media->emission_depth);
             Spectrum emitted;
             const SegmentEnd end =
                 through_medium(*medium, ray, hit ? vertex.si.t : kInfinity, media->hero, media->rng,

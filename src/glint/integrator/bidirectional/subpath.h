@@ -90,6 +90,12 @@ struct MediaWalk {
     /// no other strategy makes such a path, so it needs no MIS weight, and the integrators
     /// add it to the pixel as it is.
     Spectrum emitted{0.0f};
+    /// Which segments of the camera subpath collect `emitted`: kEveryDepth, every segment
+    /// with room under WalkLimits::max_vertices for one more vertex (bdpt, vcm); a depth
+    /// d >= 0, only the segment after d scattering vertices (mlt's s = 0 state of depth d);
+    /// kNoDepth, none.
+    static constexpr int kEveryDepth = -1, kNoDepth = -2;
+    int emission_depth = kEveryDepth;
 };
 /// The media walk for one path sample (draws as MediaWalk says); none without media.
 std::optional<MediaWalk> start_media_walk(const WalkMedia* media, Sampler& sampler);
