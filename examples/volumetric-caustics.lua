@@ -7,6 +7,9 @@
 -- beam at once (`glint render examples/volumetric-caustics.lua --integrator light`), but
 -- cannot see the glass itself; bdpt does both (`--integrator bdpt`: the beam, the glass
 -- and the caustic seen through it). bench/volumetric_caustics.sh compares the three.
+-- In the viewer, `glint view examples/volumetric-caustics.lua --integrator preview` shows the
+-- fog and the beam in real time: move the light and the beam follows (single scattering and
+-- the volume photons' beam estimate, docs/integrators.md).
 local fog = glint.medium{ density = 0.1, albedo = 0.9, g = 0.4 }
 local glass = glint.dielectric{ ior = 1.5 }
 local floor = glint.diffuse{ reflectance = 0.6 }
