@@ -123,23 +123,22 @@ int run(int argc, char** argv) {
         photon_ms.push_back(1e3 * preview.last_pass_timing().photons);
         camera_ms.push_back(1e3 * preview.last_pass_timing().camera);
     }
-    // What the viewer does after a camera move: keep the photons, clear the film, one pass.
-    for (int move = 0; move < moves; ++move) {
-        preview.scene_changed(SceneChange::camera);
-        film.clear();
-        const auto start = std::chrono::steady_clock::now();
-        preview.render_pass(*scene, film, 0, progress);
-        moved_ms.push_back(1e3 * seconds_since(start));
-    }
-    // After a light move the photons are dropped: the first pass traces a new batch alone.
-    std::vector<double> relit_ms;
-    for (int move = 0; move < moves; ++move) {
-        preview.scene_changed(SceneChange::lights_or_objects);
-        film.clear();
-        const auto start = std::chrono::steady_clock::now();
-        preview.render_pass(*scene, film, 0, progress);
-        relit_ms.push_back(1e3 * seconds_since(start));
-    }
+    // What the viewer does after a change: tell the integrator, clear the film, one pass. A
+    // camera move keeps the photons; after a light move they are dropped, and the first pass
+    // traces a new batch alone.
+    const auto first_passes_after = [&](SceneChange change) {
+        std::vector<double> ms;
+        for (int move = 0; move < moves; ++move) {
+            preview.scene_changed(change);
+            film.clear();
+            const auto start = std::chrono::steady_clock::now();
+            preview.render_pass(*scene, film, 0, progress);
+            ms.push_back(1e3 * seconds_since(start));
+        }
+        return ms;
+    };
+    moved_ms = first_passes_after(SceneChange::camera);
+    const std::vector<double> relit_ms = first_passes_after(SceneChange::lights_or_objects);
     const double total = median(total_ms);
     fmt::print(
         "{} {}x{} threads {}: {:.1f} fps, {:.1f} ms/frame (photon pass {:.1f} ms, camera "

@@ -310,26 +310,14 @@ TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptVcmAndMlt) {
 TEST(BdptMediaSlow, TintedGlassInFogAgreesWithVolpath) {
     const auto scene = [](const std::string& integrator, int spp) {
         return [integrator, spp](int seed) {
-            return fmt::format(R"(
-                local fog = glint.medium{{ sigma_a = 0.02, sigma_s = 0.3, g = 0.3 }}
-                local ink = glint.medium{{ sigma_a = {{0.2, 2.0, 6.0}} }}
-                glint.camera{{ eye = {{0, 1, 4}}, look_at = {{0, 0.9, 0}}, fov = 45 }}
-                glint.render{{ width = 16, height = 16, integrator = '{}', spp = {}, seed = {},
-                              max_depth = 8 }}
-                glint.box{{ min = {{-1.5, 0.01, -1.5}}, max = {{1.5, 2.5, 1.5}},
-                           material = glint.interface{{ interior = fog }} }}
-                glint.quad{{ vertices = {{ {{-2, 0, -2}}, {{-2, 0, 2}}, {{2, 0, 2}}, {{2, 0, -2}} }},
-                            material = glint.diffuse{{ reflectance = 0.6 }} }}
-                glint.quad{{ vertices = {{ {{-3, 0, -2}}, {{3, 0, -2}}, {{3, 4, -2}}, {{-3, 4, -2}} }},
-                            material = glint.diffuse{{ reflectance = 0.5 }} }}
-                glint.sphere{{ center = {{0, 0.8, 0}}, radius = 0.5,
-                              material = glint.dielectric{{ ior = 1.5, interior = ink,
-                                                           exterior = fog }} }}
-                glint.quad{{ vertices = {{ {{-0.3, 1.9, -0.3}}, {{0.3, 1.9, -0.3}}, {{0.3, 1.9, 0.3}},
-                                          {{-0.3, 1.9, 0.3}} }},
-                            material = glint.emissive{{ radiance = 20, two_sided = true }} }}
-            )",
-                               integrator, spp, seed);
+            return fog_room(
+                "local fog = glint.medium{ sigma_a = 0.02, sigma_s = 0.3, g = 0.3 }\n"
+                "local ink = glint.medium{ sigma_a = {0.2, 2.0, 6.0} }",
+                fmt::format("width = 16, height = 16, integrator = '{}', spp = {}, seed = {}, "
+                            "max_depth = 8",
+                            integrator, spp, seed),
+                "glint.sphere{ center = {0, 0.8, 0}, radius = 0.5, material = glint.dielectric{ "
+                "ior = 1.5, interior = ink, exterior = fog } }");
         };
     };
     constexpr int kImages = 4;

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/image_comparison.h>
+#include <support/media_scenes.h>
 #include <support/render_helpers.h>
 
 #include <cmath>
@@ -21,25 +22,10 @@ using namespace glint;
 
 namespace {
 
-// A box of fog (or a procedural cloud) lit by a small two-sided lamp inside it, in front of
-// a wall, seen from outside the box: no mirror or glass, so the light the fog scatters
-// straight from the lamp and the surfaces' direct light are all there is at depth 1.
+// The fog room (or a procedural cloud in it) without mirror or glass: the light the fog
+// scatters straight from the lamp and the surfaces' direct light are all there is at depth 1.
 std::string fog_without_glass(const std::string& render, const std::string& medium) {
-    return fmt::format(R"(
-        local fog = {}
-        glint.camera{{ eye = {{0, 1, 4}}, look_at = {{0, 0.9, 0}}, fov = 45 }}
-        glint.render{{ width = 24, height = 24, {} }}
-        glint.box{{ min = {{-1.5, 0.01, -1.5}}, max = {{1.5, 2.5, 1.5}},
-                   material = glint.interface{{ interior = fog }} }}
-        glint.quad{{ vertices = {{ {{-2, 0, -2}}, {{-2, 0, 2}}, {{2, 0, 2}}, {{2, 0, -2}} }},
-                    material = glint.diffuse{{ reflectance = 0.6 }} }}
-        glint.quad{{ vertices = {{ {{-3, 0, -2}}, {{3, 0, -2}}, {{3, 4, -2}}, {{-3, 4, -2}} }},
-                    material = glint.diffuse{{ reflectance = 0.5 }} }}
-        glint.quad{{ vertices = {{ {{-0.3, 1.9, -0.3}}, {{0.3, 1.9, -0.3}}, {{0.3, 1.9, 0.3}},
-                                  {{-0.3, 1.9, 0.3}} }},
-                    material = glint.emissive{{ radiance = 20, two_sided = true }} }}
-    )",
-                       medium, render);
+    return test::fog_room("local fog = " + medium, "width = 24, height = 24, " + render, "");
 }
 
 const char* const kChromaticFog =
@@ -128,71 +114,52 @@ double region_mean(const Image& image, int c, int x0, int y0, int x1, int y1) {
 
 }  // namespace
 
+// The preview in the fog room without glass, filled with `medium`, against volpath with
+// max_depth = 1 (expect_converges); `mode` adds render settings to both.
+static void expect_single_scattering_like_volpath(const char* medium, const std::string& mode,
+                                                  int preview_spp, int volpath_spp) {
+    expect_converges(
+        [&](int seed) {
+            return fog_without_glass(
+                fmt::format("integrator = 'preview', spp = {}, preview_ambient = 0, {}seed = {}",
+                            preview_spp, mode, seed),
+                medium);
+        },
+        [&](int seed) {
+            return fog_without_glass(
+                fmt::format("integrator = 'volpath', spp = {}, max_depth = 1, {}seed = {}",
+                            volpath_spp, mode, seed),
+                medium);
+        },
+        0.0005);
+}
+
 // Without mirrors or glass the preview's image is the surfaces' direct light and the light
 // the fog scatters once straight from the lamp, with the transmittance of the fog on every
 // segment; volpath with max_depth = 1 renders exactly that. The ambient term is off (it
 // stands for the later bounces). Chromatic fog: the distance sampling's weights over the
 // channels are in play.
 TEST(PreviewMediaSlow, SingleScatteringInChromaticFogMatchesVolpath) {
-    expect_converges(
-        [](int seed) {
-            return fog_without_glass(
-                fmt::format("integrator = 'preview', spp = 256, preview_ambient = 0, seed = {}",
-                            seed),
-                kChromaticFog);
-        },
-        [](int seed) {
-            return fog_without_glass(
-                fmt::format("integrator = 'volpath', spp = 512, max_depth = 1, seed = {}", seed),
-                kChromaticFog);
-        },
-        0.0005);
+    expect_single_scattering_like_volpath(kChromaticFog, "", 256, 512);
 }
 
 // Spectral mode: each pass's camera paths carry one set of wavelengths, at which the fog's
 // coefficients and the transmittance are taken (volpath's paths each their own set).
 TEST(PreviewMediaSlow, SpectralSingleScatteringMatchesVolpath) {
-    expect_converges(
-        [](int seed) {
-            return fog_without_glass(fmt::format("integrator = 'preview', spp = 256, "
-                                                 "preview_ambient = 0, spectral = true, seed = {}",
-                                                 seed),
-                                     kChromaticFog);
-        },
-        [](int seed) {
-            return fog_without_glass(
-                fmt::format(
-                    "integrator = 'volpath', spp = 256, max_depth = 1, spectral = true, seed = {}",
-                    seed),
-                kChromaticFog);
-        },
-        0.0005);
+    expect_single_scattering_like_volpath(kChromaticFog, "spectral = true, ", 256, 256);
 }
 
 // The same in a procedural cloud: points along the camera rays are drawn uniformly and the
 // transmittance estimated by ratio tracking.
 TEST(PreviewMediaSlow, SingleScatteringInACloudMatchesVolpath) {
-    expect_converges(
-        [](int seed) {
-            return fog_without_glass(
-                fmt::format("integrator = 'preview', spp = 128, preview_ambient = 0, seed = {}",
-                            seed),
-                kCloud);
-        },
-        [](int seed) {
-            return fog_without_glass(
-                fmt::format("integrator = 'volpath', spp = 256, max_depth = 1, seed = {}", seed),
-                kCloud);
-        },
-        0.0005);
+    expect_single_scattering_like_volpath(kCloud, "", 128, 256);
 }
 
-// The volume photons' beam estimate converges to bdpt's volumetric caustic away from the
-// beam's edges (where the estimate's radius blurs it): the beam's core, and the whole beam
-// with its blur, agree within four standard errors plus 2 % for what the two leave out
-// differently (light reflected inside the glass) and for the radius' blur at the core.
 // The beam's core and the whole beam of volumetric_caustic(): the preview's and bdpt's
-// means (green) over four renders each, within four standard errors plus 2 %.
+// means (green) over four renders each, within four standard errors plus 2 % for what the
+// two leave out differently (light reflected inside the glass) and for the radius' blur at
+// the core. Away from the beam's edges, where the estimate's radius blurs it, the volume
+// photons' beam estimate converges to bdpt's volumetric caustic.
 static void expect_beam_agrees_with_bdpt(bool spectral) {
     constexpr int kRenders = 4;
     const char* const mode = spectral ? "spectral = true, " : "";

@@ -210,10 +210,8 @@ LightTracer::MediumEvent LightTracer::through_medium(const Scene& scene, Particl
     Spectrum weight;
     float t = 0.0f, sigma_t = 0.0f;
     const SegmentEnd end = glint::through_medium(medium, particle.ray, t_hit, particle.hero,
-                                                 chunk.rng, weight, t, sigma_t);
+                                                 chunk.rng, weight, particle.r_u, t, sigma_t);
     particle.beta *= weight;
-    // A medium that only absorbs changes no ratio between the channels' densities.
-    if (samples_distances(medium)) particle.r_u *= weight;
     if (end == SegmentEnd::kAbsorbed || particle.beta.is_black() || particle.r_u.is_black())
         return MediumEvent::kEnded;
     if (end == SegmentEnd::kReached) return MediumEvent::kCrossed;

@@ -69,13 +69,10 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
             Spectrum emitted;
             const SegmentEnd end =
                 through_medium(*medium, ray, hit ? vertex.si.t : kInfinity, media->hero, media->rng,
-                               weight, t_scatter, sigma_t, collect ? &emitted : nullptr, r_u);
+                               weight, r_u, t_scatter, sigma_t, collect ? &emitted : nullptr);
             if (collect) media->emitted += beta * emitted;
             beta *= weight;
             rr_beta *= weight;
-            // The ratios of the channels' densities change only where distances are sampled: a
-            // medium that only absorbs gives its transmittance, the same whatever the hero.
-            if (samples_distances(*medium)) r_u *= weight;
             if (end == SegmentEnd::kAbsorbed) return;
             if (end == SegmentEnd::kScattered) {
                 vertex.kind = PathVertex::Kind::kMedium;

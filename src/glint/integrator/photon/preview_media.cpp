@@ -194,13 +194,9 @@ void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonE
                     Spectrum weight;
                     float t_scatter = 0.0f, sigma_t = 0.0f;
                     const SegmentEnd segment =
-                        through_medium(*medium, ray, hit ? si.t : kInfinity, hero, rng, weight,
+                        through_medium(*medium, ray, hit ? si.t : kInfinity, hero, rng, weight, r_u,
                                        t_scatter, sigma_t);
                     beta *= weight;
-                    // The ratios of the channels' densities change only where distances are
-                    // sampled: a medium that only absorbs gives its transmittance, the same
-                    // whatever the hero.
-                    if (samples_distances(*medium)) r_u *= weight;
                     if (segment == SegmentEnd::kAbsorbed) break;
                     if (segment == SegmentEnd::kScattered) {
                         const float mean = r_u.average();

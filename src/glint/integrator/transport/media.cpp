@@ -63,8 +63,8 @@ std::optional<WalkMedia> walk_media(const Scene& scene) {
 }
 
 SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
-                          Spectrum& weight, float& t_scatter, float& sigma_t, Spectrum* emission,
-                          const Spectrum& r_u) {
+                          Spectrum& weight, Spectrum& r_u, float& t_scatter, float& sigma_t,
+                          Spectrum* emission) {
     weight = Spectrum(1.0f);
     if (emission) *emission = Spectrum(0.0f);
     const bool collect = emission && medium.emits();
@@ -114,11 +114,13 @@ SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int
             }
             return true;
         });
-    if (end != SegmentEnd::kReached) return end;
-    const float T_hero = T_maj.value(hero);
-    if (!(T_hero > 0.0f)) return SegmentEnd::kAbsorbed;
-    weight *= T_maj / T_hero;
-    return SegmentEnd::kReached;
+    if (end == SegmentEnd::kReached) {
+        const float T_hero = T_maj.value(hero);
+        if (!(T_hero > 0.0f)) return SegmentEnd::kAbsorbed;
+        weight *= T_maj / T_hero;
+    }
+    r_u *= weight;
+    return end;
 }
 
 }  // namespace glint

@@ -63,17 +63,18 @@ enum class SegmentEnd { kReached, kScattered, kAbsorbed };
 
 /// The segment of `ray` through `medium` up to t_hit (kInfinity: the ray left the scene) by
 /// delta tracking on channel `hero`, drawing from `rng`, as volpath's. `weight` receives the
-/// factor of the throughput (and of r_u: the same, volpath.cpp) to the segment's end or to
-/// its scattering point, at parameter `t_scatter`, where the extinction (mean over channels)
-/// is `sigma_t`. A medium that only absorbs is not sampled: its transmittance is the weight,
-/// and (unlike a sampled medium's ratios) it is not a factor of the walk's r_u.
+/// factor of the throughput to the segment's end or to its scattering point, at parameter
+/// `t_scatter`, where the extinction (mean over channels) is `sigma_t`. `r_u`, the walk's
+/// ratios of the channels' densities (volpath's), takes the same factor where distances are
+/// sampled; a medium that only absorbs is not sampled: its transmittance is the weight, the
+/// same whatever the hero, and leaves r_u as it is.
 ///
 /// With `emission` (a walk from the camera through a medium that emits), it receives the
 /// radiance the medium emits along the segment towards the ray's origin, collected at every
 /// tentative collision as volpath does, over the walk's channels: the caller multiplies by
-/// the throughput at the segment's start. `r_u` is the walk's r_u there.
+/// the throughput at the segment's start.
 SegmentEnd through_medium(const Medium& medium, const Ray& ray, float t_hit, int hero, Rng& rng,
-                          Spectrum& weight, float& t_scatter, float& sigma_t,
-                          Spectrum* emission = nullptr, const Spectrum& r_u = Spectrum(1.0f));
+                          Spectrum& weight, Spectrum& r_u, float& t_scatter, float& sigma_t,
+                          Spectrum* emission = nullptr);
 
 }  // namespace glint
