@@ -182,6 +182,26 @@ TEST_P(EveryIntegrator, SameBitsForOneAndTwoThreads) {
     EXPECT_TRUE(one.pixels == two.pixels);
 }
 
+// A scene with no light at all (a user's first sketch, or one lit only by a glowing medium)
+// renders black: every integrator copes with an empty light sampler (preview, photon and
+// sppm once crashed choosing a light from an empty tree).
+TEST_P(EveryIntegrator, SceneWithoutLightsIsBlack) {
+    const std::string name = GetParam();
+    const Held held = held_to(name);
+    const Image image = render_lua(fmt::format(R"(
+        glint.camera{{ eye = {{0, 1, 4}}, look_at = {{0, 0.5, 0}}, fov = 40 }}
+        glint.render{{ width = 16, height = 16, spp = 2, integrator = '{}' {} }}
+        glint.quad{{ vertices = {{ {{-3, 0, -3}}, {{-3, 0, 3}}, {{3, 0, 3}}, {{3, 0, -3}} }},
+                    material = glint.diffuse{{ reflectance = 0.6 }} }}
+        glint.sphere{{ center = {{0, 0.5, 0}}, radius = 0.5, material = glint.dielectric{{}} }}
+    )",
+                                               name, with(held.settings)),
+                                   1);
+    ASSERT_FALSE(image.pixels.empty());
+    EXPECT_TRUE(std::all_of(image.pixels.begin(), image.pixels.end(),
+                            [](float v) { return v == 0.0f; }));
+}
+
 // The light tree chooses lights by where they can reach, power sampling by power alone:
 // both are unbiased, so each integrator's image with one converges to its image with the
 // other. A floor and a block under a ring of small lamps facing every way (some away from

@@ -54,7 +54,10 @@ LightSampler::LightSampler(const std::vector<std::unique_ptr<Light>>& lights,
     // One light of one piece (a Cornell box's lamp) is chosen with probability 1 either
     // way: the power distribution's one-light shortcut does it without a tree walk.
     const bool one_choice = lights.size() == 1 && lights.front()->piece_count() == 1;
-    if (selection == LightSelection::kTree && !one_choice) m_tree = build_tree(lights);
+    // No lights (a scene lit only by a glowing medium, or not at all): no tree, and every
+    // choice is empty.
+    if (selection == LightSelection::kTree && !one_choice && !lights.empty())
+        m_tree = build_tree(lights);
     m_selection = selection;
 }
 

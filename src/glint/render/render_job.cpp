@@ -103,8 +103,8 @@ void check_motion(const Scene& scene, const RenderSettings& settings,
                     settings.where_of("integrator"), settings.integrator));
 }
 
-// Only some integrators sample scattering in media, and only volpath collects their
-// emission; the others would show the scene as if its fog (or its glow) were not there, so
+// Only some integrators sample scattering in media, and fewer collect their emission; the
+// others would show the scene as if its fog (or its glow) were not there, so
 // say so.
 void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
                            const IntegratorCapabilities& capabilities,
@@ -123,7 +123,8 @@ void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
     } else if (!capabilities.emitting_media &&
                any_medium([](const Medium& m) { return m.emits(); })) {
         warn(control, fmt::format("{}: the '{}' integrator ignores the light media emit "
-                                  "(glint.medium{{ emission = ... }}); 'volpath' renders it",
+                                  "(glint.medium{{ emission = ... }}); 'volpath', 'bdpt', 'vcm', "
+                                  "'mlt' and 'preview' render it",
                                   settings.where_of("integrator"), settings.integrator));
     }
 }

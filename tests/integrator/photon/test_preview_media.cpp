@@ -155,6 +155,16 @@ TEST(PreviewMediaSlow, SingleScatteringInACloudMatchesVolpath) {
     expect_single_scattering_like_volpath(kCloud, "", 128, 256);
 }
 
+// A fog that glows (chromatic emission): each camera segment through it gathers what it
+// emits, the transmittance times sigma_a Le in closed form, as volpath's depth-1 paths do
+// (glow reaching the camera unscattered; glow lighting a surface or scattered is deeper).
+TEST(PreviewMediaSlow, GlowingFogMatchesVolpath) {
+    expect_single_scattering_like_volpath(
+        "glint.medium{ sigma_a = {0.4, 0.6, 0.9}, sigma_s = 0.3, g = 0.2, "
+        "emission = {2, 1, 0.4} }",
+        "", 64, 256);
+}
+
 // The beam's core and the whole beam of volumetric_caustic(): the preview's and bdpt's
 // means (green) over four renders each, within four standard errors plus 2 % for what the
 // two leave out differently (light reflected inside the glass) and for the radius' blur at

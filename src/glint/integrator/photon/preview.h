@@ -73,8 +73,10 @@ public:
         capabilities.motion_blur = true;
         // Each pass carries one set of wavelengths, its camera paths and photons alike.
         capabilities.spectral = true;
-        // Single scattering and volumetric caustics (preview_media.h); not their emission.
+        // Single scattering, volumetric caustics and the glow of media seen from the camera
+        // (preview_media.h).
         capabilities.scattering_media = true;
+        capabilities.emitting_media = true;
         return capabilities;
     }
     PreviewIntegrator(const RenderSettings& settings, const PreviewSettings& preview);

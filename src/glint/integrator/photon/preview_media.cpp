@@ -34,6 +34,22 @@ int choose_channel(float u) {
     return std::min(static_cast<int>(u * static_cast<float>(channels)), channels - 1);
 }
 
+// The radiance a homogeneous `medium` emits along [0, t_end) of `ray` towards its origin:
+// the integral of the transmittance times the source sigma_a Le, per channel
+// source (1 - exp(-sigma_t d)) / sigma_t. (Only homogeneous media emit: grid media and
+// clouds have no emission parameter.)
+Spectrum glow_along(const Ray& ray, float t_end, const Medium& medium) {
+    const MediumPoint point = medium.at(ray.origin);
+    const bool unbounded = std::isinf(t_end);
+    // A channel that emits absorbs, so sigma_t > 0 wherever the source is not 0.
+    return map(point.sigma_a * point.emission, point.sigma_a + point.sigma_s,
+               [&](float source, float sigma_t) {
+                   if (!(sigma_t > 0.0f)) return 0.0f;
+                   const float covered = unbounded ? 1.0f : -std::expm1(-sigma_t * t_end);
+                   return source * covered / sigma_t;
+               });
+}
+
 }  // namespace
 
 void VolumePhotonView::build(const Scene& scene, const Medium* camera_medium,
@@ -333,6 +349,8 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
         const float t_end = hit ? si.t : kInfinity;
         if (medium && medium->scatters())
             L += beta * in_scattering(scene, ray, t_end, *medium, sampler, rng, counter);
+        if (medium && medium->emits() && medium->is_homogeneous())
+            L += beta * glow_along(ray, t_end, *medium);
         if (medium) beta *= medium->transmittance(ray, std::isinf(t_end) ? 1e30f : t_end, rng);
         if (hit && on_primary) primary_reach += si.t;
         const bool interface = hit && si.material->is_interface();

@@ -19,6 +19,10 @@
 // each with its transmittance from the lens (a shadow ray through the media and interfaces,
 // 0 when something blocks it). A pixel then reads only its tile's photons. Multiple
 // scattering in media is left out (the preview is an approximation; volpath has it).
+//
+// A medium that emits glows along every segment of the camera path through it (the
+// transmittance times sigma_a Le, in closed form: only homogeneous media emit); its light
+// does not reach surfaces or other media (no light path starts in a medium).
 #include <glint/core/ray.h>
 #include <glint/core/spectrum.h>
 
