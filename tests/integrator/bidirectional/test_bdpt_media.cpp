@@ -52,13 +52,15 @@ std::string smoke(const std::string& integrator, int spp, int seed) {
 // outside) in a fog box, seen by the camera directly or through a glass window. Through the
 // window the fog's single scattering is light -> glass -> fog -> glass -> camera: no join can
 // reach it (each side of the fog point is a specular chain), only merging in the medium.
+// The window's two faces are two bounces of the path: max_depth 8 through the window makes
+// the same paths as max_depth 6 without it.
 std::string fog_behind_glass(const std::string& integrator, bool window, bool merge_in_media,
                              int spp, int seed) {
     return fmt::format(R"(
         local fog = glint.medium{{ sigma_a = 0.05, sigma_s = 0.5, g = 0.3 }}
         glint.camera{{ eye = {{0, 1.2, 4}}, look_at = {{0, 1.2, 0}}, fov = 30 }}
         glint.render{{ width = 24, height = 24, spp = {}, seed = {}, integrator = '{}',
-                      max_depth = 6, vcm_radius = 0.05, vcm_light_paths = 4096,
+                      max_depth = {}, vcm_radius = 0.05, vcm_light_paths = 4096,
                       vcm_volume_merging = {} }}
         glint.box{{ min = {{-1, 0.2, -1}}, max = {{1, 2.2, 1}},
                    material = glint.interface{{ interior = fog }} }}
@@ -67,7 +69,7 @@ std::string fog_behind_glass(const std::string& integrator, bool window, bool me
         glint.point_light{{ position = {{0, 1.2, 0}}, intensity = 5 }}
         {}
     )",
-                       spp, seed, integrator, merge_in_media ? "true" : "false",
+                       spp, seed, integrator, window ? 8 : 6, merge_in_media ? "true" : "false",
                        window ? "glint.box{ min = {-2, -1, 2.5}, max = {2, 3, 2.51}, material = "
                                 "glint.dielectric{ ior = 1.5 } }"
                               : "");
@@ -214,18 +216,18 @@ TEST(BdptMediaSlow, VcmMergingInMediaSeesFogThroughAWindow) {
     const Estimate direct = image_mean(
         [](int seed) { return fog_behind_glass("bdpt", false, false, 128, seed); }, kImages, 0);
     const Estimate merged = image_mean(
-        [](int seed) { return fog_behind_glass("vcm", true, true, 128, seed + 10); }, kImages, 0);
+        [](int seed) { return fog_behind_glass("vcm", true, true, 256, seed + 10); }, kImages, 0);
     const double expected = kWindow * direct.mean;
     const double se = std::hypot(merged.se, kWindow * direct.se);
     fmt::print("fog through a window: vcm {} +- {}, expected {} +- {}\n", merged.mean, merged.se,
                expected, kWindow * direct.se);
-    EXPECT_LT(4.0 * se, 0.08 * expected);
-    // Merging in media comes out 2-5 % dark here, whatever the radius (0.1, 0.05, 0.02), and
-    // 2 % bright on the same scene seen without the window; without the glass ball it agrees
-    // with bdpt. The cause is not found (docs/integrators.md), hence `vcm_volume_merging` is
-    // off by default, and 6 % is allowed. Missing merges (0.27 of the expected), a wrong
-    // kernel volume or sigma_s left out (2x) are far outside it.
-    EXPECT_NEAR(merged.mean, expected, 4.0 * se + 0.06 * expected);
+    EXPECT_LT(4.0 * se, 0.05 * expected);
+    // 2 % on top of the noise is for the kernel's bias (the ball of radius r averages the
+    // photons' density, which falls off as 1 / d^2 from the glass ball and stops at the fog's
+    // boundaries). With the window's bounces left out of max_depth (6 for both) vcm came out
+    // 3.8 % dark, the 4 % that bdpt's fourth and fifth scatterings add; missing merges (0.27
+    // of the expected), a wrong kernel volume or sigma_s left out (2x) are far outside.
+    EXPECT_NEAR(merged.mean, expected, 4.0 * se + 0.02 * expected);
     const Image without = render_lua(fog_behind_glass("vcm", true, false, 64, 1));
     EXPECT_LT(mean_channel(without, 0, 0, 0, without.width, without.height), 0.5 * expected);
 }

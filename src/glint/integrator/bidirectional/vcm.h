@@ -42,9 +42,8 @@ struct VcmSettings {
     float alpha = 0.75f;          ///< radius reduction: r_i = r_0 i^((alpha - 1) / 2), in (0, 1]
     int light_paths = 0;          ///< n_L, light subpaths per iteration in [1, kMaxLightPaths];
                                   ///< 0: one per pixel (width x height)
-    bool volume_merging = false;  ///< in scenes with media, merge at points in media too
-                                  ///< (experimental: a bias of a few per cent behind glass,
-                                  ///< docs/integrators.md)
+    bool volume_merging = true;  ///< in scenes with media, merge at points in media too
+                                 ///< (the fog seen through glass; docs/integrators.md)
 
     /// Reads and validates "vcm_radius", "vcm_alpha", "vcm_light_paths" and
     /// "vcm_volume_merging"; errors name the key's location.
