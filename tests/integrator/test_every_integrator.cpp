@@ -198,8 +198,8 @@ TEST_P(EveryIntegrator, SceneWithoutLightsIsBlack) {
                                                name, with(held.settings)),
                                    1);
     ASSERT_FALSE(image.pixels.empty());
-    EXPECT_TRUE(std::all_of(image.pixels.begin(), image.pixels.end(),
-                            [](float v) { return v == 0.0f; }));
+    EXPECT_TRUE(
+        std::all_of(image.pixels.begin(), image.pixels.end(), [](float v) { return v == 0.0f; }));
 }
 
 // The light tree chooses lights by where they can reach, power sampling by power alone:

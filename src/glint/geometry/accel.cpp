@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <bit>
 #include <cstring>
 
@@ -112,6 +113,92 @@ bool Accel::drop_ray(uint64_t count) const {
     return false;
 }
 
+namespace {
+
+// The filter of pass-through surfaces: in a recording query (QueryContext::passed) each hit
+// is noted and refused, so the traversal goes on past it; in any other query it stands.
+// Embree may offer one triangle more than once (its high-quality build splits references);
+// intersect_passing() removes the repeats.
+void pass_through_filter(const RTCFilterFunctionNArguments* args) {
+    auto* context = reinterpret_cast<QueryContext*>(args->context);
+    PassedSurfaces* passed = context->passed;
+    if (!passed) return;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        if (passed->count == PassedSurfaces::kCapacity) {
+            context->overflowed = true;
+            continue;  // kept as a hit; intersect_passing() then traces without recording
+        }
+        args->valid[i] = 0;
+        HitRecord& hit = passed->hits[passed->count++];
+        hit.t = RTCRayN_tfar(args->ray, args->N, i);  // the candidate hit's distance
+        hit.primitive = RTCHitN_primID(args->hit, args->N, i);
+        hit.barycentric = Vec2(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        hit.normal = Vec3(RTCHitN_Ng_x(args->hit, args->N, i), RTCHitN_Ng_y(args->hit, args->N, i),
+                          RTCHitN_Ng_z(args->hit, args->N, i));
+        hit.top_geometry = RTCHitN_geomID(args->hit, args->N, i);
+        hit.local_geometry = RTC_INVALID_GEOMETRY_ID;  // world shapes only
+    }
+}
+
+}  // namespace
+
+void Accel::set_pass_through(unsigned world_geometry) {
+    RTCGeometry geometry = rtcGetGeometry(m_world, world_geometry);
+    rtcSetGeometryIntersectFilterFunction(geometry, pass_through_filter);
+    rtcSetGeometryOccludedFilterFunction(geometry, pass_through_filter);
+    rtcCommitGeometry(geometry);
+    check_device("marking a pass-through surface");
+}
+
+bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& passed) const {
+    passed.count = 0;
+    if (!embree_accepts(ray.origin, ray.direction, ray.t_min, ray.t_max)) [[unlikely]]
+        return drop_ray();
+    QueryContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.passed = &passed;
+    RTCRayHit rh;
+    rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
+    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_world, &context.embree, &rh);
+    if (context.overflowed) [[unlikely]] {
+        // Surfaces stacked deeper than the record: the first one is the hit.
+        passed.count = 0;
+        return intersect(ray, hit);
+    }
+    const bool found = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
+    if (found) {
+        hit.t = rh.ray.tfar;
+        hit.primitive = rh.hit.primID;
+        hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
+        hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+        const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+        hit.top_geometry = instanced ? rh.hit.instID[0] : rh.hit.geomID;
+        hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
+    }
+    // In order along the ray, each crossing once, and only those before the hit (the filter
+    // saw candidates that a closer hit found later made moot). A crossing comes twice as the
+    // same triangle offered again, or as the two triangles of an edge the ray goes through:
+    // one shape at the same distance.
+    const float end = found ? hit.t : ray.t_max;
+    std::sort(passed.hits.begin(), passed.hits.begin() + passed.count,
+              [](const HitRecord& a, const HitRecord& b) { return a.t < b.t; });
+    int kept = 0;
+    for (int i = 0; i < passed.count; ++i) {
+        const HitRecord& h = passed.hits[i];
+        if (!(h.t < end)) break;
+        const HitRecord* last = kept > 0 ? &passed.hits[kept - 1] : nullptr;
+        const bool repeat =
+            last && last->top_geometry == h.top_geometry &&
+            (last->primitive == h.primitive || h.t - last->t <= 1e-6f * std::max(1.0f, h.t));
+        if (!repeat) passed.hits[kept++] = h;
+    }
+    passed.count = kept;
+    return found;
+}
+
 bool Accel::occluded(const Ray& ray) const {
     return occluded(ray.origin, ray.direction, ray.t_min, ray.t_max);
 }
@@ -211,9 +298,9 @@ bool keep_accepted_lanes(const RTCRay8& packet, uint32_t& active, Drop&& drop) {
     return active != 0;
 }
 
-void init_context(RTCIntersectContext& context, bool coherent) {
-    rtcInitIntersectContext(&context);
-    context.flags =
+void init_context(QueryContext& context, bool coherent) {
+    rtcInitIntersectContext(&context.embree);
+    context.embree.flags =
         coherent ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
 }
 
@@ -240,9 +327,9 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
     const auto drop = [this](uint64_t count) { drop_ray(count); };
     if (!keep_accepted_lanes(packet.ray, active, drop)) return 0;
     const EmbreeValid valid = embree_valid(active);
-    RTCIntersectContext context;
+    QueryContext context;
     init_context(context, coherent);
-    rtcIntersect8(valid.lanes, m_world, &context, &packet);
+    rtcIntersect8(valid.lanes, m_world, &context.embree, &packet);
 
     uint32_t hit_lanes = 0;
     for (int lane = 0; lane < kPacketWidth; ++lane)
@@ -281,9 +368,9 @@ uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3
     const auto drop = [this](uint64_t count) { drop_ray(count); };
     if (!keep_accepted_lanes(packet, active, drop)) return 0;
     const EmbreeValid valid = embree_valid(active);
-    RTCIntersectContext context;
+    QueryContext context;
     init_context(context, coherent);
-    rtcOccluded8(valid.lanes, m_world, &context, &packet);
+    rtcOccluded8(valid.lanes, m_world, &context.embree, &packet);
 
     // Embree sets tfar to -inf where something blocks the segment.
     uint32_t blocked = 0;

@@ -27,6 +27,24 @@ template <typename Function>
     for (; lanes != 0; lanes &= lanes - 1) f(std::countr_zero(lanes));
 }
 
+/// The pass-through surfaces (Accel::set_pass_through) one traversal went past, in order
+/// along the ray (Accel::intersect_passing): the interfaces that bound media, which a walk
+/// carrying a medium crosses without scattering.
+struct PassedSurfaces {
+    static constexpr int kCapacity = 8;
+    std::array<HitRecord, kCapacity> hits;
+    int count = 0;
+};
+
+/// Every query's context: Embree's, and for a query that records pass-through surfaces
+/// where it keeps them (null for every other query, for which those surfaces are hits as
+/// any other).
+struct QueryContext {
+    RTCIntersectContext embree;
+    PassedSurfaces* passed = nullptr;
+    bool overflowed = false;  ///< more than PassedSurfaces::kCapacity came by
+};
+
 class Accel {
 public:
     Accel();
@@ -44,6 +62,9 @@ public:
     // Places a prototype on a moving transform: Embree interpolates the keys' parts
     // (TransformParts) over the ray's time as MotionTransform::at does.
     unsigned add_instance(int prototype, const MotionTransform& to_world);
+    // Marks a shape of the world scene (not of a prototype) as one intersect_passing() goes
+    // past; every other query still stops at it. Before commit().
+    void set_pass_through(unsigned world_geometry);
     // Builds all BVHs. Throws glint::Error when Embree reports a problem.
     void commit();
 
@@ -53,13 +74,13 @@ public:
     bool intersect(const Ray& ray, HitRecord& hit) const {
         if (!embree_accepts(ray.origin, ray.direction, ray.t_min, ray.t_max)) [[unlikely]]
             return drop_ray();
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
+        QueryContext context;
+        rtcInitIntersectContext(&context.embree);
         RTCRayHit rh;
         rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
         rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
         rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(m_world, &context, &rh);
+        rtcIntersect1(m_world, &context.embree, &rh);
         if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
         hit.t = rh.ray.tfar;
         hit.primitive = rh.hit.primID;
@@ -75,6 +96,12 @@ public:
         if (!intersect(ray, *result)) result.reset();
         return result;
     }
+    // intersect() past the pass-through surfaces, in one traversal: the closest hit of any
+    // other surface, and in `passed` the pass-through surfaces before it (before the ray's
+    // end on a miss), in order. Where more come by than `passed` holds, or one is of a kind
+    // Embree cannot skip (user geometry: spheres, quadrics), it is the hit, as for
+    // intersect(): the caller crosses it and traces on.
+    bool intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& passed) const;
     bool occluded(const Ray& ray) const;
     // The same for a segment given by its parts, for shadow rays, which need no Ray (and so
     // no differentials) built and copied. Inline: the path tracer traces one per bounce.
@@ -82,10 +109,10 @@ public:
                   float time = 0.0f) const {
         if (!embree_accepts(origin, direction, t_min, t_max)) [[unlikely]]
             return drop_ray();
-        RTCIntersectContext context;
-        rtcInitIntersectContext(&context);
+        QueryContext context;
+        rtcInitIntersectContext(&context.embree);
         RTCRay r = embree_ray(origin, direction, t_min, t_max, time);
-        rtcOccluded1(m_world, &context, &r);
+        rtcOccluded1(m_world, &context.embree, &r);
         return r.tfar < 0.0f;  // Embree sets tfar to -inf when something blocks the segment
     }
 

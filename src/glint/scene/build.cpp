@@ -162,6 +162,7 @@ private:
         std::vector<int> path{0};
         for (const ShapeUse& use : m_group_shapes[0]) {
             const unsigned id = m_scene->m_accel.add_shape(-1, *use.shape);
+            if (only_bounds_media(use)) m_scene->m_accel.set_pass_through(id);
             Scene::WorldEntry& entry = world_entry(id);
             entry.geometry = {use.shape, use.materials};
             note_deformation(use, "");
@@ -242,6 +243,14 @@ private:
         std::vector<const Material*> materials;  // per part
         const Params* params;
     };
+
+    // A shape all of whose parts are interfaces: walks that carry a medium pass it in the
+    // traversal that finds what lies beyond (Scene::intersect_surface_passing).
+    static bool only_bounds_media(const ShapeUse& use) {
+        return !use.materials.empty() &&
+               std::all_of(use.materials.begin(), use.materials.end(),
+                           [](const Material* m) { return m && m->is_interface(); });
+    }
 
     int prototype_of(int group) {
         if (m_prototype[group] >= 0) return m_prototype[group];

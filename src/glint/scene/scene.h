@@ -97,6 +97,21 @@ public:
         fill_interaction(ray, hit, si);
         return true;
     }
+    // intersect_surface() past the interfaces that Embree can skip in the same traversal
+    // (Accel::intersect_passing): `si` is the closest other hit (or an interface Embree could
+    // not skip), and `passed` the interfaces before it along `ray`, in order; passed_surface()
+    // fills in one of them. One traversal where a leg per interface took one each: for walks
+    // that carry a medium through the boxes that bound it.
+    bool intersect_surface_passing(const Ray& ray, SurfaceInteraction& si,
+                                   PassedSurfaces& passed) const {
+        HitRecord hit;
+        if (!m_accel.intersect_passing(ray, hit, passed)) return false;
+        fill_interaction(ray, hit, si);
+        return true;
+    }
+    void passed_surface(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
+        fill_interaction(ray, hit, si);
+    }
     bool occluded(const Ray& ray) const { return m_accel.occluded(ray); }
     // Whether anything blocks the shadow ray from `si` (its origin offset as spawn_ray's)
     // to just short of `target`.

@@ -212,6 +212,73 @@ TEST(Visibility, TransmittanceThroughInterfaceOnlySurfacesIsOne) {
         1.0f);
 }
 
+// One traversal goes past the interfaces Embree can skip: the shapes whose every part only
+// bounds media. They come back in order along the ray, each once (the high-quality BVH may
+// offer a triangle twice), and only those before the closest other hit; a sphere, which
+// Embree cannot skip (user geometry), is the hit itself, as are interfaces stacked deeper
+// than the record holds. Every other query still stops at them.
+TEST(Visibility, OneTraversalPassesTheInterfaces) {
+    const auto box = [](float half) {
+        const std::string h = std::to_string(half);
+        return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h +
+               ", " + h + "}, material = glint.interface{ interior = fog } }\n";
+    };
+    const std::string fog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
+    const std::string wall =
+        "glint.quad{ vertices = { {-9, -9, -20}, {9, -9, -20}, {9, 9, -20}, {-9, 9, -20} }, "
+        "material = glint.diffuse{} }\n";
+    const test::BuiltScene two = test::build_lua(fog + box(1) + box(2) + wall, "boxes.lua");
+    const Ray ray{Vec3(0.1f, 0.2f, 10.0f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, kInfinity};
+    SurfaceInteraction si;
+    PassedSurfaces passed;
+    ASSERT_TRUE(two.scene->intersect_surface_passing(ray, si, passed));
+    EXPECT_FALSE(si.material->is_interface());
+    EXPECT_NEAR(si.t, 30.0f, 1e-4f);
+    ASSERT_EQ(passed.count, 4);
+    const float expected_t[] = {8.0f, 9.0f, 11.0f, 12.0f};
+    for (int i = 0; i < passed.count; ++i) {
+        EXPECT_NEAR(passed.hits[i].t, expected_t[i], 1e-4f) << i;
+        SurfaceInteraction crossing;
+        two.scene->passed_surface(ray, passed.hits[i], crossing);
+        EXPECT_TRUE(crossing.material->is_interface()) << i;
+        EXPECT_NEAR(crossing.p.z, 10.0f - expected_t[i], 1e-4f) << i;
+    }
+    // Every other query stops at the first interface.
+    EXPECT_TRUE(two.scene->intersect_surface(ray, si));
+    EXPECT_NEAR(si.t, 8.0f, 1e-4f);
+    // Short of the wall, the same four and no hit.
+    Ray shorter = ray;
+    shorter.t_max = 11.5f;
+    EXPECT_FALSE(two.scene->intersect_surface_passing(shorter, si, passed));
+    EXPECT_EQ(passed.count, 3);
+
+    // Through the diagonal edge of a box face's two triangles (and on through the opposite
+    // face's): each face is crossed once.
+    const Ray diagonal{Vec3(0.5f, 0.5f, 10.0f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, kInfinity};
+    ASSERT_TRUE(two.scene->intersect_surface_passing(diagonal, si, passed));
+    EXPECT_EQ(passed.count, 4);
+    const Ray corner{Vec3(-1.0f, -1.0f, 10.0f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, kInfinity};
+    ASSERT_TRUE(two.scene->intersect_surface_passing(corner, si, passed));
+    EXPECT_EQ(passed.count % 2, 0) << "an inner box's corner: crossed twice or not at all";
+
+    // A sphere interface is a hit; the box's face before it is passed.
+    const test::BuiltScene sphere = test::build_lua(
+        fog + box(2) + "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
+        "sphere.lua");
+    ASSERT_TRUE(sphere.scene->intersect_surface_passing(ray, si, passed));
+    EXPECT_TRUE(si.material->is_interface());
+    EXPECT_NEAR(si.t, 10.0f - std::sqrt(1.0f - 0.1f * 0.1f - 0.2f * 0.2f), 1e-4f);
+    EXPECT_EQ(passed.count, 1);
+
+    // Deeper than the record: the first interface is the hit, as for intersect_surface().
+    std::string nested = fog;
+    for (int i = 1; i <= PassedSurfaces::kCapacity; ++i) nested += box(0.5f * i);
+    const test::BuiltScene deep = test::build_lua(nested + wall, "nested.lua");
+    ASSERT_TRUE(deep.scene->intersect_surface_passing(ray, si, passed));
+    EXPECT_EQ(passed.count, 0);
+    EXPECT_NEAR(si.t, 10.0f - 0.5f * PassedSurfaces::kCapacity, 1e-4f);
+}
+
 // Without interfaces, visibility is Embree's occlusion query: 0 or 1.
 TEST(Visibility, WithoutInterfacesIsTheOcclusionQuery) {
     const test::BuiltScene b = test::build_lua(R"(
