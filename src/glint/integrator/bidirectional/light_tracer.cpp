@@ -151,18 +151,35 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
             std::min(static_cast<int>(chunk.rng.next_float() * Spectrum::active_values()),
                      Spectrum::active_values() - 1);
     }
+    PassedSurfaces passed;
+    SurfaceInteraction crossing;
     for (int crossings = 0; particle.bounce <= particle.max_bounces && crossings < kMaxBounces;) {
         ++chunk.rays;
         SurfaceInteraction si;
-        // With media the walk stops at the interfaces too: they change its medium.
-        const bool hit = with_media ? scene.intersect_surface(particle.ray, si)
+        // With media the walk passes the interfaces Embree can skip in one traversal, and
+        // stops at the others: they change its medium. The legs between them are segments
+        // of their own media.
+        passed.count = 0;
+        const bool hit = with_media ? scene.intersect_surface_passing(particle.ray, si, passed)
                                     : scene.intersect(particle.ray, si);
-        if (particle.medium) {
-            const MediumEvent event =
-                through_medium(scene, particle, hit ? si.t : kInfinity, chunk);
-            if (event == MediumEvent::kEnded) return;
-            if (event == MediumEvent::kScattered) continue;
+        const Ray traced = particle.ray;
+        MediumEvent event = MediumEvent::kCrossed;
+        for (int i = 0; i <= passed.count; ++i) {
+            const float t_start = i == 0 ? 0.0f : passed.hits[i - 1].t;
+            const float t_end = i < passed.count ? passed.hits[i].t : (hit ? si.t : kInfinity);
+            if (particle.medium) {
+                particle.ray.origin = traced.at(t_start);
+                event = through_medium(scene, particle, t_end - t_start, chunk);
+                if (event != MediumEvent::kCrossed) break;
+            }
+            if (i == passed.count) break;
+            scene.passed_surface(traced, passed.hits[i], crossing);
+            particle.medium = medium_beyond(crossing, traced.direction, particle.medium);
+            ++crossings;
         }
+        if (event == MediumEvent::kEnded) return;
+        if (event == MediumEvent::kScattered) continue;
+        particle.ray = traced;
         if (!hit) return;
         if (with_media && si.material->is_interface()) {
             // Only the medium changes: the ray goes straight on, and no bounce is counted.

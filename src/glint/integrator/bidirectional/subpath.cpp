@@ -51,29 +51,49 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         }
         return !beta.is_black();
     };
+    PassedSurfaces passed;
+    SurfaceInteraction crossing;
     while (static_cast<int>(path.size()) < limits.max_vertices) {
         ++counter.rays;
         PathVertex vertex;
-        const bool hit =
-            media ? scene.intersect_surface(ray, vertex.si) : scene.intersect(ray, vertex.si);
-        if (media && medium) {
-            Spectrum weight;
-            float t_scatter = 0.0f, sigma_t = 0.0f;
-            // Emission along the segment: a camera walk collects it where the path so far
-            // (the scattering vertices before it) leaves room under max_vertices.
-            const int depth = static_cast<int>(path.size()) - 1;  // scattering vertices so far
-            const bool collect =
-                mode == TransportMode::kRadiance && medium->emits() &&
-                (media->emission_depth == MediaWalk::kEveryDepth ? depth + 2 < limits.max_vertices
-                                                                 : depth == media->emission_depth);
-            Spectrum emitted;
-            const SegmentEnd end =
-                through_medium(*medium, ray, hit ? vertex.si.t : kInfinity, media->hero, media->rng,
-                               weight, r_u, t_scatter, sigma_t, collect ? &emitted : nullptr);
-            if (collect) media->emitted += beta * emitted;
-            beta *= weight;
-            rr_beta *= weight;
-            if (end == SegmentEnd::kAbsorbed) return;
+        // In media, one traversal past the interfaces Embree can skip (passed.count stays 0
+        // otherwise): the legs between them are segments of their own media.
+        passed.count = 0;
+        const bool hit = media ? scene.intersect_surface_passing(ray, vertex.si, passed)
+                               : scene.intersect(ray, vertex.si);
+        const Ray traced = ray;
+        SegmentEnd end = SegmentEnd::kReached;
+        float t_scatter = 0.0f, sigma_t = 0.0f;
+        for (int i = 0; i <= passed.count; ++i) {
+            const float t_start = i == 0 ? 0.0f : passed.hits[i - 1].t;
+            const float t_end =
+                i < passed.count ? passed.hits[i].t : (hit ? vertex.si.t : kInfinity);
+            if (media && medium) {
+                ray.origin = traced.at(t_start);
+                Spectrum weight;
+                // Emission along the segment: a camera walk collects it where the path so
+                // far (the scattering vertices before it) leaves room under max_vertices.
+                const int depth = static_cast<int>(path.size()) - 1;  // scattering vertices
+                const bool collect = mode == TransportMode::kRadiance && medium->emits() &&
+                                     (media->emission_depth == MediaWalk::kEveryDepth
+                                          ? depth + 2 < limits.max_vertices
+                                          : depth == media->emission_depth);
+                Spectrum emitted;
+                end = through_medium(*medium, ray, t_end - t_start, media->hero, media->rng, weight,
+                                     r_u, t_scatter, sigma_t, collect ? &emitted : nullptr);
+                if (collect) media->emitted += beta * emitted;
+                beta *= weight;
+                rr_beta *= weight;
+                if (end != SegmentEnd::kReached) break;
+            }
+            if (i == passed.count) break;
+            scene.passed_surface(traced, passed.hits[i], crossing);
+            medium = medium_beyond(crossing, traced.direction, medium);
+            if (++crossings > kMaxCrossings) return;
+        }
+        if (end == SegmentEnd::kAbsorbed) return;
+        if (end == SegmentEnd::kReached) ray = traced;
+        {
             if (end == SegmentEnd::kScattered) {
                 vertex.kind = PathVertex::Kind::kMedium;
                 vertex.p = ray.at(t_scatter);
