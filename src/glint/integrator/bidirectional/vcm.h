@@ -37,11 +37,11 @@ struct VcmSettings {
     /// Most light subpaths per iteration (they are all held in memory at once).
     static constexpr int kMaxLightPaths = 1 << 24;
 
-    float radius = 0.0f;          ///< initial merging radius r_0 (scene units); 0: 1/256 of the
-                                  ///< diagonal of the scene's bounding box (sppm's default)
-    float alpha = 0.75f;          ///< radius reduction: r_i = r_0 i^((alpha - 1) / 2), in (0, 1]
-    int light_paths = 0;          ///< n_L, light subpaths per iteration in [1, kMaxLightPaths];
-                                  ///< 0: one per pixel (width x height)
+    float radius = 0.0f;         ///< initial merging radius r_0 (scene units); 0: 1/256 of the
+                                 ///< diagonal of the scene's bounding box (sppm's default)
+    float alpha = 0.75f;         ///< radius reduction: r_i = r_0 i^((alpha - 1) / 2), in (0, 1]
+    int light_paths = 0;         ///< n_L, light subpaths per iteration in [1, kMaxLightPaths];
+                                 ///< 0: one per pixel (width x height)
     bool volume_merging = true;  ///< in scenes with media, merge at points in media too
                                  ///< (the fog seen through glass; docs/integrators.md)
 
