@@ -14,6 +14,7 @@
 #include <support/image_comparison.h>
 #include <support/media_scenes.h>
 #include <support/render_helpers.h>
+#include <support/single_scattering.h>
 #include <support/test_util.h>
 
 #include <array>
@@ -109,29 +110,8 @@ TEST(BdptMedia, SingleScatteringFromAPointLightMatchesItsIntegral) {
                            intensity);
     };
     const BuiltScene built = build_lua(scene(0));
-    const Camera& camera = built.scene->camera();
-    const HenyeyGreenstein phase(g);
-    // The film average by the midpoint rule over rays across the film and along each ray.
-    constexpr int kRaysPerSide = 32, kSteps = 3000;
-    const double sigma_t = sigma_s + sigma_a, t_end = 40.0 / sigma_t, dt = t_end / kSteps;
-    double exact = 0.0;
-    for (int j = 0; j < kRaysPerSide; ++j) {
-        for (int i = 0; i < kRaysPerSide; ++i) {
-            const Vec2 film((i + 0.5f) * kFilm / kRaysPerSide, (j + 0.5f) * kFilm / kRaysPerSide);
-            const Ray ray = camera.generate_ray(film, Vec2(0.5f));
-            const Vec3 d = glm::normalize(ray.direction);
-            for (int k = 0; k < kSteps; ++k) {
-                const double t = (k + 0.5) * dt;
-                const Vec3 p = ray.origin + static_cast<float>(t) * d;
-                const Vec3 to_light = light - p;
-                const double r = glm::length(to_light);
-                exact += std::exp(-sigma_t * (t + r)) * sigma_s *
-                         phase.eval(-d, to_light / static_cast<float>(r)) * intensity / (r * r) *
-                         dt;
-            }
-        }
-    }
-    exact /= kRaysPerSide * kRaysPerSide;
+    const double exact = single_scattering_film_mean(
+        built.scene->camera(), kFilm, sigma_s, sigma_s + sigma_a, g, intensity, light, 32, 3000);
     const Estimate e = image_mean(scene, 6, 1);
     EXPECT_LT(4.0 * e.se, 0.05 * exact);
     EXPECT_NEAR(e.mean, exact, 4.0 * e.se + 0.005 * exact);

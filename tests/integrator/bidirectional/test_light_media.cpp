@@ -12,6 +12,7 @@
 #include <support/image_comparison.h>
 #include <support/media_scenes.h>
 #include <support/render_helpers.h>
+#include <support/single_scattering.h>
 
 #include <cmath>
 #include <string>
@@ -39,36 +40,6 @@ std::string point_light_in_air(const Rgb& sigma_s, float sigma_a, float g, float
                        light.x, light.y, light.z, intensity);
 }
 
-// The film average of the single-scattering integral, by the midpoint rule over a grid of
-// rays across the film and along each ray.
-double single_scattering_film_mean(const Camera& camera, double sigma_s, double sigma_t,
-                                   const HenyeyGreenstein& phase, float intensity,
-                                   const Vec3& light) {
-    constexpr int kRaysPerSide = 48;
-    constexpr int kSteps = 4000;
-    const double t_end = 40.0 / sigma_t, dt = t_end / kSteps;
-    double total = 0.0;
-    for (int j = 0; j < kRaysPerSide; ++j) {
-        for (int i = 0; i < kRaysPerSide; ++i) {
-            const Vec2 film((i + 0.5f) * kFilmSize / kRaysPerSide,
-                            (j + 0.5f) * kFilmSize / kRaysPerSide);
-            const Ray ray = camera.generate_ray(film, Vec2(0.5f));
-            const Vec3 d = glm::normalize(ray.direction);
-            double sum = 0.0;
-            for (int k = 0; k < kSteps; ++k) {
-                const double t = (k + 0.5) * dt;
-                const Vec3 p = ray.origin + static_cast<float>(t) * d;
-                const Vec3 to_light = light - p;
-                const double r = glm::length(to_light);
-                const double p_phase = phase.eval(-d, to_light / static_cast<float>(r));
-                sum += std::exp(-sigma_t * (t + r)) * sigma_s * p_phase * intensity / (r * r);
-            }
-            total += sum * dt;
-        }
-    }
-    return total / (kRaysPerSide * kRaysPerSide);
-}
-
 }  // namespace
 
 TEST(LightTracerMedia, SingleScatteringFromAPointLightMatchesItsIntegral) {
@@ -79,11 +50,10 @@ TEST(LightTracerMedia, SingleScatteringFromAPointLightMatchesItsIntegral) {
         return point_light_in_air(sigma_s, sigma_a, g, intensity, light, 512, seed);
     };
     const BuiltScene built = build_lua(scene(0));
-    const HenyeyGreenstein phase(g);
     for (int c = 0; c < 3; ++c) {
         const double s = c == 0 ? sigma_s.r : c == 1 ? sigma_s.g : sigma_s.b;
-        const double exact = single_scattering_film_mean(built.scene->camera(), s, s + sigma_a,
-                                                         phase, intensity, light);
+        const double exact = single_scattering_film_mean(
+            built.scene->camera(), kFilmSize, s, s + sigma_a, g, intensity, light, 48, 4000);
         const Estimate e = image_mean(scene, 6, c);
         EXPECT_LT(4.0 * e.se, 0.05 * exact) << "channel " << c;
         EXPECT_NEAR(e.mean, exact, 4.0 * e.se + 0.005 * exact) << "channel " << c;
