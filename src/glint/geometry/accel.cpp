@@ -158,25 +158,11 @@ bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& pa
     QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.passed = &passed;
-    RTCRayHit rh;
-    rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_world, &context.embree, &rh);
+    const bool found = closest_hit(ray, context, hit);
     if (context.overflowed) [[unlikely]] {
         // Surfaces stacked deeper than the record: the first one is the hit.
         passed.count = 0;
         return intersect(ray, hit);
-    }
-    const bool found = rh.hit.geomID != RTC_INVALID_GEOMETRY_ID;
-    if (found) {
-        hit.t = rh.ray.tfar;
-        hit.primitive = rh.hit.primID;
-        hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
-        hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-        const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-        hit.top_geometry = instanced ? rh.hit.instID[0] : rh.hit.geomID;
-        hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
     }
     // In order along the ray, each crossing once, and only those before the hit (the filter
     // saw candidates that a closer hit found later made moot). A crossing comes twice as the

@@ -76,20 +76,7 @@ public:
             return drop_ray();
         QueryContext context;
         rtcInitIntersectContext(&context.embree);
-        RTCRayHit rh;
-        rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
-        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-        rtcIntersect1(m_world, &context.embree, &rh);
-        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
-        hit.t = rh.ray.tfar;
-        hit.primitive = rh.hit.primID;
-        hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
-        hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
-        const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
-        hit.top_geometry = instanced ? rh.hit.instID[0] : rh.hit.geomID;
-        hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
-        return true;
+        return closest_hit(ray, context, hit);
     }
     std::optional<HitRecord> intersect(const Ray& ray) const {
         std::optional<HitRecord> result(std::in_place);
@@ -168,6 +155,24 @@ public:
     static const char* embree_version();
 
 private:
+    // Embree's closest hit along `ray` (already accepted) under `context`, written into `hit`;
+    // false on a miss.
+    bool closest_hit(const Ray& ray, QueryContext& context, HitRecord& hit) const {
+        RTCRayHit rh;
+        rh.ray = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(m_world, &context.embree, &rh);
+        if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return false;
+        hit.t = rh.ray.tfar;
+        hit.primitive = rh.hit.primID;
+        hit.barycentric = Vec2(rh.hit.u, rh.hit.v);
+        hit.normal = Vec3(rh.hit.Ng_x, rh.hit.Ng_y, rh.hit.Ng_z);
+        const bool instanced = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID;
+        hit.top_geometry = instanced ? rh.hit.instID[0] : rh.hit.geomID;
+        hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
+        return true;
+    }
     // Counts a ray embree_accepts() refused; returns false (a miss, or not blocked).
     // Out of line: the hot callers only pay for the test.
     [[gnu::cold, gnu::noinline]] bool drop_ray(uint64_t count = 1) const;

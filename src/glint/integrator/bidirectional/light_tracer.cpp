@@ -152,7 +152,6 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
                      Spectrum::active_values() - 1);
     }
     PassedSurfaces passed;
-    SurfaceInteraction crossing;
     for (int crossings = 0; particle.bounce <= particle.max_bounces && crossings < kMaxBounces;) {
         ++chunk.rays;
         SurfaceInteraction si;
@@ -164,19 +163,13 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
                                     : scene.intersect(particle.ray, si);
         const Ray traced = particle.ray;
         MediumEvent event = MediumEvent::kCrossed;
-        for (int i = 0; i <= passed.count; ++i) {
-            const float t_start = i == 0 ? 0.0f : passed.hits[i - 1].t;
-            const float t_end = i < passed.count ? passed.hits[i].t : (hit ? si.t : kInfinity);
-            if (particle.medium) {
-                particle.ray.origin = traced.at(t_start);
-                event = through_medium(scene, particle, t_end - t_start, chunk);
-                if (event != MediumEvent::kCrossed) break;
-            }
-            if (i == passed.count) break;
-            scene.passed_surface(traced, passed.hits[i], crossing);
-            particle.medium = medium_beyond(crossing, traced.direction, particle.medium);
-            ++crossings;
-        }
+        walk_legs(scene, traced, passed, hit ? si.t : kInfinity, particle.medium,
+                  [&](const Ray& leg, float length) {
+                      particle.ray = leg;
+                      event = through_medium(scene, particle, length, chunk);
+                      return event == MediumEvent::kCrossed;
+                  });
+        crossings += passed.count;
         if (event == MediumEvent::kEnded) return;
         if (event == MediumEvent::kScattered) continue;
         particle.ray = traced;

@@ -52,7 +52,6 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         return !beta.is_black();
     };
     PassedSurfaces passed;
-    SurfaceInteraction crossing;
     while (static_cast<int>(path.size()) < limits.max_vertices) {
         ++counter.rays;
         PathVertex vertex;
@@ -64,62 +63,56 @@ void random_walk(const Scene& scene, Ray ray, Spectrum beta, float pdf_dir, Tran
         const Ray traced = ray;
         SegmentEnd end = SegmentEnd::kReached;
         float t_scatter = 0.0f, sigma_t = 0.0f;
-        for (int i = 0; i <= passed.count; ++i) {
-            const float t_start = i == 0 ? 0.0f : passed.hits[i - 1].t;
-            const float t_end =
-                i < passed.count ? passed.hits[i].t : (hit ? vertex.si.t : kInfinity);
-            if (media && medium) {
-                ray.origin = traced.at(t_start);
-                Spectrum weight;
-                // Emission along the segment: a camera walk collects it where the path so
-                // far (the scattering vertices before it) leaves room under max_vertices.
-                const int depth = static_cast<int>(path.size()) - 1;  // scattering vertices
-                const bool collect = mode == TransportMode::kRadiance && medium->emits() &&
-                                     (media->emission_depth == MediaWalk::kEveryDepth
-                                          ? depth + 2 < limits.max_vertices
-                                          : depth == media->emission_depth);
-                Spectrum emitted;
-                end = through_medium(*medium, ray, t_end - t_start, media->hero, media->rng, weight,
-                                     r_u, t_scatter, sigma_t, collect ? &emitted : nullptr);
-                if (collect) media->emitted += beta * emitted;
-                beta *= weight;
-                rr_beta *= weight;
-                if (end != SegmentEnd::kReached) break;
-            }
-            if (i == passed.count) break;
-            scene.passed_surface(traced, passed.hits[i], crossing);
-            medium = medium_beyond(crossing, traced.direction, medium);
-            if (++crossings > kMaxCrossings) return;
+        if (media) {
+            walk_legs(
+                scene, traced, passed, hit ? vertex.si.t : kInfinity, medium,
+                [&](const Ray& leg, float length) {
+                    ray = leg;
+                    // Emission along the leg: a camera walk collects it where the path
+                    // so far (its scattering vertices) leaves room under max_vertices.
+                    const int depth = static_cast<int>(path.size()) - 1;
+                    const bool collect = mode == TransportMode::kRadiance && medium->emits() &&
+                                         (media->emission_depth == MediaWalk::kEveryDepth
+                                              ? depth + 2 < limits.max_vertices
+                                              : depth == media->emission_depth);
+                    Spectrum weight, emitted;
+                    end = through_medium(*medium, ray, length, media->hero, media->rng, weight, r_u,
+                                         t_scatter, sigma_t, collect ? &emitted : nullptr);
+                    if (collect) media->emitted += beta * emitted;
+                    beta *= weight;
+                    rr_beta *= weight;
+                    return end == SegmentEnd::kReached;
+                });
+            crossings += passed.count;
+            if (crossings > kMaxCrossings) return;
         }
         if (end == SegmentEnd::kAbsorbed) return;
         if (end == SegmentEnd::kReached) ray = traced;
-        {
-            if (end == SegmentEnd::kScattered) {
-                vertex.kind = PathVertex::Kind::kMedium;
-                vertex.p = ray.at(t_scatter);
-                vertex.si.p = vertex.p;
-                vertex.si.wo = -glm::normalize(ray.direction);
-                vertex.si.time = ray.time;
-                vertex.medium = medium;
-                vertex.sigma_t = sigma_t;
-                vertex.beta = beta;
-                vertex.r_u = r_u;
-                vertex.pdf_fwd = solid_angle_to_area(pdf_dir, path.back(), vertex);
-                path.push_back(std::move(vertex));
-                PathVertex& v = path.back();
-                PathVertex& prev = path[path.size() - 2];
-                if (static_cast<int>(path.size()) >= limits.max_vertices) return;
-                // Phase sampling is exact: the throughput keeps its value. Henyey-Greenstein
-                // is symmetric, so the reverse density is the forward one.
-                const HenyeyGreenstein phase(medium->phase_asymmetry());
-                const PhaseSample ps = phase.sample(v.si.wo, sampler.get_2d());
-                if (!(ps.p > 0.0f)) return;
-                pdf_dir = ps.p;
-                prev.pdf_rev = solid_angle_to_area(ps.p, v, prev);
-                ray = Ray{v.p, ps.wi, 0.0f, kInfinity, ray.time};
-                if (!survives_roulette()) return;
-                continue;
-            }
+        if (end == SegmentEnd::kScattered) {
+            vertex.kind = PathVertex::Kind::kMedium;
+            vertex.p = ray.at(t_scatter);
+            vertex.si.p = vertex.p;
+            vertex.si.wo = -glm::normalize(ray.direction);
+            vertex.si.time = ray.time;
+            vertex.medium = medium;
+            vertex.sigma_t = sigma_t;
+            vertex.beta = beta;
+            vertex.r_u = r_u;
+            vertex.pdf_fwd = solid_angle_to_area(pdf_dir, path.back(), vertex);
+            path.push_back(std::move(vertex));
+            PathVertex& v = path.back();
+            PathVertex& prev = path[path.size() - 2];
+            if (static_cast<int>(path.size()) >= limits.max_vertices) return;
+            // Phase sampling is exact: the throughput keeps its value. Henyey-Greenstein
+            // is symmetric, so the reverse density is the forward one.
+            const HenyeyGreenstein phase(medium->phase_asymmetry());
+            const PhaseSample ps = phase.sample(v.si.wo, sampler.get_2d());
+            if (!(ps.p > 0.0f)) return;
+            pdf_dir = ps.p;
+            prev.pdf_rev = solid_angle_to_area(ps.p, v, prev);
+            ray = Ray{v.p, ps.wi, 0.0f, kInfinity, ray.time};
+            if (!survives_roulette()) return;
+            continue;
         }
         if (!hit) {
             // A camera walk that escapes sees the environment (or the background) there.

@@ -120,7 +120,6 @@ Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
                          Spectrum::active_values() - 1);
     walk.rng.seed(stream_seed(sampler.get_1d()));
     PassedSurfaces passed;
-    SurfaceInteraction crossing;
     for (int crossings = 0; crossings < 1024;) {
         ++counter.rays;
         // One traversal past the interfaces Embree can skip: the legs between them are
@@ -129,20 +128,12 @@ Spectrum VolPathIntegrator::li(const Ray& ray, const Scene& scene, Sampler& samp
         const float t_hit = hit ? walk.si.t : kInfinity;
         const Ray traced = walk.ray;
         MediumStep step = MediumStep::kCrossed;
-        for (int i = 0, t_start_index = -1; i <= passed.count; ++i) {
-            const float t_start = t_start_index < 0 ? 0.0f : passed.hits[t_start_index].t;
-            const float t_end = i < passed.count ? passed.hits[i].t : t_hit;
-            if (walk.medium) {
-                walk.ray.origin = traced.at(t_start);
-                step = scatter_in_medium(scene, walk, t_end - t_start);
-                if (step != MediumStep::kCrossed) break;
-            }
-            if (i == passed.count) break;
-            scene.passed_surface(traced, passed.hits[i], crossing);
-            walk.medium = medium_beyond(crossing, traced.direction, walk.medium);
-            t_start_index = i;
-            ++crossings;
-        }
+        walk_legs(scene, traced, passed, t_hit, walk.medium, [&](const Ray& leg, float length) {
+            walk.ray = leg;
+            step = scatter_in_medium(scene, walk, length);
+            return step == MediumStep::kCrossed;
+        });
+        crossings += passed.count;
         if (step == MediumStep::kEnded) break;
         if (step == MediumStep::kScattered) continue;
         walk.ray = traced;

@@ -343,36 +343,22 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
     const Medium* medium = m_media->camera;
     Spectrum L(0.0f), beta(1.0f);
     SurfaceInteraction si;
-    // The light a leg of the path gathers in `medium` (from `leg`'s origin to `length`
-    // along it), and its transmittance.
-    const auto through_leg = [&](const Ray& leg, float length) {
-        if (medium->scatters())
-            L += beta * in_scattering(scene, leg, length, *medium, sampler, rng, counter);
-        if (medium->emits() && medium->is_homogeneous())
-            L += beta * glow_along(leg, length, *medium);
-        beta *= medium->transmittance(leg, std::isinf(length) ? 1e30f : length, rng);
-    };
     PassedSurfaces passed;
-    SurfaceInteraction crossing;
     for (int segment = 0, crossings = 0; segment < kMaxCameraSegments;) {
         ++counter.rays;
         // One traversal past the interfaces it can skip: they split the ray into legs, each
         // in the medium the last one leads into.
         const bool hit = scene.intersect_surface_passing(ray, si, passed);
         const float t_end = hit ? si.t : kInfinity;
-        float t_start = 0.0f;
-        for (int i = 0; i <= passed.count; ++i) {
-            const float t_leg_end = i < passed.count ? passed.hits[i].t : t_end;
-            if (medium) {
-                Ray leg = ray;
-                leg.origin = ray.at(t_start);
-                through_leg(leg, t_leg_end - t_start);
-            }
-            if (i == passed.count) break;
-            scene.passed_surface(ray, passed.hits[i], crossing);
-            medium = medium_beyond(crossing, ray.direction, medium);
-            t_start = t_leg_end;
-        }
+        // The light each leg gathers in its medium, and its transmittance.
+        walk_legs(scene, ray, passed, t_end, medium, [&](const Ray& leg, float length) {
+            if (medium->scatters())
+                L += beta * in_scattering(scene, leg, length, *medium, sampler, rng, counter);
+            if (medium->emits() && medium->is_homogeneous())
+                L += beta * glow_along(leg, length, *medium);
+            beta *= medium->transmittance(leg, std::isinf(length) ? 1e30f : length, rng);
+            return true;
+        });
         crossings += passed.count;
         if (hit && on_primary) primary_reach += si.t;
         const bool interface = hit && si.material->is_interface();

@@ -7,6 +7,7 @@
 //   walk_media         the media a render's walks start in: the camera's, each light's
 //   through_medium     one segment of a walk through a medium by delta tracking: where it
 //                      scatters, or what reaches the segment's end
+//   walk_legs          the legs of a ray between the interfaces one traversal passed
 //
 // Media fill closed shapes (glint.interface, glass with an interior): a surface that names
 // media switches the ray to the medium on the side it goes to; any other surface leaves the
@@ -15,6 +16,7 @@
 #include <glint/core/medium.h>
 #include <glint/core/rng.h>
 #include <glint/material/material.h>
+#include <glint/scene/scene.h>
 
 #include <bit>
 #include <cstdint>
@@ -22,8 +24,6 @@
 #include <vector>
 
 namespace glint {
-
-class Scene;
 
 /// The medium a ray leaving `si` along `direction` enters: the surface's interior or
 /// exterior where it bounds media, `current` where it bounds none.
@@ -38,6 +38,32 @@ inline const Medium* medium_beyond(const SurfaceInteraction& si, const Vec3& dir
 /// every other draw is (the same for any thread count).
 inline uint64_t stream_seed(float u) {
     return mix_bits(std::bit_cast<uint32_t>(u) + 0x5eedULL);
+}
+
+/// The legs of `traced` between the interfaces one traversal passed (`passed`, from
+/// Scene::intersect_surface_passing), up to t_end (kInfinity: the ray left the scene). For
+/// each leg in a medium, in order, calls leg(leg_ray, length), with `medium` that leg's and
+/// leg_ray `traced` from where the leg starts; past each crossing `medium` becomes the one
+/// beyond it. Stops where `leg` returns false (the walk scattered or ended in that leg) and
+/// returns false; true once the last leg is walked.
+template <typename Leg>
+bool walk_legs(const Scene& scene, const Ray& traced, const PassedSurfaces& passed, float t_end,
+               const Medium*& medium, Leg&& leg) {
+    float t_start = 0.0f;
+    for (int i = 0; i <= passed.count; ++i) {
+        const float t_leg_end = i < passed.count ? passed.hits[i].t : t_end;
+        if (medium) {
+            Ray leg_ray = traced;
+            leg_ray.origin = traced.at(t_start);
+            if (!leg(leg_ray, t_leg_end - t_start)) return false;
+        }
+        if (i == passed.count) break;
+        SurfaceInteraction crossing;
+        scene.passed_surface(traced, passed.hits[i], crossing);
+        medium = medium_beyond(crossing, traced.direction, medium);
+        t_start = t_leg_end;
+    }
+    return true;
 }
 
 /// The medium that contains `p`: the side a probe ray from p arrives at on the first surface
