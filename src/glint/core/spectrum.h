@@ -134,8 +134,12 @@ public:
         return combine(a, b, [](float x, float y) { return std::max(x, y); });
     }
     friend Spectrum exp(const Spectrum& s) {
+        // Grey media and white light have one value: one exp, not four (the same bits).
+        if (s.is_constant()) return Spectrum(std::exp(s.m_v[0]));
         return s.map([](float x) { return std::exp(x); });
     }
+    /// Whether every value is the same (a grey quantity).
+    bool is_constant() const { return m_v[0] == m_v[1] && m_v[0] == m_v[2] && m_v[0] == m_v[3]; }
     // `f` applied to each value: for quantities defined per wavelength by a scalar formula,
     // like the Fresnel reflectance of a metal from its complex index.
     template <typename F>

@@ -201,6 +201,20 @@ void TriangleMesh::fill_interaction(const Ray& ray, const HitRecord& hit,
     si.dpdv = dpdv;
 }
 
+Vec3 TriangleMesh::geometric_normal(const Ray& ray, const HitRecord& hit) const {
+    if (!m_data.position_keys.empty()) [[unlikely]]
+        return Shape::geometric_normal(ray, hit);
+    // As fill_interaction(): the winding's normal, turned to the artist's normals' side.
+    const Vec3 ng = m_frames[hit.primitive].ng;
+    if (m_data.normals.empty()) return ng;
+    const uint32_t* idx = &m_data.indices[3 * hit.primitive];
+    const float b1 = hit.barycentric.x, b2 = hit.barycentric.y, b0 = 1.0f - b1 - b2;
+    const Vec3 interpolated =
+        b0 * m_data.normals[idx[0]] + b1 * m_data.normals[idx[1]] + b2 * m_data.normals[idx[2]];
+    return glm::dot(interpolated, interpolated) > 0.0f && glm::dot(ng, interpolated) < 0.0f ? -ng
+                                                                                            : ng;
+}
+
 void TriangleMesh::fill_deformed(float time, const HitRecord& hit, SurfaceInteraction& si) const {
     // Between the two keys around `time`, linearly, as Embree interpolates them.
     const size_t segments = m_data.position_keys.size();

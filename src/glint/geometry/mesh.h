@@ -36,6 +36,7 @@ public:
     RTCGeometry create_embree_geometry(RTCDevice device) const override;
     void fill_interaction(const Ray& ray, const HitRecord& hit,
                           SurfaceInteraction& si) const override;
+    Vec3 geometric_normal(const Ray& ray, const HitRecord& hit) const override;
     std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const override;
 
     const MeshData& data() const { return m_data; }

@@ -91,6 +91,14 @@ public:
     // `ray` is the ray in that space and `hit` what Embree reported.
     virtual void fill_interaction(const Ray& ray, const HitRecord& hit,
                                   SurfaceInteraction& si) const = 0;
+    // The unit geometric normal fill_interaction() gives at `hit` (its si.ng), for a walk
+    // that only asks which side of the surface it crosses to. Shapes whose full interaction
+    // costs much more override it.
+    virtual Vec3 geometric_normal(const Ray& ray, const HitRecord& hit) const {
+        SurfaceInteraction si;
+        fill_interaction(ray, hit, si);
+        return si.ng;
+    }
 
     // Sampling of this shape placed in the world by `to_world`, for area lights.
     virtual std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const = 0;

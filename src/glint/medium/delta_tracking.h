@@ -16,6 +16,10 @@ namespace glint {
 /// exp(-sigma d), channel by channel, with exp(-0 * infinity) taken as 1: a channel the
 /// medium does not attenuate stays 1 over an endless segment.
 inline Spectrum attenuation(const Spectrum& sigma, float d) {
+    if (sigma.is_constant()) {  // grey: one exp (the same bits as per value)
+        const float s = sigma.value(0);
+        return Spectrum(s == 0.0f ? 1.0f : std::exp(-s * d));
+    }
     return sigma.map([d](float s) { return s == 0.0f ? 1.0f : std::exp(-s * d); });
 }
 

@@ -112,6 +112,22 @@ public:
     void passed_surface(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
         fill_interaction(ray, hit, si);
     }
+    // What a walk needs of a passed interface: its material and unit geometric normal (as
+    // passed_surface() fills them in, without the rest of the interaction).
+    struct Crossing {
+        const Material* material = nullptr;
+        Vec3 ng{0.0f};
+    };
+    Crossing passed_crossing(const Ray& ray, const HitRecord& hit) const {
+        const WorldEntry& entry = m_world[hit.top_geometry];
+        if (hit.instanced()) {
+            SurfaceInteraction si;
+            fill_interaction(ray, hit, si);
+            return {si.material, si.ng};
+        }
+        // Only CSG solids have parts, and Embree passes no user geometry.
+        return {entry.geometry.material(0), entry.geometry.shape->geometric_normal(ray, hit)};
+    }
     bool occluded(const Ray& ray) const { return m_accel.occluded(ray); }
     // Whether anything blocks the shadow ray from `si` (its origin offset as spawn_ray's)
     // to just short of `target`.

@@ -212,6 +212,33 @@ TEST(Visibility, TransmittanceThroughInterfaceOnlySurfacesIsOne) {
         1.0f);
 }
 
+// A passed interface mesh whose vertex normals disagree with its winding: the normals say
+// which side is outside, in what walks read of the crossing (Scene::passed_crossing) as in
+// the whole interaction.
+TEST(Visibility, PassedCrossingTakesTheSideOfTheNormals) {
+    const test::BuiltScene built = test::build_lua(R"(
+        local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }
+        glint.mesh{ vertices = { {-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0} },
+                    indices = { 1, 2, 3, 1, 3, 4 },
+                    normals = { {0, 0, -1}, {0, 0, -1}, {0, 0, -1}, {0, 0, -1} },
+                    material = glint.interface{ interior = fog } }
+        glint.quad{ vertices = { {-9, -9, -20}, {9, -9, -20}, {9, 9, -20}, {-9, 9, -20} },
+                    material = glint.diffuse{} }
+    )",
+                                                   "sheet.lua");
+    const Ray ray{Vec3(0.2f, -0.3f, 10.0f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, kInfinity};
+    SurfaceInteraction si;
+    PassedSurfaces passed;
+    ASSERT_TRUE(built.scene->intersect_surface_passing(ray, si, passed));
+    ASSERT_EQ(passed.count, 1);
+    SurfaceInteraction crossing;
+    built.scene->passed_surface(ray, passed.hits[0], crossing);
+    const Scene::Crossing cheap = built.scene->passed_crossing(ray, passed.hits[0]);
+    EXPECT_EQ(cheap.material, crossing.material);
+    EXPECT_EQ(cheap.ng, crossing.ng);
+    EXPECT_LT(cheap.ng.z, -0.99f) << "the winding's +z, turned to the normals' side";
+}
+
 // One traversal goes past the interfaces Embree can skip: the shapes whose every part only
 // bounds media. They come back in order along the ray, each once (the high-quality BVH may
 // offer a triangle twice), and only those before the closest other hit; a sphere, which
@@ -242,6 +269,10 @@ TEST(Visibility, OneTraversalPassesTheInterfaces) {
         two.scene->passed_surface(ray, passed.hits[i], crossing);
         EXPECT_TRUE(crossing.material->is_interface()) << i;
         EXPECT_NEAR(crossing.p.z, 10.0f - expected_t[i], 1e-4f) << i;
+        // What walks read of a crossing, without the whole interaction: the same.
+        const Scene::Crossing cheap = two.scene->passed_crossing(ray, passed.hits[i]);
+        EXPECT_EQ(cheap.material, crossing.material) << i;
+        EXPECT_EQ(cheap.ng, crossing.ng) << i;
     }
     // Every other query stops at the first interface.
     EXPECT_TRUE(two.scene->intersect_surface(ray, si));

@@ -148,6 +148,14 @@ void PreviewIntegrator::restart(const Scene& scene) {
     m_photons.clear();
     m_photon_passes = 0;
     m_media = walk_media(scene);
+    m_light_centres.clear();
+    for (const std::unique_ptr<Light>& light : scene.lights()) {
+        const std::optional<LightBounds> bounds =
+            light->is_infinite() ? std::nullopt : light->bounds();
+        m_light_centres.push_back(bounds && !bounds->bounds.is_empty()
+                                      ? std::optional<Vec3>(bounds->bounds.center())
+                                      : std::nullopt);
+    }
     m_volume_batches.clear();
     m_volume_view = VolumePhotonView();
     const Bounds3& bounds = scene.stats().bounds;

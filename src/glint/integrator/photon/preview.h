@@ -162,6 +162,9 @@ private:
     // Media that scatter (none: the preview ignores media but absorbing glass), their volume
     // photons' batches (a ring as m_batches), their radius, and how this pass sees them.
     std::optional<WalkMedia> m_media;
+    // Each light's centre by Light::index, where in-scattering's equiangular sampling aims
+    // (none for lights at infinity).
+    std::vector<std::optional<Vec3>> m_light_centres;
     std::vector<std::vector<VolumePhoton>> m_volume_batches;
     float m_volume_radius2 = 0.0f;
     VolumePhotonView m_volume_view;

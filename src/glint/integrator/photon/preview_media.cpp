@@ -8,6 +8,7 @@
 #include <glint/integrator/transport/visibility.h>
 #include <glint/math/frame.h>
 #include <glint/medium/delta_tracking.h>
+#include <glint/medium/equiangular.h>
 #include <glint/medium/henyey_greenstein.h>
 
 #include <tbb/parallel_for.h>
@@ -48,6 +49,70 @@ Spectrum glow_along(const Ray& ray, float t_end, const Medium& medium) {
                    const float covered = unbounded ? 1.0f : -std::expm1(-sigma_t * t_end);
                    return source * covered / sigma_t;
                });
+}
+
+// Distances on [0, t_end) of a homogeneous medium in proportion to the extinction times the
+// transmittance, one channel's (t_end may be infinite): the strategy the mean of the
+// channels' densities weighs. A channel without extinction draws uniformly on a finite
+// segment and nothing on an infinite one.
+class TruncatedExponential {
+public:
+    TruncatedExponential(const Spectrum& sigma_t, float t_end)
+        : m_sigma_t(sigma_t),
+          m_t_end(t_end),
+          m_grey(sigma_t.is_constant()),
+          m_grey_covered(m_grey ? covered_by(sigma_t.value(0)) : 0.0f) {}
+
+    std::optional<float> sample(int channel, float u) const {
+        const float sigma = m_sigma_t.value(channel);
+        if (sigma > 0.0f) return -std::log1p(-u * covered(sigma)) / sigma;
+        if (std::isinf(m_t_end)) return std::nullopt;
+        return u * m_t_end;
+    }
+
+    // The density at t (the channels' mean), and the transmittance to t per channel.
+    float pdf(float t, Spectrum& transmittance) const {
+        transmittance = attenuation(m_sigma_t, t);
+        if (m_grey) return channel_pdf(m_sigma_t.value(0), transmittance.value(0));
+        const int channels = Spectrum::active_values();
+        float sum = 0.0f;
+        for (int c = 0; c < channels; ++c)
+            sum += channel_pdf(m_sigma_t.value(c), transmittance.value(c));
+        return sum / static_cast<float>(channels);
+    }
+
+private:
+    // The share of the exponential's draws that fall before t_end (computed once when grey).
+    float covered_by(float sigma) const {
+        return std::isinf(m_t_end) ? 1.0f : -std::expm1(-sigma * m_t_end);
+    }
+    float covered(float sigma) const { return m_grey ? m_grey_covered : covered_by(sigma); }
+    float channel_pdf(float sigma, float transmittance) const {
+        if (sigma > 0.0f) return sigma * transmittance / covered(sigma);
+        return std::isinf(m_t_end) ? 0.0f : 1.0f / m_t_end;
+    }
+
+    Spectrum m_sigma_t;
+    float m_t_end;
+    bool m_grey;
+    float m_grey_covered;
+};
+
+// Equiangular sampling of `ray`'s segment [0, t_end) towards the centre of a light that the
+// light sampler picks for the segment's middle (its start when the segment is infinite);
+// nullopt for lights at infinity and where the centre lies on the ray's line. The pick is
+// made before the distance and the distance's density is the chosen light's, so the
+// one-sample MIS of the two strategies is unbiased for every pick. `centres` holds each
+// light's centre by Light::index.
+std::optional<Equiangular> equiangular_towards_light(
+    const Scene& scene, const std::vector<std::optional<Vec3>>& centres, const Ray& ray,
+    float t_end, float u_anchor) {
+    const Vec3 anchor = std::isinf(t_end) ? ray.origin : ray.at(0.5f * t_end);
+    const LightSampler::Choice choice = scene.light_sampler().sample(anchor, Vec3(0.0f), u_anchor);
+    if (!choice.light) return std::nullopt;
+    const size_t index = static_cast<size_t>(choice.light->index());
+    if (index >= centres.size() || !centres[index]) return std::nullopt;
+    return Equiangular::towards(ray, *centres[index], t_end);
 }
 
 }  // namespace
@@ -269,10 +334,13 @@ void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonE
 
 // Light scattered towards the camera at a point along `ray` (unit direction) in `medium`
 // before parameter t_end, straight from a light: one point on the segment and one light
-// sample there. In a homogeneous medium the point is drawn in proportion to the extinction
-// times the transmittance on the segment, one channel's chosen uniformly and weighted over
-// all channels (one-sample MIS: colour noise stays bounded in chromatic fog); in any other,
-// uniformly over the segment (which must then be finite), with the transmittance estimated.
+// sample there. In a homogeneous medium the point comes from one of two strategies, mixed by
+// one-sample MIS (their densities' mean): in proportion to the extinction times the
+// transmittance (one channel's, chosen uniformly, weighted over all channels so that colour
+// noise stays bounded in chromatic fog), or equiangular towards a light (equiangular.h),
+// which follows the 1 / r^2 glow round a small light that the first leaves noisy. In any
+// other medium the point is uniform on the segment (which must then be finite), with the
+// transmittance estimated.
 Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, float t_end,
                                           const Medium& medium, Sampler& sampler, Rng& rng,
                                           RayCounter& counter) const {
@@ -281,38 +349,37 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
     const Vec2 u_light = sampler.get_2d();
     const float u_choose = sampler.get_1d();
     const float u_select = sampler.get_1d();
+    const float u_strategy = sampler.get_1d();
+    const float u_anchor = sampler.get_1d();
+    if (scene.light_sampler().empty()) return Spectrum(0.0f);
     float t;
     Spectrum weight;  // transmittance to t times sigma_s there, over the density of t
     if (medium.is_homogeneous()) {
         const MediumPoint point = medium.at(ray.origin);
-        const Spectrum sigma_t = point.sigma_a + point.sigma_s;
-        const float sigma = sigma_t.value(choose_channel(u_channel));
-        // Inverse of the truncated exponential on [0, t_end) (t_end may be infinite).
-        const float reach = std::isinf(t_end) ? 1.0f : -std::expm1(-sigma * t_end);
-        if (sigma > 0.0f)
-            t = -std::log1p(-u_distance * reach) / sigma;
-        else if (!std::isinf(t_end))
-            t = u_distance * t_end;
-        else
+        const std::optional<Equiangular> equiangular =
+            equiangular_towards_light(scene, m_light_centres, ray, t_end, u_anchor);
+        const TruncatedExponential exponential(point.sigma_a + point.sigma_s, t_end);
+        if (equiangular && u_strategy < 0.5f) {
+            t = std::min(std::max(equiangular->sample(u_distance), 0.0f), t_end);
+        } else if (const std::optional<float> drawn =
+                       exponential.sample(choose_channel(u_channel), u_distance)) {
+            t = *drawn;
+        } else {
             return Spectrum(0.0f);
-        if (!(t < t_end)) return Spectrum(0.0f);
-        float pdf = 0.0f;
-        const int channels = Spectrum::active_values();
-        for (int c = 0; c < channels; ++c) {
-            const float s = sigma_t.value(c);
-            const float covered = std::isinf(t_end) ? 1.0f : -std::expm1(-s * t_end);
-            pdf += s > 0.0f ? s * std::exp(-s * t) / covered
-                            : (std::isinf(t_end) ? 0.0f : 1.0f / t_end);
         }
-        pdf /= static_cast<float>(channels);
+        if (!(t < t_end)) return Spectrum(0.0f);
+        Spectrum transmittance_to_t;
+        const float exponential_pdf = exponential.pdf(t, transmittance_to_t);
+        const float pdf =
+            equiangular ? 0.5f * (exponential_pdf + equiangular->pdf(t)) : exponential_pdf;
         if (!(pdf > 0.0f)) return Spectrum(0.0f);
-        weight = attenuation(sigma_t, t) * point.sigma_s / pdf;
+        weight = transmittance_to_t * point.sigma_s / pdf;
     } else {
         if (std::isinf(t_end)) return Spectrum(0.0f);
         t = u_distance * t_end;
         weight = medium.transmittance(ray, t, rng) * medium.at(ray.at(t)).sigma_s * t_end;
     }
-    if (weight.is_black() || scene.light_sampler().empty()) return Spectrum(0.0f);
+    if (weight.is_black()) return Spectrum(0.0f);
     const Vec3 p = ray.at(t);
     const LightPoint light = sample_light_point(scene, p, Vec3(0.0f), u_light, u_choose, u_select);
     const std::optional<LightSample>& ls = light.sample;

@@ -58,9 +58,10 @@ bool walk_legs(const Scene& scene, const Ray& traced, const PassedSurfaces& pass
             if (!leg(leg_ray, t_leg_end - t_start)) return false;
         }
         if (i == passed.count) break;
-        SurfaceInteraction crossing;
-        scene.passed_surface(traced, passed.hits[i], crossing);
-        medium = medium_beyond(crossing, traced.direction, medium);
+        const Scene::Crossing crossing = scene.passed_crossing(traced, passed.hits[i]);
+        const MediumInterface media = crossing.material->medium_interface();
+        if (media.is_transition())
+            medium = media.leaving(glm::dot(traced.direction, crossing.ng) > 0.0f);
         t_start = t_leg_end;
     }
     return true;
