@@ -28,27 +28,52 @@ void for_rows(int height, const Body& body) {
     });
 }
 
-// Four floats or ints in one SSE register (GCC's vector extensions): an à-trous pass
-// computes four pixels' taps at once. Every operation is the IEEE one its scalar form does,
-// so the four lanes give the bits the scalar loop gives.
+// Four or eight floats (ints) in one SSE or AVX register (GCC's vector extensions): an
+// à-trous pass computes four or eight pixels' taps at once. Every operation is the IEEE one
+// its scalar form does (no fused multiply-add: the AVX2 kernel is compiled without FMA), so
+// every width gives the bits the scalar loop gives.
 using Float4 = float __attribute__((vector_size(16)));
 using Int4 = int32_t __attribute__((vector_size(16)));
+using Float8 = float __attribute__((vector_size(32)));
+using Int8 = int32_t __attribute__((vector_size(32)));
 
-Float4 load4(const float* p) {
-    Float4 v;
+// The integer vector of a float vector's width.
+template <typename V>
+struct IntLanes;
+template <>
+struct IntLanes<Float4> {
+    using type = Int4;
+};
+template <>
+struct IntLanes<Float8> {
+    using type = Int8;
+};
+
+// The helpers (and atrous_row with its lambdas) are always inlined: the AVX2 kernel then
+// compiles them with AVX2. GCC still warns, at the end of the file where it emits their
+// eight-lane copies, that a call to them from code without AVX would pass the lanes
+// differently; no such call is made. (So the warning is off to the end of this file, which
+// CMake compiles on its own, outside the unity batches.)
+#pragma GCC diagnostic ignored "-Wpsabi"
+template <typename V>
+[[gnu::always_inline]] inline V load(const float* p) {
+    V v;
     std::memcpy(&v, p, sizeof v);
     return v;
 }
-void store4(float* p, Float4 v) {
+template <typename V>
+[[gnu::always_inline]] inline void store(float* p, V v) {
     std::memcpy(p, &v, sizeof v);
 }
-Float4 abs4(Float4 v) {
-    return reinterpret_cast<Float4>(reinterpret_cast<Int4>(v) & 0x7fffffff);
+template <typename V>
+[[gnu::always_inline]] inline V abs_lanes(V v) {
+    using I = typename IntLanes<V>::type;
+    return reinterpret_cast<V>(reinterpret_cast<I>(v) & 0x7fffffff);
 }
 
-// 2^f on (-1, 0], a degree-5 fit, for floats and Float4 alike.
+// 2^f on (-1, 0], a degree-5 fit, for floats and vectors alike.
 template <typename T>
-T exp2_fraction(T f) {
+[[gnu::always_inline]] inline T exp2_fraction(T f) {
     return 1.0f + f * (0.693147182f +
                        f * (0.240226507f +
                             f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
@@ -58,19 +83,21 @@ T exp2_fraction(T f) {
 // a polynomial for the fraction. The filter's weights need no more, and std::exp is most of
 // an à-trous tap's time. -x in powers of two is clamped (NaN too, from pixels whose result
 // is thrown away).
-float exp_negative(float x) {
+[[gnu::always_inline]] inline float exp_negative(float x) {
     const float scaled = x * 1.44269504f;
     const float t = scaled < 126.0f ? scaled : 126.0f;
     const int whole = static_cast<int>(t);  // floor: t >= 0
     const float p = exp2_fraction(static_cast<float>(whole) - t);
     return p * std::bit_cast<float>(static_cast<uint32_t>(127 - whole) << 23);
 }
-Float4 exp_negative(Float4 x) {
-    const Float4 scaled = x * 1.44269504f;
-    const Float4 t = scaled < 126.0f ? scaled : 126.0f;
-    const Int4 whole = __builtin_convertvector(t, Int4);
-    const Float4 p = exp2_fraction(__builtin_convertvector(whole, Float4) - t);
-    return p * reinterpret_cast<Float4>((127 - whole) << 23);
+template <typename V>
+[[gnu::always_inline]] inline V exp_negative(V x) {
+    using I = typename IntLanes<V>::type;
+    const V scaled = x * 1.44269504f;
+    const V t = scaled < 126.0f ? scaled : 126.0f;
+    const I whole = __builtin_convertvector(t, I);
+    const V p = exp2_fraction(__builtin_convertvector(whole, V) - t);
+    return p * reinterpret_cast<V>((127 - whole) << 23);
 }
 
 // max(0, c)^power for the integer powers of two the normal test uses, by squaring.
@@ -182,167 +209,191 @@ struct Guide {
 // One à-trous pass with holes `step` pixels apart. Row by row, tap by tap: each tap's
 // weights for a whole row in one loop without branches (the compiler's SIMD lanes), the
 // stopping functions' exponents summed into one exponential, the normal's power by squaring.
-void atrous_pass(const Guide& g, const Signal& in, int step, const SvgfSettings& s, Signal& out) {
+// Row y of one à-trous pass, its taps `V`'s lanes at a time.
+template <typename V>
+[[gnu::always_inline]] inline void atrous_row(const Guide& g, const Signal& in, int step,
+                                              const SvgfSettings& s, Signal& out, int y) {
+    constexpr int kLanes = sizeof(V) / sizeof(float);
     const int width = g.width, r = s.kernel_radius;
     const float* kernel = r == 1 ? kKernel3 : kKernel5;
     const bool square_normal = s.normal_power == 128.0f;
-    for_rows(g.height, [&](int y) {
-        const std::size_t row = static_cast<std::size_t>(y) * width;
-        std::vector<float> inv_luminance_scale(width), slope(width), floor_scale(width);
-        std::vector<float> sum_r(width), sum_g(width), sum_b(width), sum_w(width), sum_var(width);
-        for (int x = 0; x < width; ++x) {
-            const std::size_t i = row + x;
-            // The luminance test's scale: the standard deviation, blurred 3x3 (less noisy).
-            float blurred_var = 0.0f, blur_w = 0.0f;
-            for (int dy = -1; dy <= 1; ++dy) {
-                const int ny = y + dy;
-                if (ny < 0 || ny >= g.height) continue;
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int nx = x + dx;
-                    if (nx < 0 || nx >= width) continue;
-                    const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
-                    if (!(g.depth[j] > 0.0f)) continue;
-                    const float w = (dx == 0 ? 0.5f : 0.25f) * (dy == 0 ? 0.5f : 0.25f);
-                    blurred_var += w * in.variance[j];
-                    blur_w += w;
+    const std::size_t row = static_cast<std::size_t>(y) * width;
+    std::vector<float> inv_luminance_scale(width), slope(width), floor_scale(width);
+    std::vector<float> sum_r(width), sum_g(width), sum_b(width), sum_w(width), sum_var(width);
+    for (int x = 0; x < width; ++x) {
+        const std::size_t i = row + x;
+        // The luminance test's scale: the standard deviation, blurred 3x3 (less noisy).
+        float blurred_var = 0.0f, blur_w = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy) {
+            const int ny = y + dy;
+            if (ny < 0 || ny >= g.height) continue;
+            for (int dx = -1; dx <= 1; ++dx) {
+                const int nx = x + dx;
+                if (nx < 0 || nx >= width) continue;
+                const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
+                if (!(g.depth[j] > 0.0f)) continue;
+                const float w = (dx == 0 ? 0.5f : 0.25f) * (dy == 0 ? 0.5f : 0.25f);
+                blurred_var += w * in.variance[j];
+                blur_w += w;
+            }
+        }
+        inv_luminance_scale[x] =
+            blur_w > 0.0f
+                ? 1.0f /
+                      (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) + 1e-6f)
+                : 0.0f;
+        slope[x] = s.sigma_depth * g.depth_gradient[i];
+        floor_scale[x] = 1e-3f * g.depth[i];
+        // The pixel itself, with the kernel's weight alone.
+        const float w = kernel[0] * kernel[0];
+        sum_r[x] = w * in.r[i];
+        sum_g[x] = w * in.g[i];
+        sum_b[x] = w * in.b[i];
+        sum_w[x] = w;
+        sum_var[x] = w * w * in.variance[i];
+    }
+    const float* zi = g.depth + row;
+    const float* li = in.luminance.data() + row;
+    const float* nxi = g.nx.data() + row;
+    const float* nyi = g.ny.data() + row;
+    const float* nzi = g.nz.data() + row;
+    for (int ky = -r; ky <= r; ++ky) {
+        const int ty = y + ky * step;
+        if (ty < 0 || ty >= g.height) continue;
+        for (int kx = -r; kx <= r; ++kx) {
+            if (kx == 0 && ky == 0) continue;
+            const int dx = kx * step;
+            const int x0 = std::max(0, -dx), x1 = std::min(width, width - dx);
+            if (x0 >= x1) continue;
+            const float kernel_w = kernel[std::abs(kx)] * kernel[std::abs(ky)];
+            const float distance =
+                static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
+            // Tap j of pixel x is element x of these.
+            const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(ty) * width + dx;
+            const float* zj = g.depth + shift;
+            const float* lj = in.luminance.data() + shift;
+            const float* nxj = g.nx.data() + shift;
+            const float* nyj = g.ny.data() + shift;
+            const float* nzj = g.nz.data() + shift;
+            const float* rj = in.r.data() + shift;
+            const float* gj = in.g.data() + shift;
+            const float* bj = in.b.data() + shift;
+            const float* vj = in.variance.data() + shift;
+            // The loop twice, so that the usual power of 128 needs no branch inside. Local
+            // restrict pointers tell the compiler the sums alias no input: it can then run
+            // the loop in SIMD lanes.
+            auto taps = [&](auto normal_of) __attribute__((always_inline)) {
+                const float* __restrict czi = zi;
+                const float* __restrict cli = li;
+                const float* __restrict cnx = nxi;
+                const float* __restrict cny = nyi;
+                const float* __restrict cnz = nzi;
+                const float* __restrict tz = zj;
+                const float* __restrict tl = lj;
+                const float* __restrict tnx = nxj;
+                const float* __restrict tny = nyj;
+                const float* __restrict tnz = nzj;
+                const float* __restrict tr = rj;
+                const float* __restrict tg = gj;
+                const float* __restrict tb = bj;
+                const float* __restrict tv = vj;
+                const float* __restrict sl = slope.data();
+                const float* __restrict fl = floor_scale.data();
+                const float* __restrict il = inv_luminance_scale.data();
+                float* __restrict sr = sum_r.data();
+                float* __restrict sg = sum_g.data();
+                float* __restrict sb = sum_b.data();
+                float* __restrict sw = sum_w.data();
+                float* __restrict sv = sum_var.data();
+                const float kw = kernel_w, dist = distance;
+                int x = x0;
+                for (; x + kLanes <= x1; x += kLanes) {
+                    const V cosine = load<V>(cnx + x) * load<V>(tnx + x) +
+                                     load<V>(cny + x) * load<V>(tny + x) +
+                                     load<V>(cnz + x) * load<V>(tnz + x);
+                    const V z = load<V>(tz + x);
+                    const V exponent =
+                        abs_lanes(load<V>(czi + x) - z) /
+                            (load<V>(sl + x) * dist + load<V>(fl + x)) +
+                        abs_lanes(load<V>(cli + x) - load<V>(tl + x)) * load<V>(il + x);
+                    const V zero{};
+                    const V weight =
+                        kw * normal_of(cosine > 0.0f ? cosine : zero) * exp_negative(exponent);
+                    const V w = z > 0.0f ? weight : zero;  // escaped: no part
+                    store(sr + x, load<V>(sr + x) + w * load<V>(tr + x));
+                    store(sg + x, load<V>(sg + x) + w * load<V>(tg + x));
+                    store(sb + x, load<V>(sb + x) + w * load<V>(tb + x));
+                    store(sw + x, load<V>(sw + x) + w);
+                    store(sv + x, load<V>(sv + x) + w * w * load<V>(tv + x));
                 }
-            }
-            inv_luminance_scale[x] =
-                blur_w > 0.0f
-                    ? 1.0f / (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) +
-                              1e-6f)
-                    : 0.0f;
-            slope[x] = s.sigma_depth * g.depth_gradient[i];
-            floor_scale[x] = 1e-3f * g.depth[i];
-            // The pixel itself, with the kernel's weight alone.
-            const float w = kernel[0] * kernel[0];
-            sum_r[x] = w * in.r[i];
-            sum_g[x] = w * in.g[i];
-            sum_b[x] = w * in.b[i];
-            sum_w[x] = w;
-            sum_var[x] = w * w * in.variance[i];
-        }
-        const float* zi = g.depth + row;
-        const float* li = in.luminance.data() + row;
-        const float* nxi = g.nx.data() + row;
-        const float* nyi = g.ny.data() + row;
-        const float* nzi = g.nz.data() + row;
-        for (int ky = -r; ky <= r; ++ky) {
-            const int ty = y + ky * step;
-            if (ty < 0 || ty >= g.height) continue;
-            for (int kx = -r; kx <= r; ++kx) {
-                if (kx == 0 && ky == 0) continue;
-                const int dx = kx * step;
-                const int x0 = std::max(0, -dx), x1 = std::min(width, width - dx);
-                if (x0 >= x1) continue;
-                const float kernel_w = kernel[std::abs(kx)] * kernel[std::abs(ky)];
-                const float distance =
-                    static_cast<float>(step) * std::sqrt(static_cast<float>(kx * kx + ky * ky));
-                // Tap j of pixel x is element x of these.
-                const std::ptrdiff_t shift = static_cast<std::ptrdiff_t>(ty) * width + dx;
-                const float* zj = g.depth + shift;
-                const float* lj = in.luminance.data() + shift;
-                const float* nxj = g.nx.data() + shift;
-                const float* nyj = g.ny.data() + shift;
-                const float* nzj = g.nz.data() + shift;
-                const float* rj = in.r.data() + shift;
-                const float* gj = in.g.data() + shift;
-                const float* bj = in.b.data() + shift;
-                const float* vj = in.variance.data() + shift;
-                // The loop twice, so that the usual power of 128 needs no branch inside. Local
-                // restrict pointers tell the compiler the sums alias no input: it can then run
-                // the loop in SIMD lanes.
-                auto taps = [&](auto normal_of) {
-                    const float* __restrict czi = zi;
-                    const float* __restrict cli = li;
-                    const float* __restrict cnx = nxi;
-                    const float* __restrict cny = nyi;
-                    const float* __restrict cnz = nzi;
-                    const float* __restrict tz = zj;
-                    const float* __restrict tl = lj;
-                    const float* __restrict tnx = nxj;
-                    const float* __restrict tny = nyj;
-                    const float* __restrict tnz = nzj;
-                    const float* __restrict tr = rj;
-                    const float* __restrict tg = gj;
-                    const float* __restrict tb = bj;
-                    const float* __restrict tv = vj;
-                    const float* __restrict sl = slope.data();
-                    const float* __restrict fl = floor_scale.data();
-                    const float* __restrict il = inv_luminance_scale.data();
-                    float* __restrict sr = sum_r.data();
-                    float* __restrict sg = sum_g.data();
-                    float* __restrict sb = sum_b.data();
-                    float* __restrict sw = sum_w.data();
-                    float* __restrict sv = sum_var.data();
-                    const float kw = kernel_w, dist = distance;
-                    int x = x0;
-                    for (; x + 4 <= x1; x += 4) {
-                        const Float4 cosine = load4(cnx + x) * load4(tnx + x) +
-                                              load4(cny + x) * load4(tny + x) +
-                                              load4(cnz + x) * load4(tnz + x);
-                        const Float4 z = load4(tz + x);
-                        const Float4 exponent =
-                            abs4(load4(czi + x) - z) / (load4(sl + x) * dist + load4(fl + x)) +
-                            abs4(load4(cli + x) - load4(tl + x)) * load4(il + x);
-                        const Float4 zero{};
-                        const Float4 weight =
-                            kw * normal_of(cosine > 0.0f ? cosine : zero) * exp_negative(exponent);
-                        const Float4 w = z > 0.0f ? weight : zero;  // escaped: no part
-                        store4(sr + x, load4(sr + x) + w * load4(tr + x));
-                        store4(sg + x, load4(sg + x) + w * load4(tg + x));
-                        store4(sb + x, load4(sb + x) + w * load4(tb + x));
-                        store4(sw + x, load4(sw + x) + w);
-                        store4(sv + x, load4(sv + x) + w * w * load4(tv + x));
-                    }
-                    for (; x < x1; ++x) {
-                        const float cosine = cnx[x] * tnx[x] + cny[x] * tny[x] + cnz[x] * tnz[x];
-                        const float exponent = std::abs(czi[x] - tz[x]) / (sl[x] * dist + fl[x]) +
-                                               std::abs(cli[x] - tl[x]) * il[x];
-                        const float weight =
-                            kw * normal_of(cosine > 0.0f ? cosine : 0.0f) * exp_negative(exponent);
-                        const float w = tz[x] > 0.0f ? weight : 0.0f;  // escaped: no part
-                        sr[x] += w * tr[x];
-                        sg[x] += w * tg[x];
-                        sb[x] += w * tb[x];
-                        sw[x] += w;
-                        sv[x] += w * w * tv[x];
-                    }
-                };
-                if (square_normal) {
-                    taps([](auto c) {
-                        c *= c, c *= c, c *= c, c *= c, c *= c, c *= c;
-                        return c * c;  // c^128
-                    });
-                } else {
-                    taps([&](auto c) {
-                        // Any other power lane by lane (slower; the settings' default is 128).
-                        if constexpr (std::is_same_v<decltype(c), float>) {
-                            return std::pow(c, s.normal_power);
-                        } else {
-                            for (int k = 0; k < 4; ++k) c[k] = std::pow(c[k], s.normal_power);
-                            return c;
-                        }
-                    });
+                for (; x < x1; ++x) {
+                    const float cosine = cnx[x] * tnx[x] + cny[x] * tny[x] + cnz[x] * tnz[x];
+                    const float exponent = std::abs(czi[x] - tz[x]) / (sl[x] * dist + fl[x]) +
+                                           std::abs(cli[x] - tl[x]) * il[x];
+                    const float weight =
+                        kw * normal_of(cosine > 0.0f ? cosine : 0.0f) * exp_negative(exponent);
+                    const float w = tz[x] > 0.0f ? weight : 0.0f;  // escaped: no part
+                    sr[x] += w * tr[x];
+                    sg[x] += w * tg[x];
+                    sb[x] += w * tb[x];
+                    sw[x] += w;
+                    sv[x] += w * w * tv[x];
                 }
+            };
+            if (square_normal) {
+                taps([](auto c) __attribute__((always_inline)) {
+                    c *= c, c *= c, c *= c, c *= c, c *= c, c *= c;
+                    return c * c;  // c^128
+                });
+            } else {
+                taps([&](auto c) __attribute__((always_inline)) {
+                    // Any other power lane by lane (slower; the settings' default is 128).
+                    if constexpr (std::is_same_v<decltype(c), float>) {
+                        return std::pow(c, s.normal_power);
+                    } else {
+                        for (int k = 0; k < kLanes; ++k) c[k] = std::pow(c[k], s.normal_power);
+                        return c;
+                    }
+                });
             }
         }
-        for (int x = 0; x < width; ++x) {
-            const std::size_t i = row + x;
-            if (!(g.depth[i] > 0.0f)) {  // escaped: passes through
-                out.r[i] = in.r[i];
-                out.g[i] = in.g[i];
-                out.b[i] = in.b[i];
-                out.variance[i] = in.variance[i];
-                continue;
-            }
-            const float inv = 1.0f / sum_w[x];
-            out.r[i] = sum_r[x] * inv;
-            out.g[i] = sum_g[x] * inv;
-            out.b[i] = sum_b[x] * inv;
-            out.variance[i] = sum_var[x] * inv * inv;
+    }
+    for (int x = 0; x < width; ++x) {
+        const std::size_t i = row + x;
+        if (!(g.depth[i] > 0.0f)) {  // escaped: passes through
+            out.r[i] = in.r[i];
+            out.g[i] = in.g[i];
+            out.b[i] = in.b[i];
+            out.variance[i] = in.variance[i];
+            continue;
         }
-    });
+        const float inv = 1.0f / sum_w[x];
+        out.r[i] = sum_r[x] * inv;
+        out.g[i] = sum_g[x] * inv;
+        out.b[i] = sum_b[x] * inv;
+        out.variance[i] = sum_var[x] * inv * inv;
+    }
+}
+
+// The row in SSE2 (every x86-64), and in AVX2 where the processor has it: eight lanes, the
+// same bits (SvgfSettings::wide_lanes; tested).
+void atrous_row_sse2(const Guide& g, const Signal& in, int step, const SvgfSettings& s, Signal& out,
+                     int y) {
+    atrous_row<Float4>(g, in, step, s, out, y);
+}
+__attribute__((target("avx2"))) void atrous_row_avx2(const Guide& g, const Signal& in, int step,
+                                                     const SvgfSettings& s, Signal& out, int y) {
+    atrous_row<Float8>(g, in, step, s, out, y);
+}
+
+bool processor_has_avx2() {
+    static const bool has = __builtin_cpu_supports("avx2");
+    return has;
+}
+
+void atrous_pass(const Guide& g, const Signal& in, int step, const SvgfSettings& s, Signal& out) {
+    const auto row = s.wide_lanes && processor_has_avx2() ? atrous_row_avx2 : atrous_row_sse2;
+    for_rows(g.height, [&](int y) { row(g, in, step, s, out, y); });
 }
 
 }  // namespace

@@ -25,6 +25,9 @@ struct SvgfSettings {
     float sigma_depth = 1.0f;      ///< depth stopping, in units of the local depth gradient
     /// Pixels with a shorter history estimate their variance from a 7x7 neighbourhood.
     float min_temporal_history = 4.0f;
+    /// The à-trous taps eight pixels at a time (AVX2) where the processor can, else four
+    /// (SSE2): the same bits either way; false only to test that.
+    bool wide_lanes = true;
 };
 
 /// One frame's inputs, one value per pixel, row-major, top row first.
