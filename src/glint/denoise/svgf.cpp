@@ -50,10 +50,10 @@ struct IntLanes<Float8> {
 };
 
 // The helpers (and atrous_row with its lambdas) are always inlined: the AVX2 kernel then
-// compiles them with AVX2. GCC still warns, at the end of the file where it emits their
-// eight-lane copies, that a call to them from code without AVX would pass the lanes
-// differently; no such call is made. (So the warning is off to the end of this file, which
-// CMake compiles on its own, outside the unity batches.)
+// compiles them with AVX2. They take lanes by reference, and GCC still warns, at the end of
+// the file where it emits their eight-lane copies, that returning the lanes from code
+// without AVX would pass them differently; no such call is made. (So the warning is off to
+// the end of this file, which CMake compiles on its own, outside the unity batches.)
 #pragma GCC diagnostic ignored "-Wpsabi"
 template <typename V>
 [[gnu::always_inline]] inline V load(const float* p) {
@@ -62,18 +62,18 @@ template <typename V>
     return v;
 }
 template <typename V>
-[[gnu::always_inline]] inline void store(float* p, V v) {
+[[gnu::always_inline]] inline void store(float* p, const V& v) {
     std::memcpy(p, &v, sizeof v);
 }
 template <typename V>
-[[gnu::always_inline]] inline V abs_lanes(V v) {
+[[gnu::always_inline]] inline V abs_lanes(const V& v) {
     using I = typename IntLanes<V>::type;
     return reinterpret_cast<V>(reinterpret_cast<I>(v) & 0x7fffffff);
 }
 
 // 2^f on (-1, 0], a degree-5 fit, for floats and vectors alike.
 template <typename T>
-[[gnu::always_inline]] inline T exp2_fraction(T f) {
+[[gnu::always_inline]] inline T exp2_fraction(const T& f) {
     return 1.0f + f * (0.693147182f +
                        f * (0.240226507f +
                             f * (0.0555041087f + f * (0.00961812911f + f * 0.00133335581f))));
@@ -91,7 +91,7 @@ template <typename T>
     return p * std::bit_cast<float>(static_cast<uint32_t>(127 - whole) << 23);
 }
 template <typename V>
-[[gnu::always_inline]] inline V exp_negative(V x) {
+[[gnu::always_inline]] inline V exp_negative(const V& x) {
     using I = typename IntLanes<V>::type;
     const V scaled = x * 1.44269504f;
     const V t = scaled < 126.0f ? scaled : 126.0f;
@@ -194,6 +194,7 @@ void estimate_variance(Planes& p, const SvgfSettings& s) {
 // run along a row with every tap's arithmetic in SIMD lanes.
 struct Signal {
     std::vector<float> r, g, b, variance, luminance;
+    std::vector<float> variance_row_sums;  // row_sums() of the variance, for its 3x3 blur
     explicit Signal(std::size_t count)
         : r(count), g(count), b(count), variance(count), luminance(count) {}
 };
@@ -204,7 +205,31 @@ struct Guide {
     const float* depth;
     std::vector<float> nx, ny, nz;  // normals as planes
     const float* depth_gradient;
+    // The 3x3 variance blur's weight sums: row_sums() of 1 on surfaces, 0 where rays escaped.
+    std::vector<float> surface_row_sums;
 };
+
+// The variance blur's kernel along one axis (its 2D weights are products of these).
+constexpr float kBlurCentre = 0.5f, kBlurSide = 0.25f;
+
+// Each pixel's horizontal 1-2-1 sum (kBlurSide, kBlurCentre, kBlurSide) of `values` times
+// `surface` (1 on a surface, 0 where the ray escaped); neighbours beyond the image add 0.
+void row_sums(const Guide& g, const float* values, std::vector<float>& sums) {
+    sums.resize(static_cast<std::size_t>(g.width) * g.height);
+    for_rows(g.height, [&](int y) {
+        const std::size_t row = static_cast<std::size_t>(y) * g.width;
+        const float* v = values + row;
+        const float* z = g.depth + row;
+        float* out = sums.data() + row;
+        auto masked = [&](int x) { return z[x] > 0.0f ? v[x] : 0.0f; };
+        for (int x = 0; x < g.width; ++x) {
+            float sum = kBlurCentre * masked(x);
+            if (x > 0) sum += kBlurSide * masked(x - 1);
+            if (x + 1 < g.width) sum += kBlurSide * masked(x + 1);
+            out[x] = sum;
+        }
+    });
+}
 
 // One à-trous pass with holes `step` pixels apart. Row by row, tap by tap: each tap's
 // weights for a whole row in one loop without branches (the compiler's SIMD lanes), the
@@ -220,28 +245,26 @@ template <typename V>
     const std::size_t row = static_cast<std::size_t>(y) * width;
     std::vector<float> inv_luminance_scale(width), slope(width), floor_scale(width);
     std::vector<float> sum_r(width), sum_g(width), sum_b(width), sum_w(width), sum_var(width);
+    // The luminance test's scale: the standard deviation, its variance blurred 3x3 over the
+    // pixels on a surface (less noisy), from the rows' horizontal sums.
+    std::vector<float> blurred_var(width, 0.0f), blur_w(width, 0.0f);
+    for (int dy = -1; dy <= 1; ++dy) {
+        const int ny = y + dy;
+        if (ny < 0 || ny >= g.height) continue;
+        const float wy = dy == 0 ? kBlurCentre : kBlurSide;
+        const std::size_t sums = static_cast<std::size_t>(ny) * width;
+        for (int x = 0; x < width; ++x) {
+            blurred_var[x] += wy * in.variance_row_sums[sums + x];
+            blur_w[x] += wy * g.surface_row_sums[sums + x];
+        }
+    }
     for (int x = 0; x < width; ++x) {
         const std::size_t i = row + x;
-        // The luminance test's scale: the standard deviation, blurred 3x3 (less noisy).
-        float blurred_var = 0.0f, blur_w = 0.0f;
-        for (int dy = -1; dy <= 1; ++dy) {
-            const int ny = y + dy;
-            if (ny < 0 || ny >= g.height) continue;
-            for (int dx = -1; dx <= 1; ++dx) {
-                const int nx = x + dx;
-                if (nx < 0 || nx >= width) continue;
-                const std::size_t j = static_cast<std::size_t>(ny) * width + nx;
-                if (!(g.depth[j] > 0.0f)) continue;
-                const float w = (dx == 0 ? 0.5f : 0.25f) * (dy == 0 ? 0.5f : 0.25f);
-                blurred_var += w * in.variance[j];
-                blur_w += w;
-            }
-        }
         inv_luminance_scale[x] =
-            blur_w > 0.0f
-                ? 1.0f /
-                      (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) + 1e-6f)
-                : 0.0f;
+            blur_w[x] > 0.0f ? 1.0f / (s.sigma_luminance *
+                                           std::sqrt(std::max(0.0f, blurred_var[x] / blur_w[x])) +
+                                       1e-6f)
+                             : 0.0f;
         slope[x] = s.sigma_depth * g.depth_gradient[i];
         floor_scale[x] = 1e-3f * g.depth[i];
         // The pixel itself, with the kernel's weight alone.
@@ -341,13 +364,16 @@ template <typename V>
                 }
             };
             if (square_normal) {
-                taps([](auto c) __attribute__((always_inline)) {
+                // The lanes by reference: see the helpers on passing them.
+                taps([](const auto& cosine) __attribute__((always_inline)) {
+                    auto c = cosine;
                     c *= c, c *= c, c *= c, c *= c, c *= c, c *= c;
                     return c * c;  // c^128
                 });
             } else {
-                taps([&](auto c) __attribute__((always_inline)) {
+                taps([&](const auto& cosine) __attribute__((always_inline)) {
                     // Any other power lane by lane (slower; the settings' default is 128).
+                    auto c = cosine;
                     if constexpr (std::is_same_v<decltype(c), float>) {
                         return std::pow(c, s.normal_power);
                     } else {
@@ -428,7 +454,8 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
     }
     estimate_depth_gradient(p);
     estimate_variance(p, settings);
-    Guide guide{input.width, input.height, input.depth.data(), {}, {}, {}, p.depth_gradient.data()};
+    Guide guide{input.width, input.height, input.depth.data(),      {},
+                {},          {},           p.depth_gradient.data(), {}};
     guide.nx.resize(count);
     guide.ny.resize(count);
     guide.nz.resize(count);
@@ -442,9 +469,11 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
         signal.b[i] = p.illumination[i].b;
         signal.variance[i] = p.variance[i];
     }
+    row_sums(guide, std::vector<float>(count, 1.0f).data(), guide.surface_row_sums);
     for (int level = 0; level < settings.levels; ++level) {
         for (std::size_t i = 0; i < count; ++i)
             signal.luminance[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]).luminance();
+        row_sums(guide, signal.variance.data(), signal.variance_row_sums);
         atrous_pass(guide, signal, 1 << level, settings, next);
         std::swap(signal, next);
     }
