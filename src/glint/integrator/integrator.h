@@ -51,6 +51,9 @@ struct IntegratorCapabilities {
     /// Collects the light that media emit (glint.medium{ emission = ... }); the render says
     /// so where a medium emits and the integrator does not.
     bool emitting_media = false;
+    /// Collects only the glow of media that fill a shape (light paths start there: the
+    /// light tracer); the render says so where the camera's medium itself glows.
+    bool glow_needs_shape = false;
     /// The debug views it can write, besides those every integrator's settings give.
     std::vector<DebugView> debug_views;
 

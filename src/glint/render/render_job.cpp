@@ -7,6 +7,7 @@
 #include <glint/geometry/accel.h>
 #include <glint/integrator/integrator.h>
 #include <glint/integrator/tile/tile_integrator.h>
+#include <glint/integrator/transport/medium_emitters.h>
 #include <glint/render/denoise_step.h>
 #include <glint/render/partial_render.h>
 #include <glint/render/render_checks.h>
@@ -123,8 +124,14 @@ void warn_if_media_ignored(const Scene& scene, const RenderSettings& settings,
     } else if (!capabilities.emitting_media &&
                any_medium([](const Medium& m) { return m.emits(); })) {
         warn(control, fmt::format("{}: the '{}' integrator ignores the light media emit "
-                                  "(glint.medium{{ emission = ... }}); 'volpath', 'bdpt', 'vcm', "
-                                  "'mlt' and 'preview' render it",
+                                  "(glint.medium{{ emission = ... }}); 'volpath', 'light', "
+                                  "'bdpt', 'vcm', 'mlt' and 'preview' render it",
+                                  settings.where_of("integrator"), settings.integrator));
+    } else if (capabilities.glow_needs_shape && !MediumEmitters(scene).unbounded().empty()) {
+        warn(control, fmt::format("{}: the '{}' integrator ignores the light of a glowing medium "
+                                  "that fills no shape (the camera's medium): its paths start "
+                                  "only in media inside shapes; 'volpath', 'bdpt', 'vcm', 'mlt' "
+                                  "and 'preview' render it",
                                   settings.where_of("integrator"), settings.integrator));
     }
 }

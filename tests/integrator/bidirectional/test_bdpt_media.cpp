@@ -242,11 +242,12 @@ TEST(BdptMedia, SameBitsForOneAndTwoThreads) {
 }
 
 // A glowing gas: a sphere of medium that absorbs, scatters and emits (chromatic emission)
-// over a floor, beside a small lamp. Only the camera subpaths collect what the gas emits
-// (weighted over their channels as volpath weights it; mlt's s = 0 states, each its depth's
-// segment), the light subpaths scatter the lamp's light in it: bdpt's, vcm's and mlt's image
-// means agree with volpath's per channel.
-TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptVcmAndMlt) {
+// over a floor, beside a small lamp. In bdpt, vcm and mlt only the camera subpaths collect
+// what the gas emits (weighted over their channels as volpath weights it; mlt's s = 0
+// states, each its depth's segment), the light subpaths scatter the lamp's light in it; the
+// light tracer starts some of its paths in the gas (MediumEmitters). Their image means agree
+// with volpath's per channel.
+TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptVcmMltAndLight) {
     const auto glow = [](const std::string& integrator, int spp) {
         return [integrator, spp](int seed) {
             return fmt::format(R"(
@@ -267,7 +268,7 @@ TEST(BdptMediaSlow, EmittingMediumAgreesWithVolpathForBdptVcmAndMlt) {
     };
     constexpr int kImages = 6;
     const std::array<Estimate, 3> volpath_mean = channel_means(glow("volpath", 2048), kImages);
-    for (const char* integrator : {"bdpt", "vcm", "mlt"}) {
+    for (const char* integrator : {"bdpt", "vcm", "mlt", "light"}) {
         // mlt's image brightness varies from render to render with its normalisation (the
         // bootstrap's estimate of the image's total), so its means are less precise.
         const bool mlt = std::string(integrator) == "mlt";

@@ -2,7 +2,8 @@
 // integral over the film (chromatic, anisotropic: the hero-channel weights and the phase
 // function at the lens connection); a fog box lit from inside, with a glass sphere whose
 // volumetric caustic both must see, converges to volpath's image; a light finds the medium
-// around it; the same bits for one and two threads.
+// around it; a glowing slab matches its closed form; the same bits for one and two threads
+// (with a glowing gas too).
 #include <glint/integrator/transport/media.h>
 #include <glint/medium/henyey_greenstein.h>
 #include <glint/scene/build.h>
@@ -60,6 +61,39 @@ TEST(LightTracerMedia, SingleScatteringFromAPointLightMatchesItsIntegral) {
     }
 }
 
+// A slab of gas that absorbs and glows (no scattering, no light) seen straight through: each
+// pixel is Le (1 - exp(-sigma_a d / cos theta)), its film mean found by integrating over the
+// film. The light tracer sees it only through the paths that start in the gas
+// (MediumEmitters: points uniform in the box the interface bounds).
+TEST(LightTracerMedia, GlowingSlabMatchesItsClosedForm) {
+    const float fov_degrees = 10.0f, sigma_a = 1.0f, depth = 1.0f;
+    auto scene = [&](int seed) {
+        return fmt::format(R"(
+            local gas = glint.medium{{ sigma_a = {}, sigma_s = 0, emission = 1 }}
+            glint.camera{{ eye = {{0, 0, 5}}, look_at = {{0, 0, 0}}, fov = {} }}
+            glint.render{{ width = {}, height = {}, spp = 1024, seed = {}, integrator = 'light' }}
+            glint.box{{ min = {{-1, -1, {}}}, max = {{1, 1, {}}},
+                       material = glint.interface{{ interior = gas }} }}
+        )",
+                           sigma_a, fov_degrees, kFilmSize, kFilmSize, seed, -0.5f * depth,
+                           0.5f * depth);
+    };
+    double exact = 0.0;
+    const int n = 256;
+    const double half = std::tan(0.5 * fov_degrees * kPi / 180.0);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) {
+            const double x = (2.0 * (i + 0.5) / n - 1.0) * half,
+                         y = (2.0 * (j + 0.5) / n - 1.0) * half;
+            exact += 1.0 - std::exp(-sigma_a * depth * std::sqrt(1.0 + x * x + y * y));
+        }
+    }
+    exact /= n * n;
+    const Estimate e = image_mean(scene, 6, 0);
+    EXPECT_LT(4.0 * e.se, 0.02 * exact);
+    EXPECT_NEAR(e.mean, exact, 4.0 * e.se);
+}
+
 TEST(LightTracerMedia, FindsTheMediumAroundALight) {
     const BuiltScene built = build_lua(fog_box("light", 1, 1));
     const Scene& scene = *built.scene;
@@ -109,9 +143,18 @@ TEST(LightTracerMediaSlow, SpectralMeansAgreeWithVolpathInAFogBox) {
 }
 
 TEST(LightTracerMedia, SameBitsForOneAndTwoThreads) {
-    const std::string scene = fog_box("light", 16, 3);  // three chunks of paths
-    const Image one = render_lua(scene, 1);
-    const Image two = render_lua(scene, 2);
-    ASSERT_EQ(one.pixels.size(), two.pixels.size());
-    EXPECT_TRUE(one.pixels == two.pixels);
+    const std::string glowing_gas = R"(
+        local gas = glint.medium{ sigma_a = {1, 1.5, 2}, sigma_s = 0.6, emission = {2, 1, 0.4} }
+        glint.camera{ eye = {0, 1, 4}, look_at = {0, 0.8, 0}, fov = 40 }
+        glint.render{ width = 16, height = 16, spp = 48, integrator = 'light' }
+        glint.sphere{ center = {0, 0.9, 0}, radius = 0.7,
+                      material = glint.interface{ interior = gas } }
+        glint.point_light{ position = {1, 2, 1}, intensity = 5 }
+    )";
+    for (const std::string& scene : {fog_box("light", 16, 3), glowing_gas}) {  // 3 chunks
+        const Image one = render_lua(scene, 1);
+        const Image two = render_lua(scene, 2);
+        ASSERT_EQ(one.pixels.size(), two.pixels.size());
+        EXPECT_TRUE(one.pixels == two.pixels);
+    }
 }

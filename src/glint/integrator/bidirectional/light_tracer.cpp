@@ -9,13 +9,16 @@
 #include <glint/integrator/transport/spectral_model.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/integrator/transport/visibility.h>
+#include <glint/math/warp.h>
 #include <glint/medium/delta_tracking.h>
 #include <glint/medium/henyey_greenstein.h>
 
 #include <fmt/format.h>
 #include <tbb/parallel_for.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace glint {
 namespace {
@@ -77,13 +80,25 @@ RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progre
     const auto start = std::chrono::steady_clock::now();
     check_camera_motion_joinable(scene, "light", m_settings.where_of("integrator"));
     m_light_media.clear();
-    if (!scene.media().empty()) {
+    m_with_media = !scene.media().empty();
+    if (m_with_media) {
         // Where each light starts its paths, probed once from one point it emits from.
         m_light_media.assign(scene.lights().size(), nullptr);
         for (const std::unique_ptr<Light>& light : scene.lights()) {
             const std::optional<LightEmission> e = light->sample_le(Vec2(0.5f), Vec2(0.5f), 0.5f);
             if (e) m_light_media[light->index()] = medium_containing(scene, e->ray.origin);
         }
+    }
+    // Glowing media and the lights share the paths by power.
+    m_glow.reset();
+    m_glow_share = 0.0f;
+    if (std::any_of(scene.media().begin(), scene.media().end(),
+                    [](const std::unique_ptr<Medium>& m) { return m->emits(); })) {
+        m_glow.emplace(scene);
+        float light_power = 0.0f;
+        for (const std::unique_ptr<Light>& light : scene.lights())
+            light_power += light->power().average();
+        if (!m_glow->empty()) m_glow_share = m_glow->power() / (m_glow->power() + light_power);
     }
     const uint64_t pixels = static_cast<uint64_t>(film.width()) * film.height();
     const uint64_t paths = pixels * static_cast<uint64_t>(m_settings.spp);
@@ -134,23 +149,69 @@ void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) c
     // scenes keep their paths bit for bit); every ray and connection of the path keeps it.
     if (scene.camera().time_sampled())
         u_start.time = scene.camera().time_of_sample(chunk.rng.next_float());
-    const std::optional<LightPathStart> start = start_light_path(scene, u_start);
-    if (!start) return;
-    const bool with_media = !m_light_media.empty();
+    const bool with_media = m_with_media;
     Particle particle;
-    particle.medium = with_media ? m_light_media[start->light->index()] : nullptr;
-    connect_light_to_camera(scene, start->emission, *start->light, start->pmf, particle.medium,
-                            u_light_lens, chunk);
-
-    particle.beta = start->beta;
-    if (particle.beta.is_black()) return;
-    particle.ray = start->emission.ray;
     particle.max_bounces = m_settings.max_depth >= 0 ? m_settings.max_depth : kMaxBounces;
+    if (u_start.u_light < m_glow_share) {
+        // The path starts in a glowing medium; its first draws place it there.
+        start_in_glowing_medium(scene, u_start.u_light / m_glow_share,
+                                Vec3(u_start.u_position.x, u_start.u_position.y, u_start.u_select),
+                                u_start.u_direction, u_light_lens, u_start.time, particle, chunk);
+        if (particle.beta.is_black()) return;
+    } else {
+        // The rest of the light's number chooses among the lights (the same number as without
+        // glowing media when there are none).
+        float lights_share = 1.0f;
+        if (m_glow_share > 0.0f) {
+            lights_share = 1.0f - m_glow_share;
+            u_start.u_light = std::min((u_start.u_light - m_glow_share) / lights_share,
+                                       std::nextafter(1.0f, 0.0f));
+        }
+        const std::optional<LightPathStart> start = start_light_path(scene, u_start);
+        if (!start) return;
+        particle.medium = with_media ? m_light_media[start->light->index()] : nullptr;
+        connect_light_to_camera(scene, start->emission, *start->light, start->pmf * lights_share,
+                                particle.medium, u_light_lens, chunk);
+        particle.beta = start->beta / lights_share;
+        if (particle.beta.is_black()) return;
+        particle.ray = start->emission.ray;
+    }
     if (with_media) {
         particle.hero =
             std::min(static_cast<int>(chunk.rng.next_float() * Spectrum::active_values()),
                      Spectrum::active_values() - 1);
     }
+    walk(scene, particle, chunk);
+}
+
+// A light path's start in a glowing medium (MediumEmitters): the point connects to the lens
+// with the light it emits, sigma_a Le, the same in every direction (the emitting point is the
+// path's first vertex, as a light's point is); then the particle leaves it in a uniform
+// direction carrying 4 pi sigma_a Le over the point's density, and its next scattering is
+// its second vertex (volpath counts the emitting point as a vertex too). A point outside the
+// chosen medium leaves the particle's power 0.
+void LightTracer::start_in_glowing_medium(const Scene& scene, float u_region, const Vec3& u_point,
+                                          const Vec2& u_direction, const Vec2& u_lens, float time,
+                                          Particle& particle, Chunk& chunk) const {
+    particle.beta = Spectrum(0.0f);
+    if (particle.max_bounces < 1) return;  // the glow is light after one vertex
+    const std::optional<MediumEmitters::Start> start = m_glow->sample(scene, u_region, u_point);
+    if (!start) return;
+    const Spectrum source = start->source_over_pdf / m_glow_share;
+    const std::optional<CameraConnection> connection = connect_glowing_point_to_camera(
+        scene, start->p, time, *start->medium, source, u_lens, chunk.rays, &chunk.rng);
+    if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
+    particle.medium = start->medium;
+    particle.beta = source * (4.0f * kPi);
+    particle.ray =
+        Ray{start->p, warp::square_to_uniform_sphere(u_direction), 0.0f, kInfinity, time};
+    particle.bounce = 2;
+}
+
+// The particle's walk from its first ray: scattering in importance mode until roulette, the
+// depth limit or an escape ends it, every non-specular vertex connected to the camera.
+void LightTracer::walk(const Scene& scene, Particle& particle, Chunk& chunk) const {
+    const bool with_media = m_with_media;
     PassedSurfaces passed;
     for (int crossings = 0; particle.bounce <= particle.max_bounces && crossings < kMaxBounces;) {
         ++chunk.rays;

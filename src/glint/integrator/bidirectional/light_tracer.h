@@ -20,10 +20,14 @@
 // tracking, as volpath does, and every real scattering in a medium is a vertex that
 // connects to the lens too: light -> glass -> fog -> camera is the volumetric caustic that
 // camera paths find only by chance. A light starts in the medium around it
-// (medium_containing); emitting media send no light paths.
+// (medium_containing). Glowing media start light paths too (MediumEmitters), chosen against
+// the lights by power: the glowing point connects to the lens, then the particle leaves it
+// in a uniform direction and scatters on as any other.
 #include <glint/core/medium.h>
 #include <glint/integrator/integrator.h>
+#include <glint/integrator/transport/medium_emitters.h>
 
+#include <optional>
 #include <vector>
 
 namespace glint {
@@ -39,6 +43,8 @@ public:
         capabilities.spectral = true;
         capabilities.motion_blur = true;  // each path carries its time
         capabilities.scattering_media = true;
+        capabilities.emitting_media = true;  // glowing media start light paths
+        capabilities.glow_needs_shape = true;
         return capabilities;
     }
 
@@ -47,6 +53,10 @@ private:
     struct Particle;
     enum class MediumEvent { kCrossed, kScattered, kEnded };
     void trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const;
+    void start_in_glowing_medium(const Scene& scene, float u_region, const Vec3& u_point,
+                                 const Vec2& u_direction, const Vec2& u_lens, float time,
+                                 Particle& particle, Chunk& chunk) const;
+    void walk(const Scene& scene, Particle& particle, Chunk& chunk) const;
     MediumEvent through_medium(const Scene& scene, Particle& particle, float t_hit,
                                Chunk& chunk) const;
     void connect_to_camera(const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf,
@@ -56,8 +66,14 @@ private:
                                  const Vec2& u_lens, Chunk& chunk) const;
 
     RenderSettings m_settings;
-    // The medium each light sits in, by Light::index; empty when the scene has no media.
+    // Whether the scene has media (the walks then carry theirs), and the medium each light
+    // sits in, by Light::index.
+    bool m_with_media = false;
     std::vector<const Medium*> m_light_media;
+    // The glowing media light paths start in, and the share of paths that start there (the
+    // rest leave the lights); none without such media.
+    std::optional<MediumEmitters> m_glow;
+    float m_glow_share = 0.0f;
 };
 
 }  // namespace glint

@@ -88,4 +88,19 @@ std::optional<CameraConnection> connect_medium_point_to_camera(
     return CameraConnection{*lens, beta * (phase / lens->pdf) * lens->We * visible};
 }
 
+std::optional<CameraConnection> connect_glowing_point_to_camera(const Scene& scene, const Vec3& p,
+                                                                float time, const Medium& medium,
+                                                                const Spectrum& source,
+                                                                const Vec2& u_lens, uint64_t& rays,
+                                                                Rng* rng) {
+    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
+    if (!lens) return std::nullopt;
+    ++rays;
+    const Spectrum visible =
+        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium, rng);
+    if (visible.is_black()) return std::nullopt;
+    // Emission in a medium is the same in every direction and has no cosine.
+    return CameraConnection{*lens, source * (1.0f / lens->pdf) * lens->We * visible};
+}
+
 }  // namespace glint

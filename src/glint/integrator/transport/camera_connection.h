@@ -45,6 +45,15 @@ std::optional<CameraConnection> connect_medium_point_to_camera(
     const Scene& scene, const Vec3& p, const Vec3& wi_arrival, float time, const Medium& medium,
     const Spectrum& beta, const Vec2& u_lens, uint64_t& rays, Rng* rng = nullptr);
 
+/// Connects the starting point `p` of a light path in a glowing `medium` to the lens with
+/// `u_lens`: `source` is what p emits per unit length towards any direction (sigma_a Le)
+/// over the density p was chosen with. nullopt when the lens cannot see p or nothing gets
+/// through; the shadow ray is counted in `rays`.
+std::optional<CameraConnection> connect_glowing_point_to_camera(const Scene& scene, const Vec3& p,
+                                                                float time, const Medium& medium,
+                                                                const Spectrum& source,
+                                                                const Vec2& u_lens, uint64_t& rays,
+                                                                Rng* rng = nullptr);
 /// Connects the starting point `p` of a light path on an emitting surface (normal `n`, the
 /// side Light::sample_le chose) to the lens with `u_lens`. `pdf_origin` is the density the
 /// path chose p with: the light's pmf times its area density. Only the chosen side can see
