@@ -196,24 +196,39 @@ TEST_F(CliTest, FogOnAnIntegratorWithoutMediaWarns) {
         EXPECT_EQ(result.exit_code, 0) << result.output;
         EXPECT_EQ(count_of(result.output, "warning"), 0u) << integrator << ": " << result.output;
     }
-    // A glowing medium: light paths start at lights only, so 'light' says it leaves the glow
-    // out; volpath does not.
-    const std::string glow = out("glow.lua");
-    {
-        std::ofstream file(glow);
-        file << "glint.camera{ eye = {0, 0, 3}, look_at = {0, 0, 0} }\n"
+    // A glowing medium in a shape: 'light' starts paths in it, volpath collects it; neither
+    // warns. Around the camera, filling no shape, 'light' cannot start paths in it, and says
+    // so; volpath does not.
+    const auto write = [](const std::string& path, const std::string& medium_place) {
+        std::ofstream file(path);
+        file << "local glow = glint.medium{ sigma_a = 1, emission = 2 }\n"
+                "glint.camera{ eye = {0, 0, 3}, look_at = {0, 0, 0}"
+             << (medium_place == "camera" ? ", medium = glow" : "")
+             << " }\n"
                 "glint.render{ width = 8, height = 8, spp = 1 }\n"
-                "local glow = glint.medium{ sigma_a = 1, emission = 2 }\n"
-                "glint.sphere{ radius = 1, material = glint.interface{ interior = glow } }\n";
+                "glint.sphere{ radius = 1, material = "
+             << (medium_place == "sphere" ? "glint.interface{ interior = glow }"
+                                          : "glint.diffuse{}")
+             << " }\n"
+                "glint.point_light{ position = {0, 2, 2}, intensity = 1 }\n";
+    };
+    const std::string in_sphere = out("glow.lua"), around_camera = out("air.lua");
+    write(in_sphere, "sphere");
+    write(around_camera, "camera");
+    for (const char* integrator : {"light", "volpath"}) {
+        result = run_glint(fmt::format("render {} --integrator {} -o {} --quiet", in_sphere,
+                                       integrator, out("b.exr")));
+        EXPECT_EQ(result.exit_code, 0) << result.output;
+        EXPECT_EQ(count_of(result.output, "warning"), 0u) << integrator << ": " << result.output;
     }
-    result =
-        run_glint(fmt::format("render {} --integrator light -o {} --quiet", glow, out("b.exr")));
+    result = run_glint(
+        fmt::format("render {} --integrator light -o {} --quiet", around_camera, out("b.exr")));
     EXPECT_EQ(result.exit_code, 0) << result.output;
-    EXPECT_NE(result.output.find("the 'light' integrator ignores the light media emit"),
+    EXPECT_NE(result.output.find("ignores the light of a glowing medium that fills no shape"),
               std::string::npos)
         << result.output;
-    result =
-        run_glint(fmt::format("render {} --integrator volpath -o {} --quiet", glow, out("b.exr")));
+    result = run_glint(
+        fmt::format("render {} --integrator volpath -o {} --quiet", around_camera, out("b.exr")));
     EXPECT_EQ(count_of(result.output, "warning"), 0u) << result.output;
 }
 

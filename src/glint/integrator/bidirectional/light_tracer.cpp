@@ -129,11 +129,12 @@ RenderStats LightTracer::render(const Scene& scene, Film& film, Progress& progre
 
 // One light path: a light chosen by power, a ray from it, then scattering in importance
 // mode until roulette, the depth limit or an escape ends it; the light's point and every
-// non-specular vertex connect to the camera. Draws, from an RNG keyed by (seed, index): the
-// light (1D), the ray's origin (2D) and direction (2D), the light's part (1D), the lens
-// point of the light's own connection (2D); in a scene with media the hero channel (1D);
-// then per vertex the lens point (2D), the BSDF sample (2D + 1D) and roulette (1D), and in
-// media the collisions' distances and events.
+// non-specular vertex connect to the camera. Glowing media share the choice with the lights
+// by power (start_in_glowing_medium, which takes the same first draws). Draws, from an RNG
+// keyed by (seed, index): the light (1D), the ray's origin (2D) and direction (2D), the
+// light's part (1D), the lens point of the light's own connection (2D); in a scene with
+// media the hero channel (1D); then per vertex the lens point (2D), the BSDF sample (2D +
+// 1D) and roulette (1D), and in media the collisions' distances and events.
 void LightTracer::trace_path(const Scene& scene, uint64_t index, Chunk& chunk) const {
     chunk.rng.seed(hash_combine(mix_bits(m_settings.seed ^ 0x4c54u), index));
     const PathWavelengths wavelengths(m_settings.spectral,
