@@ -231,10 +231,9 @@ void row_sums(const Guide& g, const float* values, std::vector<float>& sums) {
     });
 }
 
-// One à-trous pass with holes `step` pixels apart. Row by row, tap by tap: each tap's
-// weights for a whole row in one loop without branches (the compiler's SIMD lanes), the
-// stopping functions' exponents summed into one exponential, the normal's power by squaring.
-// Row y of one à-trous pass, its taps `V`'s lanes at a time.
+// Row y of one à-trous pass with holes `step` pixels apart, tap by tap: each tap's weights
+// for the whole row in one loop without branches, `V`'s lanes at a time, the stopping
+// functions' exponents summed into one exponential, the normal's power by squaring.
 template <typename V>
 [[gnu::always_inline]] inline void atrous_row(const Guide& g, const Signal& in, int step,
                                               const SvgfSettings& s, Signal& out, int y) {
@@ -245,26 +244,24 @@ template <typename V>
     const std::size_t row = static_cast<std::size_t>(y) * width;
     std::vector<float> inv_luminance_scale(width), slope(width), floor_scale(width);
     std::vector<float> sum_r(width), sum_g(width), sum_b(width), sum_w(width), sum_var(width);
-    // The luminance test's scale: the standard deviation, its variance blurred 3x3 over the
-    // pixels on a surface (less noisy), from the rows' horizontal sums.
-    std::vector<float> blurred_var(width, 0.0f), blur_w(width, 0.0f);
-    for (int dy = -1; dy <= 1; ++dy) {
-        const int ny = y + dy;
-        if (ny < 0 || ny >= g.height) continue;
-        const float wy = dy == 0 ? kBlurCentre : kBlurSide;
-        const std::size_t sums = static_cast<std::size_t>(ny) * width;
-        for (int x = 0; x < width; ++x) {
-            blurred_var[x] += wy * in.variance_row_sums[sums + x];
-            blur_w[x] += wy * g.surface_row_sums[sums + x];
-        }
-    }
     for (int x = 0; x < width; ++x) {
         const std::size_t i = row + x;
+        // The luminance test's scale: the standard deviation, its variance blurred 3x3 over
+        // the pixels on a surface (less noisy), from the rows' horizontal sums.
+        float blurred_var = 0.0f, blur_w = 0.0f;
+        for (int dy = -1; dy <= 1; ++dy) {
+            const int ny = y + dy;
+            if (ny < 0 || ny >= g.height) continue;
+            const float wy = dy == 0 ? kBlurCentre : kBlurSide;
+            const std::size_t j = static_cast<std::size_t>(ny) * width + x;
+            blurred_var += wy * in.variance_row_sums[j];
+            blur_w += wy * g.surface_row_sums[j];
+        }
         inv_luminance_scale[x] =
-            blur_w[x] > 0.0f ? 1.0f / (s.sigma_luminance *
-                                           std::sqrt(std::max(0.0f, blurred_var[x] / blur_w[x])) +
-                                       1e-6f)
-                             : 0.0f;
+            blur_w > 0.0f
+                ? 1.0f /
+                      (s.sigma_luminance * std::sqrt(std::max(0.0f, blurred_var / blur_w)) + 1e-6f)
+                : 0.0f;
         slope[x] = s.sigma_depth * g.depth_gradient[i];
         floor_scale[x] = 1e-3f * g.depth[i];
         // The pixel itself, with the kernel's weight alone.

@@ -203,7 +203,7 @@ void LightTracer::start_in_glowing_medium(const Scene& scene, float u_region, co
         scene, start->p, time, *start->medium, source, u_lens, chunk.rays, &chunk.rng);
     if (connection) chunk.splats.push_back({connection->lens.film, connection->L});
     particle.medium = start->medium;
-    particle.beta = source * (4.0f * kPi);
+    particle.beta = source / warp::uniform_sphere_pdf();
     particle.ray =
         Ray{start->p, warp::square_to_uniform_sphere(u_direction), 0.0f, kInfinity, time};
     particle.bounce = 2;

@@ -58,10 +58,7 @@ Spectrum glow_along(const Ray& ray, float t_end, const Medium& medium) {
 class TruncatedExponential {
 public:
     TruncatedExponential(const Spectrum& sigma_t, float t_end)
-        : m_sigma_t(sigma_t),
-          m_t_end(t_end),
-          m_grey(sigma_t.is_constant()),
-          m_grey_covered(m_grey ? covered_by(sigma_t.value(0)) : 0.0f) {}
+        : m_sigma_t(sigma_t), m_t_end(t_end), m_grey(sigma_t.is_constant()) {}
 
     std::optional<float> sample(int channel, float u) const {
         const float sigma = m_sigma_t.value(channel);
@@ -82,11 +79,10 @@ public:
     }
 
 private:
-    // The share of the exponential's draws that fall before t_end (computed once when grey).
-    float covered_by(float sigma) const {
+    // The share of the exponential's draws that fall before t_end.
+    float covered(float sigma) const {
         return std::isinf(m_t_end) ? 1.0f : -std::expm1(-sigma * m_t_end);
     }
-    float covered(float sigma) const { return m_grey ? m_grey_covered : covered_by(sigma); }
     float channel_pdf(float sigma, float transmittance) const {
         if (sigma > 0.0f) return sigma * transmittance / covered(sigma);
         return std::isinf(m_t_end) ? 0.0f : 1.0f / m_t_end;
@@ -94,8 +90,7 @@ private:
 
     Spectrum m_sigma_t;
     float m_t_end;
-    bool m_grey;
-    float m_grey_covered;
+    bool m_grey;  // every channel's the same: one density for all
 };
 
 // Equiangular sampling of `ray`'s segment [0, t_end) towards the centre of a light that the

@@ -18,6 +18,25 @@ std::optional<CameraWiSample> sample_lens(const Scene& scene, const Vec3& p, con
     return lens;
 }
 
+// A point p inside `medium` joined to the lens: `towards(wi)` is what leaves p towards the
+// lens along wi, per unit solid angle (a point in a medium has no cosine); the shadow ray
+// takes on the media and interfaces between.
+template <typename Towards>
+std::optional<CameraConnection> connect_point_in_medium(const Scene& scene, const Vec3& p,
+                                                        float time, const Medium& medium,
+                                                        const Vec2& u_lens, uint64_t& rays,
+                                                        Rng* rng, Towards&& towards) {
+    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
+    if (!lens) return std::nullopt;
+    const Spectrum leaving = towards(lens->wi);
+    if (leaving.is_black()) return std::nullopt;
+    ++rays;
+    const Spectrum visible =
+        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium, rng);
+    if (visible.is_black()) return std::nullopt;
+    return CameraConnection{*lens, leaving * (1.0f / lens->pdf) * lens->We * visible};
+}
+
 }  // namespace
 
 void check_camera_motion_joinable(const Scene& scene, const std::string& integrator,
@@ -74,18 +93,12 @@ std::optional<CameraConnection> connect_light_point_to_camera(
 std::optional<CameraConnection> connect_medium_point_to_camera(
     const Scene& scene, const Vec3& p, const Vec3& wi_arrival, float time, const Medium& medium,
     const Spectrum& beta, const Vec2& u_lens, uint64_t& rays, Rng* rng) {
-    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
-    if (!lens) return std::nullopt;
     // The phase function's arguments point away from p: where the light came from
     // (-wi_arrival) and where it goes (the lens).
-    const float phase = HenyeyGreenstein(medium.phase_asymmetry()).eval(-wi_arrival, lens->wi);
-    if (!(phase > 0.0f)) return std::nullopt;
-    ++rays;
-    const Spectrum visible =
-        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium, rng);
-    if (visible.is_black()) return std::nullopt;
-    // A point in a medium has no cosine: the phase function is a density per solid angle.
-    return CameraConnection{*lens, beta * (phase / lens->pdf) * lens->We * visible};
+    const HenyeyGreenstein phase(medium.phase_asymmetry());
+    return connect_point_in_medium(
+        scene, p, time, medium, u_lens, rays, rng,
+        [&](const Vec3& to_lens) { return beta * phase.eval(-wi_arrival, to_lens); });
 }
 
 std::optional<CameraConnection> connect_glowing_point_to_camera(const Scene& scene, const Vec3& p,
@@ -93,14 +106,9 @@ std::optional<CameraConnection> connect_glowing_point_to_camera(const Scene& sce
                                                                 const Spectrum& source,
                                                                 const Vec2& u_lens, uint64_t& rays,
                                                                 Rng* rng) {
-    const std::optional<CameraWiSample> lens = sample_lens(scene, p, u_lens, time);
-    if (!lens) return std::nullopt;
-    ++rays;
-    const Spectrum visible =
-        transmittance(scene, Scene::ShadowRay{p, lens->p_lens - p, time}, &medium, rng);
-    if (visible.is_black()) return std::nullopt;
-    // Emission in a medium is the same in every direction and has no cosine.
-    return CameraConnection{*lens, source * (1.0f / lens->pdf) * lens->We * visible};
+    // Emission in a medium is the same in every direction.
+    return connect_point_in_medium(scene, p, time, medium, u_lens, rays, rng,
+                                   [&](const Vec3&) { return source; });
 }
 
 }  // namespace glint

@@ -28,7 +28,7 @@ MediumEmitters::MediumEmitters(const Scene& scene) {
         const float volume = extent.x * extent.y * extent.z;
         const float power = (point.sigma_a * point.emission).average() * 4.0f * kPi * volume;
         if (!(power > 0.0f) || !std::isfinite(power)) continue;
-        m_regions.push_back({medium.get(), box, power});
+        m_regions.push_back({medium.get(), box, volume, power});
         m_total_power += power;
     }
     float before = 0.0f;
@@ -47,8 +47,7 @@ std::optional<MediumEmitters::Start> MediumEmitters::sample(const Scene& scene, 
     const Region& region = m_regions[std::min(i, m_regions.size() - 1)];
     const Vec3 p = region.box.min + u_point * region.box.extent();
     if (medium_containing(scene, p) != region.medium) return std::nullopt;
-    const Vec3 extent = region.box.extent();
-    const float pdf = (region.power / m_total_power) / (extent.x * extent.y * extent.z);
+    const float pdf = (region.power / m_total_power) / region.volume;
     const MediumPoint point = region.medium->at(p);
     return Start{p, region.medium, point.sigma_a * point.emission / pdf};
 }

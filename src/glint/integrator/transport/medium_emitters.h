@@ -43,6 +43,7 @@ private:
     struct Region {
         const Medium* medium;
         Bounds3 box;
+        float volume;  // the box's
         float power;
     };
     std::vector<Region> m_regions;
