@@ -33,7 +33,10 @@ void HashGrid::build(std::span<const Vec3> points, float radius, Numbering numbe
     m_mask = slots - 1;
     m_slots.assign(slots, kNoCell);
     m_cells.clear();
-    m_coarse.assign(kCoarseBits / 64, 0);
+    const uint64_t coarse_bits =
+        std::bit_ceil(std::clamp<uint64_t>(256 * uint64_t{points.size()}, 1u << 16, 1u << 20));
+    m_coarse_mask = static_cast<uint32_t>(coarse_bits - 1);
+    m_coarse.assign(coarse_bits / 64, 0);
     // Each point's cell, the cells numbered in order of their first point; the cells' `end`
     // counts their points for now.
     std::vector<uint32_t> cell_of_point(points.size());
