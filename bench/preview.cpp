@@ -11,6 +11,10 @@
 // false or else a string (e.g. --set preview_restir=off). With --snapshots, then renders
 // from no photons for the longest of the times and writes OUT.<t>.exr after the last pass that
 // ended within each time t (seconds), for glint_bench_region_error.
+// Last, what the viewer shows after a light move (ProgressiveSession, as `glint view` runs
+// it): the scene's first movable light is moved 5 cm back and forth, and the bench prints the
+// median ms from the move to the first image (the scene rebuilt, the photons dropped, and
+// the reduced pass at a quarter of the size on each side) and to the first full pass after it.
 #include "timing.h"
 
 #include <glint/core/error.h>
@@ -19,6 +23,8 @@
 #include <glint/integrator/photon/preview.h>
 #include <glint/scene/build.h>
 #include <glint/scene/lua/lua_loader.h>
+#include <glint/view/light_edits.h>
+#include <glint/view/progressive_session.h>
 
 #include <fmt/format.h>
 #include <tbb/global_control.h>
@@ -41,6 +47,34 @@ using bench::median;
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+// The viewer's latency after a light move (see the header comment); prints nothing for a
+// scene without a movable light.
+void print_viewer_light_moves(const SceneDesc& desc, const RenderSettings& settings, int moves) {
+    LightEdits edits(desc);
+    const auto movable = std::find_if(edits.lights().begin(), edits.lights().end(),
+                                      [](const EditableLight& light) { return light.movable; });
+    if (movable == edits.lights().end() || moves < 1) return;
+    ProgressiveSession session(desc, settings);
+    Progress progress("preview", 1, true);
+    session.render_next(progress);  // the reduced pass after loading
+    session.render_next(progress);  // and a full one
+    std::vector<double> first_image_ms, first_full_ms;
+    for (int move = 0; move < moves; ++move) {
+        movable->offset.x = move % 2 == 0 ? 0.05f : 0.0f;
+        session.set_lights(edits);
+        const auto start = std::chrono::steady_clock::now();
+        if (session.render_next(progress) != PassKind::reduced)
+            throw Error("bench: the viewer's first pass after a light move was not reduced");
+        first_image_ms.push_back(1e3 * seconds_since(start));
+        session.render_next(progress);
+        first_full_ms.push_back(1e3 * seconds_since(start));
+    }
+    fmt::print(
+        "in the viewer, after a light move ({}): first image (scene rebuilt, reduced pass) "
+        "{:.1f} ms, first full pass {:.1f} ms after the move; medians of {} moves\n",
+        movable->name, median(first_image_ms), median(first_full_ms), moves);
 }
 
 int run(int argc, char** argv) {
@@ -148,6 +182,8 @@ int run(int argc, char** argv) {
         path, width, height, used_threads, 1e3 / total, total, median(photon_ms), median(camera_ms),
         median(moved_ms), median(relit_ms), median(cpu_ms), preview.stored_photons(),
         preview.stored_volume_photons(), frames, moves);
+
+    print_viewer_light_moves(desc, settings, moves);
 
     if (!snapshots.empty()) {
         preview.scene_changed(SceneChange::lights_or_objects);  // from no photons

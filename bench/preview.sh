@@ -4,7 +4,9 @@
 # each frame and prints the median frames per second and ms per frame, split into the photon
 # pass and the camera pass (the window's display is measured in the viewer), the first pass
 # after a camera move and after a light move, and the CPU time per frame divided by the threads
-# (what the frame would take on an otherwise idle machine); then the same for the fog of
+# (what the frame would take on an otherwise idle machine), and, for a scene with a light the
+# viewer can move, how long the viewer takes from a light move to its first image (the scene
+# rebuilt and the reduced pass) and to its first full pass; then the same for the fog of
 # examples/volumetric-caustics.lua. Then, on examples/caustics.lua at 640x480, it
 # renders from no photons for 4 s, keeps the image reached after 0.25, 1 and 4 s, and prints
 # each one's relative MSE over the caustics against a converged sppm image.
