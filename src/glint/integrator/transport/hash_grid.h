@@ -19,8 +19,8 @@
 // without touching the table. The set has 256 bits per point, from 64 Kbit (8 KB) up to
 // 1 Mbit (128 KB, which stays in the level-2 cache while the points mark it): each point
 // marks at most 8, so up to 4,096 points at most about 3 % of the bits are set and a query
-// far from every point rarely passes. (A fixed 64 Kbit let 42 % of a preview pass's queries through
-// with 4,700 photons, 34 % of all for nothing, each then probing 27 cells.)
+// far from every point rarely passes (bench/README.md, stop 45: a fixed 8 KB let 42 % of the
+// preview's caustic queries through with 4,700 photons, most of them to 27 empty cells).
 //
 // Points of different radii (SPPM's visible points, each with its own shrinking radius)
 // are found by building with the largest radius and letting the caller reject a point
