@@ -149,9 +149,11 @@ TEST(Svgf, SameBitsForOneAndTwoThreads) {
     for (std::size_t i = 0; i < one.size(); ++i) ASSERT_EQ(one[i], two[i]) << "pixel " << i;
 }
 
-// The à-trous taps eight lanes at a time (AVX2) give the bits of four at a time (SSE2): on
-// a frame of random colours, normals and depths with escaped pixels, a width that leaves
-// scalar tails, both kernels and a normal power other than 128 (its lane-by-lane pow).
+// The à-trous taps eight lanes at a time (AVX2) give the bits of four at a time (SSE2), and
+// the interior's pixels through all their taps at once (blocked_taps) the bits of the
+// tap-by-tap loop: on a frame of random colours, normals and depths with escaped pixels, a
+// width that leaves scalar tails and interiors of several widths (holes 1 to 16), both
+// kernels and a normal power other than 128 (its lane-by-lane pow).
 TEST(Svgf, WideLanesGiveTheSameBits) {
     if (!__builtin_cpu_supports("avx2")) GTEST_SKIP() << "this processor has no AVX2";
     const int width = 101, height = 37;
@@ -188,9 +190,18 @@ TEST(Svgf, WideLanesGiveTheSameBits) {
             const std::vector<Rgb> wide = svgf_filter(in, settings);
             settings.wide_lanes = false;
             const std::vector<Rgb> narrow = svgf_filter(in, settings);
-            for (std::size_t i = 0; i < count; ++i)
+            settings.blocked_taps = false;
+            const std::vector<Rgb> tap_by_tap = svgf_filter(in, settings);
+            settings.wide_lanes = true;
+            const std::vector<Rgb> wide_tap_by_tap = svgf_filter(in, settings);
+            for (std::size_t i = 0; i < count; ++i) {
                 ASSERT_EQ(wide[i], narrow[i])
                     << "pixel " << i << ", radius " << radius << ", power " << power;
+                ASSERT_EQ(wide[i], tap_by_tap[i])
+                    << "pixel " << i << ", radius " << radius << ", power " << power;
+                ASSERT_EQ(wide[i], wide_tap_by_tap[i])
+                    << "pixel " << i << ", radius " << radius << ", power " << power;
+            }
         }
     }
 }

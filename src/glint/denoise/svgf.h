@@ -28,6 +28,9 @@ struct SvgfSettings {
     /// The à-trous taps eight pixels at a time (AVX2) where the processor can, else four
     /// (SSE2): the same bits either way; false only to test that.
     bool wide_lanes = true;
+    /// Pixels whose taps all lie inside the image go through every tap at once, their sums
+    /// in registers (with the power of 128): the same bits; false only to test that.
+    bool blocked_taps = true;
 };
 
 /// One frame's inputs, one value per pixel, row-major, top row first.

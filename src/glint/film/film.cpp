@@ -4,6 +4,8 @@
 #include <glint/core/memory.h>
 
 #include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -174,31 +176,38 @@ Image Film::resolve_pixels(const Pixel* pixels, std::size_t pixel_stride, const 
                                          "normal.Z", "depth.Z"});
     }
     Image image = make_image(m_width, m_height, std::move(channels));
-    for (int y = 0; y < m_height; ++y) {
-        for (int x = 0; x < m_width; ++x) {
-            const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_width) +
-                                  static_cast<std::size_t>(x);
-            const Pixel& p = pixels[i * pixel_stride];
-            // Mitchell's negative lobes can cancel the positive weights exactly; such a
-            // pixel has no defined mean and resolves to black rather than infinity.
-            const double weight_sum = p.weight_sum.value();
-            const double inv = weight_sum != 0.0 ? 1.0 / weight_sum : 0.0;
-            for (int c = 0; c < 3; ++c) {
-                double value = p.rgb[c].value() * inv;
-                if (with_splats && !m_splats.empty()) value += m_splat_scale * m_splats[3 * i + c];
-                image.at(x, y, c) = static_cast<float>(value);
+    // Rows in parallel: each pixel's value is its own, so the bits do not depend on the
+    // threads (the viewer resolves a film after every pass).
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, m_height), [&](const tbb::blocked_range<int>& rows) {
+            for (int y = rows.begin(); y < rows.end(); ++y) {
+                for (int x = 0; x < m_width; ++x) {
+                    const std::size_t i =
+                        static_cast<std::size_t>(y) * static_cast<std::size_t>(m_width) +
+                        static_cast<std::size_t>(x);
+                    const Pixel& p = pixels[i * pixel_stride];
+                    // Mitchell's negative lobes can cancel the positive weights exactly; such a
+                    // pixel has no defined mean and resolves to black rather than infinity.
+                    const double weight_sum = p.weight_sum.value();
+                    const double inv = weight_sum != 0.0 ? 1.0 / weight_sum : 0.0;
+                    for (int c = 0; c < 3; ++c) {
+                        double value = p.rgb[c].value() * inv;
+                        if (with_splats && !m_splats.empty())
+                            value += m_splat_scale * m_splats[3 * i + c];
+                        image.at(x, y, c) = static_cast<float>(value);
+                    }
+                    if (!m_with_aovs) continue;
+                    const AovPixel& a = aovs[i * aov_stride];
+                    const double aov_weight = a.weight_sum.value();
+                    const double ainv = aov_weight > 0.0 ? 1.0 / aov_weight : 0.0;
+                    for (int c = 0; c < 3; ++c) {
+                        image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c].value() * ainv);
+                        image.at(x, y, 6 + c) = static_cast<float>(a.normal[c].value() * ainv);
+                    }
+                    image.at(x, y, 9) = static_cast<float>(a.depth.value() * ainv);
+                }
             }
-            if (!m_with_aovs) continue;
-            const AovPixel& a = aovs[i * aov_stride];
-            const double aov_weight = a.weight_sum.value();
-            const double ainv = aov_weight > 0.0 ? 1.0 / aov_weight : 0.0;
-            for (int c = 0; c < 3; ++c) {
-                image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c].value() * ainv);
-                image.at(x, y, 6 + c) = static_cast<float>(a.normal[c].value() * ainv);
-            }
-            image.at(x, y, 9) = static_cast<float>(a.depth.value() * ainv);
-        }
-    }
+        });
     return image;
 }
 
@@ -208,11 +217,25 @@ uint64_t Film::non_finite_samples() const {
     return total + m_non_finite_splats;
 }
 
+namespace {
+// Every element of `values` set to T{}, in parallel chunks (a 640x480 film with AOVs holds
+// 64 MB of accumulators, and the viewer clears it on every camera move).
+template <typename T>
+void clear_in_parallel(std::vector<T>& values) {
+    constexpr std::size_t kChunk = 16384;
+    tbb::parallel_for(std::size_t{0}, (values.size() + kChunk - 1) / kChunk, [&](std::size_t c) {
+        const std::size_t end = std::min(values.size(), (c + 1) * kChunk);
+        std::fill(values.begin() + static_cast<std::ptrdiff_t>(c * kChunk),
+                  values.begin() + static_cast<std::ptrdiff_t>(end), T{});
+    });
+}
+}  // namespace
+
 void Film::clear() {
-    std::fill(m_pixels.begin(), m_pixels.end(), Pixel{});
-    std::fill(m_aovs.begin(), m_aovs.end(), AovPixel{});
-    std::fill(m_half_pixels.begin(), m_half_pixels.end(), Pixel{});
-    std::fill(m_half_aovs.begin(), m_half_aovs.end(), AovPixel{});
+    clear_in_parallel(m_pixels);
+    clear_in_parallel(m_aovs);
+    clear_in_parallel(m_half_pixels);
+    clear_in_parallel(m_half_aovs);
     m_splats.clear();
     m_non_finite_splats = 0;
 }

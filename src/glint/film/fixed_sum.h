@@ -43,10 +43,9 @@ public:
     }
     bool operator==(const FixedSum& other) const = default;
 
-    /// The sum, rounded once to the nearest double.
-    double value() const {
-        return std::ldexp(static_cast<double>(static_cast<Signed>(m_value)), -kFractionBits);
-    }
+    /// The sum, rounded once to the nearest double. (The product by 2^-60 is exact, as
+    /// std::ldexp would be, without its library call: a nonzero sum is at least 2^-60.)
+    double value() const { return static_cast<double>(static_cast<Signed>(m_value)) * 0x1p-60; }
 
     /// Word `i` (0 = least significant) of the two's-complement value.
     uint16_t word(int i) const { return static_cast<uint16_t>(m_value >> (16 * i)); }

@@ -45,19 +45,24 @@ std::vector<HistoryTaps> reproject(const GeometryBuffer& current, const Camera& 
                                    const GeometryBuffer& previous, const Camera& previous_camera,
                                    const ReprojectionTolerances& tolerances = {});
 
-/// `history` (one value per previous pixel) fetched through `taps`: the weighted sum of the
-/// kept taps, or `fallback` for a pixel without history.
+/// `history` (one value per previous pixel) fetched through one pixel's valid `taps`: the
+/// weighted sum of the kept taps.
+template <typename T>
+T fetch_one(const HistoryTaps& taps, std::span<const T> history) {
+    T sum = history[taps.index[0]] * taps.weight[0];
+    for (int k = 1; k < 4 && taps.index[k] != HistoryTaps::kNone; ++k)
+        sum += history[taps.index[k]] * taps.weight[k];
+    return sum;
+}
+
+/// `history` fetched through every pixel's `taps` (fetch_one), or `fallback` for a pixel
+/// without history.
 template <typename T>
 std::vector<T> fetch_history(std::span<const HistoryTaps> taps, std::span<const T> history,
                              const T& fallback) {
     std::vector<T> result(taps.size(), fallback);
-    for (std::size_t i = 0; i < taps.size(); ++i) {
-        if (!taps[i].valid()) continue;
-        T sum = history[taps[i].index[0]] * taps[i].weight[0];
-        for (int k = 1; k < 4 && taps[i].index[k] != HistoryTaps::kNone; ++k)
-            sum += history[taps[i].index[k]] * taps[i].weight[k];
-        result[i] = sum;
-    }
+    for (std::size_t i = 0; i < taps.size(); ++i)
+        if (taps[i].valid()) result[i] = fetch_one(taps[i], history);
     return result;
 }
 
