@@ -59,9 +59,12 @@ public:
     }
     // intersect() for the rays in the lanes set in `active`, traced as one packet (see
     // Accel::intersect_packet); writes si[i] for each lane i that hit and returns those.
+    // With `records`, also Embree's record of each lane's hit (as the one-ray form below).
     uint32_t intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
-                              const PerLane<SurfaceInteraction*>& si, bool coherent) const {
-        PerLane<HitRecord> hits;
+                              const PerLane<SurfaceInteraction*>& si, bool coherent,
+                              PerLane<HitRecord>* records = nullptr) const {
+        PerLane<HitRecord> local;
+        PerLane<HitRecord>& hits = records ? *records : local;
         uint32_t hit_lanes = m_accel.intersect_packet(rays, active, hits, coherent);
         for_each_lane(hit_lanes,
                       [&](int lane) { fill_interaction(*rays[lane], hits[lane], *si[lane]); });

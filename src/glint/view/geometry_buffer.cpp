@@ -1,5 +1,6 @@
 #include <glint/camera/camera.h>
 #include <glint/core/interaction.h>
+#include <glint/geometry/accel.h>
 #include <glint/material/material.h>
 #include <glint/scene/scene.h>
 #include <glint/view/geometry_buffer.h>
@@ -9,34 +10,72 @@
 
 namespace glint {
 
+namespace {
+
+// The pixels of a packet: a block kBlockWidth x kBlockHeight, neighbours whose rays Embree
+// traverses together (coherent), as the preview's camera pass does.
+constexpr int kBlockWidth = 4;
+constexpr int kBlockHeight = kPacketWidth / kBlockWidth;
+
+void record_hit(GeometryBuffer& buffer, std::size_t i, const Ray& ray, const SurfaceInteraction& si,
+                const HitRecord& hit) {
+    buffer.depth[i] = si.t;
+    const Vec3 n = si.shading.n();
+    buffer.normal[i] = glm::dot(n, ray.direction) > 0.0f ? -n : n;
+    if (si.material) buffer.albedo[i] = to_rgb(si.material->albedo(si));
+    // Geometry ids are small: the instance's goes to the high half.
+    const uint32_t local = hit.instanced() ? hit.local_geometry + 1 : 0;
+    buffer.object_id[i] = hit.top_geometry ^ (local << 16);
+}
+
+}  // namespace
+
 GeometryBuffer trace_geometry_buffer(const Scene& scene, const Camera& camera, int width,
                                      int height) {
     GeometryBuffer buffer;
     buffer.width = width;
     buffer.height = height;
     const std::size_t count = buffer.size();
-    buffer.depth.assign(count, 0.0f);
-    buffer.normal.assign(count, Vec3(0.0f));
-    buffer.albedo.assign(count, Rgb(1.0f));
-    buffer.object_id.assign(count, GeometryBuffer::kMiss);
-    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-        SurfaceInteraction si;
-        for (int y = rows.begin(); y < rows.end(); ++y) {
-            for (int x = 0; x < width; ++x) {
-                const std::size_t i = static_cast<std::size_t>(y) * width + x;
-                const Ray ray = camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
-                HitRecord hit{};
-                if (!scene.intersect(ray, si, hit)) continue;
-                buffer.depth[i] = si.t;
-                const Vec3 n = si.shading.n();
-                buffer.normal[i] = glm::dot(n, ray.direction) > 0.0f ? -n : n;
-                if (si.material) buffer.albedo[i] = to_rgb(si.material->albedo(si));
-                // Geometry ids are small: the instance's goes to the high half.
-                const uint32_t local = hit.instanced() ? hit.local_geometry + 1 : 0;
-                buffer.object_id[i] = hit.top_geometry ^ (local << 16);
+    buffer.depth.resize(count);
+    buffer.normal.resize(count);
+    buffer.albedo.resize(count);
+    buffer.object_id.resize(count);
+    const int block_rows = (height + kBlockHeight - 1) / kBlockHeight;
+    tbb::parallel_for(
+        tbb::blocked_range<int>(0, block_rows), [&](const tbb::blocked_range<int>& rows) {
+            PerLane<Ray> rays;
+            PerLane<SurfaceInteraction> si;
+            PerLane<HitRecord> hits;
+            PerLane<const Ray*> ray_of;
+            PerLane<SurfaceInteraction*> si_of;
+            PerLane<std::size_t> index;
+            for (int lane = 0; lane < kPacketWidth; ++lane) {
+                ray_of[lane] = &rays[lane];
+                si_of[lane] = &si[lane];
             }
-        }
-    });
+            for (int block_row = rows.begin(); block_row < rows.end(); ++block_row) {
+                for (int x0 = 0; x0 < width; x0 += kBlockWidth) {
+                    uint32_t active = 0;
+                    for (int lane = 0; lane < kPacketWidth; ++lane) {
+                        const int x = x0 + lane % kBlockWidth;
+                        const int y = block_row * kBlockHeight + lane / kBlockWidth;
+                        if (x >= width || y >= height) continue;
+                        index[lane] = static_cast<std::size_t>(y) * width + x;
+                        rays[lane] = camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
+                        // What a miss leaves.
+                        buffer.depth[index[lane]] = 0.0f;
+                        buffer.normal[index[lane]] = Vec3(0.0f);
+                        buffer.albedo[index[lane]] = Rgb(1.0f);
+                        buffer.object_id[index[lane]] = GeometryBuffer::kMiss;
+                        active |= 1u << lane;
+                    }
+                    const uint32_t hit = scene.intersect_packet(ray_of, active, si_of, true, &hits);
+                    for_each_lane(hit, [&](int lane) {
+                        record_hit(buffer, index[lane], rays[lane], si[lane], hits[lane]);
+                    });
+                }
+            }
+        });
     return buffer;
 }
 
