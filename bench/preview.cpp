@@ -15,6 +15,7 @@
 // it): the scene's first movable light is moved 5 cm back and forth, and the bench prints the
 // median ms from the move to the first image (the scene rebuilt, the photons dropped, and
 // the reduced pass at a quarter of the size on each side) and to the first full pass after it.
+#include "settings_override.h"
 #include "timing.h"
 
 #include <glint/core/error.h>
@@ -108,19 +109,7 @@ int run(int argc, char** argv) {
             for (double t; in >> t;) snapshots.push_back(t);
             std::sort(snapshots.begin(), snapshots.end());
         } else if (flag == "--set") {
-            const size_t eq = value.find('=');
-            if (eq == std::string::npos)
-                throw Error(fmt::format("--set: '{}' is not KEY=VALUE", value));
-            const std::string text = value.substr(eq + 1);
-            ParamValue parsed = text;
-            if (text == "true" || text == "false") {
-                parsed = text == "true";
-            } else {
-                char* end = nullptr;
-                const double number = std::strtod(text.c_str(), &end);
-                if (!text.empty() && end == text.c_str() + text.size()) parsed = number;
-            }
-            overrides.emplace_back(value.substr(0, eq), parsed);
+            overrides.push_back(bench::parse_setting_override(value));
         } else if (flag == "--packets") {
             packets = value != "0";
         } else if (flag == "--prefix") {

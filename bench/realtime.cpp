@@ -3,12 +3,15 @@
 // viewer does (realtime buffers, temporal mode, the scene's own integrator unless --integrator
 // is given), and times each part on its own as well:
 //   glint_bench_realtime [SCENE.lua] [--res WxH ...] [--threads T] [--frames N]
-//                        [--integrator NAME] [--svgf-radius 1|2]
+//                        [--integrator NAME] [--svgf-radius 1|2] [--set KEY=VALUE ...]
 // Prints, per resolution, the medians over N moves of: the geometry buffer trace, the
 // reprojection, one integrator pass, the whole first frame after a move (render_next after
 // set_camera: geometry buffer + reprojection + pass + bookkeeping) and svgf_image(); wall
 // clock and, for the first frame and SVGF, CPU time divided by the threads (what it would
-// take alone on a machine shared with other work).
+// take alone on a machine shared with other work); and the two together, a frame while the
+// camera moves with SVGF on. --set overrides a render setting of the scene's (e.g.
+// preview_restir=unbiased, preview_bounces=1: everything on).
+#include "settings_override.h"
 #include "timing.h"
 
 #include <glint/camera/camera.h>
@@ -44,8 +47,10 @@ double time_ms(F&& f) {
 }
 
 void bench_resolution(const SceneDesc& desc, const std::string& integrator, Vec2i res, int frames,
-                      int threads, int svgf_radius) {
+                      int threads, int svgf_radius,
+                      const std::vector<std::pair<std::string, ParamValue>>& overrides) {
     Params table = desc.render ? *desc.render : Params("render", "render settings");
+    for (const auto& [key, value] : overrides) table.set(key, value, "--set");
     table.set("width", static_cast<double>(res.x), "--res");
     table.set("height", static_cast<double>(res.y), "--res");
     table.set("integrator", integrator, "--integrator");
@@ -83,13 +88,15 @@ void bench_resolution(const SceneDesc& desc, const std::string& integrator, Vec2
         svgf.push_back(time_ms([&] { (void)session.svgf_image(); }));
         svgf_cpu.push_back(1e3 * (cpu_seconds() - svgf_cpu_start) / threads);
     }
+    std::vector<double> moving(first.size());
+    for (size_t i = 0; i < first.size(); ++i) moving[i] = first[i] + svgf[i];
     fmt::print(
         "{}x{} {} threads, {} moves, median ms: geometry buffer {:.1f}, reprojection {:.1f}, "
         "{} pass {:.1f}, first frame after a move {:.1f} (CPU/threads {:.1f}), SVGF {}x{} {:.1f} "
-        "(CPU/threads {:.1f})\n",
+        "(CPU/threads {:.1f}); moving frame with SVGF {:.1f} ({:.1f} fps)\n",
         res.x, res.y, threads, frames, median(gbuffer), median(reproject_ms), settings.integrator,
         median(pass), median(first), median(first_cpu), 2 * svgf_radius + 1, 2 * svgf_radius + 1,
-        median(svgf), median(svgf_cpu));
+        median(svgf), median(svgf_cpu), median(moving), 1e3 / median(moving));
 }
 
 int run(int argc, char** argv) {
@@ -97,6 +104,7 @@ int run(int argc, char** argv) {
     std::vector<Vec2i> resolutions;
     int threads = 2, frames = 20, svgf_radius = 2;
     std::string integrator;
+    std::vector<std::pair<std::string, ParamValue>> overrides;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto next = [&]() -> std::string {
@@ -117,6 +125,8 @@ int run(int argc, char** argv) {
             svgf_radius = std::stoi(next());
         } else if (arg == "--integrator") {
             integrator = next();
+        } else if (arg == "--set") {
+            overrides.push_back(bench::parse_setting_override(next()));
         } else {
             path = arg;
         }
@@ -127,7 +137,7 @@ int run(int argc, char** argv) {
     fmt::print("{}\n", path);
     for (const Vec2i& res : resolutions)
         bench_resolution(desc, integrator.empty() ? "preview" : integrator, res, frames, threads,
-                         svgf_radius);
+                         svgf_radius, overrides);
     return 0;
 }
 
