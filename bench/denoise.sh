@@ -14,6 +14,7 @@
 #   REF_SPP    samples per pixel of the references (default 1024)
 #   SCENES     "scene:WIDTHxHEIGHT ..." (default cornell-box 256x256, textures 320x180,
 #              cornell-spheres 256x256)
+#   QUALITY    the network's denoise_quality: fast, balanced (default) or high
 #   SPEED      "WIDTH HEIGHT REPEATS" of the speed run (default "1024 1024 3"; "" skips it)
 #   OUT        directory for the images (default a fresh temporary directory)
 set -euo pipefail
@@ -23,6 +24,7 @@ THREADS=${THREADS:-2}
 SPP=${SPP:-4 16}
 REF_SPP=${REF_SPP:-1024}
 SCENES=${SCENES:-cornell-box:256x256 textures:320x180 cornell-spheres:256x256}
+QUALITY=${QUALITY:-balanced}
 SPEED=${SPEED-1024 1024 3}
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
@@ -33,6 +35,7 @@ relmse() { "$glint" compare "$1" "$2" | sed -n 's/relative MSE: *//p'; }
 render_seconds() { echo "$1" | sed -n 's/.* threads: \([0-9.]*\) s,.*/\1/p'; }
 denoise_seconds() { echo "$1" | sed -n 's/^denoised in \([0-9.]*\) s/\1/p'; }
 
+echo "network: denoise_quality $QUALITY"
 printf "%-16s %-8s %4s %8s %7s %7s %9s %9s %9s %7s | %6s %9s\n" scene res spp render_s nlm_s net_s \
     noisy nlm network "nlm/net" eq_spp eq_noisy
 for entry in $SCENES; do
@@ -45,7 +48,7 @@ for entry in $SCENES; do
     for spp in $SPP; do
         out="$OUT/$scene-$spp.exr"
         net_log=$("$glint" render "examples/$scene.lua" --res "$res" --spp "$spp" --seed 1 \
-            --threads "$THREADS" --denoise -o "$out" 2>&1)
+            --threads "$THREADS" --denoise --denoise-quality "$QUALITY" -o "$out" 2>&1)
         nlm_out="$OUT/$scene-$spp-nlm.exr"
         nlm_log=$("$glint" render "examples/$scene.lua" --res "$res" --spp "$spp" --seed 1 \
             --threads "$THREADS" --denoise nlm -o "$nlm_out" 2>&1)
