@@ -176,38 +176,36 @@ Image Film::resolve_pixels(const Pixel* pixels, std::size_t pixel_stride, const 
                                          "normal.Z", "depth.Z"});
     }
     Image image = make_image(m_width, m_height, std::move(channels));
+    auto resolve_pixel = [&](int x, int y) {
+        const std::size_t i = static_cast<std::size_t>(y) * static_cast<std::size_t>(m_width) +
+                              static_cast<std::size_t>(x);
+        const Pixel& p = pixels[i * pixel_stride];
+        // Mitchell's negative lobes can cancel the positive weights exactly; such a pixel has
+        // no defined mean and resolves to black rather than infinity.
+        const double weight_sum = p.weight_sum.value();
+        const double inv = weight_sum != 0.0 ? 1.0 / weight_sum : 0.0;
+        for (int c = 0; c < 3; ++c) {
+            double value = p.rgb[c].value() * inv;
+            if (with_splats && !m_splats.empty()) value += m_splat_scale * m_splats[3 * i + c];
+            image.at(x, y, c) = static_cast<float>(value);
+        }
+        if (!m_with_aovs) return;
+        const AovPixel& a = aovs[i * aov_stride];
+        const double aov_weight = a.weight_sum.value();
+        const double ainv = aov_weight > 0.0 ? 1.0 / aov_weight : 0.0;
+        for (int c = 0; c < 3; ++c) {
+            image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c].value() * ainv);
+            image.at(x, y, 6 + c) = static_cast<float>(a.normal[c].value() * ainv);
+        }
+        image.at(x, y, 9) = static_cast<float>(a.depth.value() * ainv);
+    };
     // Rows in parallel: each pixel's value is its own, so the bits do not depend on the
     // threads (the viewer resolves a film after every pass).
-    tbb::parallel_for(
-        tbb::blocked_range<int>(0, m_height), [&](const tbb::blocked_range<int>& rows) {
-            for (int y = rows.begin(); y < rows.end(); ++y) {
-                for (int x = 0; x < m_width; ++x) {
-                    const std::size_t i =
-                        static_cast<std::size_t>(y) * static_cast<std::size_t>(m_width) +
-                        static_cast<std::size_t>(x);
-                    const Pixel& p = pixels[i * pixel_stride];
-                    // Mitchell's negative lobes can cancel the positive weights exactly; such a
-                    // pixel has no defined mean and resolves to black rather than infinity.
-                    const double weight_sum = p.weight_sum.value();
-                    const double inv = weight_sum != 0.0 ? 1.0 / weight_sum : 0.0;
-                    for (int c = 0; c < 3; ++c) {
-                        double value = p.rgb[c].value() * inv;
-                        if (with_splats && !m_splats.empty())
-                            value += m_splat_scale * m_splats[3 * i + c];
-                        image.at(x, y, c) = static_cast<float>(value);
-                    }
-                    if (!m_with_aovs) continue;
-                    const AovPixel& a = aovs[i * aov_stride];
-                    const double aov_weight = a.weight_sum.value();
-                    const double ainv = aov_weight > 0.0 ? 1.0 / aov_weight : 0.0;
-                    for (int c = 0; c < 3; ++c) {
-                        image.at(x, y, 3 + c) = static_cast<float>(a.albedo[c].value() * ainv);
-                        image.at(x, y, 6 + c) = static_cast<float>(a.normal[c].value() * ainv);
-                    }
-                    image.at(x, y, 9) = static_cast<float>(a.depth.value() * ainv);
-                }
-            }
-        });
+    tbb::parallel_for(tbb::blocked_range<int>(0, m_height),
+                      [&](const tbb::blocked_range<int>& rows) {
+                          for (int y = rows.begin(); y < rows.end(); ++y)
+                              for (int x = 0; x < m_width; ++x) resolve_pixel(x, y);
+                      });
     return image;
 }
 
