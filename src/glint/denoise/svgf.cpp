@@ -1,9 +1,8 @@
 #include <glint/core/error.h>
+#include <glint/core/parallel.h>
 #include <glint/denoise/svgf.h>
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <bit>
@@ -20,13 +19,6 @@ constexpr float kAlbedoFloor = 1e-3f;
 // counterpart (as A-SVGF, Schied et al. 2018, for speed).
 constexpr float kKernel5[3] = {3.0f / 8.0f, 1.0f / 4.0f, 1.0f / 16.0f};
 constexpr float kKernel3[2] = {1.0f / 2.0f, 1.0f / 4.0f};
-
-template <typename Body>
-void for_rows(int height, const Body& body) {
-    tbb::parallel_for(tbb::blocked_range<int>(0, height), [&](const tbb::blocked_range<int>& rows) {
-        for (int y = rows.begin(); y < rows.end(); ++y) body(y);
-    });
-}
 
 // Four or eight floats (ints) in one SSE or AVX register (GCC's vector extensions): an
 // à-trous pass computes four or eight pixels' taps at once. Every operation is the IEEE one
@@ -110,15 +102,6 @@ float normal_weight(float cosine, float power) {
     return std::pow(w, power);
 }
 
-// body(i) for every pixel index of a width x height frame, in parallel rows.
-template <typename Body>
-void for_pixels(int width, int height, const Body& body) {
-    for_rows(height, [&](int y) {
-        const std::size_t row = static_cast<std::size_t>(y) * width;
-        for (int x = 0; x < width; ++x) body(row + x);
-    });
-}
-
 // The per-pixel state the passes share.
 struct Planes {
     int width, height;
@@ -131,11 +114,6 @@ struct Planes {
     bool surface(std::size_t i) const { return input->depth[i] > 0.0f; }
 };
 
-template <typename Body>
-void for_pixels(const Planes& p, const Body& body) {
-    for_pixels(p.width, p.height, body);
-}
-
 float depth_weight(const Planes& p, std::size_t i, std::size_t j, float distance,
                    const SvgfSettings& s) {
     const float zi = p.input->depth[i];
@@ -145,7 +123,7 @@ float depth_weight(const Planes& p, std::size_t i, std::size_t j, float distance
 
 void estimate_depth_gradient(Planes& p) {
     p.depth_gradient.assign(p.illumination.size(), 0.0f);
-    for_rows(p.height, [&](int y) {
+    parallel_for_rows(p.height, [&](int y) {
         for (int x = 0; x < p.width; ++x) {
             const std::size_t i = p.at(x, y);
             if (!p.surface(i)) continue;
@@ -172,7 +150,7 @@ void estimate_depth_gradient(Planes& p) {
 void estimate_variance(Planes& p, const SvgfSettings& s) {
     const SvgfInput& in = *p.input;
     p.variance.assign(p.illumination.size(), 0.0f);
-    for_rows(p.height, [&](int y) {
+    parallel_for_rows(p.height, [&](int y) {
         for (int x = 0; x < p.width; ++x) {
             const std::size_t i = p.at(x, y);
             if (!p.surface(i)) continue;
@@ -230,7 +208,7 @@ constexpr float kBlurCentre = 0.5f, kBlurSide = 0.25f;
 // `surface` (1 on a surface, 0 where the ray escaped); neighbours beyond the image add 0.
 void row_sums(const Guide& g, const float* values, std::vector<float>& sums) {
     sums.resize(static_cast<std::size_t>(g.width) * g.height);
-    for_rows(g.height, [&](int y) {
+    parallel_for_rows(g.height, [&](int y) {
         const std::size_t row = static_cast<std::size_t>(y) * g.width;
         const float* v = values + row;
         const float* z = g.depth + row;
@@ -530,7 +508,7 @@ bool processor_has_avx2() {
 
 void atrous_pass(const Guide& g, const Signal& in, int step, const SvgfSettings& s, Signal& out) {
     const auto row = s.wide_lanes && processor_has_avx2() ? atrous_row_avx2 : atrous_row_sse2;
-    for_rows(g.height, [&](int y) { row(g, in, step, s, out, y); });
+    parallel_for_rows(g.height, [&](int y) { row(g, in, step, s, out, y); });
 }
 
 }  // namespace
@@ -560,7 +538,7 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
     p.illumination.resize(count);
     // Every per-pixel step runs in parallel: at 640x480 the serial loops took a third of
     // the filter's time. Each pixel's value is its own, so the bits do not depend on threads.
-    for_pixels(p, [&](std::size_t i) {
+    parallel_for_indices(count, [&](std::size_t i) {
         const Rgb d = svgf_demodulation(input.albedo[i]);
         p.illumination[i] =
             Rgb(input.colour[i].r / d.r, input.colour[i].g / d.g, input.colour[i].b / d.b);
@@ -573,7 +551,7 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
     guide.ny.resize(count);
     guide.nz.resize(count);
     Signal signal(count), next(count);
-    for_pixels(p, [&](std::size_t i) {
+    parallel_for_indices(count, [&](std::size_t i) {
         guide.nx[i] = input.normal[i].x;
         guide.ny[i] = input.normal[i].y;
         guide.nz[i] = input.normal[i].z;
@@ -584,7 +562,7 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
     });
     row_sums(guide, std::vector<float>(count, 1.0f).data(), guide.surface_row_sums);
     for (int level = 0; level < settings.levels; ++level) {
-        for_pixels(p, [&](std::size_t i) {
+        parallel_for_indices(count, [&](std::size_t i) {
             signal.luminance[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]).luminance();
         });
         row_sums(guide, signal.variance.data(), signal.variance_row_sums);
@@ -592,7 +570,7 @@ std::vector<Rgb> svgf_filter(const SvgfInput& input, const SvgfSettings& setting
         std::swap(signal, next);
     }
     std::vector<Rgb> result(count);
-    for_pixels(p, [&](std::size_t i) {
+    parallel_for_indices(count, [&](std::size_t i) {
         result[i] = Rgb(signal.r[i], signal.g[i], signal.b[i]) * svgf_demodulation(input.albedo[i]);
     });
     return result;

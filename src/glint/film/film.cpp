@@ -2,10 +2,9 @@
 
 #include <glint/core/error.h>
 #include <glint/core/memory.h>
+#include <glint/core/parallel.h>
 
 #include <fmt/format.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 #include <cmath>
@@ -201,11 +200,9 @@ Image Film::resolve_pixels(const Pixel* pixels, std::size_t pixel_stride, const 
     };
     // Rows in parallel: each pixel's value is its own, so the bits do not depend on the
     // threads (the viewer resolves a film after every pass).
-    tbb::parallel_for(tbb::blocked_range<int>(0, m_height),
-                      [&](const tbb::blocked_range<int>& rows) {
-                          for (int y = rows.begin(); y < rows.end(); ++y)
-                              for (int x = 0; x < m_width; ++x) resolve_pixel(x, y);
-                      });
+    parallel_for_rows(m_height, [&](int y) {
+        for (int x = 0; x < m_width; ++x) resolve_pixel(x, y);
+    });
     return image;
 }
 
@@ -216,16 +213,11 @@ uint64_t Film::non_finite_samples() const {
 }
 
 namespace {
-// Every element of `values` set to T{}, in parallel chunks (a 640x480 film with AOVs holds
-// 64 MB of accumulators, and the viewer clears it on every camera move).
+// Every element of `values` set to T{}, in parallel (a 640x480 film with AOVs holds 64 MB of
+// accumulators, and the viewer clears it on every camera move).
 template <typename T>
 void clear_in_parallel(std::vector<T>& values) {
-    constexpr std::size_t kChunk = 16384;
-    tbb::parallel_for(std::size_t{0}, (values.size() + kChunk - 1) / kChunk, [&](std::size_t c) {
-        const std::size_t end = std::min(values.size(), (c + 1) * kChunk);
-        std::fill(values.begin() + static_cast<std::ptrdiff_t>(c * kChunk),
-                  values.begin() + static_cast<std::ptrdiff_t>(end), T{});
-    });
+    parallel_for_indices(values.size(), [&](std::size_t i) { values[i] = T{}; });
 }
 }  // namespace
 

@@ -28,6 +28,46 @@ void record_hit(GeometryBuffer& buffer, std::size_t i, const Ray& ray, const Sur
     buffer.object_id[i] = hit.top_geometry ^ (local << 16);
 }
 
+// What a packet of one block traces with: the lanes' rays, interactions and hit records.
+struct BlockLanes {
+    PerLane<Ray> rays;
+    PerLane<SurfaceInteraction> si;
+    PerLane<HitRecord> hits;
+    PerLane<const Ray*> ray_of;
+    PerLane<SurfaceInteraction*> si_of;
+    PerLane<std::size_t> index;  // each lane's pixel
+    BlockLanes() {
+        for (int lane = 0; lane < kPacketWidth; ++lane) {
+            ray_of[lane] = &rays[lane];
+            si_of[lane] = &si[lane];
+        }
+    }
+};
+
+// The block whose top-left pixel is `corner`, as one packet of pixel-centre rays. Pixels
+// beyond the film's edge are inactive lanes; a lane that misses keeps the miss values.
+void trace_block(const Scene& scene, const Camera& camera, Vec2i corner, GeometryBuffer& buffer,
+                 BlockLanes& lanes) {
+    uint32_t active = 0;
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const int x = corner.x + lane % kBlockWidth, y = corner.y + lane / kBlockWidth;
+        if (x >= buffer.width || y >= buffer.height) continue;
+        const std::size_t i = static_cast<std::size_t>(y) * buffer.width + x;
+        lanes.index[lane] = i;
+        lanes.rays[lane] = camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
+        buffer.depth[i] = 0.0f;
+        buffer.normal[i] = Vec3(0.0f);
+        buffer.albedo[i] = Rgb(1.0f);
+        buffer.object_id[i] = GeometryBuffer::kMiss;
+        active |= 1u << lane;
+    }
+    const uint32_t hit =
+        scene.intersect_packet(lanes.ray_of, active, lanes.si_of, true, &lanes.hits);
+    for_each_lane(hit, [&](int lane) {
+        record_hit(buffer, lanes.index[lane], lanes.rays[lane], lanes.si[lane], lanes.hits[lane]);
+    });
+}
+
 }  // namespace
 
 GeometryBuffer trace_geometry_buffer(const Scene& scene, const Camera& camera, int width,
@@ -43,38 +83,10 @@ GeometryBuffer trace_geometry_buffer(const Scene& scene, const Camera& camera, i
     const int block_rows = (height + kBlockHeight - 1) / kBlockHeight;
     tbb::parallel_for(
         tbb::blocked_range<int>(0, block_rows), [&](const tbb::blocked_range<int>& rows) {
-            PerLane<Ray> rays;
-            PerLane<SurfaceInteraction> si;
-            PerLane<HitRecord> hits;
-            PerLane<const Ray*> ray_of;
-            PerLane<SurfaceInteraction*> si_of;
-            PerLane<std::size_t> index;
-            for (int lane = 0; lane < kPacketWidth; ++lane) {
-                ray_of[lane] = &rays[lane];
-                si_of[lane] = &si[lane];
-            }
-            for (int block_row = rows.begin(); block_row < rows.end(); ++block_row) {
-                for (int x0 = 0; x0 < width; x0 += kBlockWidth) {
-                    uint32_t active = 0;
-                    for (int lane = 0; lane < kPacketWidth; ++lane) {
-                        const int x = x0 + lane % kBlockWidth;
-                        const int y = block_row * kBlockHeight + lane / kBlockWidth;
-                        if (x >= width || y >= height) continue;
-                        index[lane] = static_cast<std::size_t>(y) * width + x;
-                        rays[lane] = camera.generate_ray(Vec2(x + 0.5f, y + 0.5f), Vec2(0.5f));
-                        // What a miss leaves.
-                        buffer.depth[index[lane]] = 0.0f;
-                        buffer.normal[index[lane]] = Vec3(0.0f);
-                        buffer.albedo[index[lane]] = Rgb(1.0f);
-                        buffer.object_id[index[lane]] = GeometryBuffer::kMiss;
-                        active |= 1u << lane;
-                    }
-                    const uint32_t hit = scene.intersect_packet(ray_of, active, si_of, true, &hits);
-                    for_each_lane(hit, [&](int lane) {
-                        record_hit(buffer, index[lane], rays[lane], si[lane], hits[lane]);
-                    });
-                }
-            }
+            BlockLanes lanes;
+            for (int row = rows.begin(); row < rows.end(); ++row)
+                for (int x = 0; x < width; x += kBlockWidth)
+                    trace_block(scene, camera, Vec2i(x, row * kBlockHeight), buffer, lanes);
         });
     return buffer;
 }

@@ -1,5 +1,6 @@
 #include <glint/camera/camera.h>
 #include <glint/core/error.h>
+#include <glint/core/parallel.h>
 #include <glint/core/progress.h>
 #include <glint/denoise/film_denoiser.h>
 #include <glint/denoise/svgf.h>
@@ -8,8 +9,6 @@
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 namespace glint {
 namespace {
@@ -25,17 +24,6 @@ std::pair<std::unique_ptr<Integrator>, ProgressiveIntegrator*> make_progressive(
             fmt::join(ProgressiveSession::progressive_integrators(settings), ", ")));
     }
     return {std::move(integrator), progressive};
-}
-
-// body(i) for every pixel index i in [0, count), in parallel: the per-pixel bookkeeping of
-// every frame (history blends, moments) over 300,000 pixels at 640x480. Each pixel's value is
-// its own, so the result does not depend on the threads.
-template <typename Body>
-void for_each_pixel(std::size_t count, const Body& body) {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, count, 4096),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t i = range.begin(); i < range.end(); ++i) body(i);
-                      });
 }
 
 }  // namespace
@@ -122,7 +110,7 @@ void ProgressiveSession::move_history(std::unique_ptr<Camera> camera) {
     std::vector<Vec2> moments(pixels);
     std::vector<float> lengths(pixels);
     const float inverse = m_passes > 0 ? 1.0f / static_cast<float>(m_passes) : 0.0f;
-    for_each_pixel(pixels, [&](std::size_t i) {
+    parallel_for_indices(pixels, [&](std::size_t i) {
         shown[i] = m_history.blend(i, m_mean[i], m_passes);
         moments[i] = m_history.blend_moments(i, m_moment_sums[i] * inverse, m_passes);
         lengths[i] = m_history.blended_length(i, m_passes);
@@ -140,7 +128,7 @@ void ProgressiveSession::record_pass() {
     ensure_geometry();
     const Image image = m_film.resolve();
     const float k = static_cast<float>(m_passes);
-    for_each_pixel(m_mean.size(), [&](std::size_t i) {
+    parallel_for_indices(m_mean.size(), [&](std::size_t i) {
         // R, G, B come first, then the AOVs when the film has them.
         const float* rgb = &image.pixels[i * image.channels.size()];
         const Rgb mean(rgb[0], rgb[1], rgb[2]);
@@ -211,7 +199,7 @@ PassKind ProgressiveSession::render_next(Progress& progress) {
 Image ProgressiveSession::image() const {
     if (has_history() && !showing_reduced()) {
         Image image = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
-        for_each_pixel(m_mean.size(), [&](std::size_t i) {
+        parallel_for_indices(m_mean.size(), [&](std::size_t i) {
             const Rgb c = m_history.blend(i, m_mean[i], m_passes);
             for (int ch = 0; ch < 3; ++ch) image.pixels[3 * i + ch] = c[ch];
         });
@@ -238,7 +226,7 @@ Image ProgressiveSession::svgf_image() const {
     std::vector<Vec2> moments(pixels);
     std::vector<float> lengths(pixels);
     const float inverse = m_passes > 0 ? 1.0f / static_cast<float>(m_passes) : 0.0f;
-    for_each_pixel(pixels, [&](std::size_t i) {
+    parallel_for_indices(pixels, [&](std::size_t i) {
         const float* rgb = &image.pixels[i * image.channels.size()];
         colour[i] = Rgb(rgb[0], rgb[1], rgb[2]);
         const Vec2 frame_moments = m_moment_sums[i] * inverse;
@@ -258,7 +246,7 @@ Image ProgressiveSession::svgf_image() const {
     input.history_length = lengths;
     const std::vector<Rgb> filtered = svgf_filter(input, m_options.svgf);
     Image result = make_image(m_settings.width, m_settings.height, {"R", "G", "B"});
-    for_each_pixel(pixels, [&](std::size_t i) {
+    parallel_for_indices(pixels, [&](std::size_t i) {
         for (int ch = 0; ch < 3; ++ch) result.pixels[3 * i + ch] = filtered[i][ch];
     });
     return result;

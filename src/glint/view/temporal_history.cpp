@@ -1,8 +1,6 @@
 #include <glint/core/error.h>
+#include <glint/core/parallel.h>
 #include <glint/view/temporal_history.h>
-
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
 
 #include <algorithm>
 
@@ -50,15 +48,12 @@ void TemporalHistory::move(std::span<const HistoryTaps> taps, std::span<const Rg
     m_length.assign(taps.size(), 0.0f);
     // The three fetches in one parallel loop over the pixels (fetch_history's sums, pixel by
     // pixel: the same bits for any threads).
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, taps.size(), 4096),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                          for (std::size_t i = range.begin(); i < range.end(); ++i) {
-                              if (!taps[i].valid()) continue;
-                              m_colour[i] = fetch_one(taps[i], shown);
-                              m_moments[i] = fetch_one(taps[i], moments);
-                              m_length[i] = fetch_one(taps[i], lengths);
-                          }
-                      });
+    parallel_for_indices(taps.size(), [&](std::size_t i) {
+        if (!taps[i].valid()) return;
+        m_colour[i] = fetch_one(taps[i], shown);
+        m_moments[i] = fetch_one(taps[i], moments);
+        m_length[i] = fetch_one(taps[i], lengths);
+    });
 }
 
 }  // namespace glint
