@@ -14,6 +14,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
+#include <support/test_util.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,6 +94,7 @@ Image direct_reference(int seed) {
 // images' noise (the bound allows twice the measured noise, whose estimate fluctuates, and
 // 2e-3 for what the float sums may differ by).
 TEST(RestirDi, PlainRisConvergesToPathDirectLight) {
+    if (test::kSanitizerBuild) GTEST_SKIP() << "a convergence check: the normal tree runs it";
     const Convergence c = converge(
         [](int seed) {
             return test::render_lua(
@@ -108,6 +110,7 @@ TEST(RestirDi, PlainRisConvergesToPathDirectLight) {
 
 // The unbiased mode with temporal and spatial reuse converges to the same image.
 TEST(RestirDi, UnbiasedReuseConvergesToPathDirectLight) {
+    if (test::kSanitizerBuild) GTEST_SKIP() << "a convergence check: the normal tree runs it";
     const Convergence c = converge(
         [](int seed) {
             return test::render_lua(
