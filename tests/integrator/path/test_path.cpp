@@ -13,7 +13,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
-#include <support/test_util.h>
 
 #include <cmath>
 #include <memory>
@@ -110,8 +109,7 @@ TEST(PathIntegratorSlow, ClosedSphereAroundPointLightForPhotonMapping) {
 // wall L(x) = a/pi (E(x) + a Phi / (4 pi R^2 (1 - a))), with E the lights' direct
 // irradiance and Phi = 4 pi sum I their power. Light sampling picks one light in proportion
 // to its power: a selection probability left out or wrong moves the image by tens of %.
-TEST(PathIntegrator, ClosedSphereWithPointLightsOfDifferentPower) {
-    if (test::kSanitizerBuild) GTEST_SKIP() << "a convergence check: the normal tree runs it";
+TEST(PathIntegratorSlow, ClosedSphereWithPointLightsOfDifferentPower) {
     struct PointLight {
         Vec3 p;
         float intensity;
@@ -441,8 +439,7 @@ TEST(PathIntegratorSlow, LightAndBsdfSamplingConvergeToTheSameImage) {
 // sampling finds the light often and the MIS weights carry real weight. A uniform sphere
 // of radiance Le and radius r irradiates a point at distance d with E = pi Le r^2 cos(b)/d^2
 // while it is wholly above the horizon, so L = rho Le r^2 cos(b) / d^2 on the plane.
-TEST(PathIntegrator, PlaneUnderSphericalEmitterMatchesClosedFormForEveryStrategy) {
-    if (test::kSanitizerBuild) GTEST_SKIP() << "every strategy converging: the normal tree runs it";
+TEST(PathIntegratorSlow, PlaneUnderSphericalEmitterMatchesClosedFormForEveryStrategy) {
     const int res = 32;
     const float rho = 0.5f, radiance = 2.0f, radius = 1.0f;
     const Vec3 center(0.0f, 1.5f, 0.0f), eye(0.0f, 1.0f, 6.0f), target(0.0f, 0.3f, 0.0f);

@@ -14,7 +14,6 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <support/render_helpers.h>
-#include <support/test_util.h>
 
 #include <algorithm>
 #include <cmath>
@@ -93,8 +92,7 @@ Image direct_reference(int seed) {
 // tree, one shadow ray. Unbiased, so its error against `path`'s direct light is the two
 // images' noise (the bound allows twice the measured noise, whose estimate fluctuates, and
 // 2e-3 for what the float sums may differ by).
-TEST(RestirDi, PlainRisConvergesToPathDirectLight) {
-    if (test::kSanitizerBuild) GTEST_SKIP() << "a convergence check: the normal tree runs it";
+TEST(RestirDiSlow, PlainRisConvergesToPathDirectLight) {
     const Convergence c = converge(
         [](int seed) {
             return test::render_lua(
@@ -109,8 +107,7 @@ TEST(RestirDi, PlainRisConvergesToPathDirectLight) {
 }
 
 // The unbiased mode with temporal and spatial reuse converges to the same image.
-TEST(RestirDi, UnbiasedReuseConvergesToPathDirectLight) {
-    if (test::kSanitizerBuild) GTEST_SKIP() << "a convergence check: the normal tree runs it";
+TEST(RestirDiSlow, UnbiasedReuseConvergesToPathDirectLight) {
     const Convergence c = converge(
         [](int seed) {
             return test::render_lua(
