@@ -115,14 +115,20 @@ double region_mean(const Image& image, int c, int x0, int y0, int x1, int y1) {
 }  // namespace
 
 // The preview in the fog room without glass, filled with `medium`, against volpath with
-// max_depth = 1 (expect_converges); `mode` adds render settings to both.
+// max_depth = 1 (expect_converges); `mode` adds render settings to both. Each pixel
+// estimates its own single scattering (preview_fog_interleave = false) unless `interleave`:
+// then the estimates are shared between neighbours (interleaved_fog.h), which blurs the
+// fog's light by about a pixel; at 24 x 24 pixels, each 1/24 of the view, the blur's error
+// per pixel is allowed as `bias`, while the image's means must still agree.
 static void expect_single_scattering_like_volpath(const char* medium, const std::string& mode,
-                                                  int preview_spp, int volpath_spp) {
+                                                  int preview_spp, int volpath_spp,
+                                                  bool interleave = false, double bias = 0.0005) {
     expect_converges(
         [&](int seed) {
             return fog_without_glass(
-                fmt::format("integrator = 'preview', spp = {}, preview_ambient = 0, {}seed = {}",
-                            preview_spp, mode, seed),
+                fmt::format("integrator = 'preview', spp = {}, preview_ambient = 0, "
+                            "preview_fog_interleave = {}, {}seed = {}",
+                            preview_spp, interleave, mode, seed),
                 medium);
         },
         [&](int seed) {
@@ -131,7 +137,7 @@ static void expect_single_scattering_like_volpath(const char* medium, const std:
                             volpath_spp, mode, seed),
                 medium);
         },
-        0.0005);
+        bias);
 }
 
 // Without mirrors or glass the preview's image is the surfaces' direct light and the light
@@ -153,6 +159,19 @@ TEST(PreviewMediaSlow, SpectralSingleScatteringMatchesVolpath) {
 // transmittance estimated by ratio tracking.
 TEST(PreviewMediaSlow, SingleScatteringInACloudMatchesVolpath) {
     expect_single_scattering_like_volpath(kCloud, "", 128, 256);
+}
+
+// Single scattering shared between neighbours (the default): the same light, blurred by
+// about a pixel. Spectral mode too: a pixel's estimate is read at the wavelengths of the
+// pixels that share it.
+TEST(PreviewMediaSlow, InterleavedSingleScatteringKeepsTheFogsLight) {
+    expect_single_scattering_like_volpath(kChromaticFog, "", 256, 512, true, 0.005);
+    expect_single_scattering_like_volpath(kChromaticFog, "spectral = true, ", 256, 256, true,
+                                          0.005);
+}
+
+TEST(PreviewMediaSlow, InterleavedSingleScatteringInACloud) {
+    expect_single_scattering_like_volpath(kCloud, "", 128, 256, true, 0.015);
 }
 
 // A fog that glows (chromatic emission): each camera segment through it gathers what it

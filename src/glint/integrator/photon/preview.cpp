@@ -84,6 +84,7 @@ PreviewSettings PreviewSettings::read(const Params& p) {
     s.restir.spatial = p.get_int("preview_restir_spatial", s.restir.spatial);
     s.restir.temporal = p.get_bool("preview_restir_temporal", s.restir.temporal);
     s.restir.history_cap = p.get_float("preview_restir_history", s.restir.history_cap);
+    s.fog_interleave = p.get_bool("preview_fog_interleave", s.fog_interleave);
     if (s.photons < 0 || s.photons > 100000000)
         p.fail_at("preview_photons", "'preview_photons' must be in [0, 1e8] (photons per pass)");
     if (s.window < 1 || s.window > 1024)
@@ -541,6 +542,10 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     // (preview_media.h); ReSTIR and the packets serve scenes without.
     if (!m_media && m_preview.restir.mode != RestirMode::kOff) {
         render_restir_pass(scene, film, pass, stats);
+    } else if (m_media && m_preview.fog_interleave) {
+        uint64_t rays = 0;
+        render_media_pass(scene, film, pass, rays);
+        camera_rays += rays;
     } else {
         // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
         // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
@@ -582,7 +587,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                             if (wavelengths != nullptr) terminated.emplace();
                             const Spectrum L =
                                 m_media ? camera_sample_in_media(scene, pixel, ray, sampler, arena,
-                                                                 counter, cache)
+                                                                 counter, cache, nullptr)
                                         : camera_sample(scene, ray, sampler, arena, counter, cache);
                             film.add_sample(pixel, L, 1.0f, nullptr);
                         }

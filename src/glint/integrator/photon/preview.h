@@ -16,6 +16,7 @@
 // 4 x 2 pixel blocks and their shadow rays are traced as Embree packets, the pass draws its
 // numbers from a cheap sampler of its own, and the photon grid caches its cells per thread;
 // see docs/integrators.md.
+#include <glint/integrator/photon/interleaved_fog.h>
 #include <glint/integrator/photon/photon_map.h>
 #include <glint/integrator/photon/photon_tracer.h>
 #include <glint/integrator/photon/preview_media.h>
@@ -57,6 +58,10 @@ struct PreviewSettings {
     /// "off"), preview_restir_candidates (M), preview_restir_spatial (neighbours, 0: none),
     /// preview_restir_temporal.
     RestirSettings restir;
+    /// In media that scatter: single scattering along the primary rays estimated in one pixel
+    /// of each 2 x 2 block per pass and shared with the neighbours whose rays cross the
+    /// medium alike (interleaved_fog.h); false: every pixel estimates its own.
+    bool fog_interleave = true;
 
     /// Reads and validates preview_photons, preview_window, preview_radius,
     /// preview_ambient, preview_bounces and the preview_restir keys; errors name the key's
@@ -135,8 +140,9 @@ private:
     Spectrum in_scattering(const Scene& scene, const Ray& ray, float t_end, const Medium& medium,
                            Sampler& sampler, Rng& rng, RayCounter& counter) const;
     Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray, Sampler& sampler,
-                                    Arena& arena, RayCounter& counter,
-                                    HashGrid::Cache& cache) const;
+                                    Arena& arena, RayCounter& counter, HashGrid::Cache& cache,
+                                    DeferredLeg* deferred) const;
+    void render_media_pass(const Scene& scene, Film& film, int pass, uint64_t& rays);
     void render_restir_pass(const Scene& scene, Film& film, int pass, RenderStats& stats);
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                            RayCounter& counter, HashGrid::Cache& cache) const;
@@ -168,6 +174,14 @@ private:
     std::vector<std::vector<VolumePhoton>> m_volume_batches;
     float m_volume_radius2 = 0.0f;
     VolumePhotonView m_volume_view;
+    // The interleaved single scattering of the pass in media, and each pixel's light besides
+    // it (and whether its path went through a dispersive event), kept until it is added.
+    InterleavedFog m_fog;
+    struct PixelRest {
+        Spectrum L{0.0f};
+        bool hero_only = false;
+    };
+    std::vector<PixelRest> m_rest;
     PassTiming m_timing;
     bool m_packets = true;
     // ReSTIR's state per film size (at most two: the viewer's reduced first pass after a

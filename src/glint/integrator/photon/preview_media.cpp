@@ -1,4 +1,6 @@
 #include <glint/core/rng.h>
+#include <glint/core/secondary_wavelengths.h>
+#include <glint/integrator/photon/pass_sampler.h>
 #include <glint/integrator/photon/preview.h>
 #include <glint/integrator/photon/preview_media.h>
 #include <glint/integrator/transport/light_path_start.h>
@@ -11,6 +13,7 @@
 #include <glint/medium/equiangular.h>
 #include <glint/medium/henyey_greenstein.h>
 
+#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 
 #include <algorithm>
@@ -395,9 +398,10 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
 // the media its shadow ray crosses. The draws come from a PassSampler: their number varies.
 Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray,
                                                    Sampler& sampler, Arena& arena,
-                                                   RayCounter& counter,
-                                                   HashGrid::Cache& cache) const {
+                                                   RayCounter& counter, HashGrid::Cache& cache,
+                                                   DeferredLeg* deferred) const {
     Rng rng(stream_seed(sampler.get_1d()));
+    if (deferred) deferred->medium = nullptr;
     ray.direction = glm::normalize(ray.direction);
     const Ray primary = ray;
     float primary_reach = 0.0f;  // along the primary ray, to the surface being tested
@@ -414,8 +418,21 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
         const float t_end = hit ? si.t : kInfinity;
         // The light each leg gathers in its medium, and its transmittance.
         walk_legs(scene, ray, passed, t_end, medium, [&](const Ray& leg, float length) {
-            if (medium->scatters())
-                L += beta * in_scattering(scene, leg, length, *medium, sampler, rng, counter);
+            if (medium->scatters()) {
+                if (on_primary && deferred && !deferred->medium) {
+                    // The primary ray's first leg in fog: render_media_pass estimates it.
+                    deferred->origin = leg.origin;
+                    deferred->direction = leg.direction;
+                    deferred->time = leg.time;
+                    deferred->length = length;
+                    deferred->start =
+                        primary_reach + glm::dot(leg.origin - ray.origin, ray.direction);
+                    deferred->medium = medium;
+                    deferred->beta = beta;
+                } else {
+                    L += beta * in_scattering(scene, leg, length, *medium, sampler, rng, counter);
+                }
+            }
             if (medium->emits() && medium->is_homogeneous())
                 L += beta * glow_along(leg, length, *medium);
             beta *= medium->transmittance(leg, std::isinf(length) ? 1e30f : length, rng);
@@ -464,6 +481,91 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                beta * indirect_estimate(scene, si, *bsdf, direct, sampler, arena, counter, cache);
     }
     return L;
+}
+
+// A pass in media with interleaved single scattering (interleaved_fog.h), in three sweeps
+// over the film, each pixel's work depending only on (seed, pixel, pass) and the photons (the
+// same image for any threads): the camera samples, whose primary legs in fog are only
+// recorded; the legs' single scattering, in the pixels InterleavedFog picks; and each
+// pixel's light, its own plus what its neighbours estimated for it, into the film.
+void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pass,
+                                          uint64_t& rays) {
+    const int w = film.width(), h = film.height();
+    const WavelengthContext* wavelengths = m_settings.spectral ? &m_pass_wavelengths : nullptr;
+    m_fog.reset(Vec2i(w, h), pass);
+    m_rest.resize(static_cast<size_t>(w) * static_cast<size_t>(h));
+    std::atomic<uint64_t> counted{0};
+    // Rows in parallel, with the pass's wavelengths and a path state per pixel.
+    const auto sweep = [&](auto&& pixel_work) {
+        tbb::parallel_for(tbb::blocked_range<int>(0, h, 4),
+                          [&](const tbb::blocked_range<int>& rows) {
+                              std::optional<WavelengthScope> scope;
+                              if (wavelengths != nullptr) scope.emplace(*wavelengths);
+                              RayCounter counter;
+                              pixel_work(rows, counter);
+                              counted += counter.rays;
+                          });
+    };
+    sweep([&](const tbb::blocked_range<int>& rows, RayCounter& counter) {
+        Arena arena;
+        PassSampler sampler;
+        sampler.set_seed(m_settings.seed);
+        HashGrid::Cache cache;
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            for (int x = 0; x < w; ++x) {
+                const Vec2i pixel = film.origin() + Vec2i(x, y);
+                sampler.start_pixel_sample(pixel, pass);
+                const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+                const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                arena.reset();
+                std::optional<SecondaryWavelengthsScope> terminated;
+                if (wavelengths != nullptr) terminated.emplace();
+                PixelRest& rest = m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) +
+                                         static_cast<size_t>(x)];
+                rest.L = camera_sample_in_media(scene, pixel, ray, sampler, arena, counter, cache,
+                                                &m_fog.leg(x, y));
+                rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
+                m_fog.finish_leg(x, y);
+            }
+        }
+    });
+    sweep([&](const tbb::blocked_range<int>& rows, RayCounter& counter) {
+        // Its own stream: the camera sample's draws are spent.
+        PassSampler sampler;
+        sampler.set_seed(mix_bits(m_settings.seed ^ 0x666f67ull));
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            for (int x = 0; x < w; ++x) {
+                if (!m_fog.estimates(x, y)) continue;
+                const DeferredLeg& leg = m_fog.leg(x, y);
+                sampler.start_pixel_sample(film.origin() + Vec2i(x, y), pass);
+                Rng rng(stream_seed(sampler.get_1d()));
+                // The leg lies before any dispersive glass on its path.
+                std::optional<SecondaryWavelengthsScope> fresh;
+                if (wavelengths != nullptr) fresh.emplace();
+                m_fog.set_estimate(x, y,
+                                   leg.beta * in_scattering(scene, leg.ray(), leg.length,
+                                                            *leg.medium, sampler, rng, counter));
+            }
+        }
+    });
+    sweep([&](const tbb::blocked_range<int>& rows, RayCounter&) {
+        for (int y = rows.begin(); y < rows.end(); ++y) {
+            for (int x = 0; x < w; ++x) {
+                const PixelRest& rest = m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) +
+                                               static_cast<size_t>(x)];
+                // The film reads a path that went through a dispersive event at its hero
+                // alone, its single scattering with it, as when the two are added in one walk.
+                std::optional<SecondaryWavelengthsScope> state;
+                if (wavelengths != nullptr) {
+                    state.emplace();
+                    if (rest.hero_only) terminate_secondary_wavelengths();
+                }
+                film.add_sample(film.origin() + Vec2i(x, y), rest.L + m_fog.reconstruct(x, y), 1.0f,
+                                nullptr);
+            }
+        }
+    });
+    rays += counted.load();
 }
 
 }  // namespace glint
