@@ -64,8 +64,8 @@ struct PreviewSettings {
     bool fog_interleave = true;
 
     /// Reads and validates preview_photons, preview_window, preview_radius,
-    /// preview_ambient, preview_bounces and the preview_restir keys; errors name the key's
-    /// location.
+    /// preview_ambient, preview_bounces, preview_fog_interleave and the preview_restir keys;
+    /// errors name the key's location.
     static PreviewSettings read(const Params& params);
 };
 
