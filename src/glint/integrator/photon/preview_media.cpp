@@ -197,18 +197,19 @@ void VolumePhotonView::build(const Scene& scene, const Medium* camera_medium,
     }
 }
 
-Spectrum VolumePhotonView::estimate(Vec2i pixel, const Ray& ray, float t_end) const {
+Spectrum VolumePhotonView::estimate(Vec2i pixel, const Vec3& origin, const Vec3& direction,
+                                    float t_end) const {
     if (m_photons.empty()) return Spectrum(0.0f);
     const Vec2i tile = (pixel - m_origin) / kTile;
     if (tile.x < 0 || tile.y < 0 || tile.x >= m_tiles.x || tile.y >= m_tiles.y)
         return Spectrum(0.0f);
     const size_t t = static_cast<size_t>(tile.y * m_tiles.x + tile.x);
-    const Vec3 wo = -ray.direction;
+    const Vec3 wo = -direction;
     Spectrum sum(0.0f);
     for (uint32_t k = m_bin_start[t]; k < m_bin_start[t + 1]; ++k) {
         const Seen& photon = m_photons[m_bin_photons[k]];
-        const Vec3 v = photon.p - ray.origin;
-        const float along = glm::dot(v, ray.direction);
+        const Vec3 v = photon.p - origin;
+        const float along = glm::dot(v, direction);
         if (along <= 0.0f || along >= t_end) continue;
         if (glm::dot(v, v) - along * along >= m_radius2) continue;
         sum += photon.power * HenyeyGreenstein(photon.g).eval(wo, photon.wi);
@@ -403,7 +404,9 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
     Rng rng(stream_seed(sampler.get_1d()));
     if (deferred) deferred->medium = nullptr;
     ray.direction = glm::normalize(ray.direction);
-    const Ray primary = ray;
+    // The primary ray's line for the volume photons (not a copy of the Ray: its
+    // differentials are not needed, and copying them just after the write above stalled).
+    const Vec3 primary_origin = ray.origin, primary_direction = ray.direction;
     float primary_reach = 0.0f;  // along the primary ray, to the surface being tested
     bool on_primary = true;
     const Medium* medium = m_media->camera;
@@ -442,7 +445,8 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
         if (hit && on_primary) primary_reach += si.t;
         const bool interface = hit && si.material->is_interface();
         if (on_primary && !interface) {
-            L += m_volume_view.estimate(pixel, primary, hit ? primary_reach : kInfinity);
+            L += m_volume_view.estimate(pixel, primary_origin, primary_direction,
+                                        hit ? primary_reach : kInfinity);
             on_primary = false;
         }
         if (!hit) return L + beta * scene.escaped_radiance(ray.direction);

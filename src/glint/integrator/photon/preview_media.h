@@ -59,10 +59,10 @@ public:
                const std::vector<std::vector<VolumePhoton>>& batches, int only_set, float radius2,
                Vec2i origin, Vec2i size, const WavelengthContext* wavelengths);
 
-    /// The beam radiance estimate along `ray` (unit direction, from the lens) up to t_end,
-    /// the distance to the first surface that is not an interface: the photons of `pixel`'s
-    /// tile within the radius of the ray.
-    Spectrum estimate(Vec2i pixel, const Ray& ray, float t_end) const;
+    /// The beam radiance estimate along the ray from `origin` (the lens) along `direction`
+    /// (unit) up to t_end, the distance to the first surface that is not an interface: the
+    /// photons of `pixel`'s tile within the radius of the ray.
+    Spectrum estimate(Vec2i pixel, const Vec3& origin, const Vec3& direction, float t_end) const;
 
     /// Photons the camera sees this pass (transmittance above zero, on the film).
     size_t size() const { return m_photons.size(); }
