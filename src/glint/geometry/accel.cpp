@@ -164,11 +164,37 @@ bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& pa
         passed.count = 0;
         return intersect(ray, hit);
     }
-    // In order along the ray, each crossing once, and only those before the hit (the filter
-    // saw candidates that a closer hit found later made moot). A crossing comes twice as the
-    // same triangle offered again, or as the two triangles of an edge the ray goes through:
-    // one shape at the same distance.
-    const float end = found ? hit.t : ray.t_max;
+    // Only those before the hit: the filter saw candidates that a closer hit found later
+    // made moot.
+    order_crossings(passed, found ? hit.t : ray.t_max);
+    return found;
+}
+
+std::optional<bool> Accel::occluded_passing(const Ray& ray, PassedSurfaces& passed) const {
+    passed.count = 0;
+    if (!embree_accepts(ray.origin, ray.direction, ray.t_min, ray.t_max)) [[unlikely]]
+        return drop_ray();
+    QueryContext context;
+    rtcInitIntersectContext(&context.embree);
+    context.passed = &passed;
+    RTCRay r = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
+    rtcOccluded1(m_world, &context.embree, &r);
+    if (context.overflowed) [[unlikely]] {
+        passed.count = 0;
+        return std::nullopt;
+    }
+    const bool blocked = r.tfar < 0.0f;
+    if (blocked)
+        passed.count = 0;
+    else
+        order_crossings(passed, ray.t_max);
+    return blocked;
+}
+
+// In order along the ray, each crossing once, and only those before `end`. A crossing comes
+// twice as the same triangle offered again, or as the two triangles of an edge the ray goes
+// through: one shape at the same distance.
+void Accel::order_crossings(PassedSurfaces& passed, float end) {
     std::sort(passed.hits.begin(), passed.hits.begin() + passed.count,
               [](const HitRecord& a, const HitRecord& b) { return a.t < b.t; });
     int kept = 0;
@@ -182,7 +208,6 @@ bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& pa
         if (!repeat) passed.hits[kept++] = h;
     }
     passed.count = kept;
-    return found;
 }
 
 bool Accel::occluded(const Ray& ray) const {

@@ -89,6 +89,12 @@ public:
     // Embree cannot skip (user geometry: spheres, quadrics), it is the hit, as for
     // intersect(): the caller crosses it and traces on.
     bool intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& passed) const;
+    // occluded() past the pass-through surfaces, in one any-hit traversal: whether another
+    // surface blocks `ray`'s segment, and when none does, in `passed` the pass-through
+    // surfaces along it, in order. nullopt when more came by than `passed` holds (then ask
+    // intersect_passing()). Only exact when every surface a walk should pass is marked
+    // pass-through and Embree skips it (no user geometry): the scene decides.
+    std::optional<bool> occluded_passing(const Ray& ray, PassedSurfaces& passed) const;
     bool occluded(const Ray& ray) const;
     // The same for a segment given by its parts, for shadow rays, which need no Ray (and so
     // no differentials) built and copied. Inline: the path tracer traces one per bounce.
@@ -173,6 +179,9 @@ private:
         hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
         return true;
     }
+    // Sorts the crossings a recording query found along the ray, drops repeats and those
+    // not before `end`.
+    static void order_crossings(PassedSurfaces& passed, float end);
     // Counts a ray embree_accepts() refused; returns false (a miss, or not blocked).
     // Out of line: the hot callers only pay for the test.
     [[gnu::cold, gnu::noinline]] bool drop_ray(uint64_t count = 1) const;

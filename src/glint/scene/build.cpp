@@ -163,6 +163,9 @@ private:
         for (const ShapeUse& use : m_group_shapes[0]) {
             const unsigned id = m_scene->m_accel.add_shape(-1, *use.shape);
             if (only_bounds_media(use)) m_scene->m_accel.set_pass_through(id);
+            if (has_interface_part(use) &&
+                !(only_bounds_media(use) && use.shape->triangle_count() > 0))
+                m_scene->m_interfaces_skippable = false;
             Scene::WorldEntry& entry = world_entry(id);
             entry.geometry = {use.shape, use.materials};
             note_deformation(use, "");
@@ -221,6 +224,8 @@ private:
                 m_scene->m_has_motion = true;
             }
             for (const ShapeUse& use : m_group_shapes[g]) {
+                // Embree skips interfaces in the world scene only.
+                if (has_interface_part(use)) m_scene->m_interfaces_skippable = false;
                 if (motion.is_moving() && is_emitter(use)) {
                     use.params->fail(
                         fmt::format("an emitting shape cannot move (placed moving at {}): "
@@ -249,6 +254,11 @@ private:
     static bool only_bounds_media(const ShapeUse& use) {
         return !use.materials.empty() &&
                std::all_of(use.materials.begin(), use.materials.end(),
+                           [](const Material* m) { return m && m->is_interface(); });
+    }
+
+    static bool has_interface_part(const ShapeUse& use) {
+        return std::any_of(use.materials.begin(), use.materials.end(),
                            [](const Material* m) { return m && m->is_interface(); });
     }
 

@@ -176,6 +176,10 @@ public:
     /// Whether a material only bounds media (Material::is_interface): shadow rays then
     /// cross such surfaces (transport/visibility.h); otherwise any hit blocks them.
     bool has_interfaces() const { return m_has_interfaces; }
+    // Whether every shape with an interface part is one that Embree skips in a recording
+    // query (a triangle mesh placed in the world, all of its parts interfaces): then one
+    // any-hit traversal tells a shadow ray's blockers and crossings (Accel::occluded_passing).
+    bool interfaces_skippable() const { return m_interfaces_skippable; }
     /// The participating media (glint.medium) the scene holds, in script order.
     const std::vector<std::unique_ptr<Medium>>& media() const { return m_media; }
     /// The medium the camera sits in (glint.camera{ medium = ... }); null: vacuum.
@@ -267,6 +271,7 @@ private:
     const Light* m_environment = nullptr;  // one of m_lights
     SceneStats m_stats;
     bool m_has_interfaces = false;
+    bool m_interfaces_skippable = true;
     const Medium* m_camera_medium = nullptr;  // one of m_media
     bool m_has_motion = false;
 };

@@ -4,6 +4,7 @@
 #include <glint/core/rng.h>
 #include <glint/integrator/photon/photon_tracer.h>
 #include <glint/integrator/transport/light_path_start.h>
+#include <glint/integrator/transport/media.h>
 #include <glint/integrator/transport/roulette.h>
 #include <glint/integrator/transport/transport.h>
 #include <glint/integrator/transport/visibility.h>
@@ -308,6 +309,83 @@ TEST(Visibility, OneTraversalPassesTheInterfaces) {
     ASSERT_TRUE(deep.scene->intersect_surface_passing(ray, si, passed));
     EXPECT_EQ(passed.count, 0);
     EXPECT_NEAR(si.t, 10.0f - 0.5f * PassedSurfaces::kCapacity, 1e-4f);
+}
+
+// The any-hit form for shadow rays: where every interface is a world triangle mesh, one
+// occlusion traversal says whether an opaque surface blocks the segment and, when none does,
+// hands back the same crossings in the same order as the closest-hit form; a sphere
+// interface (user geometry, which Embree cannot skip) or an interface in a placed group
+// makes the scene fall back to the closest-hit walk, which still gives the right
+// transmittance through it.
+TEST(Visibility, AnyHitTraversalPassesTheInterfacesAsTheClosestHitOneDoes) {
+    const std::string fog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
+    const auto box = [](float half) {
+        const std::string h = std::to_string(half);
+        return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h +
+               ", " + h + "}, material = glint.interface{ interior = fog } }\n";
+    };
+    const std::string plate =
+        "glint.quad{ vertices = { {0.5, -9, -5}, {9, -9, -5}, {9, 9, -5}, {0.5, 9, -5} }, "
+        "material = glint.diffuse{} }\n";
+    const test::BuiltScene b = test::build_lua(fog + box(1) + box(2) + plate, "boxes.lua");
+    ASSERT_TRUE(b.scene->interfaces_skippable());
+    Rng rng(7);
+    int blocked_rays = 0, clear_rays = 0;
+    for (int i = 0; i < 400; ++i) {
+        // Segments from in front of the boxes to behind them, some through the plate.
+        const Vec3 from(4.0f * rng.next_float() - 2.0f, 4.0f * rng.next_float() - 2.0f, 10.0f);
+        const Vec3 to(8.0f * rng.next_float() - 4.0f, 8.0f * rng.next_float() - 4.0f, -8.0f);
+        const Ray ray{from, to - from, 0.0f, kShadowRayEnd};
+        PassedSurfaces any, closest;
+        const std::optional<bool> blocked = b.scene->accel().occluded_passing(ray, any);
+        ASSERT_TRUE(blocked.has_value());
+        SurfaceInteraction si;
+        const bool hit = b.scene->intersect_surface_passing(ray, si, closest);
+        ASSERT_EQ(*blocked, hit) << i;
+        if (hit) {
+            ++blocked_rays;
+            EXPECT_EQ(any.count, 0);
+            continue;
+        }
+        ++clear_rays;
+        ASSERT_EQ(any.count, closest.count) << i;
+        for (int k = 0; k < any.count; ++k) {
+            EXPECT_EQ(any.hits[k].t, closest.hits[k].t) << i << ", " << k;
+            EXPECT_EQ(any.hits[k].top_geometry, closest.hits[k].top_geometry) << i << ", " << k;
+        }
+        // The transmittance through the boxes' fog, now found the any-hit way, is the one
+        // the closest-hit walk's legs give.
+        const Medium* outside = nullptr;
+        Spectrum expected(1.0f);
+        walk_legs(*b.scene, ray, closest, kShadowRayEnd, outside, [&](const Ray& leg, float t) {
+            Rng unused;
+            expected *= outside->transmittance(leg, t, unused);
+            return true;
+        });
+        EXPECT_NEAR(transmittance_through_interfaces(*b.scene, {from, to - from}).average(),
+                    expected.average(), 1e-6f)
+            << i;
+    }
+    EXPECT_GT(blocked_rays, 40);
+    EXPECT_GT(clear_rays, 40);
+
+    // A sphere interface, or a box in a placed group: the closest-hit walk, which crosses the
+    // sphere (fog of sigma_t 0.3 along its diameter 2 from outside).
+    const test::BuiltScene sphere = test::build_lua(
+        fog + "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
+        "sphere.lua");
+    EXPECT_FALSE(sphere.scene->interfaces_skippable());
+    EXPECT_NEAR(transmittance_through_interfaces(*sphere.scene,
+                                                 {Vec3(0.0f, 0.0f, 5.0f), Vec3(0.0f, 0.0f, -10.0f)})
+                    .average(),
+                std::exp(-0.3f * 2.0f), 1e-5f);
+    const test::BuiltScene grouped =
+        test::build_lua(fog + "local g = glint.group()\n" +
+                            "g:box{ min = {-1, -1, -1}, max = {1, 1, 1}, "
+                            "material = glint.interface{ interior = fog } }\n" +
+                            "glint.place(g)\n",
+                        "grouped.lua");
+    EXPECT_FALSE(grouped.scene->interfaces_skippable());
 }
 
 // Without interfaces, visibility is Embree's occlusion query: 0 or 1.
