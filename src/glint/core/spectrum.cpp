@@ -68,7 +68,8 @@ namespace detail {
 
 Spectrum uplift_at_wavelengths(const Rgb& rgb, RgbRole role, const WavelengthContext& c) {
     Spectrum s;
-    s.m_v = c.model->uplift(rgb, role, c.lambda.nm);
+    const SpectralModel::Values v = c.model->uplift(rgb, role, c.lambda.nm);
+    for (int i = 0; i < Spectrum::kValues; ++i) s.m_v[i] = v[i];
     return s;
 }
 

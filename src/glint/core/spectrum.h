@@ -126,7 +126,10 @@ public:
     friend Spectrum operator/(const Spectrum& a, const Spectrum& b) {
         return combine(a, b, [](float x, float y) { return y != 0 ? x / y : 0.0f; });
     }
-    friend bool operator==(const Spectrum& a, const Spectrum& b) { return a.m_v == b.m_v; }
+    friend bool operator==(const Spectrum& a, const Spectrum& b) {
+        return a.m_v[0] == b.m_v[0] && a.m_v[1] == b.m_v[1] && a.m_v[2] == b.m_v[2] &&
+               a.m_v[3] == b.m_v[3];
+    }
     friend Spectrum min(const Spectrum& a, const Spectrum& b) {
         return combine(a, b, [](float x, float y) { return std::min(x, y); });
     }
@@ -223,6 +226,18 @@ public:
                                                   const WavelengthContext& c);
 
 private:
+    // The four values as one 16-byte vector of GCC's (and Clang's) vector extension, but with
+    // a float's alignment, so that every struct holding a Spectrum keeps its layout. What it
+    // changes is the calling convention: a function returning a Spectrum returns it in one
+    // SSE register, not in two halves that the caller's vector code then read back as one
+    // from the stack (a stalled store forward at every call that is not inlined: a medium's
+    // transmittance, a BSDF's value, a light's radiance). The arithmetic stays per value,
+    // the same bits.
+    typedef float Values __attribute__((vector_size(16), aligned(4)));
+    static_assert(kValues == 4, "Spectrum::Values holds four floats");
+
+    std::array<float, kValues> values() const { return {m_v[0], m_v[1], m_v[2], m_v[3]}; }
+
     template <typename F>
     static Spectrum combine(const Spectrum& a, const Spectrum& b, F f) {
         Spectrum r;
@@ -232,8 +247,10 @@ private:
 
     constexpr Spectrum(float a, float b, float c, float d) : m_v{a, b, c, d} {}
 
-    std::array<float, kValues> m_v{0.0f, 0.0f, 0.0f, 0.0f};
+    Values m_v{0.0f, 0.0f, 0.0f, 0.0f};
 };
+static_assert(sizeof(Spectrum) == 16 && alignof(Spectrum) == alignof(float),
+              "a Spectrum is four floats, aligned as a float");
 
 namespace detail {
 // Spectral mode's film colour (spectrum.cpp), out of line: RGB mode's stays a copy.
@@ -251,7 +268,7 @@ inline Spectrum uplift(const Rgb& rgb, RgbRole role) {
 // the Monte Carlo estimate of its colour from the values at the path's wavelengths.
 inline Rgb to_rgb(const Spectrum& s) {
     const WavelengthContext* c = detail::t_active_wavelengths;
-    if (c != nullptr) return detail::spectral_to_rgb(s.m_v, *c);
+    if (c != nullptr) return detail::spectral_to_rgb(s.values(), *c);
     return {s.m_v[0], s.m_v[1], s.m_v[2]};
 }
 

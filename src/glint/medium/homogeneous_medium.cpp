@@ -13,10 +13,6 @@ MediumPoint HomogeneousMedium::at(const Vec3&) const {
 
 // sigma_a and sigma_s uplifted apart and added, as at() gives them: the majorant equals the
 // extinction at every wavelength, so delta tracking meets no null collisions.
-Spectrum HomogeneousMedium::sigma_t() const {
-    return uplift(m_sigma_a, RgbRole::unbounded) + uplift(m_sigma_s, RgbRole::unbounded);
-}
-
 void HomogeneousMedium::majorants(const Ray&, float t_max, MajorantVisitor visit) const {
     visit(MajorantSegment{0.0f, t_max, sigma_t()});
 }

@@ -22,7 +22,11 @@ public:
     bool emits() const override { return (m_emission * m_sigma_a).max_value() > 0.0f; }
     bool is_homogeneous() const override { return true; }
 
-    Spectrum sigma_t() const;
+    // Inline: a Spectrum returned from a call comes back in two halves that the caller's
+    // vector code then reads as one, a stalled store forward on every transmittance.
+    Spectrum sigma_t() const {
+        return uplift(m_sigma_a, RgbRole::unbounded) + uplift(m_sigma_s, RgbRole::unbounded);
+    }
 
 private:
     Rgb m_sigma_a, m_sigma_s, m_emission;
