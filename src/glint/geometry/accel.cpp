@@ -151,13 +151,18 @@ void Accel::set_pass_through(unsigned world_geometry) {
     check_device("marking a pass-through surface");
 }
 
-bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& passed) const {
+bool Accel::start_recording(const Ray& ray, PassedSurfaces& passed, QueryContext& context) const {
     passed.count = 0;
     if (!embree_accepts(ray.origin, ray.direction, ray.t_min, ray.t_max)) [[unlikely]]
         return drop_ray();
-    QueryContext context;
     rtcInitIntersectContext(&context.embree);
     context.passed = &passed;
+    return true;
+}
+
+bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& passed) const {
+    QueryContext context;
+    if (!start_recording(ray, passed, context)) return false;
     const bool found = closest_hit(ray, context, hit);
     if (context.overflowed) [[unlikely]] {
         // Surfaces stacked deeper than the record: the first one is the hit.
@@ -171,12 +176,8 @@ bool Accel::intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& pa
 }
 
 std::optional<bool> Accel::occluded_passing(const Ray& ray, PassedSurfaces& passed) const {
-    passed.count = 0;
-    if (!embree_accepts(ray.origin, ray.direction, ray.t_min, ray.t_max)) [[unlikely]]
-        return drop_ray();
     QueryContext context;
-    rtcInitIntersectContext(&context.embree);
-    context.passed = &passed;
+    if (!start_recording(ray, passed, context)) return false;  // dropped: not blocked
     RTCRay r = embree_ray(ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
     rtcOccluded1(m_world, &context.embree, &r);
     if (context.overflowed) [[unlikely]] {

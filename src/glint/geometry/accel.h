@@ -179,6 +179,9 @@ private:
         hit.local_geometry = instanced ? rh.hit.geomID : RTC_INVALID_GEOMETRY_ID;
         return true;
     }
+    // Readies `context` for a query that records the pass-through surfaces in `passed`
+    // (emptied); false, with the ray counted as dropped, where Embree would refuse it.
+    bool start_recording(const Ray& ray, PassedSurfaces& passed, QueryContext& context) const;
     // Sorts the crossings a recording query found along the ray, drops repeats and those
     // not before `end`.
     static void order_crossings(PassedSurfaces& passed, float end);

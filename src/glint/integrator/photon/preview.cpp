@@ -405,6 +405,13 @@ Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sa
 // from the camera by follow_specular_chain (a few pixels; the chain then draws exactly
 // what the one-ray form draws). Each lane takes the steps camera_sample() takes with the
 // same draws, so each pixel gets what camera_sample() gives it, bit for bit.
+Ray PreviewIntegrator::pass_camera_ray(const Scene& scene, PassSampler& sampler, Vec2i pixel,
+                                       int pass) {
+    sampler.start_pixel_sample(pixel, pass);
+    const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
+    return scene.camera().sample_ray(film_point, sampler);
+}
+
 void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corner, int pass,
                                      CameraLanes& lanes, Arena& arena, RayCounter& counter) const {
     const int w = film.width(), h = film.height();
@@ -416,10 +423,7 @@ void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corne
         if (x >= w || y >= h) continue;
         // The film may be a window: pixels are named in the full image.
         const Vec2i pixel = film.origin() + Vec2i(x, y);
-        PassSampler& sampler = lanes.samplers[lane];
-        sampler.start_pixel_sample(pixel, pass);
-        const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
-        lanes.rays[lane] = scene.camera().sample_ray(film_point, sampler);
+        lanes.rays[lane] = pass_camera_ray(scene, lanes.samplers[lane], pixel, pass);
         lanes.pixels[lane] = pixel;
         ray_of[lane] = &lanes.rays[lane];
         si_of[lane] = &lanes.si[lane];
@@ -579,9 +583,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                          y < std::min(h, rows.end() * kBlockHeight); ++y) {
                         for (int x = 0; x < w; ++x) {
                             const Vec2i pixel = film.origin() + Vec2i(x, y);
-                            sampler.start_pixel_sample(pixel, pass);
-                            const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
-                            const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                            const Ray ray = pass_camera_ray(scene, sampler, pixel, pass);
                             arena.reset();
                             std::optional<SecondaryWavelengthsScope> terminated;
                             if (wavelengths != nullptr) terminated.emplace();

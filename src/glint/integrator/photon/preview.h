@@ -17,6 +17,7 @@
 // numbers from a cheap sampler of its own, and the photon grid caches its cells per thread;
 // see docs/integrators.md.
 #include <glint/integrator/photon/interleaved_fog.h>
+#include <glint/integrator/photon/pass_sampler.h>
 #include <glint/integrator/photon/photon_map.h>
 #include <glint/integrator/photon/photon_tracer.h>
 #include <glint/integrator/photon/preview_media.h>
@@ -124,6 +125,9 @@ private:
     // Mirrors and glass a camera path follows before its first diffuse surface, at most.
     static constexpr int kMaxCameraSegments = 16;
     void restart(const Scene& scene);
+    // The camera ray of `pixel` (named in the full image) in pass `pass`, with `sampler`
+    // started on that pixel sample: its film position, then its lens position.
+    static Ray pass_camera_ray(const Scene& scene, PassSampler& sampler, Vec2i pixel, int pass);
     void trace_photons(const Scene& scene, RenderStats& stats);
     Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
                               HashGrid::Cache& cache) const;

@@ -518,9 +518,7 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
         for (int y = rows.begin(); y < rows.end(); ++y) {
             for (int x = 0; x < w; ++x) {
                 const Vec2i pixel = film.origin() + Vec2i(x, y);
-                sampler.start_pixel_sample(pixel, pass);
-                const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
-                const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                const Ray ray = pass_camera_ray(scene, sampler, pixel, pass);
                 arena.reset();
                 std::optional<SecondaryWavelengthsScope> terminated;
                 if (wavelengths != nullptr) terminated.emplace();

@@ -51,9 +51,7 @@ void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int p
                 const size_t i =
                     static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
                 const Vec2i pixel = film.origin() + Vec2i(x, y);
-                sampler.start_pixel_sample(pixel, pass);
-                const Vec2 film_point = Vec2(pixel) + sampler.get_pixel_2d();
-                const Ray ray = scene.camera().sample_ray(film_point, sampler);
+                const Ray ray = pass_camera_ray(scene, sampler, pixel, pass);
                 const SpecularChain chain =
                     follow_specular_chain(scene, ray, Spectrum(1.0f), sampler, arena, counter,
                                           kMaxCameraSegments, nullptr);
