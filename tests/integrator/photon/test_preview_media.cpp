@@ -234,6 +234,34 @@ TEST(PreviewMediaSlow, SpectralVolumetricCausticAgreesWithBdpt) {
     expect_beam_agrees_with_bdpt(true);
 }
 
+// A medium the scene defines but places nowhere (no surface bounds it, the camera is not in
+// it) changes nothing: the preview and bdpt give the same bits as without it (the preview
+// would otherwise take its slower one-ray path for media).
+TEST(PreviewMedia, AMediumPlacedNowhereChangesNothing) {
+    const std::string scene = R"(
+glint.camera{ eye = {0, 1, 4}, look_at = {0, 1, 0}, fov = 45 }
+glint.quad{ vertices = { {-2, 0, -2}, {-2, 0, 2}, {2, 0, 2}, {2, 0, -2} },
+            material = glint.diffuse{ reflectance = 0.6 } }
+glint.sphere{ center = {0, 0.8, 0}, radius = 0.4, material = glint.dielectric{ ior = 1.5 } }
+glint.sphere{ center = {0, 2.2, 0}, radius = 0.1, material = glint.emissive{ radiance = 100 } }
+)";
+    const std::string unused = "local fog = glint.medium{ density = 0.5, albedo = 0.9 }\n";
+    for (const char* integrator : {"preview", "bdpt"}) {
+        const std::string render = fmt::format(
+            "glint.render{{ width = 24, height = 24, spp = 4, integrator = '{}', seed = 5 }}\n",
+            integrator);
+        const Image with = test::render_lua(unused + render + scene, 2);
+        const Image without = test::render_lua(render + scene, 2);
+        ASSERT_EQ(with.pixels.size(), without.pixels.size());
+        double sum = 0.0;
+        for (size_t i = 0; i < with.pixels.size(); ++i) {
+            ASSERT_EQ(with.pixels[i], without.pixels[i]) << integrator << ", value " << i;
+            sum += with.pixels[i];
+        }
+        EXPECT_GT(sum, 0.0) << integrator;
+    }
+}
+
 // The volume photons are traced in chunks and binned in their order: the same image for
 // one and two threads, bit for bit.
 TEST(PreviewMedia, SameImageForOneAndTwoThreads) {

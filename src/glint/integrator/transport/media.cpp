@@ -43,10 +43,15 @@ const Medium* medium_containing(const Scene& scene, const Vec3& p) {
 }
 
 std::optional<WalkMedia> walk_media(const Scene& scene) {
-    const auto& media = scene.media();
-    if (std::none_of(media.begin(), media.end(),
-                     [](const auto& m) { return m->scatters() || m->emits(); }))
-        return std::nullopt;
+    // Only media a walk can be in count: the camera's, and those the surfaces bound. A
+    // medium the scene defines but places nowhere changes nothing, and costs nothing.
+    const auto sampled = [](const Medium* m) { return m && (m->scatters() || m->emits()); };
+    bool reachable = sampled(scene.camera_medium());
+    for (const auto& material : scene.materials()) {
+        const MediumInterface media = material->medium_interface();
+        reachable = reachable || sampled(media.inside) || sampled(media.outside);
+    }
+    if (!reachable) return std::nullopt;
     WalkMedia result;
     result.camera = scene.camera_medium();
     // A light names no medium: the one round a point it emits from (light_tracer.cpp's rule).

@@ -80,9 +80,9 @@ struct WalkMedia {
     /// emits from).
     std::vector<const Medium*> light_start;
 };
-/// The scene's media for walks that sample them; nullopt when no medium scatters or emits
-/// (absorbing glass alone is taken at each hit, as without media, and the walks draw nothing
-/// more).
+/// The scene's media for walks that sample them; nullopt when no medium a walk can be in
+/// (the camera's, or one a surface bounds) scatters or emits: absorbing glass alone is taken
+/// at each hit, as without media, and the walks draw nothing more.
 std::optional<WalkMedia> walk_media(const Scene& scene);
 
 /// How a walk's segment through a medium ended.
