@@ -11,8 +11,8 @@ MediumPoint HomogeneousMedium::at(const Vec3&) const {
                        uplift(m_emission, RgbRole::illuminant)};
 }
 
-// sigma_a and sigma_s uplifted apart and added, as at() gives them: the majorant equals the
-// extinction at every wavelength, so delta tracking meets no null collisions.
+// The majorant is the extinction at every wavelength: delta tracking meets no null
+// collisions.
 void HomogeneousMedium::majorants(const Ray&, float t_max, MajorantVisitor visit) const {
     visit(MajorantSegment{0.0f, t_max, sigma_t()});
 }

@@ -22,8 +22,8 @@ public:
     bool emits() const override { return (m_emission * m_sigma_a).max_value() > 0.0f; }
     bool is_homogeneous() const override { return true; }
 
-    // Inline: a Spectrum returned from a call comes back in two halves that the caller's
-    // vector code then reads as one, a stalled store forward on every transmittance.
+    // sigma_a and sigma_s uplifted apart and added, as at() gives them. Inline: it is read
+    // on every transmittance.
     Spectrum sigma_t() const {
         return uplift(m_sigma_a, RgbRole::unbounded) + uplift(m_sigma_s, RgbRole::unbounded);
     }

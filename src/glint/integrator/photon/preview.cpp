@@ -398,13 +398,6 @@ Spectrum PreviewIntegrator::camera_sample(const Scene& scene, const Ray& ray, Sa
            chain.beta * indirect_estimate(scene, si, bsdf, direct, sampler, arena, counter, cache);
 }
 
-// The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
-// packet, and the shadow rays of their direct-light samples as another; both are coherent
-// (neighbouring pixels, one light), which Embree's packet kernels turn into fewer
-// instructions per ray. A ray whose first hit is a mirror or glass goes on alone, retraced
-// from the camera by follow_specular_chain (a few pixels; the chain then draws exactly
-// what the one-ray form draws). Each lane takes the steps camera_sample() takes with the
-// same draws, so each pixel gets what camera_sample() gives it, bit for bit.
 Ray PreviewIntegrator::pass_camera_ray(const Scene& scene, PassSampler& sampler, Vec2i pixel,
                                        int pass) {
     sampler.start_pixel_sample(pixel, pass);
@@ -412,6 +405,13 @@ Ray PreviewIntegrator::pass_camera_ray(const Scene& scene, PassSampler& sampler,
     return scene.camera().sample_ray(film_point, sampler);
 }
 
+// The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
+// packet, and the shadow rays of their direct-light samples as another; both are coherent
+// (neighbouring pixels, one light), which Embree's packet kernels turn into fewer
+// instructions per ray. A ray whose first hit is a mirror or glass goes on alone, retraced
+// from the camera by follow_specular_chain (a few pixels; the chain then draws exactly
+// what the one-ray form draws). Each lane takes the steps camera_sample() takes with the
+// same draws, so each pixel gets what camera_sample() gives it, bit for bit.
 void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corner, int pass,
                                      CameraLanes& lanes, Arena& arena, RayCounter& counter) const {
     const int w = film.width(), h = film.height();
@@ -544,12 +544,12 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
     std::atomic<uint64_t> camera_rays{0};
     // In media that scatter the camera paths carry their medium one ray at a time
     // (preview_media.h); ReSTIR and the packets serve scenes without.
-    if (!m_media && m_preview.restir.mode != RestirMode::kOff) {
-        render_restir_pass(scene, film, pass, stats);
-    } else if (m_media && m_preview.fog_interleave) {
+    if (m_media) {
         uint64_t rays = 0;
         render_media_pass(scene, film, pass, rays);
         camera_rays += rays;
+    } else if (m_preview.restir.mode != RestirMode::kOff) {
+        render_restir_pass(scene, film, pass, stats);
     } else {
         // Blocks of 4 x 2 pixels, a few rows of them per task, with one set of samplers and an
         // arena per task. Each pixel's sample depends only on (seed, pixel, pass) and the
@@ -561,7 +561,7 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                 if (wavelengths != nullptr) scope.emplace(*wavelengths);
                 Arena arena;
                 RayCounter counter;
-                if (m_packets && !m_media) {
+                if (m_packets) {
                     auto lanes = std::make_unique<CameraLanes>();
                     for (PassSampler& sampler : lanes->samplers) sampler.set_seed(m_settings.seed);
                     for (int row = rows.begin(); row < rows.end(); ++row) {
@@ -587,11 +587,9 @@ RenderStats PreviewIntegrator::render_pass(const Scene& scene, Film& film, int p
                             arena.reset();
                             std::optional<SecondaryWavelengthsScope> terminated;
                             if (wavelengths != nullptr) terminated.emplace();
-                            const Spectrum L =
-                                m_media ? camera_sample_in_media(scene, pixel, ray, sampler, arena,
-                                                                 counter, cache, nullptr)
-                                        : camera_sample(scene, ray, sampler, arena, counter, cache);
-                            film.add_sample(pixel, L, 1.0f, nullptr);
+                            film.add_sample(
+                                pixel, camera_sample(scene, ray, sampler, arena, counter, cache),
+                                1.0f, nullptr);
                         }
                     }
                 }

@@ -487,11 +487,12 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
     return L;
 }
 
-// A pass in media with interleaved single scattering (interleaved_fog.h), in three sweeps
-// over the film, each pixel's work depending only on (seed, pixel, pass) and the photons (the
-// same image for any threads): the camera samples, whose primary legs in fog are only
-// recorded; the legs' single scattering, in the pixels InterleavedFog picks; and each
-// pixel's light, its own plus what its neighbours estimated for it, into the film.
+// A pass in media, in three sweeps over the film, each pixel's work depending only on (seed,
+// pixel, pass) and the photons (the same image for any threads): the camera samples, whose
+// primary legs in fog are only recorded when preview_fog_interleave is on
+// (interleaved_fog.h); the legs' single scattering, in the pixels InterleavedFog picks; and
+// each pixel's light, its own plus what its neighbours estimated for it, into the film.
+// With interleaving off no leg is recorded and the last two sweeps add nothing.
 void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pass,
                                           uint64_t& rays) {
     const int w = film.width(), h = film.height();
@@ -524,8 +525,10 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                 if (wavelengths != nullptr) terminated.emplace();
                 PixelRest& rest = m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) +
                                          static_cast<size_t>(x)];
+                DeferredLeg& leg = m_fog.leg(x, y);
+                leg.medium = nullptr;
                 rest.L = camera_sample_in_media(scene, pixel, ray, sampler, arena, counter, cache,
-                                                &m_fog.leg(x, y));
+                                                m_preview.fog_interleave ? &leg : nullptr);
                 rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
                 m_fog.finish_leg(x, y);
             }
