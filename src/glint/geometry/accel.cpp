@@ -196,6 +196,12 @@ std::optional<bool> Accel::occluded_passing(const Ray& ray, PassedSurfaces& pass
 // twice as the same triangle offered again, or as the two triangles of an edge the ray goes
 // through: one shape at the same distance.
 void Accel::order_crossings(PassedSurfaces& passed, float end) {
+    // Most queries pass nothing or one surface: no sort then (a call that cost 1.5 % of the
+    // preview in fog).
+    if (passed.count <= 1) {
+        if (passed.count == 1 && !(passed.hits[0].t < end)) passed.count = 0;
+        return;
+    }
     std::sort(passed.hits.begin(), passed.hits.begin() + passed.count,
               [](const HitRecord& a, const HitRecord& b) { return a.t < b.t; });
     int kept = 0;

@@ -1,3 +1,4 @@
+#include <glint/medium/delta_tracking.h>
 #include <glint/medium/homogeneous_medium.h>
 
 namespace glint {
@@ -17,8 +18,9 @@ void HomogeneousMedium::majorants(const Ray&, float t_max, MajorantVisitor visit
     visit(MajorantSegment{0.0f, t_max, sigma_t()});
 }
 
+// exp(-sigma_t d) per value, with one exp for grey fog (the same bits as four).
 Spectrum HomogeneousMedium::transmittance(const Ray& ray, float t, Rng&) const {
-    return exp(sigma_t() * (-t * glm::length(ray.direction)));
+    return attenuation(sigma_t(), t * glm::length(ray.direction));
 }
 
 }  // namespace glint
