@@ -1,6 +1,7 @@
 #pragma once
 // Integrators turn a Scene into an image on a Film.
 #include <glint/core/arena.h>
+#include <glint/core/error.h>
 #include <glint/core/sampler.h>
 #include <glint/film/film.h>
 #include <glint/film/filter.h>
@@ -84,6 +85,28 @@ struct RayCounter {
 
 // The film's image with the integrator's extra channels (sample counts, edge mask) added.
 Image final_image(const Film& film, const RenderStats& stats);
+
+/// Runs `check`, a validation of the render setting `key`; a glint::Error it throws comes
+/// out prefixed with where `key` was set (settings.where_of: the scene's file and line, or
+/// the flag), so that every integrator's message points at the line to fix.
+template <typename Check>
+void blame_setting(const RenderSettings& settings, const char* key, Check&& check) {
+    try {
+        check();
+    } catch (const Error& e) {
+        throw Error(settings.where_of(key) + ": " + e.what());
+    }
+}
+
+/// For an integrator whose samples are not taken pixel by pixel (light paths, Markov
+/// chains, passes over the whole film), so that no pixel can be sampled more: throws
+/// glint::Error naming where `adaptive` was set, unless settings.adaptive is "none".
+/// (Inline: the integrators' own libraries link before the registry's.)
+inline void refuse_adaptive_sampling(const RenderSettings& settings, const char* integrator) {
+    if (settings.adaptive == "none") return;
+    throw Error(settings.where_of("adaptive") + ": integrator '" + integrator +
+                "' has no adaptive sampling (adaptive '" + settings.adaptive + "')");
+}
 
 /// Makes an integrator from the common settings and the glint.render{...} table `params`
 /// (a copy of settings.params), from which it reads and validates its own keys, each read

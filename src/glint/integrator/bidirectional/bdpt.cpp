@@ -349,20 +349,11 @@ struct BdptIntegrator::TileResult {
 };
 
 BdptIntegrator::BdptIntegrator(const RenderSettings& settings) : m_settings(settings) {
-    auto blame = [&](const char* key, auto&& check) {
-        try {
-            check();
-        } catch (const Error& e) {
-            throw Error(fmt::format("{}: {}", settings.where_of(key), e.what()));
-        }
-    };
-    blame("filter", [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
-    blame("sampler", [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
-    blame("adaptive", [&] {
-        if (settings.adaptive != "none")
-            throw Error(fmt::format("integrator 'bdpt' has no adaptive sampling (adaptive '{}')",
-                                    settings.adaptive));
-    });
+    blame_setting(settings, "filter",
+                  [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
+    blame_setting(settings, "sampler",
+                  [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
+    refuse_adaptive_sampling(settings, "bdpt");
     m_debug_strategies = std::find(settings.debug.begin(), settings.debug.end(), "strategies") !=
                          settings.debug.end();
 }

@@ -69,10 +69,7 @@ LightTracer::LightTracer(const RenderSettings& settings) : m_settings(settings) 
 
 std::unique_ptr<Integrator> LightTracer::create(const RenderSettings& settings, const Params&) {
     // Every path splats wherever it lands: there is no pixel to sample more or less.
-    if (settings.adaptive != "none") {
-        throw Error(fmt::format("{}: integrator 'light' has no adaptive sampling (adaptive '{}')",
-                                settings.where_of("adaptive"), settings.adaptive));
-    }
+    refuse_adaptive_sampling(settings, "light");
     return std::make_unique<LightTracer>(settings);
 }
 

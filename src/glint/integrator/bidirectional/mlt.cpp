@@ -70,9 +70,7 @@ MltSettings MltSettings::read(const Params& p) {
 
 MltIntegrator::MltIntegrator(const RenderSettings& settings, const MltSettings& mlt)
     : m_settings(settings), m_mlt(mlt) {
-    if (settings.adaptive != "none")
-        throw Error(fmt::format("{}: integrator 'mlt' has no adaptive sampling (adaptive '{}')",
-                                settings.where_of("adaptive"), settings.adaptive));
+    refuse_adaptive_sampling(settings, "mlt");
 }
 
 std::unique_ptr<Integrator> MltIntegrator::create(const RenderSettings& settings,

@@ -92,20 +92,11 @@ VcmSettings VcmSettings::read(const Params& p) {
 
 VcmIntegrator::VcmIntegrator(const RenderSettings& settings, const VcmSettings& vcm)
     : m_settings(settings), m_vcm(vcm) {
-    auto blame = [&](const char* key, auto&& check) {
-        try {
-            check();
-        } catch (const Error& e) {
-            throw Error(fmt::format("{}: {}", settings.where_of(key), e.what()));
-        }
-    };
-    blame("filter", [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
-    blame("sampler", [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
-    blame("adaptive", [&] {
-        if (settings.adaptive != "none")
-            throw Error(fmt::format("integrator 'vcm' has no adaptive sampling (adaptive '{}')",
-                                    settings.adaptive));
-    });
+    blame_setting(settings, "filter",
+                  [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
+    blame_setting(settings, "sampler",
+                  [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
+    refuse_adaptive_sampling(settings, "vcm");
 }
 
 std::unique_ptr<Integrator> VcmIntegrator::create(const RenderSettings& settings,

@@ -122,21 +122,7 @@ RenderStats WhittedIntegrator::render(const Scene& scene, Film& film, Progress& 
         if (view != "photons" || !m_whitted.caustics) continue;
         // The debug view, as the photon integrator's: what the caustic map alone says at
         // each diffuse hit seen directly or through mirrors and glass.
-        Film photons(film.width(), film.height(), false, film.origin());
-        Progress quiet("photon view", 1, true);
-        m_show_photons = true;
-        const RenderStats view_stats = render_tiles(scene, photons, quiet);
-        m_show_photons = false;
-        const Image image = photons.resolve();
-        ExtraChannel channel{"photons.Y", {}};
-        for (int y = 0; y < image.height; ++y) {
-            for (int x = 0; x < image.width; ++x) {
-                channel.values.push_back(
-                    Rgb(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)).luminance());
-            }
-        }
-        stats.channels.push_back(std::move(channel));
-        stats.rays += view_stats.rays;
+        add_luminance_view(scene, film, m_show_photons, "photons.Y", stats);
     }
     return stats;
 }

@@ -116,16 +116,10 @@ PreviewSettings PreviewSettings::read(const Params& p) {
 std::unique_ptr<Integrator> PreviewIntegrator::create(const RenderSettings& settings,
                                                       const Params& params) {
     // No tile loop checks the sampler's name: check it here, before any scene is built.
-    try {
-        make_sampler(settings.sampler, settings.spp, settings.seed);
-    } catch (const Error& e) {
-        throw Error(fmt::format("{}: {}", settings.where_of("sampler"), e.what()));
-    }
+    blame_setting(settings, "sampler",
+                  [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
     // A pass is one sample in every pixel: there is nothing to adapt.
-    if (settings.adaptive != "none") {
-        throw Error(fmt::format("{}: integrator 'preview' has no adaptive sampling (adaptive '{}')",
-                                settings.where_of("adaptive"), settings.adaptive));
-    }
+    refuse_adaptive_sampling(settings, "preview");
     return std::make_unique<PreviewIntegrator>(settings, PreviewSettings::read(params));
 }
 

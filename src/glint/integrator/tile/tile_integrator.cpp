@@ -62,16 +62,11 @@ std::vector<uint8_t> sobel_edge_mask(const Image& image, float threshold, int ra
 
 TileIntegrator::TileIntegrator(const RenderSettings& settings) : m_settings(settings) {
     // Check the names now, before any scene is built, and say where each came from.
-    auto blame = [&](const char* key, auto&& check) {
-        try {
-            check();
-        } catch (const Error& e) {
-            throw Error(fmt::format("{}: {}", settings.where_of(key), e.what()));
-        }
-    };
-    blame("filter", [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
-    blame("sampler", [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
-    blame("adaptive", [&] {
+    blame_setting(settings, "filter",
+                  [&] { m_filter = make_filter(settings.filter, settings.filter_radius); });
+    blame_setting(settings, "sampler",
+                  [&] { make_sampler(settings.sampler, settings.spp, settings.seed); });
+    blame_setting(settings, "adaptive", [&] {
         if (settings.adaptive != "none" && settings.adaptive != "sobel" &&
             settings.adaptive != "variance") {
             throw Error(fmt::format("unknown adaptive mode '{}' (expected: none, sobel, variance)",
@@ -120,6 +115,24 @@ RenderStats TileIntegrator::render_tiles(const Scene& scene, Film& film, Progres
     }
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return stats;
+}
+
+void TileIntegrator::add_luminance_view(const Scene& scene, const Film& film, bool& view,
+                                        const std::string& name, RenderStats& stats) {
+    Film view_film(film.width(), film.height(), false, film.origin());
+    Progress quiet(name, 1, true);
+    view = true;
+    const RenderStats view_stats = render_tiles(scene, view_film, quiet);
+    view = false;
+    const Image image = view_film.resolve();
+    ExtraChannel channel{name, {}};
+    channel.values.reserve(static_cast<size_t>(image.width) * static_cast<size_t>(image.height));
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x)
+            channel.values.push_back(
+                Rgb(image.at(x, y, 0), image.at(x, y, 1), image.at(x, y, 2)).luminance());
+    stats.channels.push_back(std::move(channel));
+    stats.rays += view_stats.rays;
 }
 
 RenderStats TileIntegrator::render_pass(const Scene& scene, Film& film, int pass,

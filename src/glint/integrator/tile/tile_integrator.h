@@ -5,6 +5,7 @@
 #include <glint/integrator/transport/wavelength_sets.h>
 
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace glint {
@@ -57,6 +58,11 @@ protected:
     // render() after prepare(): the tile loop over `film`'s window, for debug views that
     // render a second image from what prepare() made.
     RenderStats render_tiles(const Scene& scene, Film& film, Progress& progress);
+    // Such a debug view: renders `film`'s window again, into a film of its own, with `view`
+    // (the integrator's flag that switches its estimate to the view's) set for that render,
+    // and adds the image's luminance to `stats` as the channel `name`, with the rays.
+    void add_luminance_view(const Scene& scene, const Film& film, bool& view,
+                            const std::string& name, RenderStats& stats);
 
     // What one thread renders pixels with: its sampler, scratch memory for BSDFs, and the
     // rays it traced. An integrator that needs more per thread derives from it and makes
