@@ -121,12 +121,15 @@ namespace {
 // intersect_passing() removes the repeats.
 void pass_through_filter(const RTCFilterFunctionNArguments* args) {
     auto* context = reinterpret_cast<QueryContext*>(args->context);
-    PassedSurfaces* passed = context->passed;
-    if (!passed) return;
+    if (!context->passed && !context->lanes) return;
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] == 0) continue;
+        // A packet query's ray carries its lane as its id.
+        const unsigned lane = context->lanes ? RTCRayN_id(args->ray, args->N, i) : 0;
+        PassedSurfaces* passed = context->lanes ? &context->lanes[lane] : context->passed;
         if (passed->count == PassedSurfaces::kCapacity) {
             context->overflowed = true;
+            context->overflowed_lanes |= 1u << lane;
             continue;  // kept as a hit; intersect_passing() then traces without recording
         }
         args->valid[i] = 0;
@@ -326,18 +329,52 @@ void init_context(QueryContext& context, bool coherent) {
 
 uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t active,
                                  PerLane<HitRecord>& hits, bool coherent) const {
-    static_assert(kPacketWidth == 8, "the packet calls below are Embree's 8-wide ones");
     // A lone ray costs less on its own than as a packet of one (intersect() checks it).
     if (is_single_lane(active)) {
         const int lane = std::countr_zero(active);
         return intersect(*rays[lane], hits[lane]) ? active : 0;
     }
+    QueryContext context;
+    return packet_closest_hits(rays, active, hits, context, coherent);
+}
+
+uint32_t Accel::intersect_packet_passing(const PerLane<const Ray*>& rays, uint32_t active,
+                                         PerLane<HitRecord>& hits, PerLane<PassedSurfaces>& passed,
+                                         bool coherent) const {
+    if (is_single_lane(active)) {
+        const int lane = std::countr_zero(active);
+        return intersect_passing(*rays[lane], hits[lane], passed[lane]) ? active : 0;
+    }
+    for_each_lane(active, [&](int lane) { passed[lane].count = 0; });
+    QueryContext context;
+    context.lanes = passed.data();
+    const uint32_t hit_lanes = packet_closest_hits(rays, active, hits, context, coherent);
+    uint32_t result = 0;
+    for_each_lane(active, [&](int lane) {
+        const Ray& ray = *rays[lane];
+        if ((context.overflowed_lanes >> lane) & 1u) [[unlikely]] {
+            // As intersect_passing() does for it alone (which may overflow in turn).
+            if (intersect_passing(ray, hits[lane], passed[lane])) result |= 1u << lane;
+            return;
+        }
+        const bool hit = (hit_lanes >> lane) & 1u;
+        order_crossings(passed[lane], hit ? hits[lane].t : ray.t_max);
+        if (hit) result |= 1u << lane;
+    });
+    return result;
+}
+
+uint32_t Accel::packet_closest_hits(const PerLane<const Ray*>& rays, uint32_t active,
+                                    PerLane<HitRecord>& hits, QueryContext& context,
+                                    bool coherent) const {
+    static_assert(kPacketWidth == 8, "the packet calls below are Embree's 8-wide ones");
     alignas(32) RTCRayHit8 packet;
     const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         // Inactive lanes get a valid ray too, so no lane holds uninitialised floats.
         const Ray& ray = *rays[(active >> lane) & 1u ? lane : first];
         set_packet_ray(packet.ray, lane, ray.origin, ray.direction, ray.t_min, ray.t_max, ray.time);
+        packet.ray.id[lane] = static_cast<unsigned>(lane);  // for the recording filter
         packet.hit.geomID[lane] = RTC_INVALID_GEOMETRY_ID;
         packet.hit.instID[0][lane] = RTC_INVALID_GEOMETRY_ID;
     }
@@ -345,7 +382,6 @@ uint32_t Accel::intersect_packet(const PerLane<const Ray*>& rays, uint32_t activ
     const auto drop = [this](uint64_t count) { drop_ray(count); };
     if (!keep_accepted_lanes(packet.ray, active, drop)) return 0;
     const EmbreeValid valid = embree_valid(active);
-    QueryContext context;
     init_context(context, coherent);
     rtcIntersect8(valid.lanes, m_world, &context.embree, &packet);
 

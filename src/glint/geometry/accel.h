@@ -43,6 +43,10 @@ struct QueryContext {
     RTCIntersectContext embree;
     PassedSurfaces* passed = nullptr;
     bool overflowed = false;  ///< more than PassedSurfaces::kCapacity came by
+    /// A packet query's records instead, one per lane (each ray's id is its lane), and the
+    /// lanes that overflowed theirs.
+    PassedSurfaces* lanes = nullptr;
+    uint32_t overflowed_lanes = 0;
 };
 
 class Accel {
@@ -89,6 +93,13 @@ public:
     // Embree cannot skip (user geometry: spheres, quadrics), it is the hit, as for
     // intersect(): the caller crosses it and traces on.
     bool intersect_passing(const Ray& ray, HitRecord& hit, PassedSurfaces& passed) const;
+    // intersect_passing() for the rays in the lanes set in `active`, traced together as
+    // intersect_packet() traces them: each lane's hit and crossings as intersect_passing()
+    // gives them for that ray alone (a lane whose crossings overflow is traced again alone).
+    // Returns the lanes that hit.
+    uint32_t intersect_packet_passing(const PerLane<const Ray*>& rays, uint32_t active,
+                                      PerLane<HitRecord>& hits, PerLane<PassedSurfaces>& passed,
+                                      bool coherent) const;
     // occluded() past the pass-through surfaces, in one any-hit traversal: whether another
     // surface blocks `ray`'s segment, and when none does, in `passed` the pass-through
     // surfaces along it, in order. nullopt when more came by than `passed` holds (then ask
@@ -182,6 +193,11 @@ private:
     // Readies `context` for a query that records the pass-through surfaces in `passed`
     // (emptied); false, with the ray counted as dropped, where Embree would refuse it.
     bool start_recording(const Ray& ray, PassedSurfaces& passed, QueryContext& context) const;
+    // The packet query both intersect_packet() and intersect_packet_passing() make, under
+    // `context` (recording per lane or not); returns the lanes that hit.
+    uint32_t packet_closest_hits(const PerLane<const Ray*>& rays, uint32_t active,
+                                 PerLane<HitRecord>& hits, QueryContext& context,
+                                 bool coherent) const;
     // Sorts the crossings a recording query found along the ray, drops repeats and those
     // not before `end`.
     static void order_crossings(PassedSurfaces& passed, float end);

@@ -112,6 +112,20 @@ public:
         fill_interaction(ray, hit, si);
         return true;
     }
+    // intersect_surface_passing() for the rays in the lanes set in `active`, traced together
+    // (Accel::intersect_packet_passing): the same surface and crossings per lane as the
+    // one-ray form. Returns the lanes that hit.
+    uint32_t intersect_surface_packet_passing(const PerLane<const Ray*>& rays, uint32_t active,
+                                              const PerLane<SurfaceInteraction*>& si,
+                                              PerLane<PassedSurfaces>& passed,
+                                              bool coherent) const {
+        PerLane<HitRecord> hits;
+        const uint32_t hit_lanes =
+            m_accel.intersect_packet_passing(rays, active, hits, passed, coherent);
+        for_each_lane(hit_lanes,
+                      [&](int lane) { fill_interaction(*rays[lane], hits[lane], *si[lane]); });
+        return hit_lanes;
+    }
     void passed_surface(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
         fill_interaction(ray, hit, si);
     }

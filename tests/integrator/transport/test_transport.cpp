@@ -311,6 +311,81 @@ TEST(Visibility, OneTraversalPassesTheInterfaces) {
     EXPECT_NEAR(si.t, 10.0f - 0.5f * PassedSurfaces::kCapacity, 1e-4f);
 }
 
+// The packet form of the closest-hit walk past interfaces, which the preview's camera rays in
+// media take: lane by lane, the same hit (surface, distance) and the same crossings in the
+// same order as one ray at a time, for coherent and scattered packets, partly filled ones,
+// interfaces stacked deeper than a lane's record (that lane traced again alone) and a
+// sphere interface (user geometry: the hit, as for one ray).
+TEST(Visibility, PacketsPassTheInterfacesAsOneRayDoes) {
+    const std::string fog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
+    const auto box = [](float half) {
+        const std::string h = std::to_string(half);
+        return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h +
+               ", " + h + "}, material = glint.interface{ interior = fog } }\n";
+    };
+    std::string deep = fog;
+    for (int i = 1; i <= PassedSurfaces::kCapacity + 1; ++i) deep += box(0.4f * i);
+    const std::string scenes[] = {
+        fog + box(1) + box(2) +
+            "glint.quad{ vertices = { {0.5, -9, -5}, {9, -9, -5}, {9, 9, -5}, {0.5, 9, -5} }, "
+            "material = glint.diffuse{} }\n",
+        deep + "glint.sphere{ center = {0, 0, -6}, radius = 2, material = glint.diffuse{} }\n",
+        fog + box(2) +
+            "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n"};
+    Rng rng(11);
+    int compared = 0, passed_some = 0;
+    for (const std::string& code : scenes) {
+        const test::BuiltScene b = test::build_lua(code, "packets.lua");
+        for (int packet = 0; packet < 60; ++packet) {
+            const bool coherent = packet % 2 == 0;
+            PerLane<Ray> rays;
+            PerLane<const Ray*> ray_of{};
+            PerLane<SurfaceInteraction> surfaces;
+            PerLane<SurfaceInteraction*> si_of{};
+            uint32_t active = 0;
+            const Vec3 from(4.0f * rng.next_float() - 2.0f, 4.0f * rng.next_float() - 2.0f, 10.0f);
+            for (int lane = 0; lane < kPacketWidth; ++lane) {
+                if (packet % 5 == 4 && rng.next_float() < 0.5f) continue;  // a partial packet
+                const Vec3 origin = coherent ? from
+                                             : Vec3(4.0f * rng.next_float() - 2.0f,
+                                                    4.0f * rng.next_float() - 2.0f, 10.0f);
+                const Vec3 to(3.0f * rng.next_float() - 1.5f, 3.0f * rng.next_float() - 1.5f,
+                              -8.0f);
+                rays[lane] = Ray{origin, glm::normalize(to - origin), 0.0f, kInfinity};
+                ray_of[lane] = &rays[lane];
+                si_of[lane] = &surfaces[lane];
+                active |= 1u << lane;
+            }
+            if (active == 0) continue;
+            PerLane<PassedSurfaces> passed;
+            const uint32_t hit =
+                b.scene->intersect_surface_packet_passing(ray_of, active, si_of, passed, coherent);
+            EXPECT_EQ(hit & ~active, 0u);
+            for_each_lane(active, [&](int lane) {
+                SurfaceInteraction si;
+                PassedSurfaces alone;
+                const bool alone_hit = b.scene->intersect_surface_passing(rays[lane], si, alone);
+                ASSERT_EQ(((hit >> lane) & 1u) != 0, alone_hit) << packet << ", " << lane;
+                if (alone_hit) {
+                    EXPECT_EQ(surfaces[lane].t, si.t) << packet << ", " << lane;
+                    EXPECT_EQ(surfaces[lane].p, si.p) << packet << ", " << lane;
+                    EXPECT_EQ(surfaces[lane].material, si.material) << packet << ", " << lane;
+                }
+                ASSERT_EQ(passed[lane].count, alone.count) << packet << ", " << lane;
+                for (int k = 0; k < alone.count; ++k) {
+                    EXPECT_EQ(passed[lane].hits[k].t, alone.hits[k].t) << packet << ", " << lane;
+                    EXPECT_EQ(passed[lane].hits[k].top_geometry, alone.hits[k].top_geometry);
+                    EXPECT_EQ(passed[lane].hits[k].primitive, alone.hits[k].primitive);
+                }
+                passed_some += alone.count > 0;
+                ++compared;
+            });
+        }
+    }
+    EXPECT_GT(compared, 1000);
+    EXPECT_GT(passed_some, 500);
+}
+
 // The any-hit form for shadow rays: where every interface is a world triangle mesh, one
 // occlusion traversal says whether an opaque surface blocks the segment and, when none does,
 // hands back the same crossings in the same order as the closest-hit form; a sphere

@@ -24,9 +24,6 @@ namespace {
 
 // Knaus and Zwicker's alpha: the radius shrinks so that bias and variance both vanish.
 constexpr float kRadiusShrinkAlpha = 2.0f / 3.0f;
-// The camera pass's packets: blocks of 4 x 2 pixels.
-constexpr int kBlockWidth = 4, kBlockHeight = 2;
-static_assert(kBlockWidth * kBlockHeight == kPacketWidth);
 
 double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

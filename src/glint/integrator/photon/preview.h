@@ -121,6 +121,9 @@ public:
 
 private:
     struct CameraLanes;  // preview.cpp: the per-lane state of a block of pixels
+    // The camera passes' packets: blocks of 4 x 2 pixels.
+    static constexpr int kBlockWidth = 4, kBlockHeight = 2;
+    static_assert(kBlockWidth * kBlockHeight == kPacketWidth);
     struct RestirState;  // preview_restir.h: ReSTIR's buffers and the arenas its BSDFs live in
     // Mirrors and glass a camera path follows before its first diffuse surface, at most.
     static constexpr int kMaxCameraSegments = 16;
@@ -143,9 +146,18 @@ private:
                                 uint64_t& rays) const;
     Spectrum in_scattering(const Scene& scene, const Ray& ray, float t_end, const Medium& medium,
                            Sampler& sampler, Rng& rng, RayCounter& counter) const;
+    // A camera path's first traversal, traced with its neighbours' as a packet
+    // (Scene::intersect_surface_packet_passing): whether it hit, and where that wrote the
+    // surface and the interfaces passed.
+    struct FirstTraversal {
+        bool hit = false;
+        SurfaceInteraction* si = nullptr;
+        PassedSurfaces* passed = nullptr;
+    };
     Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray, Sampler& sampler,
                                     Arena& arena, RayCounter& counter, HashGrid::Cache& cache,
-                                    DeferredLeg* deferred) const;
+                                    DeferredLeg* deferred,
+                                    const FirstTraversal* first = nullptr) const;
     void render_media_pass(const Scene& scene, Film& film, int pass, uint64_t& rays);
     void render_restir_pass(const Scene& scene, Film& film, int pass, RenderStats& stats);
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,

@@ -400,7 +400,8 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
 Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray,
                                                    Sampler& sampler, Arena& arena,
                                                    RayCounter& counter, HashGrid::Cache& cache,
-                                                   DeferredLeg* deferred) const {
+                                                   DeferredLeg* deferred,
+                                                   const FirstTraversal* first) const {
     Rng rng(stream_seed(sampler.get_1d()));
     if (deferred) deferred->medium = nullptr;
     ray.direction = glm::normalize(ray.direction);
@@ -411,13 +412,16 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
     bool on_primary = true;
     const Medium* medium = m_media->camera;
     Spectrum L(0.0f), beta(1.0f);
-    SurfaceInteraction si;
-    PassedSurfaces passed;
+    SurfaceInteraction own_si;
+    PassedSurfaces own_passed;
+    SurfaceInteraction& si = first ? *first->si : own_si;
+    PassedSurfaces& passed = first ? *first->passed : own_passed;
     for (int segment = 0, crossings = 0; segment < kMaxCameraSegments;) {
         ++counter.rays;
         // One traversal past the interfaces it can skip: they split the ray into legs, each
-        // in the medium the last one leads into.
-        const bool hit = scene.intersect_surface_passing(ray, si, passed);
+        // in the medium the last one leads into. The first may be traced already.
+        const bool hit = first ? first->hit : scene.intersect_surface_passing(ray, si, passed);
+        first = nullptr;
         const float t_end = hit ? si.t : kInfinity;
         // The light each leg gathers in its medium, and its transmittance.
         walk_legs(scene, ray, passed, t_end, medium, [&](const Ray& leg, float length) {
@@ -513,24 +517,51 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
     };
     sweep([&](const tbb::blocked_range<int>& rows, RayCounter& counter) {
         Arena arena;
-        PassSampler sampler;
-        sampler.set_seed(m_settings.seed);
         HashGrid::Cache cache;
-        for (int y = rows.begin(); y < rows.end(); ++y) {
-            for (int x = 0; x < w; ++x) {
-                const Vec2i pixel = film.origin() + Vec2i(x, y);
-                const Ray ray = pass_camera_ray(scene, sampler, pixel, pass);
-                arena.reset();
-                std::optional<SecondaryWavelengthsScope> terminated;
-                if (wavelengths != nullptr) terminated.emplace();
-                PixelRest& rest = m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) +
-                                         static_cast<size_t>(x)];
-                DeferredLeg& leg = m_fog.leg(x, y);
-                leg.medium = nullptr;
-                rest.L = camera_sample_in_media(scene, pixel, ray, sampler, arena, counter, cache,
-                                                m_preview.fog_interleave ? &leg : nullptr);
-                rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
-                m_fog.finish_leg(x, y);
+        // The camera rays of blocks of 4 x 2 pixels go through their first traversal as one
+        // coherent packet (to the first surface, past the interfaces), and each path then
+        // goes on alone: the same draws, hits and light as one ray at a time.
+        PerLane<PassSampler> samplers;
+        for (PassSampler& sampler : samplers) sampler.set_seed(m_settings.seed);
+        PerLane<Ray> rays, unit_rays;
+        PerLane<SurfaceInteraction> surfaces;
+        PerLane<PassedSurfaces> passed;
+        for (int y0 = rows.begin(); y0 < rows.end(); y0 += kBlockHeight) {
+            for (int x0 = 0; x0 < w; x0 += kBlockWidth) {
+                uint32_t active = 0;
+                PerLane<const Ray*> ray_of{};
+                PerLane<SurfaceInteraction*> si_of{};
+                for (int lane = 0; lane < kPacketWidth; ++lane) {
+                    const int x = x0 + lane % kBlockWidth, y = y0 + lane / kBlockWidth;
+                    if (x >= w || y >= rows.end()) continue;
+                    rays[lane] =
+                        pass_camera_ray(scene, samplers[lane], film.origin() + Vec2i(x, y), pass);
+                    // Traced with the unit direction camera_sample_in_media() gives it.
+                    unit_rays[lane] = rays[lane];
+                    unit_rays[lane].direction = glm::normalize(rays[lane].direction);
+                    ray_of[lane] = &unit_rays[lane];
+                    si_of[lane] = &surfaces[lane];
+                    active |= 1u << lane;
+                }
+                const uint32_t hit =
+                    scene.intersect_surface_packet_passing(ray_of, active, si_of, passed, true);
+                for_each_lane(active, [&](int lane) {
+                    const int x = x0 + lane % kBlockWidth, y = y0 + lane / kBlockWidth;
+                    arena.reset();
+                    std::optional<SecondaryWavelengthsScope> terminated;
+                    if (wavelengths != nullptr) terminated.emplace();
+                    PixelRest& rest = m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) +
+                                             static_cast<size_t>(x)];
+                    DeferredLeg& leg = m_fog.leg(x, y);
+                    leg.medium = nullptr;
+                    const FirstTraversal first{((hit >> lane) & 1u) != 0, &surfaces[lane],
+                                               &passed[lane]};
+                    rest.L = camera_sample_in_media(
+                        scene, film.origin() + Vec2i(x, y), rays[lane], samplers[lane], arena,
+                        counter, cache, m_preview.fog_interleave ? &leg : nullptr, &first);
+                    rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
+                    m_fog.finish_leg(x, y);
+                });
             }
         }
     });
