@@ -240,22 +240,30 @@ TEST(Visibility, PassedCrossingTakesTheSideOfTheNormals) {
     EXPECT_LT(cheap.ng.z, -0.99f) << "the winding's +z, turned to the normals' side";
 }
 
+namespace {
+
+// A fog medium for the interface tests below, and a cube of side 2 `half` round the origin
+// whose surface only bounds that fog.
+const std::string kFog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
+std::string fog_box(float half) {
+    const std::string h = std::to_string(half);
+    return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h + ", " +
+           h + "}, material = glint.interface{ interior = fog } }\n";
+}
+
+}  // namespace
+
 // One traversal goes past the interfaces Embree can skip: the shapes whose every part only
 // bounds media. They come back in order along the ray, each once (the high-quality BVH may
 // offer a triangle twice), and only those before the closest other hit; a sphere, which
 // Embree cannot skip (user geometry), is the hit itself, as are interfaces stacked deeper
 // than the record holds. Every other query still stops at them.
 TEST(Visibility, OneTraversalPassesTheInterfaces) {
-    const auto box = [](float half) {
-        const std::string h = std::to_string(half);
-        return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h +
-               ", " + h + "}, material = glint.interface{ interior = fog } }\n";
-    };
-    const std::string fog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
     const std::string wall =
         "glint.quad{ vertices = { {-9, -9, -20}, {9, -9, -20}, {9, 9, -20}, {-9, 9, -20} }, "
         "material = glint.diffuse{} }\n";
-    const test::BuiltScene two = test::build_lua(fog + box(1) + box(2) + wall, "boxes.lua");
+    const test::BuiltScene two =
+        test::build_lua(kFog + fog_box(1) + fog_box(2) + wall, "boxes.lua");
     const Ray ray{Vec3(0.1f, 0.2f, 10.0f), Vec3(0.0f, 0.0f, -1.0f), 0.0f, kInfinity};
     SurfaceInteraction si;
     PassedSurfaces passed;
@@ -295,7 +303,8 @@ TEST(Visibility, OneTraversalPassesTheInterfaces) {
 
     // A sphere interface is a hit; the box's face before it is passed.
     const test::BuiltScene sphere = test::build_lua(
-        fog + box(2) + "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
+        kFog + fog_box(2) +
+            "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
         "sphere.lua");
     ASSERT_TRUE(sphere.scene->intersect_surface_passing(ray, si, passed));
     EXPECT_TRUE(si.material->is_interface());
@@ -303,8 +312,8 @@ TEST(Visibility, OneTraversalPassesTheInterfaces) {
     EXPECT_EQ(passed.count, 1);
 
     // Deeper than the record: the first interface is the hit, as for intersect_surface().
-    std::string nested = fog;
-    for (int i = 1; i <= PassedSurfaces::kCapacity; ++i) nested += box(0.5f * i);
+    std::string nested = kFog;
+    for (int i = 1; i <= PassedSurfaces::kCapacity; ++i) nested += fog_box(0.5f * i);
     const test::BuiltScene deep = test::build_lua(nested + wall, "nested.lua");
     ASSERT_TRUE(deep.scene->intersect_surface_passing(ray, si, passed));
     EXPECT_EQ(passed.count, 0);
@@ -317,20 +326,14 @@ TEST(Visibility, OneTraversalPassesTheInterfaces) {
 // interfaces stacked deeper than a lane's record (that lane traced again alone) and a
 // sphere interface (user geometry: the hit, as for one ray).
 TEST(Visibility, PacketsPassTheInterfacesAsOneRayDoes) {
-    const std::string fog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
-    const auto box = [](float half) {
-        const std::string h = std::to_string(half);
-        return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h +
-               ", " + h + "}, material = glint.interface{ interior = fog } }\n";
-    };
-    std::string deep = fog;
-    for (int i = 1; i <= PassedSurfaces::kCapacity + 1; ++i) deep += box(0.4f * i);
+    std::string deep = kFog;
+    for (int i = 1; i <= PassedSurfaces::kCapacity + 1; ++i) deep += fog_box(0.4f * i);
     const std::string scenes[] = {
-        fog + box(1) + box(2) +
+        kFog + fog_box(1) + fog_box(2) +
             "glint.quad{ vertices = { {0.5, -9, -5}, {9, -9, -5}, {9, 9, -5}, {0.5, 9, -5} }, "
             "material = glint.diffuse{} }\n",
         deep + "glint.sphere{ center = {0, 0, -6}, radius = 2, material = glint.diffuse{} }\n",
-        fog + box(2) +
+        kFog + fog_box(2) +
             "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n"};
     Rng rng(11);
     int compared = 0, passed_some = 0;
@@ -393,16 +396,10 @@ TEST(Visibility, PacketsPassTheInterfacesAsOneRayDoes) {
 // makes the scene fall back to the closest-hit walk, which still gives the right
 // transmittance through it.
 TEST(Visibility, AnyHitTraversalPassesTheInterfacesAsTheClosestHitOneDoes) {
-    const std::string fog = "local fog = glint.medium{ sigma_a = 0.1, sigma_s = 0.2 }\n";
-    const auto box = [](float half) {
-        const std::string h = std::to_string(half);
-        return "glint.box{ min = {-" + h + ", -" + h + ", -" + h + "}, max = {" + h + ", " + h +
-               ", " + h + "}, material = glint.interface{ interior = fog } }\n";
-    };
     const std::string plate =
         "glint.quad{ vertices = { {0.5, -9, -5}, {9, -9, -5}, {9, 9, -5}, {0.5, 9, -5} }, "
         "material = glint.diffuse{} }\n";
-    const test::BuiltScene b = test::build_lua(fog + box(1) + box(2) + plate, "boxes.lua");
+    const test::BuiltScene b = test::build_lua(kFog + fog_box(1) + fog_box(2) + plate, "boxes.lua");
     ASSERT_TRUE(b.scene->interfaces_skippable());
     Rng rng(7);
     int blocked_rays = 0, clear_rays = 0;
@@ -447,7 +444,7 @@ TEST(Visibility, AnyHitTraversalPassesTheInterfacesAsTheClosestHitOneDoes) {
     // A sphere interface, or a box in a placed group: the closest-hit walk, which crosses the
     // sphere (fog of sigma_t 0.3 along its diameter 2 from outside).
     const test::BuiltScene sphere = test::build_lua(
-        fog + "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
+        kFog + "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
         "sphere.lua");
     EXPECT_FALSE(sphere.scene->interfaces_skippable());
     EXPECT_NEAR(transmittance_through_interfaces(*sphere.scene,
@@ -455,7 +452,7 @@ TEST(Visibility, AnyHitTraversalPassesTheInterfacesAsTheClosestHitOneDoes) {
                     .average(),
                 std::exp(-0.3f * 2.0f), 1e-5f);
     const test::BuiltScene grouped =
-        test::build_lua(fog + "local g = glint.group()\n" +
+        test::build_lua(kFog + "local g = glint.group()\n" +
                             "g:box{ min = {-1, -1, -1}, max = {1, 1, 1}, "
                             "material = glint.interface{ interior = fog } }\n" +
                             "glint.place(g)\n",
