@@ -7,7 +7,6 @@
 #include <glint/light/environment_mapping.h>
 #include <glint/math/vector.h>
 
-#include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
 #include <cmath>
@@ -65,10 +64,10 @@ float tile_height(float s, float t) {
     return std::clamp((edge - 0.03f) / 0.08f, 0.0f, 1.0f);
 }
 
-// A tangent-space normal map (OpenGL convention, x right, y up) stored raw as (n + 1) / 2:
-// written with OpenImageIO directly, because normal maps are not colours.
+// A tangent-space normal map (OpenGL convention, x right, y up) stored raw as (n + 1) / 2,
+// not sRGB-encoded, because normal maps are not colours.
 void write_normal_map(const std::string& path, int n) {
-    std::vector<unsigned char> pixels(static_cast<size_t>(n) * n * 3);
+    Image image = make_image(n, n, {"R", "G", "B"});
     const float step = 1.0f / n, depth = 0.04f;  // relief height in units of the texture
     for (int y = 0; y < n; ++y) {
         for (int x = 0; x < n; ++x) {
@@ -76,18 +75,12 @@ void write_normal_map(const std::string& path, int n) {
             const float dhds = (tile_height(s + step, t) - tile_height(s - step, t)) / (2 * step);
             const float dhdt = (tile_height(s, t + step) - tile_height(s, t - step)) / (2 * step);
             const Vec3 normal = glm::normalize(Vec3(-depth * dhds, -depth * dhdt, 1.0f));
-            for (int i = 0; i < 3; ++i) {
-                pixels[(static_cast<size_t>(y) * n + x) * 3 + i] =
-                    static_cast<unsigned char>(std::lround((normal[i] * 0.5f + 0.5f) * 255.0f));
-            }
+            for (int i = 0; i < 3; ++i) image.at(x, y, i) = normal[i] * 0.5f + 0.5f;
         }
     }
-    auto out = OIIO::ImageOutput::create(path);
-    OIIO::ImageSpec spec(n, n, 3, OIIO::TypeDesc::UINT8);
-    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, pixels.data()) ||
-        !out->close()) {
-        throw std::runtime_error("cannot write " + path);
-    }
+    WriteOptions raw;
+    raw.srgb = false;
+    write_image(path, image, raw);
 }
 
 // A lat-long sky in glint's environment convention (src/glint/light/environment_light.h):
@@ -154,18 +147,9 @@ Image probe_of(const Image& latlong, EnvironmentMapping mapping, int size) {
 // An RGB image as a half-float EXR: a probe of a smooth sky needs no more, at a third of
 // the size.
 void write_half_exr(const std::string& path, const Image& image) {
-    std::vector<float> pixels(static_cast<size_t>(image.width) * image.height * 3);
-    for (int y = 0; y < image.height; ++y)
-        for (int x = 0; x < image.width; ++x)
-            for (int c = 0; c < 3; ++c)
-                pixels[(static_cast<size_t>(y) * image.width + x) * 3 + c] = image.at(x, y, c);
-    auto out = OIIO::ImageOutput::create(path);
-    OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::HALF);
-    spec.attribute("compression", "zip");
-    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::FLOAT, pixels.data()) ||
-        !out->close()) {
-        throw std::runtime_error("cannot write " + path);
-    }
+    WriteOptions half;
+    half.half = true;
+    write_image(path, image, half);
 }
 
 // A torus around y with major radius R and minor radius r, uvs around both circles.

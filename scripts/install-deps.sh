@@ -9,7 +9,8 @@ packages=(
   libembree-dev        # ray queries (Embree 3)
   libtbb-dev           # threads (oneTBB)
   liblua5.4-dev        # scene language
-  libopenimageio-dev   # image I/O (EXR, PNG, HDR, ...)
+  libopenexr-dev       # image I/O: OpenEXR files
+  libstb-dev           # image I/O: PNG, JPEG, Radiance HDR, TGA, ... (stb_image, stb_image_write)
   libglm-dev           # vector math
   libcli11-dev         # command line
   libfmt-dev           # formatting

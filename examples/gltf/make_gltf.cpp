@@ -4,9 +4,12 @@
 // sharing the sphere's vertex data, a normal-mapped cube placed three times (instanced), an
 // emissive panel (KHR_materials_emissive_strength), a camera, a sun and a point light
 // (KHR_lights_punctual). Run by scripts/make-example-gltf.sh; the output is committed.
-#include <OpenImageIO/imageio.h>
+#include <glint/film/image.h>
+#include <glint/film/image_io.h>
+
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -20,12 +23,14 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// The stored values as they are (no sRGB encoding on top: `rgb` is already what the file
+// must hold).
 void write_png(const std::string& path, int n, const std::vector<uint8_t>& rgb) {
-    auto out = OIIO::ImageOutput::create(path);
-    OIIO::ImageSpec spec(n, n, 3, OIIO::TypeDesc::UINT8);
-    if (!out || !out->open(path, spec) || !out->write_image(OIIO::TypeDesc::UINT8, rgb.data()) ||
-        !out->close())
-        throw std::runtime_error("cannot write " + path);
+    glint::Image image = glint::make_image(n, n, {"R", "G", "B"});
+    for (size_t i = 0; i < rgb.size(); ++i) image.pixels[i] = rgb[i] / 255.0f;
+    glint::WriteOptions raw;
+    raw.srgb = false;
+    glint::write_image(path, image, raw);
 }
 
 // Stored values (sRGB-encoded for the colour maps, linear for the data maps), row 0 at the

@@ -291,8 +291,7 @@ TEST_F(CliTest, ThreadCountDoesNotChangeTheImage) {
     EXPECT_TRUE(one == read_bytes(out("t2.exr"))) << "EXR files differ between 1 and 2 threads";
 }
 
-// The same with everything the appearance work added: image textures through OpenImageIO's
-// texture cache (mipmaps built on first use, by whichever thread gets there first),
+// The same with everything the appearance work added: mipmapped image textures,
 // procedural textures, bump and normal maps, rough materials and the environment light.
 TEST_F(CliTest, ThreadCountDoesNotChangeTheTexturedImage) {
     for (int threads : {1, 2}) {

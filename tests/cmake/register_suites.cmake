@@ -6,9 +6,9 @@
 #   WORKDIR      the tests' working directory
 #   ENVIRONMENT  the tests' environment (NAME=VALUE)
 #
-# Why a process per suite and not per test: every glint test program loads about 260 shared
-# libraries (OpenImageIO's dependencies), which costs about 0.2 s of processor time per
-# process, 0.5 s under the sanitizers; at over 700 tests that was a third of the suite's
+# Why a process per suite and not per test: every process pays its start (its shared
+# libraries bound, its static objects made; 0.2 s each while glint linked OpenImageIO's 260
+# libraries), and at over 700 tests one process per test made that a third of the suite's
 # time. A suite is still small enough that a failure names its place, and the program runs
 # one test alone with --gtest_filter=SUITE.NAME.
 #

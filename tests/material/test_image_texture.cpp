@@ -1,4 +1,4 @@
-// Image textures (OpenImageIO), texture mappings, pixel footprints from ray differentials,
+// Image textures (mipmap.h), texture mappings, pixel footprints from ray differentials,
 // and what mipmapping buys at grazing angles.
 #include <glint/camera/camera.h>
 #include <glint/core/error.h>

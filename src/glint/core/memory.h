@@ -25,7 +25,7 @@ void check_memory(uint64_t bytes, const std::string& what);
 /// Checks an image file's header before its pixels are decoded: `width` × `height` ×
 /// `channels` must be positive, each side at most 1 << 20, and the decoded size
 /// (`bytes_per_value` per channel value) within memory_budget() and plausible for a file
-/// of `file_bytes` (no lossless coding OpenImageIO reads packs more than 4096:1, so a
+/// of `file_bytes` (no lossless coding glint reads packs more than 4096:1, so a
 /// header claiming more lies). Throws glint::Error naming `path`.
 void check_image_header(const std::string& path, int64_t width, int64_t height, int64_t channels,
                         uint64_t bytes_per_value, uint64_t file_bytes);

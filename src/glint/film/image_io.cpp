@@ -5,8 +5,8 @@
 #include <glint/core/strings.h>
 #include <glint/film/output_batch.h>
 
-#include <OpenImageIO/imageio.h>
-#include <OpenImageIO/strutil.h>
+#include <glint/film/image_codecs.h>
+
 #include <fcntl.h>
 #include <fmt/format.h>
 #include <unistd.h>
@@ -16,6 +16,7 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <system_error>
@@ -29,20 +30,12 @@ namespace {
 
 constexpr const char* kSupported = ".exr, .png";
 
-double srgb_encode(double linear) {
-    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
-}
-
-float srgb_decode(float encoded) {
-    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
-}
-
 uint8_t to_srgb8(float linear, double scale, Tonemap curve) {
     // tone_curve sends NaN and negative values to black.
     const double v = tone_curve(curve, static_cast<double>(linear) * scale);
     if (!(v > 0.0)) return 0;
     if (v >= 1.0) return 255;
-    return static_cast<uint8_t>(std::floor(srgb_encode(v) * 255.0 + 0.5));
+    return static_cast<uint8_t>(std::floor(linear_to_srgb(v) * 255.0 + 0.5));
 }
 
 std::vector<uint8_t> encode_png_pixels(const Image& image, const WriteOptions& options,
@@ -60,14 +53,19 @@ std::vector<uint8_t> encode_png_pixels(const Image& image, const WriteOptions& o
         throw Error("PNG output needs channels R, G and B, or a single channel");
     }
     const double scale = std::exp2(static_cast<double>(options.exposure));
+    auto encode = [&](float value) -> uint8_t {
+        if (options.srgb) return to_srgb8(value, scale, options.tonemap);
+        if (!(value > 0.0f)) return 0;  // NaN too
+        if (value >= 1.0f) return 255;
+        return static_cast<uint8_t>(std::lround(value * 255.0f));
+    };
     std::vector<uint8_t> out(static_cast<std::size_t>(image.width) *
                              static_cast<std::size_t>(image.height) *
                              static_cast<std::size_t>(channels_out));
     std::size_t k = 0;
     for (int y = 0; y < image.height; ++y) {
         for (int x = 0; x < image.width; ++x) {
-            for (int c = 0; c < channels_out; ++c)
-                out[k++] = to_srgb8(image.at(x, y, src[c]), scale, options.tonemap);
+            for (int c = 0; c < channels_out; ++c) out[k++] = encode(image.at(x, y, src[c]));
         }
     }
     return out;
@@ -85,33 +83,47 @@ void sync_file(const std::string& file) {
 }
 
 void verify_written(const std::string& file, int width, int height) {
-    auto in = OIIO::ImageInput::open(file);
-    if (!in) throw Error(fmt::format("the written file does not read back ({})", OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    std::vector<unsigned char> pixels(spec.image_bytes(/*native=*/true));
-    const bool ok = spec.width == width && spec.height == height &&
-                    in->read_image(0, 0, 0, spec.nchannels, spec.format, pixels.data());
-    const std::string reason = in->geterror();
-    in->close();
-    if (!ok) {
-        throw Error(fmt::format("the written file is incomplete (disk full or file too large?){}",
-                                reason.empty() ? "" : ": " + reason));
+    StoredImage written;
+    try {
+        written = read_stored_image(file);
+    } catch (const Error& e) {
+        throw Error(fmt::format("the written file is incomplete (disk full or file too large?): {}",
+                                e.what()));
     }
+    if (written.image.width != width || written.image.height != height)
+        throw Error("the written file does not read back at its size");
 }
 
-void write_with_oiio(const fs::path& file, const OIIO::ImageSpec& spec, const void* data) {
-    auto out = OIIO::ImageOutput::create(file.string());
-    if (!out) throw Error(OIIO::geterror());
-    if (!out->open(file.string(), spec)) throw Error(out->geterror());
-    if (!out->write_image(spec.format, data)) {
-        const std::string message = out->geterror();
-        out->close();
-        throw Error(message);
+// The first bytes of an OpenEXR file, and of a TIFF one (either byte order).
+constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
+constexpr unsigned char kTiffLittle[4] = {'I', 'I', 42, 0}, kTiffBig[4] = {'M', 'M', 0, 42};
+
+StoredImage read_by_signature(const std::string& path, uint64_t file_bytes) {
+    unsigned char head[4] = {0, 0, 0, 0};
+    {
+        std::FILE* file = std::fopen(path.c_str(), "rb");
+        if (!file) throw Error(std::strerror(errno));
+        const size_t got = std::fread(head, 1, sizeof head, file);
+        std::fclose(file);
+        if (got == 0) throw Error("the file is empty");
     }
-    if (!out->close()) throw Error(out->geterror());
+    if (std::memcmp(head, kExrMagic, 4) == 0) return read_exr(path, file_bytes);
+    if (head[0] == 'P' && (head[1] == 'F' || head[1] == 'f') && std::isspace(head[2]))
+        return read_pfm(path, file_bytes);
+    if (std::memcmp(head, kTiffLittle, 4) == 0 || std::memcmp(head, kTiffBig, 4) == 0)
+        throw Error("TIFF files are not read; convert it to OpenEXR or PNG");
+    return read_stb(path, file_bytes);
 }
 
 }  // namespace
+
+double linear_to_srgb(double linear) {
+    return linear <= 0.0031308 ? 12.92 * linear : 1.055 * std::pow(linear, 1.0 / 2.4) - 0.055;
+}
+
+float srgb_to_linear(float encoded) {
+    return encoded <= 0.04045f ? encoded / 12.92f : std::pow((encoded + 0.055f) / 1.055f, 2.4f);
+}
 
 void write_image(const std::string& path, const Image& image, const WriteOptions& options) {
     OutputBatch batch;
@@ -129,68 +141,41 @@ void write_image_file(const std::string& file, const Image& image, const WriteOp
                                 image.width, image.height, image.channels.size()));
     }
     if (ext == ".exr") {
-        OIIO::ImageSpec spec(image.width, image.height, image.num_channels(),
-                             OIIO::TypeDesc::FLOAT);
-        spec.channelnames = image.channels;
-        spec.alpha_channel = image.channel_index("A");
-        spec.attribute("compression", "zip");
-        // OpenEXR stamps files with the current time (capDate) unless told otherwise; a
-        // fixed stamp keeps a render's file identical bit for bit, run after run.
-        spec.attribute("DateTime", "1970:01:01 00:00:00");
-        for (const auto& [name, value] : image.attributes) spec.attribute("glint:" + name, value);
-        write_with_oiio(file, spec, image.pixels.data());
+        write_exr(file, image, options.half);
     } else {
         int channels = 0;
-        const std::vector<uint8_t> bytes = encode_png_pixels(image, options, channels);
-        OIIO::ImageSpec spec(image.width, image.height, channels, OIIO::TypeDesc::UINT8);
-        spec.attribute("oiio:ColorSpace", "sRGB");
-        write_with_oiio(file, spec, bytes.data());
+        const std::vector<uint8_t> codes = encode_png_pixels(image, options, channels);
+        write_png(file, image.width, image.height, channels, codes);
     }
     sync_file(file);
     verify_written(file, image.width, image.height);
 }
 
-Image read_image(const std::string& path) {
+StoredImage read_stored_image(const std::string& path) {
     std::error_code ec;
     const uintmax_t file_bytes = fs::file_size(path, ec);
     if (ec) throw Error(fmt::format("cannot read '{}': {}", path, ec.message()));
-    auto in = OIIO::ImageInput::open(path);
-    if (!in) throw Error(fmt::format("cannot read '{}': {}", path, OIIO::geterror()));
-    const OIIO::ImageSpec& spec = in->spec();
-    check_image_header(path, spec.width, spec.height, spec.nchannels, spec.format.size(),
-                       file_bytes);
-    Image image;
-    image.width = spec.width;
-    image.height = spec.height;
-    image.channels = spec.channelnames;
-    image.channels.resize(static_cast<std::size_t>(spec.nchannels));
-    for (int c = 0; c < spec.nchannels; ++c) {
-        if (image.channels[c].empty()) image.channels[c] = fmt::format("channel{}", c);
+    try {
+        return read_by_signature(path, file_bytes);
+    } catch (const Error& e) {
+        const std::string message = e.what();
+        // check_image_header's messages name the image already.
+        if (message.find(path) != std::string::npos) throw;
+        throw Error(fmt::format("cannot read '{}': {}", path, message));
     }
-    image.pixels.resize(static_cast<std::size_t>(spec.width) *
-                        static_cast<std::size_t>(spec.height) *
-                        static_cast<std::size_t>(spec.nchannels));
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, image.pixels.data())) {
-        throw Error(fmt::format("cannot read '{}': {}", path, in->geterror()));
-    }
-    const bool is_float = spec.format.basetype == OIIO::TypeDesc::FLOAT ||
-                          spec.format.basetype == OIIO::TypeDesc::HALF ||
-                          spec.format.basetype == OIIO::TypeDesc::DOUBLE;
-    const std::string colorspace = spec.get_string_attribute("oiio:ColorSpace");
-    if (!is_float && OIIO::Strutil::iequals(colorspace, "sRGB")) {
-        const int alpha = spec.alpha_channel;
+}
+
+Image read_image(const std::string& path) {
+    StoredImage stored = read_stored_image(path);
+    if (stored.integer) {
+        Image& image = stored.image;
+        const size_t channels = image.channels.size();
         for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-            if (static_cast<int>(i % static_cast<std::size_t>(spec.nchannels)) == alpha) continue;
-            image.pixels[i] = srgb_decode(image.pixels[i]);
+            if (static_cast<int>(i % channels) == stored.alpha) continue;
+            image.pixels[i] = srgb_to_linear(image.pixels[i]);
         }
     }
-    for (const OIIO::ParamValue& param : spec.extra_attribs) {
-        const std::string name = param.name().string();
-        if (name.rfind("glint:", 0) == 0 && param.type() == OIIO::TypeDesc::STRING)
-            image.attributes.emplace_back(name.substr(6), param.get_string());
-    }
-    in->close();
-    return image;
+    return std::move(stored.image);
 }
 
 CompareResult compare_images(const Image& test, const Image& reference) {

@@ -1,6 +1,6 @@
 #pragma once
-// Reading and writing images through OpenImageIO, and the relative-MSE comparison the
-// tests and `glint compare` use. OpenImageIO is confined to this file's .cpp.
+// Reading and writing images, and the relative-MSE comparison the tests and `glint compare`
+// use. The formats themselves are in image_codecs.h (OpenEXR, stb, PFM).
 #include <glint/film/image.h>
 #include <glint/film/tonemap.h>
 
@@ -13,6 +13,10 @@ namespace glint {
 struct WriteOptions {
     float exposure = 0.0f;            ///< stops; scales linear values by 2^exposure, PNG only
     Tonemap tonemap = Tonemap::clip;  ///< the display curve after the exposure, PNG only
+    /// PNG only: false stores the values, clamped to [0, 1], as they are (no exposure, tone
+    /// curve or sRGB encoding), as data maps such as normal maps are stored.
+    bool srgb = true;
+    bool half = false;  ///< EXR only: 16-bit half floats instead of 32-bit floats
 };
 
 /// Writes by extension (case-insensitive): ".exr" stores every channel as 32-bit float;
@@ -31,15 +35,32 @@ void write_image(const std::string& path, const Image& image, const WriteOptions
 /// is why only OutputBatch calls it, on a temporary.
 void write_image_file(const std::string& file, const Image& image, const WriteOptions& options);
 
-/// Reads any format OpenImageIO knows, all channels as float with the file's channel
-/// names. Integer files tagged sRGB (PNG, JPEG) are decoded to linear, alpha excepted,
-/// so read_image(write_image(x)) gives x back up to 8-bit quantisation. EXR channel
-/// order is the file's (OpenEXR sorts layers by name): look channels up by name.
-/// The header is checked before any pixel is allocated (core/memory.h,
-/// check_image_header: sizes within limits and plausible for the file's size, the decoded
-/// image within the memory budget). Throws glint::Error naming the path if the file
-/// cannot be read, its header lies, or its data ends early.
+/// An image as its file stores it.
+struct StoredImage {
+    Image image;
+    /// The file holds integer code values (PNG, JPEG, ...), here scaled to [0, 1] and not
+    /// yet decoded from sRGB; false for float files (EXR, HDR, PFM).
+    bool integer = false;
+    int bits_per_value = 32;  ///< 8 or 16 for integer files
+    int alpha = -1;           ///< the alpha channel's position, or -1
+};
+
+/// Reads OpenEXR, PNG, JPEG, Radiance HDR, TGA, BMP, PNM, PSD, GIF and PFM files, the
+/// format found from the file's first bytes, not its name. The header is checked before
+/// any pixel is allocated (core/memory.h, check_image_header: sizes within limits and
+/// plausible for the file's size, the decoded image within the memory budget). Throws
+/// glint::Error naming the path if the file cannot be read, its header lies, or its data
+/// ends early.
+StoredImage read_stored_image(const std::string& path);
+
+/// read_stored_image with integer files decoded from sRGB to linear, alpha excepted, so
+/// read_image(write_image(x)) gives x back up to 8-bit quantisation. EXR channel order is
+/// the file's (OpenEXR sorts layers by name): look channels up by name.
 Image read_image(const std::string& path);
+
+/// The sRGB transfer curve (IEC 61966-2-1): an encoded value in [0, 1] to linear, and back.
+float srgb_to_linear(float encoded);
+double linear_to_srgb(double linear);
 
 struct CompareResult {
     double rel_mse;                   ///< mean of (t - r)^2 / (r^2 + 1e-2)

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 namespace {
 
 // "dir/out.exr" -> "dir/out.tmp<pid>-<n>.exr": unique per process and call, and with the
-// real extension last because OpenImageIO chooses the format from it.
+// real extension last because write_image_file chooses the format from it.
 fs::path temporary_path(const fs::path& target) {
     static std::atomic<uint64_t> counter{0};
     const std::string name =

@@ -262,8 +262,8 @@ Spectrum EnvironmentLight::power() const {
 
 // glint.environment{...}: image-based lighting from a light probe (mappings in the header
 // and in environment_mapping.h; other layouts are resampled to lat-long once, at load).
-//   file       string     required  image OpenImageIO reads, relative to the script's folder;
-//                                    float files linear, 8-bit files sRGB-decoded
+//   file       string     required  any image glint reads (film/image_io.h), relative to the script's folder;
+//                                    float files linear, integer files sRGB-decoded
 //   mapping    string     "latlong" "latlong", "mirror_ball", "angular" or "cube_cross"
 //   rotation   float      0         degrees about +y (right-handed: 90 turns -z to -x)
 //   transform  transform  identity  a further rotation, after `rotation`; translation ignored

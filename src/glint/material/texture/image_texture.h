@@ -1,38 +1,45 @@
 #pragma once
-// Image textures through OpenImageIO's TextureSystem: mipmaps are built on first use
-// (automip), lookups are trilinear or anisotropic, sized by the pixel footprint the ray
-// differentials give, with repeat / clamp / mirror wrapping.
+// Image textures: a file's mipmap pyramid (mipmap.h), looked up bilinearly, trilinearly or
+// anisotropically by the pixel footprint the ray differentials give, with repeat / clamp /
+// mirror / black wrapping.
 #include <glint/core/params.h>
 #include <glint/material/texture/mapping.h>
 #include <glint/material/texture/texture.h>
 
+#include <map>
 #include <memory>
+#include <mutex>
 #include <string>
+#include <utility>
 
 namespace glint {
 
+class MipMap;
 class TextureTable;
-
-// Owns OpenImageIO's texture system for one scene; thread-safe.
-class ImageTextureSystem {
-public:
-    ImageTextureSystem();
-    ~ImageTextureSystem();
-    ImageTextureSystem(const ImageTextureSystem&) = delete;
-    ImageTextureSystem& operator=(const ImageTextureSystem&) = delete;
-
-    void* system() const { return m_system; }  // OIIO::TextureSystem*
-
-private:
-    void* m_system;
-};
 
 enum class TextureEncoding { kAuto, kSrgb, kLinear };
 
 struct ImageTextureOptions {
     std::string wrap = "repeat";         // repeat, clamp, mirror, black
     std::string filter = "anisotropic";  // anisotropic, trilinear, none (bilinear, no mipmap)
-    TextureEncoding encoding = TextureEncoding::kAuto;  // auto: 8-bit files are sRGB
+    TextureEncoding encoding = TextureEncoding::kAuto;  // auto: integer files are sRGB
+};
+
+// The pyramids of a scene's image files, each built once however many textures use it.
+class MipMapCache {
+public:
+    MipMapCache();
+    ~MipMapCache();
+    MipMapCache(const MipMapCache&) = delete;
+    MipMapCache& operator=(const MipMapCache&) = delete;
+
+    // Reads `path` (throwing glint::Error naming it when it cannot) and builds its pyramid,
+    // or returns the one built before for the same file and encoding.
+    std::shared_ptr<const MipMap> get(const std::string& path, TextureEncoding encoding);
+
+private:
+    std::mutex m_mutex;
+    std::map<std::pair<std::string, TextureEncoding>, std::shared_ptr<const MipMap>> m_built;
 };
 
 // Opens `path` (checking it exists and is readable) and returns the texture; throws

@@ -11,12 +11,12 @@ namespace glint {
 TextureTable::TextureTable(std::string directory, bool mipmapping)
     : m_directory(std::move(directory)), m_mipmapping(mipmapping) {}
 
-ImageTextureSystem& TextureTable::images() {
-    if (!m_images) m_images = std::make_unique<ImageTextureSystem>();
-    return *m_images;
+MipMapCache& TextureTable::mipmaps() {
+    if (!m_mipmaps) m_mipmaps = std::make_unique<MipMapCache>();
+    return *m_mipmaps;
 }
 
-TextureTable::~TextureTable() = default;  // here, where ImageTextureSystem is complete
+TextureTable::~TextureTable() = default;  // here, where MipMapCache is complete
 
 const Texture* TextureTable::declared(const Params& params, const std::string& name) const {
     if (!params.is_ref(name, "texture")) return nullptr;

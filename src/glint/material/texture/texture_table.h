@@ -12,7 +12,7 @@
 
 namespace glint {
 
-class ImageTextureSystem;
+class MipMapCache;
 
 class TextureTable {
 public:
@@ -42,8 +42,8 @@ public:
     // uses textures and needs the pixel footprint.
     size_t textures_handed_out() const { return m_handed_out; }
 
-    // OpenImageIO's texture system, started by the first image texture.
-    ImageTextureSystem& images();
+    // The image files' mipmap pyramids, made by the first image texture.
+    MipMapCache& mipmaps();
     const std::string& directory() const { return m_directory; }
     bool mipmapping() const { return m_mipmapping; }
 
@@ -52,8 +52,7 @@ private:
 
     std::string m_directory;
     bool m_mipmapping;
-    // Declared before the textures, so it is destroyed after them: they hold handles into it.
-    std::unique_ptr<ImageTextureSystem> m_images;
+    std::unique_ptr<MipMapCache> m_mipmaps;
     std::vector<std::unique_ptr<Texture>> m_declared;
     std::vector<std::unique_ptr<Texture>> m_from_files;
     mutable size_t m_handed_out = 0;

@@ -1,0 +1,154 @@
+// The image formats behind read_image and write_image (film/image_codecs.h): PFM in both
+// byte orders, half-float EXR, raw (non-sRGB) PNG, the format told by the file's bytes,
+// and TIFF refused with a reason.
+#include <glint/core/error.h>
+#include <glint/film/image_io.h>
+
+#include <gtest/gtest.h>
+#include <support/test_util.h>
+
+#include <bit>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace glint {
+namespace {
+
+using glint::test::TempDir;
+
+// A PFM file: `values` row by row from the image's top, written bottom row first as the
+// format stores them, in the byte order the scale's sign names.
+void write_pfm(const std::string& path, const char* kind, int width, int height, float scale,
+               const std::vector<float>& values) {
+    std::ofstream out(path, std::ios::binary);
+    out << kind << "\n" << width << " " << height << "\n" << scale << "\n";
+    const bool little = scale < 0.0f;
+    const size_t row = values.size() / static_cast<size_t>(height);
+    for (int y = height - 1; y >= 0; --y) {
+        for (size_t i = 0; i < row; ++i) {
+            uint32_t bits;
+            std::memcpy(&bits, &values[static_cast<size_t>(y) * row + i], sizeof bits);
+            if (little != (std::endian::native == std::endian::little))
+                bits = __builtin_bswap32(bits);
+            out.write(reinterpret_cast<const char*>(&bits), sizeof bits);
+        }
+    }
+}
+
+std::string error_of(const std::string& path) {
+    try {
+        read_image(path);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "";
+}
+
+}  // namespace
+
+TEST(ImageCodecs, PfmReadsBothByteOrdersTopRowFirst) {
+    TempDir dir;
+    const std::vector<float> rgb = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12};  // 2 x 2, RGB
+    write_pfm(dir.file("little.pfm"), "PF", 2, 2, -1.0f, rgb);
+    const Image little = read_image(dir.file("little.pfm"));
+    ASSERT_EQ(little.width, 2);
+    ASSERT_EQ(little.height, 2);
+    EXPECT_EQ(little.channels, (std::vector<std::string>{"R", "G", "B"}));
+    EXPECT_EQ(little.pixels, rgb);
+
+    // Big-endian grey, with a scale of 2 that multiplies the values.
+    write_pfm(dir.file("big.pfm"), "Pf", 3, 1, 2.0f, {0.5f, -1.0f, 8.0f});
+    const Image big = read_image(dir.file("big.pfm"));
+    EXPECT_EQ(big.channels, (std::vector<std::string>{"Y"}));
+    EXPECT_EQ(big.pixels, (std::vector<float>{1.0f, -2.0f, 16.0f}));
+}
+
+TEST(ImageCodecs, DamagedPfmNamesTheFileAndTheFault) {
+    TempDir dir;
+    write_pfm(dir.file("short.pfm"), "PF", 4, 4, -1.0f, std::vector<float>(3 * 4 * 4, 1.0f));
+    std::filesystem::resize_file(dir.file("short.pfm"), 60);
+    const std::string truncated = error_of(dir.file("short.pfm"));
+    EXPECT_NE(truncated.find("short.pfm"), std::string::npos) << truncated;
+    EXPECT_NE(truncated.find("ends early"), std::string::npos) << truncated;
+
+    std::ofstream(dir.file("words.pfm")) << "PF\nwide 4\n-1\n";
+    const std::string words = error_of(dir.file("words.pfm"));
+    EXPECT_NE(words.find("width"), std::string::npos) << words;
+}
+
+TEST(ImageCodecs, HalfExrKeepsHalfValuesExactly) {
+    TempDir dir;
+    // Values a half holds exactly: multiples of 1/64 below 32, the largest half and zero.
+    Image image = make_image(64, 64, {"R", "G", "B"});
+    for (size_t i = 0; i < image.pixels.size(); ++i)
+        image.pixels[i] = static_cast<float>((i * 7919) % 2048) / 64.0f;
+    image.pixels[0] = 65504.0f;
+    image.pixels[1] = -2.0f;
+    WriteOptions half;
+    half.half = true;
+    write_image(dir.file("half.exr"), image, half);
+    const Image back = read_image(dir.file("half.exr"));
+    ASSERT_EQ(back.width, image.width);
+    ASSERT_EQ(back.height, image.height);
+    int mismatches = 0;
+    for (const char* name : {"R", "G", "B"}) {  // OpenEXR stores channels sorted by name
+        const int in = image.channel_index(name), out = back.channel_index(name);
+        ASSERT_GE(out, 0) << name;
+        for (int y = 0; y < image.height; ++y)
+            for (int x = 0; x < image.width; ++x)
+                mismatches += back.at(x, y, out) != image.at(x, y, in);
+    }
+    EXPECT_EQ(mismatches, 0);
+    // Half the bytes of the float file, give or take the header.
+    write_image(dir.file("float.exr"), image);
+    EXPECT_LT(std::filesystem::file_size(dir.file("half.exr")),
+              std::filesystem::file_size(dir.file("float.exr")));
+}
+
+TEST(ImageCodecs, RawPngStoresTheValuesThemselves) {
+    TempDir dir;
+    Image image = make_image(4, 1, {"R", "G", "B"});
+    for (int x = 0; x < 4; ++x)
+        for (int c = 0; c < 3; ++c) image.at(x, 0, c) = static_cast<float>(x * 60 + c) / 255.0f;
+    WriteOptions raw;
+    raw.srgb = false;
+    write_image(dir.file("normals.png"), image, raw);
+    const StoredImage stored = read_stored_image(dir.file("normals.png"));
+    EXPECT_TRUE(stored.integer);
+    EXPECT_EQ(stored.bits_per_value, 8);
+    EXPECT_EQ(stored.alpha, -1);
+    EXPECT_EQ(stored.image.pixels, image.pixels);
+}
+
+TEST(ImageCodecs, FormatComesFromTheBytesNotTheName) {
+    TempDir dir;
+    Image grey = make_image(2, 2, {"Y"});
+    grey.pixels = {0.0f, 1.0f, 1.0f, 0.0f};
+    write_image(dir.file("grey.png"), grey);
+    std::filesystem::rename(dir.file("grey.png"), dir.file("misnamed.exr"));
+    const Image back = read_image(dir.file("misnamed.exr"));
+    EXPECT_EQ(back.channels, (std::vector<std::string>{"Y"}));
+    EXPECT_EQ(back.pixels, grey.pixels);
+}
+
+TEST(ImageCodecs, TiffAndUnknownFilesAreRefusedWithAReason) {
+    TempDir dir;
+    std::ofstream(dir.file("scan.tif"), std::ios::binary) << std::string("II*\0", 4) << "rest";
+    const std::string tiff = error_of(dir.file("scan.tif"));
+    EXPECT_NE(tiff.find("scan.tif"), std::string::npos) << tiff;
+    EXPECT_NE(tiff.find("TIFF"), std::string::npos) << tiff;
+
+    std::ofstream(dir.file("notes.png")) << "shopping list";
+    const std::string unknown = error_of(dir.file("notes.png"));
+    EXPECT_NE(unknown.find("notes.png"), std::string::npos) << unknown;
+    EXPECT_NE(unknown.find("not an image glint reads"), std::string::npos) << unknown;
+
+    std::ofstream(dir.file("empty.exr")).flush();
+    EXPECT_NE(error_of(dir.file("empty.exr")).find("empty"), std::string::npos);
+}
+
+}  // namespace glint
