@@ -39,6 +39,53 @@ void write_pfm(const std::string& path, const char* kind, int width, int height,
     }
 }
 
+// A PNG of 16-bit grey samples (`values`, row by row), written by hand: the deflate stream
+// in one stored (uncompressed) block, so no compressor is needed. glint itself writes only
+// 8-bit PNGs, and 16-bit ones are what Blender and Substance export for smooth gradients.
+void write_png16_grey(const std::string& path, int width, int height,
+                      const std::vector<uint16_t>& values) {
+    auto crc32 = [](const std::string& bytes) {
+        uint32_t crc = 0xffffffffu;
+        for (unsigned char byte : bytes) {
+            crc ^= byte;
+            for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+        }
+        return crc ^ 0xffffffffu;
+    };
+    auto be32 = [](uint32_t v) {
+        return std::string{static_cast<char>(v >> 24), static_cast<char>(v >> 16),
+                           static_cast<char>(v >> 8), static_cast<char>(v)};
+    };
+    auto chunk = [&](const std::string& type, const std::string& data) {
+        return be32(static_cast<uint32_t>(data.size())) + type + data + be32(crc32(type + data));
+    };
+    std::string raw;  // each row: filter type 0, then big-endian samples
+    for (int y = 0; y < height; ++y) {
+        raw.push_back(0);
+        for (int x = 0; x < width; ++x) {
+            const uint16_t v = values[static_cast<size_t>(y * width + x)];
+            raw.push_back(static_cast<char>(v >> 8));
+            raw.push_back(static_cast<char>(v & 0xff));
+        }
+    }
+    uint32_t a = 1, b = 0;  // Adler-32 of the raw bytes
+    for (unsigned char byte : raw) {
+        a = (a + byte) % 65521;
+        b = (b + a) % 65521;
+    }
+    const uint16_t len = static_cast<uint16_t>(raw.size());
+    std::string zlib = {0x78, 0x01, 0x01};  // zlib header; final stored block
+    zlib += {static_cast<char>(len & 0xff), static_cast<char>(len >> 8),
+             static_cast<char>(~len & 0xff), static_cast<char>((~len >> 8) & 0xff)};
+    zlib += raw + be32((b << 16) | a);
+    const std::string header = be32(static_cast<uint32_t>(width)) +
+                               be32(static_cast<uint32_t>(height)) +
+                               std::string{16, 0, 0, 0, 0};  // 16 bits, grey, no interlace
+    std::ofstream out(path, std::ios::binary);
+    out << std::string("\x89PNG\r\n\x1a\n", 8) << chunk("IHDR", header) << chunk("IDAT", zlib)
+        << chunk("IEND", "");
+}
+
 std::string error_of(const std::string& path) {
     try {
         read_image(path);
@@ -122,6 +169,24 @@ TEST(ImageCodecs, RawPngStoresTheValuesThemselves) {
     EXPECT_EQ(stored.bits_per_value, 8);
     EXPECT_EQ(stored.alpha, -1);
     EXPECT_EQ(stored.image.pixels, image.pixels);
+}
+
+// 16-bit PNG samples come back as code / 65535, finer than 8 bits can say, and marked as
+// integer (sRGB-encoded) data: read_image decodes them.
+TEST(ImageCodecs, SixteenBitPngKeepsItsPrecision) {
+    TempDir dir;
+    const std::vector<uint16_t> codes = {0, 1, 257, 32768, 65534, 65535};
+    write_png16_grey(dir.file("ramp.png"), 3, 2, codes);
+    const StoredImage stored = read_stored_image(dir.file("ramp.png"));
+    EXPECT_TRUE(stored.integer);
+    EXPECT_EQ(stored.bits_per_value, 16);
+    ASSERT_EQ(stored.image.width, 3);
+    ASSERT_EQ(stored.image.height, 2);
+    EXPECT_EQ(stored.image.channels, (std::vector<std::string>{"Y"}));
+    for (size_t i = 0; i < codes.size(); ++i)
+        EXPECT_FLOAT_EQ(stored.image.pixels[i], codes[i] / 65535.0f) << i;
+    const Image decoded = read_image(dir.file("ramp.png"));
+    EXPECT_NEAR(decoded.pixels[3], srgb_to_linear(32768.0f / 65535.0f), 1e-7f);
 }
 
 TEST(ImageCodecs, FormatComesFromTheBytesNotTheName) {
