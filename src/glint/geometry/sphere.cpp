@@ -64,6 +64,13 @@ Sphere::Sphere(const Vec3& center, float radius, const Transform& to_parent) {
     if (!(radius > 0.0f) || !std::isfinite(radius)) throw Error("sphere radius must be positive");
     m_to_parent = to_parent * Transform::translate(center) * Transform::scale(Vec3(radius));
     m_parent_to_object = to_parent.inverse();
+    const Mat4& m = m_to_parent.inverse_matrix();  // column-major: m[column][row]
+    m_scale_and_offset = m[0][0] == m[1][1] && m[1][1] == m[2][2] && m[0][1] == 0.0f &&
+                         m[0][2] == 0.0f && m[1][0] == 0.0f && m[1][2] == 0.0f && m[2][0] == 0.0f &&
+                         m[2][1] == 0.0f && m[0][3] == 0.0f && m[1][3] == 0.0f && m[2][3] == 0.0f &&
+                         m[3][3] == 1.0f;
+    m_scale = m[0][0];
+    m_offset = Vec3(m[3]);
 }
 
 Bounds3 Sphere::bounds() const {
@@ -75,8 +82,12 @@ Bounds3 Sphere::bounds() const {
 
 bool Sphere::intersect_interval(const Vec3& origin, const Vec3& direction, float& t0,
                                 float& t1) const {
-    const Vec3 o = m_to_parent.inverse().point(origin);
-    const Vec3 d = m_to_parent.inverse().vector(direction);
+    // The matrix products reduce to these when the off-diagonal entries are zero: adding
+    // their zero terms changes no bit.
+    const Vec3 o =
+        m_scale_and_offset ? m_scale * origin + m_offset : m_to_parent.inverse().point(origin);
+    const Vec3 d =
+        m_scale_and_offset ? m_scale * direction : m_to_parent.inverse().vector(direction);
     const float a = glm::dot(d, d);
     const float b = glm::dot(o, d);
     const float c = glm::dot(o, o) - 1.0f;
