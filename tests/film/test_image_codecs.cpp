@@ -125,6 +125,11 @@ TEST(ImageCodecs, DamagedPfmNamesTheFileAndTheFault) {
     std::ofstream(dir.file("words.pfm")) << "PF\nwide 4\n-1\n";
     const std::string words = error_of(dir.file("words.pfm"));
     EXPECT_NE(words.find("width"), std::string::npos) << words;
+
+    // The message quotes the header's bytes only as printable text.
+    std::ofstream(dir.file("binary.pfm"), std::ios::binary) << "PF\n4\xf9\x01 4\n-1\n";
+    const std::string binary = error_of(dir.file("binary.pfm"));
+    EXPECT_NE(binary.find("'4?\?'"), std::string::npos) << binary;
 }
 
 TEST(ImageCodecs, HalfExrKeepsHalfValuesExactly) {

@@ -158,9 +158,10 @@ StoredImage read_stored_image(const std::string& path) {
     try {
         return read_by_signature(path, file_bytes);
     } catch (const Error& e) {
-        const std::string message = e.what();
-        // check_image_header's messages name the image already.
-        if (message.find(path) != std::string::npos) throw;
+        // A decoder's reason may quote bytes of the damaged file.
+        const std::string message = printable_text(e.what());
+        // check_image_header's messages, and OpenEXR's, name the image already.
+        if (message.find(path) != std::string::npos) throw Error(message);
         throw Error(fmt::format("cannot read '{}': {}", path, message));
     }
 }
