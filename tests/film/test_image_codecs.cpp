@@ -174,6 +174,13 @@ TEST(ImageCodecs, RawPngStoresTheValuesThemselves) {
     EXPECT_EQ(stored.bits_per_value, 8);
     EXPECT_EQ(stored.alpha, -1);
     EXPECT_EQ(stored.image.pixels, image.pixels);
+
+    // Asked for codes (as textures are), the same values as bytes, and no floats.
+    const StoredImage codes = read_stored_image(dir.file("normals.png"), true);
+    EXPECT_TRUE(codes.image.pixels.empty());
+    ASSERT_EQ(codes.codes.size(), image.pixels.size());
+    for (size_t i = 0; i < codes.codes.size(); ++i)
+        EXPECT_EQ(codes.codes[i] / 255.0f, image.pixels[i]) << i;
 }
 
 // 16-bit PNG samples come back as code / 65535, finer than 8 bits can say, and marked as
@@ -190,6 +197,7 @@ TEST(ImageCodecs, SixteenBitPngKeepsItsPrecision) {
     EXPECT_EQ(stored.image.channels, (std::vector<std::string>{"Y"}));
     for (size_t i = 0; i < codes.size(); ++i)
         EXPECT_FLOAT_EQ(stored.image.pixels[i], codes[i] / 65535.0f) << i;
+    EXPECT_TRUE(read_stored_image(dir.file("ramp.png"), true).codes.empty());  // 8-bit only
     const Image decoded = read_image(dir.file("ramp.png"));
     EXPECT_NEAR(decoded.pixels[3], srgb_to_linear(32768.0f / 65535.0f), 1e-7f);
 }

@@ -25,7 +25,8 @@ void write_exr(const std::string& path, const Image& image, bool half);
 
 /// Reads the formats stb_image decodes. Integer files come back as code values / 255 (or
 /// / 65535), named Y, YA, RGB or RGBA; Radiance HDR as linear float RGB.
-StoredImage read_stb(const std::string& path, uint64_t file_bytes);
+/// With `eight_bit_codes`, an 8-bit file's values are kept as StoredImage::codes.
+StoredImage read_stb(const std::string& path, uint64_t file_bytes, bool eight_bit_codes);
 
 /// Writes 8-bit code values, `channels` (1 to 4) per pixel, row 0 at the top, as PNG.
 void write_png(const std::string& path, int width, int height, int channels,

@@ -98,7 +98,7 @@ void verify_written(const std::string& file, int width, int height) {
 constexpr unsigned char kExrMagic[4] = {0x76, 0x2f, 0x31, 0x01};
 constexpr unsigned char kTiffLittle[4] = {'I', 'I', 42, 0}, kTiffBig[4] = {'M', 'M', 0, 42};
 
-StoredImage read_by_signature(const std::string& path, uint64_t file_bytes) {
+StoredImage read_by_signature(const std::string& path, uint64_t file_bytes, bool eight_bit_codes) {
     unsigned char head[4] = {0, 0, 0, 0};
     {
         std::FILE* file = std::fopen(path.c_str(), "rb");
@@ -112,7 +112,7 @@ StoredImage read_by_signature(const std::string& path, uint64_t file_bytes) {
         return read_pfm(path, file_bytes);
     if (std::memcmp(head, kTiffLittle, 4) == 0 || std::memcmp(head, kTiffBig, 4) == 0)
         throw Error("TIFF files are not read; convert it to OpenEXR or PNG");
-    return read_stb(path, file_bytes);
+    return read_stb(path, file_bytes, eight_bit_codes);
 }
 
 }  // namespace
@@ -151,12 +151,12 @@ void write_image_file(const std::string& file, const Image& image, const WriteOp
     verify_written(file, image.width, image.height);
 }
 
-StoredImage read_stored_image(const std::string& path) {
+StoredImage read_stored_image(const std::string& path, bool eight_bit_codes) {
     std::error_code ec;
     const uintmax_t file_bytes = fs::file_size(path, ec);
     if (ec) throw Error(fmt::format("cannot read '{}': {}", path, ec.message()));
     try {
-        return read_by_signature(path, file_bytes);
+        return read_by_signature(path, file_bytes, eight_bit_codes);
     } catch (const Error& e) {
         // A decoder's reason may quote bytes of the damaged file.
         const std::string message = printable_text(e.what());

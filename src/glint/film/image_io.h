@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace glint {
 
@@ -43,6 +44,9 @@ struct StoredImage {
     bool integer = false;
     int bits_per_value = 32;  ///< 8 or 16 for integer files
     int alpha = -1;           ///< the alpha channel's position, or -1
+    /// 8-bit files read with `eight_bit_codes`: the code values themselves, laid out as
+    /// image.pixels would be, which is then left empty (a quarter of the memory).
+    std::vector<uint8_t> codes;
 };
 
 /// Reads OpenEXR, PNG, JPEG, Radiance HDR, TGA, BMP, PNM, PSD, GIF and PFM files, the
@@ -51,7 +55,7 @@ struct StoredImage {
 /// plausible for the file's size, the decoded image within the memory budget). Throws
 /// glint::Error naming the path if the file cannot be read, its header lies, or its data
 /// ends early.
-StoredImage read_stored_image(const std::string& path);
+StoredImage read_stored_image(const std::string& path, bool eight_bit_codes = false);
 
 /// read_stored_image with integer files decoded from sRGB to linear, alpha excepted, so
 /// read_image(write_image(x)) gives x back up to 8-bit quantisation. EXR channel order is

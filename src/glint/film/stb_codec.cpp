@@ -63,7 +63,7 @@ void check_png_claim(std::FILE* file, const std::string& path, uint64_t file_byt
 
 }  // namespace
 
-StoredImage read_stb(const std::string& path, uint64_t file_bytes) {
+StoredImage read_stb(const std::string& path, uint64_t file_bytes, bool eight_bit_codes) {
     std::unique_ptr<std::FILE, FileCloser> file(std::fopen(path.c_str(), "rb"));
     if (!file) throw Error("cannot open the file");
     int width = 0, height = 0, channels = 0;
@@ -98,6 +98,14 @@ StoredImage read_stb(const std::string& path, uint64_t file_bytes) {
     image.height = height;
     image.channels = channel_names(loaded_channels);
     const size_t count = image.index(0, height, 0);
+    if (!is_hdr && !is_16_bit && eight_bit_codes) {
+        const uint8_t* codes = static_cast<const uint8_t*>(pixels.get());
+        stored.codes.assign(codes, codes + count);
+        stored.integer = true;
+        stored.bits_per_value = 8;
+        stored.alpha = loaded_channels == 2 || loaded_channels == 4 ? loaded_channels - 1 : -1;
+        return stored;
+    }
     image.pixels.resize(count);
     if (is_hdr) {
         const float* values = static_cast<const float*>(pixels.get());

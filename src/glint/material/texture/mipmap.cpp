@@ -46,23 +46,41 @@ void halve_axis(const float* in, float* out, int count, size_t step, int channel
     }
 }
 
-// The next level: halved along x (row by row), then along y (column by column).
-std::vector<float> halve(const std::vector<float>& values, int width, int height, int channels,
-                         int& next_width, int& next_height) {
+// The next level, a row at a time: each output row from the two (or, for an odd height,
+// three) input rows it covers, each input row halved along x first. `row_of(y, out)` writes
+// input row y's linear values, so the level above need not be held in floats whole.
+template <class RowOf>
+std::vector<float> halve(RowOf&& row_of, int width, int height, int channels, int& next_width,
+                         int& next_height) {
     next_width = std::max(1, width / 2);
     next_height = std::max(1, height / 2);
     const size_t nc = static_cast<size_t>(channels);
-    std::vector<float> rows(static_cast<size_t>(next_width) * static_cast<size_t>(height) * nc);
-    for (int y = 0; y < height; ++y) {
-        halve_axis(values.data() + static_cast<size_t>(y) * static_cast<size_t>(width) * nc,
-                   rows.data() + static_cast<size_t>(y) * static_cast<size_t>(next_width) * nc,
-                   width, nc, channels);
-    }
-    std::vector<float> out(static_cast<size_t>(next_width) * static_cast<size_t>(next_height) * nc);
-    const size_t row_step = static_cast<size_t>(next_width) * nc;
-    for (int x = 0; x < next_width; ++x) {
-        halve_axis(rows.data() + static_cast<size_t>(x) * nc,
-                   out.data() + static_cast<size_t>(x) * nc, height, row_step, channels);
+    const size_t out_row = static_cast<size_t>(next_width) * nc;
+    std::vector<float> out(out_row * static_cast<size_t>(next_height));
+    std::vector<float> input(static_cast<size_t>(width) * nc);
+    std::vector<float> halved[3] = {std::vector<float>(out_row), std::vector<float>(out_row),
+                                    std::vector<float>(out_row)};
+    auto halved_row = [&](int y, std::vector<float>& into) {
+        row_of(y, input.data());
+        halve_axis(input.data(), into.data(), width, nc, channels);
+    };
+    const int taps = height == 1 ? 1 : height % 2 == 0 ? 2 : 3;
+    for (int j = 0; j < next_height; ++j) {
+        // The same weights, and sums in the same order, as halve_axis along y.
+        for (int k = 0; k < taps; ++k) halved_row(2 * j + k, halved[k]);
+        float* o = out.data() + static_cast<size_t>(j) * out_row;
+        const float *a = halved[0].data(), *b = halved[1].data(), *c = halved[2].data();
+        if (taps == 1) {
+            std::copy(a, a + out_row, o);
+        } else if (taps == 2) {
+            for (size_t i = 0; i < out_row; ++i) o[i] = 0.5f * (a[i] + b[i]);
+        } else {
+            const int half = next_height;
+            const float norm = 1.0f / static_cast<float>(2 * half + 1);
+            const float w0 = static_cast<float>(half - j) * norm,
+                        w1 = static_cast<float>(half) * norm, w2 = static_cast<float>(j + 1) * norm;
+            for (size_t i = 0; i < out_row; ++i) o[i] = w0 * a[i] + w1 * b[i] + w2 * c[i];
+        }
     }
     return out;
 }
@@ -109,50 +127,84 @@ MipMap::MipMap(const StoredImage& stored, bool srgb, const std::string& name) : 
     const std::vector<int> source = colour_channels(image);
     m_channels = static_cast<int>(source.size());
     m_bytes = stored.integer && stored.bits_per_value == 8;
-    const uint64_t texels =
-        static_cast<uint64_t>(image.width) * static_cast<uint64_t>(image.height);
-    // The pyramid (4/3 of the image) and one level decoded to floats while it is built.
-    const uint64_t bytes_per_value = m_bytes ? 1 : sizeof(float);
+    const size_t width = static_cast<size_t>(image.width),
+                 height = static_cast<size_t>(image.height);
+    const size_t nc = static_cast<size_t>(m_channels), stored_nc = image.channels.size();
+    // The pyramid (4/3 of the image) and, while it is built, the second level in floats.
+    const uint64_t values = static_cast<uint64_t>(width) * height * nc;
     check_memory(
-        saturating_product(texels * static_cast<uint64_t>(m_channels),
-                           bytes_per_value * 4 / 3 + sizeof(float) + 1),
+        saturating_product(values, (m_bytes ? 1 : sizeof(float)) * 4 / 3 + 2),
         fmt::format("texture '{}' ({}x{}) with its mipmaps", name, image.width, image.height));
     for (int code = 0; code < 256; ++code) {
         const float value = static_cast<float>(code) / 255.0f;
         m_decode[static_cast<size_t>(code)] = srgb ? srgb_to_linear(value) : value;
     }
 
-    std::vector<float> linear(static_cast<size_t>(texels) * static_cast<size_t>(m_channels));
-    for (size_t p = 0; p < texels; ++p) {
-        for (int c = 0; c < m_channels; ++c) {
-            const float v =
-                image.pixels[p * image.channels.size() + static_cast<size_t>(source[c])];
-            linear[p * static_cast<size_t>(m_channels) + static_cast<size_t>(c)] =
-                m_bytes
-                    ? m_decode[static_cast<size_t>(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f))]
-                : srgb ? srgb_to_linear(v)
-                       : v;
+    // The full-resolution level as stored: the file's codes, or floats (decoded if sRGB).
+    Level top;
+    top.width = image.width;
+    top.height = image.height;
+    if (m_bytes) {
+        top.codes.resize(width * height * nc);
+        for (size_t p = 0; p < width * height; ++p) {
+            for (size_t c = 0; c < nc; ++c) {
+                const size_t from = p * stored_nc + static_cast<size_t>(source[c]);
+                top.codes[p * nc + c] =
+                    stored.codes.empty() ? static_cast<uint8_t>(std::lround(
+                                               std::clamp(image.pixels[from], 0.0f, 1.0f) * 255.0f))
+                                         : stored.codes[from];
+            }
+        }
+    } else {
+        top.values.resize(width * height * nc);
+        for (size_t p = 0; p < width * height; ++p) {
+            for (size_t c = 0; c < nc; ++c) {
+                const float v = image.pixels[p * stored_nc + static_cast<size_t>(source[c])];
+                top.values[p * nc + c] = srgb ? srgb_to_linear(v) : v;
+            }
         }
     }
-    int width = image.width, height = image.height;
-    m_levels.push_back(encoded(width, height, linear));
-    while (width > 1 || height > 1) {
-        int next_width = 0, next_height = 0;
-        linear = halve(linear, width, height, m_channels, next_width, next_height);
-        width = next_width;
-        height = next_height;
-        m_levels.push_back(encoded(width, height, linear));
+    m_levels.push_back(std::move(top));
+
+    // Each level from the linear values of the one above: the top level's decoded a row at
+    // a time, the others' kept in floats until the next is made.
+    std::vector<float> linear;
+    int w = image.width, h = image.height;
+    while (w > 1 || h > 1) {
+        int next_w = 0, next_h = 0;
+        const Level& above = m_levels.back();
+        const size_t row = static_cast<size_t>(w) * nc;
+        std::vector<float> next;
+        if (m_levels.size() == 1) {
+            next = halve(
+                [&](int y, float* out) {
+                    const size_t at = static_cast<size_t>(y) * row;
+                    for (size_t i = 0; i < row; ++i)
+                        out[i] = m_bytes ? m_decode[above.codes[at + i]] : above.values[at + i];
+                },
+                w, h, m_channels, next_w, next_h);
+        } else {
+            next = halve(
+                [&](int y, float* out) {
+                    std::copy_n(linear.data() + static_cast<size_t>(y) * row, row, out);
+                },
+                w, h, m_channels, next_w, next_h);
+        }
+        linear = std::move(next);
+        w = next_w;
+        h = next_h;
+        m_levels.push_back(encoded(w, h, linear));
     }
 }
 
 // A level's storage from linear values: 8-bit codes (through the inverse of the decode
 // table) or the floats themselves.
-MipMap::Level MipMap::encoded(int width, int height, std::vector<float> values) const {
+MipMap::Level MipMap::encoded(int width, int height, const std::vector<float>& values) const {
     Level level;
     level.width = width;
     level.height = height;
     if (!m_bytes) {
-        level.values = std::move(values);
+        level.values = values;
         return level;
     }
     level.codes.resize(values.size());

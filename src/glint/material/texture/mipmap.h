@@ -52,8 +52,7 @@ private:
         std::vector<float> values;   // the others
     };
 
-    std::vector<float> decoded(const Level& level) const;
-    Level encoded(int width, int height, std::vector<float> values) const;
+    Level encoded(int width, int height, const std::vector<float>& values) const;
     Rgb texel(const Level& level, int x, int y, TextureWrap wrap) const;
     Rgb bilinear(int level, Vec2 st, TextureWrap wrap) const;
     Rgb trilinear(float level, Vec2 st, TextureWrap wrap) const;
