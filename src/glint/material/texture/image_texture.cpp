@@ -63,10 +63,10 @@ std::shared_ptr<const MipMap> MipMapCache::get(const std::string& path, TextureE
         throw Error(fmt::format("texture file '{}' does not exist", path));
     // The whole file is decoded now, so that a lying header or a truncated file is an
     // error here rather than black texels in the middle of the render.
-    const StoredImage stored = read_stored_image(path, /*eight_bit_codes=*/true);
+    StoredImage stored = read_stored_image(path, /*eight_bit_codes=*/true);
     const bool srgb = encoding == TextureEncoding::kSrgb ||
                       (encoding == TextureEncoding::kAuto && stored.integer);
-    slot = std::make_shared<const MipMap>(stored, srgb, path);
+    slot = std::make_shared<const MipMap>(std::move(stored), srgb, path);
     return slot;
 }
 

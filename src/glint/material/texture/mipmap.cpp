@@ -122,8 +122,8 @@ float reduce_coordinate(float s, TextureWrap wrap) {
 
 }  // namespace
 
-MipMap::MipMap(const StoredImage& stored, bool srgb, const std::string& name) : m_srgb(srgb) {
-    const Image& image = stored.image;
+MipMap::MipMap(StoredImage stored, bool srgb, const std::string& name) : m_srgb(srgb) {
+    Image& image = stored.image;
     const std::vector<int> source = colour_channels(image);
     m_channels = static_cast<int>(source.size());
     m_bytes = stored.integer && stored.bits_per_value == 8;
@@ -144,7 +144,14 @@ MipMap::MipMap(const StoredImage& stored, bool srgb, const std::string& name) : 
     Level top;
     top.width = image.width;
     top.height = image.height;
-    if (m_bytes) {
+    // Taken over whole when the file holds just the colour channels, in order.
+    bool as_stored = stored_nc == nc;
+    for (size_t c = 0; c < nc; ++c) as_stored = as_stored && source[c] == static_cast<int>(c);
+    if (m_bytes && as_stored && !stored.codes.empty()) {
+        top.codes = std::move(stored.codes);
+    } else if (!m_bytes && as_stored && !srgb) {
+        top.values = std::move(image.pixels);
+    } else if (m_bytes) {
         top.codes.resize(width * height * nc);
         for (size_t p = 0; p < width * height; ++p) {
             for (size_t c = 0; c < nc; ++c) {

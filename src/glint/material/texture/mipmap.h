@@ -31,7 +31,7 @@ public:
     /// The colour channels of `stored` (R, G, B by name; else Y or the first channel as
     /// grey; alpha dropped); `srgb` decodes them from sRGB. Throws glint::Error naming
     /// `name` when the pyramid would not fit the memory budget.
-    MipMap(const StoredImage& stored, bool srgb, const std::string& name);
+    MipMap(StoredImage stored, bool srgb, const std::string& name);
 
     /// The filtered value at (s, t), t = 0 at the image's top row, with the pixel's
     /// footprint given by the derivatives of (s, t) along the image's x and y.
