@@ -7,7 +7,9 @@
 #include <gtest/gtest.h>
 #include <support/test_util.h>
 
+#include <algorithm>
 #include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -200,6 +202,38 @@ TEST(ImageCodecs, SixteenBitPngKeepsItsPrecision) {
     EXPECT_TRUE(read_stored_image(dir.file("ramp.png"), true).codes.empty());  // 8-bit only
     const Image decoded = read_image(dir.file("ramp.png"));
     EXPECT_NEAR(decoded.pixels[3], srgb_to_linear(32768.0f / 65535.0f), 1e-7f);
+}
+
+// A JPEG read by glint (stb) against the same file read by libjpeg (data/README.md): JPEG
+// decoders differ a little in their inverse DCT and chroma upsampling, so the bound is on
+// the difference in 8-bit sRGB codes: at most 3 for any value, a quarter on average. The
+// wrong transfer curve or channel order would miss it by tens of codes.
+TEST(ImageCodecs, JpegReadsAsLibjpegDoes) {
+    const std::string data = std::string(GLINT_SOURCE_DIR) + "/tests/film/data/";
+    const Image jpeg = read_image(data + "gradient.jpg");
+    const Image libjpeg = read_image(data + "gradient-libjpeg.exr");
+    ASSERT_EQ(jpeg.width, 40);
+    ASSERT_EQ(jpeg.height, 24);
+    ASSERT_EQ(libjpeg.width, jpeg.width);
+    ASSERT_EQ(libjpeg.height, jpeg.height);
+    double largest = 0.0, sum = 0.0;
+    int count = 0;
+    for (const char* name : {"R", "G", "B"}) {
+        const int a = jpeg.channel_index(name), b = libjpeg.channel_index(name);
+        ASSERT_GE(a, 0) << name;
+        ASSERT_GE(b, 0) << name;
+        for (int y = 0; y < jpeg.height; ++y) {
+            for (int x = 0; x < jpeg.width; ++x) {
+                const double codes = 255.0 * std::abs(linear_to_srgb(jpeg.at(x, y, a)) -
+                                                      linear_to_srgb(libjpeg.at(x, y, b)));
+                largest = std::max(largest, codes);
+                sum += codes;
+                ++count;
+            }
+        }
+    }
+    EXPECT_LE(largest, 3.0);
+    EXPECT_LE(sum / count, 0.25);
 }
 
 TEST(ImageCodecs, FormatComesFromTheBytesNotTheName) {
