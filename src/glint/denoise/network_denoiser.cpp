@@ -5,6 +5,7 @@
 #include <glint/denoise/transfer.h>
 #include <glint/denoise/tza.h>
 #include <glint/denoise/unet.h>
+#include <glint/film/image_io.h>
 
 #include <fmt/format.h>
 
@@ -235,7 +236,7 @@ Image denoise_network(const Image& image, const NetworkDenoiseSettings& settings
             [&](int x, int y, const std::array<float, 3>& v) {
                 for (int c = 0; c < 3; ++c)
                     filtered.at(x, y, c) =
-                        std::min(srgb_inverse(std::max(finite_or_zero(v[c]), 0.f)), 1.f);
+                        std::min(srgb_to_linear(std::max(finite_or_zero(v[c]), 0.f)), 1.f);
             },
             done, total);
         pass.run(

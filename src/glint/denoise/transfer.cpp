@@ -56,9 +56,6 @@ float pu_inverse(float x) {
 float srgb_forward(float y) {
     return y <= 0.0031308f ? 12.92f * y : 1.055f * std::pow(y, 1.f / 2.4f) - 0.055f;
 }
-float srgb_inverse(float x) {
-    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-}
 
 float autoexposure(const Image& image) {
     constexpr int max_bin = 16;

@@ -15,9 +15,9 @@ namespace glint {
 float pu_forward(float y);
 float pu_inverse(float x);
 
-/// The sRGB transfer curve (linear to encoded) and its inverse.
+/// The sRGB transfer curve, linear to encoded, in float as OIDN computes it; its inverse is
+/// srgb_to_linear (film/image_io.h).
 float srgb_forward(float y);
-float srgb_inverse(float x);
 
 /// The scale that brings the image's channels 0..2 (linear RGB) to a mean log2 luminance
 /// of log2(0.18): the luminance is averaged in bins of at most 16 x 16 pixels, and the bins
