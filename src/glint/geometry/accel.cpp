@@ -117,8 +117,17 @@ namespace {
 
 // The filter of pass-through surfaces: in a recording query (QueryContext::passed) each hit
 // is noted and refused, so the traversal goes on past it; in any other query it stands.
-// Embree may offer one triangle more than once (its high-quality build splits references);
-// intersect_passing() removes the repeats.
+// Embree may offer one triangle more than once (its high-quality build splits references,
+// and a packet traversal offers a lane the triangles of leaves its neighbours reached): a
+// triangle already noted is refused without a second note, so that repeats cannot fill the
+// record; order_crossings() removes the repeats that remain (the two triangles of an edge).
+bool already_noted(const PassedSurfaces& passed, unsigned primitive, unsigned geometry) {
+    for (int k = 0; k < passed.count; ++k)
+        if (passed.hits[k].primitive == primitive && passed.hits[k].top_geometry == geometry)
+            return true;
+    return false;
+}
+
 void pass_through_filter(const RTCFilterFunctionNArguments* args) {
     auto* context = reinterpret_cast<QueryContext*>(args->context);
     if (!context->passed && !context->lanes) return;
@@ -127,6 +136,11 @@ void pass_through_filter(const RTCFilterFunctionNArguments* args) {
         // A packet query's ray carries its lane as its id.
         const unsigned lane = context->lanes ? RTCRayN_id(args->ray, args->N, i) : 0;
         PassedSurfaces* passed = context->lanes ? &context->lanes[lane] : context->passed;
+        if (already_noted(*passed, RTCHitN_primID(args->hit, args->N, i),
+                          RTCHitN_geomID(args->hit, args->N, i))) {
+            args->valid[i] = 0;
+            continue;
+        }
         if (passed->count == PassedSurfaces::kCapacity) {
             context->overflowed = true;
             context->overflowed_lanes |= 1u << lane;
@@ -411,18 +425,55 @@ uint32_t Accel::occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3
         const int lane = std::countr_zero(active);
         return occluded(origins[lane], directions[lane], 0.0f, t_max, times[lane]) ? active : 0;
     }
+    QueryContext context;
+    return packet_blocked(origins, directions, times, t_max, active, context, coherent);
+}
+
+uint32_t Accel::occluded_packet_passing(const PerLane<Vec3>& origins,
+                                        const PerLane<Vec3>& directions,
+                                        const PerLane<float>& times, float t_max, uint32_t active,
+                                        PerLane<PassedSurfaces>& passed, uint32_t& overflowed,
+                                        bool coherent) const {
+    overflowed = 0;
+    if (is_single_lane(active)) {
+        const int lane = std::countr_zero(active);
+        const Ray ray{origins[lane], directions[lane], 0.0f, t_max, times[lane]};
+        const std::optional<bool> blocked = occluded_passing(ray, passed[lane]);
+        if (!blocked) overflowed = active;
+        return blocked.value_or(false) ? active : 0;
+    }
+    for_each_lane(active, [&](int lane) { passed[lane].count = 0; });
+    QueryContext context;
+    context.lanes = passed.data();
+    const uint32_t blocked =
+        packet_blocked(origins, directions, times, t_max, active, context, coherent);
+    // A lane Embree refused left `active`: not blocked and nothing crossed, as
+    // occluded_passing() answers it.
+    overflowed = context.overflowed_lanes & active;
+    for_each_lane(active & ~overflowed, [&](int lane) {
+        if ((blocked >> lane) & 1u)
+            passed[lane].count = 0;
+        else
+            order_crossings(passed[lane], t_max);
+    });
+    return blocked & ~overflowed;
+}
+
+uint32_t Accel::packet_blocked(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
+                               const PerLane<float>& times, float t_max, uint32_t& active,
+                               QueryContext& context, bool coherent) const {
     alignas(32) RTCRay8 packet;
     const int first = std::countr_zero(active);
     for (int lane = 0; lane < kPacketWidth; ++lane) {
         const int source = (active >> lane) & 1u ? lane : first;
         set_packet_ray(packet, lane, origins[source], directions[source], 0.0f, t_max,
                        times[source]);
+        packet.id[lane] = static_cast<unsigned>(lane);  // for the recording filter
     }
     // Lanes Embree would refuse are left out (not blocked) and counted.
     const auto drop = [this](uint64_t count) { drop_ray(count); };
     if (!keep_accepted_lanes(packet, active, drop)) return 0;
     const EmbreeValid valid = embree_valid(active);
-    QueryContext context;
     init_context(context, coherent);
     rtcOccluded8(valid.lanes, m_world, &context.embree, &packet);
 

@@ -133,6 +133,15 @@ public:
     uint32_t occluded_packet(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
                              const PerLane<float>& times, float t_max, uint32_t active,
                              bool coherent) const;
+    // occluded_passing() for the lanes set in `active`, traced together as occluded_packet()
+    // traces them: returns the blocked lanes; each lane that is not blocked gets in `passed`
+    // the pass-through surfaces along its segment, in order, as occluded_passing() gives them
+    // for that ray alone. Lanes whose crossings overflowed the record are neither: they are
+    // set in `overflowed` (occluded_passing()'s nullopt), for the caller to trace otherwise.
+    uint32_t occluded_packet_passing(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
+                                     const PerLane<float>& times, float t_max, uint32_t active,
+                                     PerLane<PassedSurfaces>& passed, uint32_t& overflowed,
+                                     bool coherent) const;
 
     /// Rays not traced because Embree would reject them (see embree_accepts()): each was
     /// answered as a miss, or as an unblocked shadow ray. Counted over every query so far,
@@ -198,6 +207,11 @@ private:
     uint32_t packet_closest_hits(const PerLane<const Ray*>& rays, uint32_t active,
                                  PerLane<HitRecord>& hits, QueryContext& context,
                                  bool coherent) const;
+    // The shadow packet both occluded_packet() and occluded_packet_passing() trace, under
+    // `context`; returns the blocked lanes (of `active`, less those Embree refuses).
+    uint32_t packet_blocked(const PerLane<Vec3>& origins, const PerLane<Vec3>& directions,
+                            const PerLane<float>& times, float t_max, uint32_t& active,
+                            QueryContext& context, bool coherent) const;
     // Sorts the crossings a recording query found along the ray, drops repeats and those
     // not before `end`.
     static void order_crossings(PassedSurfaces& passed, float end);

@@ -460,6 +460,115 @@ TEST(Visibility, AnyHitTraversalPassesTheInterfacesAsTheClosestHitOneDoes) {
     EXPECT_FALSE(grouped.scene->interfaces_skippable());
 }
 
+// Shadow rays as packets, which the preview's paths in media trace: lane by lane the same
+// answer as one ray at a time. The any-hit traversal past interfaces gives the same blocked
+// lanes and crossings as occluded_passing() (a lane whose crossings overflow its record is
+// reported, as occluded_passing()'s nullopt), and transmittance_packet() the same bits as
+// transmittance(), drawing the same from each lane's stream: lanes in vacuum and in a
+// medium (homogeneous fog, and a cloud whose ratio tracking draws), coherent packets aimed
+// at one point and scattered ones, partly filled ones; boxes with a plate, nested boxes that
+// overflow the record with a sphere, a sphere interface (not skippable) and a scene without
+// interfaces.
+TEST(Visibility, ShadowPacketsGiveWhatOneShadowRayGives) {
+    const std::string cloud =
+        "local cloud = glint.medium{ type = 'cloud', min = {-2, -2, -2}, max = {2, 2, 2}, "
+        "density = 2, albedo = 0.9, resolution = 12, seed = 3 }\n";
+    std::string deep = kFog;
+    for (int i = 1; i <= PassedSurfaces::kCapacity + 1; ++i) deep += fog_box(0.4f * i);
+    const std::string plate =
+        "glint.quad{ vertices = { {0.5, -9, -5}, {9, -9, -5}, {9, 9, -5}, {0.5, 9, -5} }, "
+        "material = glint.diffuse{} }\n";
+    const std::string scenes[] = {
+        kFog + cloud + fog_box(1) + fog_box(2) + plate,
+        cloud + deep +
+            "glint.sphere{ center = {0, 0, -6}, radius = 2, material = glint.diffuse{} }\n",
+        kFog + cloud + fog_box(2) +
+            "glint.sphere{ radius = 1, material = glint.interface{ interior = fog } }\n",
+        kFog + cloud + plate};
+    Rng rng(5);
+    int compared = 0, blocked_lanes = 0, crossed_lanes = 0, overflowed_lanes = 0;
+    for (const std::string& code : scenes) {
+        const test::BuiltScene b = test::build_lua(code, "shadow_packets.lua");
+        const std::vector<std::unique_ptr<Medium>>& media = b.scene->media();
+        for (int packet = 0; packet < 80; ++packet) {
+            const bool coherent = packet % 2 == 0;
+            PerLane<Scene::ShadowRay> shadows;
+            PerLane<Vec3> origins, directions;
+            PerLane<float> times{};
+            PerLane<const Medium*> lane_media{};
+            PerLane<Rng> packet_streams, alone_streams;
+            PerLane<Rng*> streams{};
+            uint32_t active = 0;
+            const Vec3 target(3.0f * rng.next_float() - 1.5f, 3.0f * rng.next_float() - 1.5f,
+                              -8.0f);
+            for (int lane = 0; lane < kPacketWidth; ++lane) {
+                if (packet % 5 == 4 && rng.next_float() < 0.5f) continue;  // a partial packet
+                const Vec3 from(4.0f * rng.next_float() - 2.0f, 4.0f * rng.next_float() - 2.0f,
+                                10.0f);
+                const Vec3 to = coherent ? target
+                                         : Vec3(8.0f * rng.next_float() - 4.0f,
+                                                8.0f * rng.next_float() - 4.0f, -8.0f);
+                shadows[lane] = {from, to - from, 0.0f};
+                origins[lane] = from;
+                directions[lane] = to - from;
+                const int pick = static_cast<int>(3.0f * rng.next_float());
+                lane_media[lane] =
+                    pick < static_cast<int>(media.size()) ? media[pick].get() : nullptr;
+                packet_streams[lane] = alone_streams[lane] = Rng(1000 + packet * 8 + lane);
+                // Some lanes without a stream: the fixed one.
+                streams[lane] = lane % 3 == 2 ? nullptr : &packet_streams[lane];
+                active |= 1u << lane;
+            }
+            if (active == 0) continue;
+
+            PerLane<PassedSurfaces> passed;
+            uint32_t overflowed = 0;
+            const uint32_t blocked = b.scene->accel().occluded_packet_passing(
+                origins, directions, times, kShadowRayEnd, active, passed, overflowed, coherent);
+            EXPECT_EQ(blocked & ~active, 0u);
+            EXPECT_EQ(overflowed & ~active, 0u);
+            EXPECT_EQ(blocked & overflowed, 0u);
+            for_each_lane(active, [&](int lane) {
+                PassedSurfaces alone;
+                const Ray ray{origins[lane], directions[lane], 0.0f, kShadowRayEnd};
+                const std::optional<bool> alone_blocked =
+                    b.scene->accel().occluded_passing(ray, alone);
+                ASSERT_EQ(((overflowed >> lane) & 1u) != 0, !alone_blocked.has_value())
+                    << packet << ", " << lane << ", scene " << (&code - scenes);
+                if (!alone_blocked) {
+                    ++overflowed_lanes;
+                    return;
+                }
+                ASSERT_EQ(((blocked >> lane) & 1u) != 0, *alone_blocked) << packet << ", " << lane;
+                blocked_lanes += *alone_blocked;
+                ASSERT_EQ(passed[lane].count, alone.count) << packet << ", " << lane;
+                crossed_lanes += alone.count > 0;
+                for (int k = 0; k < alone.count; ++k) {
+                    EXPECT_EQ(passed[lane].hits[k].t, alone.hits[k].t) << packet << ", " << lane;
+                    EXPECT_EQ(passed[lane].hits[k].top_geometry, alone.hits[k].top_geometry);
+                }
+            });
+
+            PerLane<Spectrum> T;
+            transmittance_packet(*b.scene, shadows, lane_media, streams, active, T);
+            for_each_lane(active, [&](int lane) {
+                Rng* stream = lane % 3 == 2 ? nullptr : &alone_streams[lane];
+                const Spectrum expected =
+                    transmittance(*b.scene, shadows[lane], lane_media[lane], stream);
+                for (int c = 0; c < Spectrum::active_values(); ++c)
+                    EXPECT_EQ(T[lane].value(c), expected.value(c)) << packet << ", " << lane;
+                // The same draws: the streams are where the lone rays left theirs.
+                EXPECT_EQ(packet_streams[lane].next_float(), alone_streams[lane].next_float());
+                ++compared;
+            });
+        }
+    }
+    EXPECT_GT(compared, 1500);
+    EXPECT_GT(blocked_lanes, 100);
+    EXPECT_GT(crossed_lanes, 100);
+    EXPECT_GT(overflowed_lanes, 20);
+}
+
 // Without interfaces, visibility is Embree's occlusion query: 0 or 1.
 TEST(Visibility, WithoutInterfacesIsTheOcclusionQuery) {
     const test::BuiltScene b = test::build_lua(R"(

@@ -154,10 +154,36 @@ private:
         SurfaceInteraction* si = nullptr;
         PassedSurfaces* passed = nullptr;
     };
+    // Where a camera path in media stopped at its first surface that is not purely
+    // specular, so that its direct light is sampled with its neighbours' (their chains of
+    // square roots and divisions overlap) and its shadow ray traced with theirs
+    // (transmittance_packet): all the path needs to finish as camera_sample_in_media()
+    // would have. The surface is the FirstTraversal's.
+    struct AwaitedLight {
+        bool waiting = false;
+        const Medium* medium = nullptr;  // the path's, at the surface
+        Rng rng;                         // the path's stream, for grid media's ratio tracking
+        Spectrum L{0.0f}, beta{0.0f};
+        const SurfaceInteraction* si = nullptr;
+        const Bsdf* bsdf = nullptr;
+        // Set by sample_awaited_light:
+        Scene::ShadowRay shadow;
+        const Medium* shadow_medium = nullptr;  // where the shadow ray starts
+        Spectrum contribution{0.0f};            // 0: no light sample
+    };
+    // With `awaited` (not null) a path that reaches its first surface that is not purely
+    // specular returns there with awaited->waiting set; sample_awaited_light() and then
+    // finish_awaited() give its light.
     Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray, Sampler& sampler,
                                     Arena& arena, RayCounter& counter, HashGrid::Cache& cache,
-                                    DeferredLeg* deferred,
-                                    const FirstTraversal* first = nullptr) const;
+                                    DeferredLeg* deferred, const FirstTraversal* first = nullptr,
+                                    AwaitedLight* awaited = nullptr) const;
+    // The direct light's sample; true when it needs a shadow ray.
+    bool sample_awaited_light(const Scene& scene, AwaitedLight& awaited, Sampler& sampler,
+                              RayCounter& counter) const;
+    Spectrum finish_awaited(const Scene& scene, const AwaitedLight& awaited,
+                            const Spectrum& transmittance, Sampler& sampler, Arena& arena,
+                            RayCounter& counter, HashGrid::Cache& cache) const;
     void render_media_pass(const Scene& scene, Film& film, int pass, uint64_t& rays);
     void render_restir_pass(const Scene& scene, Film& film, int pass, RenderStats& stats);
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,

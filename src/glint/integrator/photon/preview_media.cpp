@@ -401,7 +401,8 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                                                    Sampler& sampler, Arena& arena,
                                                    RayCounter& counter, HashGrid::Cache& cache,
                                                    DeferredLeg* deferred,
-                                                   const FirstTraversal* first) const {
+                                                   const FirstTraversal* first,
+                                                   AwaitedLight* awaited) const {
     Rng rng(stream_seed(sampler.get_1d()));
     if (deferred) deferred->medium = nullptr;
     ray.direction = glm::normalize(ray.direction);
@@ -477,6 +478,16 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
             continue;
         }
         // The first surface that is not purely specular: direct light through the media.
+        if (awaited) {
+            awaited->waiting = true;
+            awaited->medium = medium;
+            awaited->rng = rng;
+            awaited->L = L;
+            awaited->beta = beta;
+            awaited->si = &si;
+            awaited->bsdf = bsdf;
+            return Spectrum(0.0f);
+        }
         Spectrum direct(0.0f);
         if (const std::optional<DirectLight> light = sample_direct_light(
                 scene, si, *bsdf, si.to_local(si.wo), sampler, LightWeighting::kNone)) {
@@ -489,6 +500,31 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                beta * indirect_estimate(scene, si, *bsdf, direct, sampler, arena, counter, cache);
     }
     return L;
+}
+
+bool PreviewIntegrator::sample_awaited_light(const Scene& scene, AwaitedLight& awaited,
+                                             Sampler& sampler, RayCounter& counter) const {
+    const SurfaceInteraction& si = *awaited.si;
+    const std::optional<DirectLight> light = sample_direct_light(
+        scene, si, *awaited.bsdf, si.to_local(si.wo), sampler, LightWeighting::kNone);
+    if (!light) {
+        awaited.contribution = Spectrum(0.0f);
+        return false;
+    }
+    ++counter.rays;
+    awaited.shadow = Scene::shadow_ray(si, light->target);
+    awaited.shadow_medium = medium_beyond(si, light->target - si.p, awaited.medium);
+    awaited.contribution = light->contribution;
+    return true;
+}
+
+Spectrum PreviewIntegrator::finish_awaited(const Scene& scene, const AwaitedLight& awaited,
+                                           const Spectrum& transmittance, Sampler& sampler,
+                                           Arena& arena, RayCounter& counter,
+                                           HashGrid::Cache& cache) const {
+    const Spectrum direct = awaited.contribution * transmittance;
+    return awaited.L + awaited.beta * indirect_estimate(scene, *awaited.si, *awaited.bsdf, direct,
+                                                        sampler, arena, counter, cache);
 }
 
 // A pass in media, in three sweeps over the film, each pixel's work depending only on (seed,
@@ -526,6 +562,7 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
         PerLane<Ray> rays, unit_rays;
         PerLane<SurfaceInteraction> surfaces;
         PerLane<PassedSurfaces> passed;
+        PerLane<AwaitedLight> awaited;
         for (int y0 = rows.begin(); y0 < rows.end(); y0 += kBlockHeight) {
             for (int x0 = 0; x0 < w; x0 += kBlockWidth) {
                 uint32_t active = 0;
@@ -545,9 +582,11 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                 }
                 const uint32_t hit =
                     scene.intersect_surface_packet_passing(ray_of, active, si_of, passed, true);
+                // The lanes' BSDFs live until their shadow rays are traced, after the loop.
+                arena.reset();
+                uint32_t waiting = 0;
                 for_each_lane(active, [&](int lane) {
                     const int x = x0 + lane % kBlockWidth, y = y0 + lane / kBlockWidth;
-                    arena.reset();
                     std::optional<SecondaryWavelengthsScope> terminated;
                     if (wavelengths != nullptr) terminated.emplace();
                     PixelRest& rest = m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) +
@@ -556,11 +595,43 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                     leg.medium = nullptr;
                     const FirstTraversal first{((hit >> lane) & 1u) != 0, &surfaces[lane],
                                                &passed[lane]};
+                    // Spectral paths keep their wavelengths' state (a thread's): they trace
+                    // their shadow rays alone, at once.
+                    AwaitedLight* awaits = wavelengths == nullptr ? &awaited[lane] : nullptr;
+                    if (awaits) awaits->waiting = false;
                     rest.L = camera_sample_in_media(
                         scene, film.origin() + Vec2i(x, y), rays[lane], samplers[lane], arena,
-                        counter, cache, m_preview.fog_interleave ? &leg : nullptr, &first);
+                        counter, cache, m_preview.fog_interleave ? &leg : nullptr, &first, awaits);
+                    if (awaits && awaits->waiting) waiting |= 1u << lane;
                     rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
                     m_fog.finish_leg(x, y);
+                });
+                if (waiting == 0) continue;
+                // The direct light's samples in a row, their shadow rays (towards one light
+                // from neighbouring surfaces) as packets; then each path finishes as it
+                // would have alone.
+                PerLane<Scene::ShadowRay> shadows;
+                PerLane<const Medium*> shadow_media{};
+                PerLane<Rng*> streams{};
+                uint32_t shadowed = 0;
+                for_each_lane(waiting, [&](int lane) {
+                    AwaitedLight& light = awaited[lane];
+                    if (!sample_awaited_light(scene, light, samplers[lane], counter)) return;
+                    shadows[lane] = light.shadow;
+                    shadow_media[lane] = light.shadow_medium;
+                    streams[lane] = &light.rng;
+                    shadowed |= 1u << lane;
+                });
+                PerLane<Spectrum> transmittances;
+                transmittance_packet(scene, shadows, shadow_media, streams, shadowed,
+                                     transmittances);
+                for_each_lane(waiting & ~shadowed,
+                              [&](int lane) { transmittances[lane] = Spectrum(1.0f); });
+                for_each_lane(waiting, [&](int lane) {
+                    const int x = x0 + lane % kBlockWidth, y = y0 + lane / kBlockWidth;
+                    m_rest[static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x)]
+                        .L = finish_awaited(scene, awaited[lane], transmittances[lane],
+                                            samplers[lane], arena, counter, cache);
                 });
             }
         }

@@ -9,6 +9,20 @@ namespace {
 // against a ray trapped between coincident surfaces).
 constexpr int kMaxInterfaceCrossings = 256;
 
+// The transmittance of the legs of a shadow ray that nothing blocks, between the interfaces
+// it crosses (`passed`, in order), starting in `medium`; `pass` as `passing` below.
+Spectrum transmittance_of_legs(const Scene& scene, const Ray& ray, const PassedSurfaces& passed,
+                               const Medium* medium, Rng& draws, Spectrum& pass) {
+    Spectrum T(1.0f);
+    walk_legs(scene, ray, passed, kShadowRayEnd, medium, [&](const Ray& leg, float length) {
+        const Spectrum factor = medium->transmittance(leg, length, draws);
+        T *= factor;
+        if (samples_distances(*medium)) pass *= factor;
+        return !T.is_black();
+    });
+    return T;
+}
+
 }  // namespace
 
 Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::ShadowRay& shadow,
@@ -29,8 +43,8 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
         const Ray ray{shadow.origin, shadow.direction, 0.0f, kShadowRayEnd, shadow.time};
         if (const std::optional<bool> blocked = scene.accel().occluded_passing(ray, passed)) {
             if (*blocked) return Spectrum(0.0f);
-            if (walk_legs(scene, ray, passed, kShadowRayEnd, medium, take_leg) && passing)
-                *passing = pass;
+            T = transmittance_of_legs(scene, ray, passed, medium, draws, pass);
+            if (!T.is_black() && passing) *passing = pass;
             return T;
         }
     }
@@ -56,6 +70,65 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
         origin = offset_ray_origin(si.p, si.ng, ray.direction);
     }
     return Spectrum(0.0f);
+}
+
+void transmittance_packet(const Scene& scene, const PerLane<Scene::ShadowRay>& shadows,
+                          const PerLane<const Medium*>& media, const PerLane<Rng*>& rngs,
+                          uint32_t active, PerLane<Spectrum>& T) {
+    PerLane<Vec3> origins, directions;
+    PerLane<float> times;
+    for_each_lane(active, [&](int lane) {
+        origins[lane] = shadows[lane].origin;
+        directions[lane] = shadows[lane].direction;
+        times[lane] = shadows[lane].time;
+    });
+    // As transmittance() per lane: Embree's occlusion query alone first where it may tell
+    // (no interfaces and no medium; or a medium, and nothing at all in the way).
+    uint32_t plain = 0;
+    for_each_lane(active, [&](int lane) {
+        if (media[lane] || !scene.has_interfaces()) plain |= 1u << lane;
+    });
+    uint32_t walked = active & ~plain;  // lanes left to transmittance_through_interfaces
+    if (plain != 0) {
+        const uint32_t blocked = scene.occluded_packet(origins, directions, times, plain, true);
+        for_each_lane(plain, [&](int lane) {
+            const bool is_blocked = (blocked >> lane) & 1u;
+            if (!media[lane]) {
+                T[lane] = Spectrum(is_blocked ? 0.0f : 1.0f);
+            } else if (is_blocked) {
+                walked |= 1u << lane;
+            } else {
+                Rng fixed_stream;
+                const Ray ray{origins[lane], directions[lane], 0.0f, kShadowRayEnd, times[lane]};
+                T[lane] = media[lane]->transmittance(ray, kShadowRayEnd,
+                                                     rngs[lane] ? *rngs[lane] : fixed_stream);
+            }
+        });
+    }
+    if (walked == 0) return;
+    // transmittance_through_interfaces()'s any-hit traversal, for the lanes together.
+    uint32_t alone = walked;
+    if (scene.interfaces_skippable()) {
+        PerLane<PassedSurfaces> passed;
+        uint32_t overflowed = 0;
+        const uint32_t blocked = scene.accel().occluded_packet_passing(
+            origins, directions, times, kShadowRayEnd, walked, passed, overflowed, true);
+        alone = overflowed;
+        for_each_lane(walked & ~overflowed, [&](int lane) {
+            if ((blocked >> lane) & 1u) {
+                T[lane] = Spectrum(0.0f);
+                return;
+            }
+            Rng fixed_stream;
+            Spectrum pass(1.0f);
+            const Ray ray{origins[lane], directions[lane], 0.0f, kShadowRayEnd, times[lane]};
+            T[lane] = transmittance_of_legs(scene, ray, passed[lane], media[lane],
+                                            rngs[lane] ? *rngs[lane] : fixed_stream, pass);
+        });
+    }
+    for_each_lane(alone, [&](int lane) {
+        T[lane] = transmittance_through_interfaces(scene, shadows[lane], media[lane], rngs[lane]);
+    });
 }
 
 }  // namespace glint

@@ -50,6 +50,13 @@ inline bool samples_distances(const Medium& medium) {
     return transmittance_through_interfaces(scene, shadow, medium, rng);
 }
 
+/// transmittance() for the shadow rays of the lanes set in `active`, traced as packets
+/// (coherent ones: from neighbouring pixels towards one light): lane i's in T[i], the same
+/// value transmittance(scene, shadows[i], media[i], rngs[i]) gives, drawing the same.
+void transmittance_packet(const Scene& scene, const PerLane<Scene::ShadowRay>& shadows,
+                          const PerLane<const Medium*>& media, const PerLane<Rng*>& rngs,
+                          uint32_t active, PerLane<Spectrum>& T);
+
 /// The transmittance from `si` (its origin offset as spawn_ray's) to just short of `target`.
 [[gnu::always_inline]] inline Spectrum transmittance(const Scene& scene,
                                                      const SurfaceInteraction& si,
