@@ -48,7 +48,10 @@ struct VolumePhoton {
 /// The volume photons of one pass as the camera sees them: binned by tiles of the film.
 class VolumePhotonView {
 public:
-    static constexpr int kTile = 16;  ///< pixels per tile side
+    /// Pixels per tile side. A photon's footprint is about 20 pixels wide at 640 x 480: tiles
+    /// of 8 test a quarter fewer photons per pixel than tiles of 16 (the whole frame 1 %
+    /// fewer instructions), for more bin entries; 4 gains 0.3 % more.
+    static constexpr int kTile = 8;
 
     /// Sees `batches` (each an estimate on its own; in spectral mode only the photons of set
     /// `only_set` are read, else every set: pass -1) from the camera of `scene`, which sits
