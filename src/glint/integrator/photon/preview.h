@@ -174,9 +174,10 @@ private:
     // With `awaited` (not null) a path that reaches its first surface that is not purely
     // specular returns there with awaited->waiting set; sample_awaited_light() and then
     // finish_awaited() give its light.
-    Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray, Sampler& sampler,
-                                    Arena& arena, RayCounter& counter, HashGrid::Cache& cache,
-                                    DeferredLeg* deferred, const FirstTraversal* first = nullptr,
+    Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, const Ray& camera_ray,
+                                    Sampler& sampler, Arena& arena, RayCounter& counter,
+                                    HashGrid::Cache& cache, DeferredLeg* deferred,
+                                    const FirstTraversal* first = nullptr,
                                     AwaitedLight* awaited = nullptr) const;
     // The direct light's sample; true when it needs a shadow ray.
     bool sample_awaited_light(const Scene& scene, AwaitedLight& awaited, Sampler& sampler,

@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <new>
 
 namespace glint {
 namespace {
@@ -397,18 +398,23 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
 // (in_scattering) and takes on the transmittance; the primary ray, up to the first surface
 // that is not an interface, gathers the volume photons. Direct light at the surface sees
 // the media its shadow ray crosses. The draws come from a PassSampler: their number varies.
-Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel, Ray ray,
-                                                   Sampler& sampler, Arena& arena,
-                                                   RayCounter& counter, HashGrid::Cache& cache,
-                                                   DeferredLeg* deferred,
+// `ray` comes with a unit direction: normalised here, just before the walk reads it, the
+// direction's stores stalled the loads that followed (2 % of the frame).
+Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel,
+                                                   const Ray& camera_ray, Sampler& sampler,
+                                                   Arena& arena, RayCounter& counter,
+                                                   HashGrid::Cache& cache, DeferredLeg* deferred,
                                                    const FirstTraversal* first,
                                                    AwaitedLight* awaited) const {
     Rng rng(stream_seed(sampler.get_1d()));
     if (deferred) deferred->medium = nullptr;
-    ray.direction = glm::normalize(ray.direction);
     // The primary ray's line for the volume photons (not a copy of the Ray: its
-    // differentials are not needed, and copying them just after the write above stalled).
-    const Vec3 primary_origin = ray.origin, primary_direction = ray.direction;
+    // differentials are not needed).
+    const Vec3 primary_origin = camera_ray.origin, primary_direction = camera_ray.direction;
+    // The path's current ray: the camera's, until the path spawns one (not copied: the copy
+    // of a Ray just written by the caller stalled the loads that followed).
+    Ray spawned;
+    const Ray* ray = &camera_ray;
     float primary_reach = 0.0f;  // along the primary ray, to the surface being tested
     bool on_primary = true;
     const Medium* medium = m_media->camera;
@@ -421,11 +427,11 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
         ++counter.rays;
         // One traversal past the interfaces it can skip: they split the ray into legs, each
         // in the medium the last one leads into. The first may be traced already.
-        const bool hit = first ? first->hit : scene.intersect_surface_passing(ray, si, passed);
+        const bool hit = first ? first->hit : scene.intersect_surface_passing(*ray, si, passed);
         first = nullptr;
         const float t_end = hit ? si.t : kInfinity;
         // The light each leg gathers in its medium, and its transmittance.
-        walk_legs(scene, ray, passed, t_end, medium, [&](const Ray& leg, float length) {
+        walk_legs(scene, *ray, passed, t_end, medium, [&](const Ray& leg, float length) {
             if (medium->scatters()) {
                 if (on_primary && deferred && !deferred->medium) {
                     // The primary ray's first leg in fog: render_media_pass estimates it.
@@ -434,7 +440,7 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                     deferred->time = leg.time;
                     deferred->length = length;
                     deferred->start =
-                        primary_reach + glm::dot(leg.origin - ray.origin, ray.direction);
+                        primary_reach + glm::dot(leg.origin - ray->origin, ray->direction);
                     deferred->medium = medium;
                     deferred->beta = beta;
                 } else {
@@ -454,16 +460,17 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                                         hit ? primary_reach : kInfinity);
             on_primary = false;
         }
-        if (!hit) return L + beta * scene.escaped_radiance(ray.direction);
+        if (!hit) return L + beta * scene.escaped_radiance(ray->direction);
         if (beta.is_black()) return L;
         if (interface) {
-            medium = medium_beyond(si, ray.direction, medium);
-            ray = spawn_ray(si, ray.direction);
+            medium = medium_beyond(si, ray->direction, medium);
+            spawned = spawn_ray(si, ray->direction);
+            ray = &spawned;
             if (++crossings > kMaxCrossings) return L;
             continue;
         }
         L += beta * emitted_radiance(si);
-        const Bsdf* bsdf = shade(scene, ray, si, arena);
+        const Bsdf* bsdf = shade(scene, *ray, si, arena);
         if (!bsdf) return L;
         if (bsdf->is_delta()) {
             const std::optional<Scattering> scattering = sample_scattering(
@@ -471,9 +478,11 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
             if (!scattering) return L;
             beta *= scattering->weight;
             medium = medium_beyond(si, scattering->wi, medium);
-            ray = spawn_specular_ray(si, ray, scattering->wi, scattering->sample.is_transmission(),
-                                     scattering->sample.eta);
-            ray.direction = glm::normalize(ray.direction);
+            spawned =
+                spawn_specular_ray(si, *ray, scattering->wi, scattering->sample.is_transmission(),
+                                   scattering->sample.eta);
+            spawned.direction = glm::normalize(spawned.direction);
+            ray = &spawned;
             ++segment;
             continue;
         }
@@ -559,7 +568,7 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
         // goes on alone: the same draws, hits and light as one ray at a time.
         PerLane<PassSampler> samplers;
         for (PassSampler& sampler : samplers) sampler.set_seed(m_settings.seed);
-        PerLane<Ray> rays, unit_rays;
+        PerLane<Ray> rays;
         PerLane<SurfaceInteraction> surfaces;
         PerLane<PassedSurfaces> passed;
         PerLane<AwaitedLight> awaited;
@@ -571,15 +580,19 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                 for (int lane = 0; lane < kPacketWidth; ++lane) {
                     const int x = x0 + lane % kBlockWidth, y = y0 + lane / kBlockWidth;
                     if (x >= w || y >= rows.end()) continue;
-                    rays[lane] =
-                        pass_camera_ray(scene, samplers[lane], film.origin() + Vec2i(x, y), pass);
-                    // Traced with the unit direction camera_sample_in_media() gives it.
-                    unit_rays[lane] = rays[lane];
-                    unit_rays[lane].direction = glm::normalize(rays[lane].direction);
-                    ray_of[lane] = &unit_rays[lane];
+                    // Made in place (a copy read the new ray back at once, and waited for
+                    // the camera's stores to complete).
+                    new (&rays[lane]) Ray(
+                        pass_camera_ray(scene, samplers[lane], film.origin() + Vec2i(x, y), pass));
+                    ray_of[lane] = &rays[lane];
                     si_of[lane] = &surfaces[lane];
                     active |= 1u << lane;
                 }
+                // Traced with the unit direction camera_sample_in_media() takes; normalised
+                // once every lane's ray is made, for the same reason.
+                for_each_lane(active, [&](int lane) {
+                    rays[lane].direction = glm::normalize(rays[lane].direction);
+                });
                 const uint32_t hit =
                     scene.intersect_surface_packet_passing(ray_of, active, si_of, passed, true);
                 // The lanes' BSDFs live until their shadow rays are traced, after the loop.
@@ -604,7 +617,11 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                         counter, cache, m_preview.fog_interleave ? &leg : nullptr, &first, awaits);
                     if (awaits && awaits->waiting) waiting |= 1u << lane;
                     rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
-                    m_fog.finish_leg(x, y);
+                });
+                // The legs' keys, read once their stores have long completed (read at once,
+                // they waited for them).
+                for_each_lane(active, [&](int lane) {
+                    m_fog.finish_leg(x0 + lane % kBlockWidth, y0 + lane / kBlockWidth);
                 });
                 if (waiting == 0) continue;
                 // The direct light's samples in a row, their shadow rays (towards one light
@@ -615,12 +632,15 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                 PerLane<Rng*> streams{};
                 uint32_t shadowed = 0;
                 for_each_lane(waiting, [&](int lane) {
-                    AwaitedLight& light = awaited[lane];
-                    if (!sample_awaited_light(scene, light, samplers[lane], counter)) return;
-                    shadows[lane] = light.shadow;
-                    shadow_media[lane] = light.shadow_medium;
-                    streams[lane] = &light.rng;
-                    shadowed |= 1u << lane;
+                    if (sample_awaited_light(scene, awaited[lane], samplers[lane], counter))
+                        shadowed |= 1u << lane;
+                });
+                // Gathered once all are sampled (read back at once, a sample waited for its
+                // stores to complete).
+                for_each_lane(shadowed, [&](int lane) {
+                    shadows[lane] = awaited[lane].shadow;
+                    shadow_media[lane] = awaited[lane].shadow_medium;
+                    streams[lane] = &awaited[lane].rng;
                 });
                 PerLane<Spectrum> transmittances;
                 transmittance_packet(scene, shadows, shadow_media, streams, shadowed,
