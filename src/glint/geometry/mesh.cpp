@@ -85,8 +85,7 @@ TriangleMesh::TriangleMesh(std::string name, MeshData data) : m_name(std::move(n
     if (m_data.normals.empty()) {
         m_flat_shading.reserve(m_frames.size());
         for (const TriangleFrame& frame : m_frames) {
-            const Frame shading = Frame::from_normal_tangent(frame.ng, frame.dpdu);
-            m_flat_shading.push_back({shading.s(), shading.t()});
+            m_flat_shading.push_back(Frame::from_normal_tangent(frame.ng, frame.dpdu));
         }
     }
 }
@@ -126,8 +125,7 @@ TriangleMesh::TriangleFrame TriangleMesh::frame_of(const Vec3& p0, const Vec3& p
 size_t TriangleMesh::memory_bytes() const {
     return m_data.positions.capacity() * sizeof(Vec3) + m_data.normals.capacity() * sizeof(Vec3) +
            m_data.uvs.capacity() * sizeof(Vec2) + m_data.indices.capacity() * sizeof(uint32_t) +
-           m_frames.capacity() * sizeof(TriangleFrame) +
-           m_flat_shading.capacity() * sizeof(FlatShading) +
+           m_frames.capacity() * sizeof(TriangleFrame) + m_flat_shading.capacity() * sizeof(Frame) +
            m_data.position_keys.size() * m_data.positions.size() * sizeof(Vec3);
 }
 
@@ -179,8 +177,7 @@ void TriangleMesh::fill_interaction(const Ray& ray, const HitRecord& hit,
     }
 
     if (m_data.normals.empty()) {
-        const FlatShading& flat = m_flat_shading[hit.primitive];
-        si.shading = Frame(flat.s, flat.t, ng);
+        si.shading = m_flat_shading[hit.primitive];  // its normal is ng
     } else {
         Vec3 ns = ng;
         const Vec3 interpolated =

@@ -59,12 +59,11 @@ private:
     std::string m_name;
     MeshData m_data;
     std::vector<TriangleFrame> m_frames;  // one per triangle
-    // Without vertex normals the shading frame is constant over a triangle too: its two
-    // tangents (24 bytes per triangle, only for such meshes) around TriangleFrame::ng.
-    struct FlatShading {
-        Vec3 s, t;
-    };
-    std::vector<FlatShading> m_flat_shading;
+    // Without vertex normals the shading frame is constant over a triangle too: kept whole
+    // (36 bytes per triangle, only for such meshes), so that a hit copies it from memory
+    // written long before. Built from its parts at each hit, it went through a temporary
+    // whose reads waited for its stores to land (1 % of the preview in fog).
+    std::vector<Frame> m_flat_shading;
     Bounds3 m_bounds;
     bool m_placed_by_transform = false;  // to_object is not the identity (checked once)
 };
