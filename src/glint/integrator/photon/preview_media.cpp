@@ -521,7 +521,8 @@ bool PreviewIntegrator::sample_awaited_light(const Scene& scene, AwaitedLight& a
         return false;
     }
     ++counter.rays;
-    awaited.shadow = Scene::shadow_ray(si, light->target);
+    // Made in place (a copy of the returned ray read it back at once, and waited).
+    new (&awaited.shadow) Scene::ShadowRay(Scene::shadow_ray(si, light->target));
     awaited.shadow_medium = medium_beyond(si, light->target - si.p, awaited.medium);
     awaited.contribution = light->contribution;
     return true;

@@ -167,10 +167,12 @@ template <typename SamplerType = Sampler>
     float bsdf_pdf;
     if (!bsdf_towards_light(*ls, si, bsdf, wo_local, f_cos, bsdf_pdf)) return std::nullopt;
     const float light_pdf = choice.pmf * ls->pdf;
+    // Made in place in the optional (from a temporary, the copy read it back at once and
+    // waited for its stores).
     if (ls->is_delta || weighting == LightWeighting::kNone)
-        return DirectLight{f_cos * ls->L / light_pdf, ls->p};
+        return std::optional<DirectLight>(std::in_place, f_cos * ls->L / light_pdf, ls->p);
     const float weight = power_heuristic(light_pdf, bsdf_pdf);
-    return DirectLight{f_cos * ls->L * (weight / light_pdf), ls->p};
+    return std::optional<DirectLight>(std::in_place, f_cos * ls->L * (weight / light_pdf), ls->p);
 }
 
 /// sample_direct_light, with its shadow ray traced (and counted): the direct light arriving
