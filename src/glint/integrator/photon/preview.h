@@ -166,22 +166,24 @@ private:
         Spectrum L{0.0f}, beta{0.0f};
         const SurfaceInteraction* si = nullptr;
         const Bsdf* bsdf = nullptr;
-        // Set by sample_awaited_light:
+        // Set by sample_awaited_lights:
         Scene::ShadowRay shadow;
         const Medium* shadow_medium = nullptr;  // where the shadow ray starts
         Spectrum contribution{0.0f};            // 0: no light sample
     };
     // With `awaited` (not null) a path that reaches its first surface that is not purely
-    // specular returns there with awaited->waiting set; sample_awaited_light() and then
+    // specular returns there with awaited->waiting set; sample_awaited_lights() and then
     // finish_awaited() give its light.
     Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, const Ray& camera_ray,
                                     Sampler& sampler, Arena& arena, RayCounter& counter,
                                     HashGrid::Cache& cache, DeferredLeg* deferred,
                                     const FirstTraversal* first = nullptr,
                                     AwaitedLight* awaited = nullptr) const;
-    // The direct light's sample; true when it needs a shadow ray.
-    bool sample_awaited_light(const Scene& scene, AwaitedLight& awaited, Sampler& sampler,
-                              RayCounter& counter) const;
+    // The direct light's samples of the `waiting` lanes; returns those that need a shadow
+    // ray.
+    uint32_t sample_awaited_lights(const Scene& scene, uint32_t waiting,
+                                   PerLane<AwaitedLight>& awaited, PerLane<PassSampler>& samplers,
+                                   RayCounter& counter) const;
     Spectrum finish_awaited(const Scene& scene, const AwaitedLight& awaited,
                             const Spectrum& transmittance, Sampler& sampler, Arena& arena,
                             RayCounter& counter, HashGrid::Cache& cache) const;

@@ -511,21 +511,37 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
     return L;
 }
 
-bool PreviewIntegrator::sample_awaited_light(const Scene& scene, AwaitedLight& awaited,
-                                             Sampler& sampler, RayCounter& counter) const {
-    const SurfaceInteraction& si = *awaited.si;
-    const std::optional<DirectLight> light = sample_direct_light(
-        scene, si, *awaited.bsdf, si.to_local(si.wo), sampler, LightWeighting::kNone);
-    if (!light) {
-        awaited.contribution = Spectrum(0.0f);
-        return false;
-    }
-    ++counter.rays;
-    // Made in place (a copy of the returned ray read it back at once, and waited).
-    new (&awaited.shadow) Scene::ShadowRay(Scene::shadow_ray(si, light->target));
-    awaited.shadow_medium = medium_beyond(si, light->target - si.p, awaited.medium);
-    awaited.contribution = light->contribution;
-    return true;
+// In two loops: every lane's light point first, so that the lights' chains of square
+// roots and divisions overlap from lane to lane, then the BSDF towards each. Each lane draws
+// what sample_direct_light draws, in the same order.
+uint32_t PreviewIntegrator::sample_awaited_lights(const Scene& scene, uint32_t waiting,
+                                                  PerLane<AwaitedLight>& awaited,
+                                                  PerLane<PassSampler>& samplers,
+                                                  RayCounter& counter) const {
+    PerLane<LightPoint> points;
+    for_each_lane(waiting, [&](int lane) {
+        // Made in place: the light's sample is read where the light wrote it.
+        new (&points[lane])
+            LightPoint(draw_direct_light_point(scene, *awaited[lane].si, samplers[lane]));
+    });
+    uint32_t shadowed = 0;
+    for_each_lane(waiting, [&](int lane) {
+        AwaitedLight& at = awaited[lane];
+        const SurfaceInteraction& si = *at.si;
+        const std::optional<DirectLight> light = direct_light_from(
+            points[lane], si, *at.bsdf, si.to_local(si.wo), LightWeighting::kNone);
+        if (!light) {
+            at.contribution = Spectrum(0.0f);
+            return;
+        }
+        ++counter.rays;
+        // Made in place (a copy of the returned ray read it back at once, and waited).
+        new (&at.shadow) Scene::ShadowRay(Scene::shadow_ray(si, light->target));
+        at.shadow_medium = medium_beyond(si, light->target - si.p, at.medium);
+        at.contribution = light->contribution;
+        shadowed |= 1u << lane;
+    });
+    return shadowed;
 }
 
 Spectrum PreviewIntegrator::finish_awaited(const Scene& scene, const AwaitedLight& awaited,
@@ -631,11 +647,8 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                 PerLane<Scene::ShadowRay> shadows;
                 PerLane<const Medium*> shadow_media{};
                 PerLane<Rng*> streams{};
-                uint32_t shadowed = 0;
-                for_each_lane(waiting, [&](int lane) {
-                    if (sample_awaited_light(scene, awaited[lane], samplers[lane], counter))
-                        shadowed |= 1u << lane;
-                });
+                const uint32_t shadowed =
+                    sample_awaited_lights(scene, waiting, awaited, samplers, counter);
                 // Gathered once all are sampled (read back at once, a sample waited for its
                 // stores to complete).
                 for_each_lane(shadowed, [&](int lane) {

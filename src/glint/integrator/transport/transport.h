@@ -149,17 +149,14 @@ struct DirectLight {
 /// traces the shadow ray (the path tracer traces several paths' together). `SamplerType` is
 /// Sampler, or a final sampler class where the caller knows which one it has (its draws are
 /// then direct calls, inlined).
-template <typename SamplerType = Sampler>
-[[gnu::always_inline]] inline std::optional<DirectLight> sample_direct_light(
-    const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
-    SamplerType& sampler, LightWeighting weighting) {
-    // 2D first: the Sobol sampler hands out a 2D value and two 1D values per index shuffle.
-    const Vec2 u = sampler.get_2d();
-    const float u_light = sampler.get_1d();
-    const float u_select = sampler.get_1d();
+/// The second half of sample_direct_light: the estimate from the light point it drew (for
+/// callers that draw several points before evaluating any, so that the lights' chains of
+/// square roots and divisions overlap).
+[[gnu::always_inline]] inline std::optional<DirectLight> direct_light_from(
+    const LightPoint& point, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
+    LightWeighting weighting) {
     // The light's sample is read where the light wrote it, never copied as a whole: a copy
     // right after the light's stores stalls the CPU (see sample_scattering).
-    const LightPoint point = sample_light_point(scene, si.p, si.shading.n(), u, u_light, u_select);
     const std::optional<LightSample>& ls = point.sample;
     if (!ls || ls->L.is_black()) return std::nullopt;
     const LightSampler::Choice& choice = point.choice;
@@ -173,6 +170,26 @@ template <typename SamplerType = Sampler>
         return std::optional<DirectLight>(std::in_place, f_cos * ls->L / light_pdf, ls->p);
     const float weight = power_heuristic(light_pdf, bsdf_pdf);
     return std::optional<DirectLight>(std::in_place, f_cos * ls->L * (weight / light_pdf), ls->p);
+}
+
+/// The light point sample_direct_light draws, with its draws.
+template <typename SamplerType = Sampler>
+[[gnu::always_inline]] inline LightPoint draw_direct_light_point(const Scene& scene,
+                                                                 const SurfaceInteraction& si,
+                                                                 SamplerType& sampler) {
+    // 2D first: the Sobol sampler hands out a 2D value and two 1D values per index shuffle.
+    const Vec2 u = sampler.get_2d();
+    const float u_light = sampler.get_1d();
+    const float u_select = sampler.get_1d();
+    return sample_light_point(scene, si.p, si.shading.n(), u, u_light, u_select);
+}
+
+template <typename SamplerType = Sampler>
+[[gnu::always_inline]] inline std::optional<DirectLight> sample_direct_light(
+    const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
+    SamplerType& sampler, LightWeighting weighting) {
+    const LightPoint point = draw_direct_light_point(scene, si, sampler);
+    return direct_light_from(point, si, bsdf, wo_local, weighting);
 }
 
 /// sample_direct_light, with its shadow ray traced (and counted): the direct light arriving
