@@ -399,8 +399,8 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
 // (in_scattering) and takes on the transmittance; the primary ray, up to the first surface
 // that is not an interface, gathers the volume photons. Direct light at the surface sees
 // the media its shadow ray crosses. The draws come from a PassSampler: their number varies.
-// `ray` comes with a unit direction: normalised here, just before the walk reads it, the
-// direction's stores stalled the loads that followed (2 % of the frame).
+// `camera_ray` comes with a unit direction: normalised here, just before the walk read it,
+// the direction's stores stalled the loads that followed (2 % of the frame).
 Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel,
                                                    const Ray& camera_ray, Sampler& sampler,
                                                    Arena& arena, RayCounter& counter,
