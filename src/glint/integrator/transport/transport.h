@@ -140,15 +140,6 @@ struct DirectLight {
     Vec3 target;            ///< the point on the light; transmittance(scene, si, target) decides
 };
 
-/// Next-event estimation, the one estimator of direct light that every integrator uses: a
-/// light chosen for the point (LightChoice::kForPoint), a point on it, the BSDF towards it. The
-/// sample draws are, in this order: a 2D value for the point on the light, a 1D value choosing the
-/// light, a 1D value choosing a part of it (triangle or side) -- three values that a Sobol
-/// sampler serves from one group. They are drawn even when the estimate turns out empty, so
-/// later draws do not depend on it. nullopt when the sample contributes nothing; the caller
-/// traces the shadow ray (the path tracer traces several paths' together). `SamplerType` is
-/// Sampler, or a final sampler class where the caller knows which one it has (its draws are
-/// then direct calls, inlined).
 /// The second half of sample_direct_light: the estimate from the light point it drew (for
 /// callers that draw several points before evaluating any, so that the lights' chains of
 /// square roots and divisions overlap).
@@ -184,6 +175,15 @@ template <typename SamplerType = Sampler>
     return sample_light_point(scene, si.p, si.shading.n(), u, u_light, u_select);
 }
 
+/// Next-event estimation, the one estimator of direct light that every integrator uses: a
+/// light chosen for the point (LightChoice::kForPoint), a point on it, the BSDF towards it. The
+/// sample draws are, in this order: a 2D value for the point on the light, a 1D value choosing the
+/// light, a 1D value choosing a part of it (triangle or side) -- three values that a Sobol
+/// sampler serves from one group. They are drawn even when the estimate turns out empty, so
+/// later draws do not depend on it. nullopt when the sample contributes nothing; the caller
+/// traces the shadow ray (the path tracer traces several paths' together). `SamplerType` is
+/// Sampler, or a final sampler class where the caller knows which one it has (its draws are
+/// then direct calls, inlined).
 template <typename SamplerType = Sampler>
 [[gnu::always_inline]] inline std::optional<DirectLight> sample_direct_light(
     const Scene& scene, const SurfaceInteraction& si, const Bsdf& bsdf, const Vec3& wo_local,
