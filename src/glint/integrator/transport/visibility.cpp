@@ -9,18 +9,17 @@ namespace {
 // against a ray trapped between coincident surfaces).
 constexpr int kMaxInterfaceCrossings = 256;
 
-// The transmittance of the legs of a shadow ray that nothing blocks, between the interfaces
-// it crosses (`passed`, in order), starting in `medium`; `pass` as `passing` below.
-Spectrum transmittance_of_legs(const Scene& scene, const Ray& ray, const PassedSurfaces& passed,
-                               const Medium* medium, Rng& draws, Spectrum& pass) {
-    Spectrum T(1.0f);
-    walk_legs(scene, ray, passed, kShadowRayEnd, medium, [&](const Ray& leg, float length) {
+// Takes on the transmittance of the legs of `ray` between the interfaces it crosses
+// (`passed`, in order) up to t_end, each in its medium (`medium` becomes the last leg's):
+// `T`, and `pass` as `passing` below, are multiplied leg by leg. False once T is black.
+bool take_legs(const Scene& scene, const Ray& ray, const PassedSurfaces& passed, float t_end,
+               const Medium*& medium, Rng& draws, Spectrum& T, Spectrum& pass) {
+    return walk_legs(scene, ray, passed, t_end, medium, [&](const Ray& leg, float length) {
         const Spectrum factor = medium->transmittance(leg, length, draws);
         T *= factor;
         if (samples_distances(*medium)) pass *= factor;
         return !T.is_black();
     });
-    return T;
 }
 
 }  // namespace
@@ -30,12 +29,6 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
     Rng fixed_stream;
     Rng& draws = rng ? *rng : fixed_stream;
     Spectrum T(1.0f), pass(1.0f);
-    const auto take_leg = [&](const Ray& leg, float length) {
-        const Spectrum factor = medium->transmittance(leg, length, draws);
-        T *= factor;
-        if (samples_distances(*medium)) pass *= factor;
-        return !T.is_black();
-    };
     PassedSurfaces passed;
     // Where Embree skips every interface, one any-hit traversal finds what blocks the ray
     // or else all it crosses: an opaque surface ends it early, as for any shadow ray.
@@ -43,8 +36,8 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
         const Ray ray{shadow.origin, shadow.direction, 0.0f, kShadowRayEnd, shadow.time};
         if (const std::optional<bool> blocked = scene.accel().occluded_passing(ray, passed)) {
             if (*blocked) return Spectrum(0.0f);
-            T = transmittance_of_legs(scene, ray, passed, medium, draws, pass);
-            if (!T.is_black() && passing) *passing = pass;
+            if (take_legs(scene, ray, passed, kShadowRayEnd, medium, draws, T, pass) && passing)
+                *passing = pass;
             return T;
         }
     }
@@ -59,7 +52,7 @@ Spectrum transmittance_through_interfaces(const Scene& scene, const Scene::Shado
         const bool hit = scene.intersect_surface_passing(ray, si, passed);
         if (hit && !si.material->is_interface()) return Spectrum(0.0f);
         const bool through =
-            walk_legs(scene, ray, passed, hit ? si.t : kShadowRayEnd, medium, take_leg);
+            take_legs(scene, ray, passed, hit ? si.t : kShadowRayEnd, medium, draws, T, pass);
         if (!through) return T;
         crossings += passed.count + 1;
         if (!hit) {
@@ -120,10 +113,12 @@ void transmittance_packet(const Scene& scene, const PerLane<Scene::ShadowRay>& s
                 return;
             }
             Rng fixed_stream;
-            Spectrum pass(1.0f);
+            Spectrum lane_T(1.0f), pass(1.0f);
+            const Medium* medium = media[lane];
             const Ray ray{origins[lane], directions[lane], 0.0f, kShadowRayEnd, times[lane]};
-            T[lane] = transmittance_of_legs(scene, ray, passed[lane], media[lane],
-                                            rngs[lane] ? *rngs[lane] : fixed_stream, pass);
+            take_legs(scene, ray, passed[lane], kShadowRayEnd, medium,
+                      rngs[lane] ? *rngs[lane] : fixed_stream, lane_T, pass);
+            T[lane] = lane_T;
         });
     }
     for_each_lane(alone, [&](int lane) {
