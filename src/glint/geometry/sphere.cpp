@@ -160,24 +160,31 @@ ShapeSample SphereSampler::sample(const Vec3& ref, const Vec2& u, float) const {
         s.pdf = area_to_solid_angle_pdf(1.0f / area(), ref, s.p, s.n);
         return s;
     }
+    // A direction uniform in the cone the sphere subtends, through x = 1 - cos(theta) with
+    // sin(theta) from x (for a distant sphere cos(theta) itself is only a few float steps
+    // below 1), and the point it reaches found from its angle alpha at the centre rather
+    // than by tracing the direction to the sphere: by the sine rule in the triangle ref,
+    // centre, point, with s = sin(theta) / sin(theta_max) (at most 1) and the near point,
+    // alpha = asin(s) - theta, so that
+    //   cos(alpha) = cos(theta) sqrt(1 - s^2) + s sin(theta),
+    //   sin(alpha) = sin(theta) (cos(theta) / sin(theta_max) - sqrt(1 - s^2)),
+    // neither of which cancels. A shorter chain of square roots and divisions than the
+    // traced point, which the renderer waits on at every light sample.
     const float dist = std::sqrt(dist2);
+    const float inverse_sin_max = dist / m_radius;
     const float one_minus_cos_max = one_minus_cos_cone(m_radius * m_radius / dist2);
-    // Uniform in the cone through x = 1 - cos(theta), with sin(theta) from x: for a distant
-    // sphere cos(theta) itself is only a few float steps below 1.
     const float x = u.x * one_minus_cos_max;
-    const float sin_theta = safe_sqrt(x * (2.0f - x));
+    const float sin2_theta = x * (2.0f - x);
+    const float sin_theta = std::sqrt(sin2_theta);
+    const float cos_theta = 1.0f - x;
+    const float s2 = sin2_theta * (inverse_sin_max * inverse_sin_max);
+    const float cos_beyond = safe_sqrt(1.0f - s2);  // sqrt(1 - s^2): cos(asin s)
+    const float cos_alpha = cos_theta * cos_beyond + sin2_theta * inverse_sin_max;
+    const float sin_alpha = std::max(sin_theta * (cos_theta * inverse_sin_max - cos_beyond), 0.0f);
     const float phi = 2.0f * kPi * u.y;
-    const Vec3 w(sin_theta * std::cos(phi), sin_theta * std::sin(phi), 1.0f - x);
+    // The normal: alpha away from the axis back towards ref, on the side of the direction.
     const Frame frame = Frame::from_normal(to_center / dist);
-    const Vec3 dir = frame.to_world(w);
-    // The first intersection of `dir` with the sphere. The squared distance of closest
-    // approach comes from the perpendicular vector, as dist2 - b * b cancels for a distant
-    // sphere; grazing directions at the rim, which round to a miss, land on the silhouette.
-    const float b = glm::dot(dir, to_center);
-    const Vec3 perp = to_center - b * dir;
-    const float t = b - safe_sqrt(m_radius * m_radius - glm::dot(perp, perp));
-    s.p = ref + t * dir;
-    s.n = glm::normalize(s.p - m_center);
+    s.n = frame.to_world(Vec3(sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), -cos_alpha));
     s.p = m_center + m_radius * s.n;
     s.pdf = 1.0f / (2.0f * kPi * one_minus_cos_max);
     return s;

@@ -2,6 +2,7 @@
 // one pixel per 2 x 2 block is picked, each in turn; a pixel reads only estimates of legs
 // like its own, so nothing crosses a silhouette; every pixel with a leg reads at least one
 // estimate; a smooth field comes back as it was.
+#include <glint/core/rng.h>
 #include <glint/integrator/photon/interleaved_fog.h>
 #include <glint/medium/homogeneous_medium.h>
 
@@ -159,4 +160,68 @@ TEST(InterleavedFog, LegsAreAlikeWithinFivePercent) {
     EXPECT_FALSE(InterleavedFog::alike(leg_of(fog_medium(), 0.0f, kInfinity),
                                        leg_of(fog_medium(), 0.0f, 1e30f)));
     EXPECT_FALSE(InterleavedFog::alike(leg_of(nullptr, 0.0f, 1.0f), leg_of(nullptr, 0.0f, 1.0f)));
+}
+
+// estimates() and reconstruct() against their definitions, neighbour by neighbour, on
+// random windows (odd sizes, so that blocks at the edges are cut), random picks and legs of
+// two media, none, and lengths that jump: the fast paths (the blocks' picked pixels only,
+// the estimated flags first) must give the same answers and the same bits.
+TEST(InterleavedFog, FastPathsAgreeWithTheDefinitions) {
+    Rng rng(0x6f67u);
+    const Medium* media[3] = {fog_medium(), smoke_medium(), nullptr};
+    int estimating = 0, sharing = 0;
+    for (int trial = 0; trial < 60; ++trial) {
+        const Vec2i size(1 + static_cast<int>(rng.next_float() * 13.0f),
+                         1 + static_cast<int>(rng.next_float() * 11.0f));
+        std::vector<DeferredLeg> legs;
+        for (int i = 0; i < size.x * size.y; ++i) {
+            const float u = rng.next_float();
+            legs.push_back(
+                leg_of(media[u < 0.6f   ? 0
+                             : u < 0.8f ? 1
+                                        : 2],
+                       1.0f, rng.next_float() < 0.7f ? 2.0f + 0.05f * rng.next_float() : 4.0f));
+        }
+        const auto leg = [&](int x, int y) { return legs[static_cast<size_t>(y * size.x + x)]; };
+        InterleavedFog fog;
+        run_pass(fog, size, trial, leg, [&](int x, int y) { return 1.0f + x + 0.37f * y; });
+        const auto inside = [&](int x, int y) {
+            return x >= 0 && y >= 0 && x < size.x && y < size.y;
+        };
+        for (int y = 0; y < size.y; ++y) {
+            for (int x = 0; x < size.x; ++x) {
+                bool expected = false;
+                if (leg(x, y).medium) {
+                    expected = fog.picked(x, y);
+                    bool neighbour_alike = false;
+                    for (int ny = y - 1; ny <= y + 1; ++ny)
+                        for (int nx = x - 1; nx <= x + 1; ++nx)
+                            if (inside(nx, ny) && fog.picked(nx, ny) &&
+                                InterleavedFog::alike(leg(x, y), leg(nx, ny)))
+                                neighbour_alike = true;
+                    expected = expected || !neighbour_alike;
+                }
+                ASSERT_EQ(fog.estimates(x, y), expected) << trial << ": " << x << ", " << y;
+                estimating += expected && !fog.picked(x, y);
+                // The mean of the alike neighbours that estimated, in row order.
+                Spectrum sum(0.0f);
+                int count = 0;
+                for (int ny = y - 1; ny <= y + 1; ++ny) {
+                    for (int nx = x - 1; nx <= x + 1; ++nx) {
+                        if (!inside(nx, ny) || !fog.estimates(nx, ny) ||
+                            !InterleavedFog::alike(leg(x, y), leg(nx, ny)))
+                            continue;
+                        sum += Spectrum(1.0f + nx + 0.37f * ny);
+                        ++count;
+                    }
+                }
+                sharing += count > 1;
+                const Spectrum mean = count > 0 ? sum / static_cast<float>(count) : Spectrum(0.0f);
+                ASSERT_EQ(fog.reconstruct(x, y).value(0), mean.value(0)) << x << ", " << y;
+            }
+        }
+    }
+    // Both ways out of estimates() and the mean over several were taken.
+    EXPECT_GT(estimating, 100);
+    EXPECT_GT(sharing, 100);
 }
