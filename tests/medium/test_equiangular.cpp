@@ -1,6 +1,7 @@
 // Equiangular distance sampling (medium/equiangular.h): chi-square of its distances against
 // its density over bins of the segment, for a light beside, ahead of and behind the ray's
-// start, on finite and infinite segments; the density integrates to one; degenerate cases
+// start (and far behind it, where the angles crowd near pi / 2), on finite and infinite
+// segments; the density integrates to one; degenerate cases
 // (the light on the ray's line, an empty segment) give no sampler.
 #include <glint/core/rng.h>
 #include <glint/medium/equiangular.h>
@@ -31,6 +32,9 @@ const Case kCases[] = {
     {"ahead of the end", Vec3(0.5f, 0.2f, 5.0f), 2.0f},
     {"behind the start", Vec3(0.0f, 1.0f, -2.0f), 4.0f},
     {"infinite segment", Vec3(0.2f, 0.1f, 1.5f), kInfinity},
+    // The segment subtends 1e-6 rad at an angle of almost pi/2: the spread of two angles
+    // there would keep about three bits.
+    {"far behind the start", Vec3(0.0f, 0.01f, -100.0f), 1.0f},
 };
 
 // The bins' edges: uniform over [0, t_end), or for an infinite segment uniform in the
@@ -38,8 +42,7 @@ const Case kCases[] = {
 float edge(const Case& c, const Equiangular& e, int b, int bins) {
     if (!std::isinf(c.t_end)) return c.t_end * static_cast<float>(b) / static_cast<float>(bins);
     if (b == bins) return kInfinity;
-    const float theta = e.theta_a + (e.theta_b - e.theta_a) * static_cast<float>(b) / bins;
-    return std::max(0.0f, e.delta + e.D * std::tan(theta));
+    return std::max(0.0f, e.sample(static_cast<float>(b) / static_cast<float>(bins)));
 }
 
 // The density's integral over [a, b) by Simpson's rule on 64 panels (a, b finite), or in
@@ -47,7 +50,7 @@ float edge(const Case& c, const Equiangular& e, int b, int bins) {
 double integral(const Equiangular& e, float a, float b) {
     if (std::isinf(b)) {
         const double theta_a = std::atan((static_cast<double>(a) - e.delta) / e.D);
-        return (0.5 * kPi - theta_a) / (static_cast<double>(e.theta_b) - e.theta_a);
+        return (0.5 * kPi - theta_a) / static_cast<double>(e.spread);
     }
     const int panels = 64;
     const double h = (static_cast<double>(b) - a) / panels;
@@ -98,10 +101,8 @@ TEST(Equiangular, ChiSquareSeesAWrongDensity) {
     const int n = 200000, bins = 40;
     const Case& c = kCases[0];
     const Equiangular e = *Equiangular::towards(kRay, c.light, c.t_end);
-    Equiangular wrong = e;
-    wrong.D *= 1.1f;
-    wrong.theta_a = std::atan2(-wrong.delta, wrong.D);
-    wrong.theta_b = std::atan2(c.t_end - wrong.delta, wrong.D);
+    const Equiangular wrong =
+        *Equiangular::towards(kRay, c.light * Vec3(1.1f, 1.1f, 1.0f), c.t_end);
     std::vector<int> counts(bins, 0);
     Rng rng(5);
     for (int i = 0; i < n; ++i) {

@@ -8,8 +8,14 @@
 //
 // Parametrised by the point's projection onto the ray (delta, the parameter of the closest
 // approach) and its distance D from the ray's line: t = delta + D tan(theta), theta uniform
-// between the angles of the segment's ends, density D / ((theta_b - theta_a) (D^2 +
-// (t - delta)^2)).
+// between the angles theta_a and theta_b of the segment's ends, density
+// D / ((theta_b - theta_a) (D^2 + (t - delta)^2)). Only the spread theta_b - theta_a is
+// kept, from one atan2 of the two ends' tangents (tan(b - a) from tan a and tan b), and a
+// draw phi = u (theta_b - theta_a) past theta_a becomes, by the tangent of a sum with
+// tan(theta_a) = -delta / D,
+//   t = tan(phi) (delta^2 + D^2) / (D + delta tan(phi)).
+// One arc tangent fewer per point than the angles themselves, and no difference of two
+// angles near pi / 2 (a light far behind the ray's start), which loses the spread's digits.
 #include <glint/core/ray.h>
 
 #include <cmath>
@@ -18,9 +24,10 @@
 namespace glint {
 
 struct Equiangular {
-    float delta = 0.0f;  ///< parameter of the ray's point closest to the light point
-    float D = 0.0f;      ///< the light point's distance from the ray's line (> 0)
-    float theta_a = 0.0f, theta_b = 0.0f;
+    float delta = 0.0f;      ///< parameter of the ray's point closest to the light point
+    float D = 0.0f;          ///< the light point's distance from the ray's line (> 0)
+    float spread = 0.0f;     ///< theta_b - theta_a, the angle the segment subtends (0, pi)
+    float distance2 = 0.0f;  ///< delta^2 + D^2: the light point's squared distance from the start
 
     /// Towards `light` along [0, t_end) of `ray` (unit direction; t_end may be infinite);
     /// nullopt where the light lies on the ray's line (no angle to spread over) or the
@@ -34,24 +41,30 @@ struct Equiangular {
         // Below about 1e-5 of the light's distance the angles round to +-pi/2.
         if (!(e.D > 1e-5f * std::abs(e.delta)) || !(e.D > 0.0f) || !(t_end > 0.0f))
             return std::nullopt;
-        e.theta_a = std::atan2(-e.delta, e.D);
-        // The float below pi/2: 0.5f * kPi rounds above it, where tan turns negative.
-        e.theta_b =
-            std::isinf(t_end) ? std::nextafter(0.5f * kPi, 0.0f) : std::atan2(t_end - e.delta, e.D);
-        if (!(e.theta_b > e.theta_a)) return std::nullopt;
+        e.distance2 = e.delta * e.delta + e.D * e.D;
+        // tan(theta_a) = -delta / D and tan(theta_b) = (t_end - delta) / D, so that
+        // tan(theta_b - theta_a) = t_end D / (D^2 - delta (t_end - delta)); towards an
+        // infinite end, D / -delta.
+        e.spread = std::isinf(t_end)
+                       ? std::atan2(e.D, -e.delta)
+                       : std::atan2(t_end * e.D, e.D * e.D - e.delta * (t_end - e.delta));
+        if (!(e.spread > 0.0f)) return std::nullopt;
         return e;
     }
 
     /// A distance for u in [0, 1); within [0, t_end] up to rounding (the caller clamps).
+    /// At the far end of an infinite segment it may come out infinite or negative (past
+    /// the angle's pole): clamping gives t_end there.
     float sample(float u) const {
-        const float theta = theta_a + u * (theta_b - theta_a);
-        return delta + D * std::tan(theta);
+        const float tan_phi = std::tan(u * spread);
+        const float t = tan_phi * distance2 / (D + delta * tan_phi);
+        return t < 0.0f ? kInfinity : t;
     }
 
     /// The density of sample() at t (inside the segment).
     float pdf(float t) const {
         const float offset = t - delta;
-        return D / ((theta_b - theta_a) * (D * D + offset * offset));
+        return D / (spread * (D * D + offset * offset));
     }
 };
 
