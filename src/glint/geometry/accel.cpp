@@ -219,8 +219,15 @@ void Accel::order_crossings(PassedSurfaces& passed, float end) {
         if (passed.count == 1 && !(passed.hits[0].t < end)) passed.count = 0;
         return;
     }
-    std::sort(passed.hits.begin(), passed.hits.begin() + passed.count,
-              [](const HitRecord& a, const HitRecord& b) { return a.t < b.t; });
+    // By insertion (a handful at most, mostly two: the fog box's two faces), which keeps
+    // equal distances in the order they came, as std::sort does on so few.
+    for (int i = 1; i < passed.count; ++i) {
+        if (!(passed.hits[i].t < passed.hits[i - 1].t)) continue;
+        const HitRecord moving = passed.hits[i];
+        int j = i;
+        for (; j > 0 && moving.t < passed.hits[j - 1].t; --j) passed.hits[j] = passed.hits[j - 1];
+        passed.hits[j] = moving;
+    }
     int kept = 0;
     for (int i = 0; i < passed.count; ++i) {
         const HitRecord& h = passed.hits[i];
