@@ -92,9 +92,11 @@ bool Sphere::intersect_interval(const Vec3& origin, const Vec3& direction, float
     const float b = glm::dot(o, d);
     const float c = glm::dot(o, o) - 1.0f;
     // Discriminant from the distance of the closest approach, which stays accurate for
-    // distant rays where b*b - a*c cancels catastrophically.
-    const Vec3 closest = o - (b / a) * d;
-    const float discriminant = a * (1.0f - glm::dot(closest, closest));
+    // distant rays where b*b - a*c cancels catastrophically: a (1 - |o - (b/a) d|^2), written
+    // a - |o x d|^2 (the same by Lagrange's identity) so that a ray that misses, as most do,
+    // waits on no division.
+    const Vec3 across = glm::cross(o, d);
+    const float discriminant = a - glm::dot(across, across);
     if (discriminant < 0.0f) return false;
     const float root = std::sqrt(discriminant);
     const float q = b < 0.0f ? -b + root : -b - root;
