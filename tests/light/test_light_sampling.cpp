@@ -345,7 +345,8 @@ TEST(SphereEmitter, SamplingMatchesSolidAngleDensity) {
     }
 }
 
-// Points land on the sphere; from outside only on the part facing the reference point.
+// Points land on the sphere; from outside only on the part facing the reference point, with
+// the direction towards them.
 TEST(SphereEmitter, SamplesLieOnTheVisibleSurface) {
     const Vec3 center(1.0f, 2.0f, 3.0f);
     const float radius = 2.0f;
@@ -361,6 +362,9 @@ TEST(SphereEmitter, SamplesLieOnTheVisibleSurface) {
             EXPECT_NEAR(glm::dot(s.n, glm::normalize(s.p - center)), 1.0f, 1e-5f);
             if (outside) {
                 EXPECT_GE(glm::dot(s.n, ref - s.p), -1e-4f * radius);
+                // The direction the sampler hands the light is the one towards the point.
+                EXPECT_NEAR(glm::dot(s.direction, glm::normalize(s.p - ref)), 1.0f, 1e-6f);
+                EXPECT_NEAR(glm::length(s.direction), 1.0f, 1e-6f);
             }
         }
     }

@@ -33,6 +33,10 @@ struct ShapeSample {
     Vec3 p;
     Vec3 n;            // unit surface normal at p (outward)
     float pdf = 0.0f;  // solid-angle density with respect to the reference point
+    // The unit direction from the reference point to p, where the sampler drew it (a
+    // sphere's cone): the light takes it instead of normalising p - ref, a square root and
+    // a division that every light sample waited on. Zero where the sampler has none.
+    Vec3 direction{0.0f};
 };
 
 // World-space sampling of a placed shape, used by area lights. Densities are in solid

@@ -190,8 +190,10 @@ ShapeSample SphereSampler::sample(const Vec3& ref, const Vec2& u, float) const {
     const float phi = 2.0f * kPi * u.y;
     // The normal: alpha away from the axis back towards ref, on the side of the direction.
     const Frame frame = Frame::from_normal(to_center / dist);
-    s.n = frame.to_world(Vec3(sin_alpha * std::cos(phi), sin_alpha * std::sin(phi), -cos_alpha));
+    const float cos_phi = std::cos(phi), sin_phi = std::sin(phi);
+    s.n = frame.to_world(Vec3(sin_alpha * cos_phi, sin_alpha * sin_phi, -cos_alpha));
     s.p = m_center + m_radius * s.n;
+    s.direction = frame.to_world(Vec3(sin_theta * cos_phi, sin_theta * sin_phi, cos_theta));
     s.pdf = 1.0f / (2.0f * kPi * one_minus_cos_max);
     return s;
 }

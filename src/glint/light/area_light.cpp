@@ -15,10 +15,14 @@ std::optional<LightSample> AreaLight::sample_li_piece(const Vec3& ref, const Vec
 
 std::optional<LightSample> AreaLight::arriving_from(const Vec3& ref, const ShapeSample& s) const {
     std::optional<LightSample> result;  // one named result, built in the caller's storage
-    const Vec3 d = s.p - ref;
-    const float dist2 = glm::dot(d, d);
-    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf) || !(dist2 > 0.0f)) return result;
-    const Vec3 wi = d * (1.0f / std::sqrt(dist2));
+    if (!(s.pdf > 0.0f) || !std::isfinite(s.pdf)) return result;
+    Vec3 wi = s.direction;
+    if (wi == Vec3(0.0f)) {
+        const Vec3 d = s.p - ref;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) return result;
+        wi = d * (1.0f / std::sqrt(dist2));
+    }
     if (!emits_towards(s.n, -wi)) return result;
     LightSample& ls = result.emplace();
     ls.wi = wi;
