@@ -148,7 +148,7 @@ private:
                            Sampler& sampler, Rng& rng, RayCounter& counter) const;
     // A camera path's first traversal, traced with its neighbours' as a packet
     // (Scene::intersect_surface_packet_passing): whether it hit, and where that wrote the
-    // surface and the interfaces passed.
+    // surface and the interfaces passed (the path's records from then on).
     struct FirstTraversal {
         bool hit = false;
         SurfaceInteraction* si = nullptr;
@@ -177,7 +177,7 @@ private:
     Spectrum camera_sample_in_media(const Scene& scene, Vec2i pixel, const Ray& camera_ray,
                                     Sampler& sampler, Arena& arena, RayCounter& counter,
                                     HashGrid::Cache& cache, DeferredLeg* deferred,
-                                    const FirstTraversal* first = nullptr,
+                                    const FirstTraversal& first,
                                     AwaitedLight* awaited = nullptr) const;
     // The direct light's samples of the `waiting` lanes; returns those that need a shadow
     // ray.

@@ -303,7 +303,7 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
                                                    const Ray& camera_ray, Sampler& sampler,
                                                    Arena& arena, RayCounter& counter,
                                                    HashGrid::Cache& cache, DeferredLeg* deferred,
-                                                   const FirstTraversal* first,
+                                                   const FirstTraversal& first,
                                                    AwaitedLight* awaited) const {
     Rng rng(stream_seed(sampler.get_1d()));
     if (deferred) deferred->medium = nullptr;
@@ -318,16 +318,18 @@ Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pix
     bool on_primary = true;
     const Medium* medium = m_media->camera;
     Spectrum L(0.0f), beta(1.0f);
-    SurfaceInteraction own_si;
-    PassedSurfaces own_passed;
-    SurfaceInteraction& si = first ? *first->si : own_si;
-    PassedSurfaces& passed = first ? *first->passed : own_passed;
+    // The first traversal's records, which later traversals overwrite (records of its own
+    // were some 500 bytes of stack to initialise per pixel).
+    SurfaceInteraction& si = *first.si;
+    PassedSurfaces& passed = *first.passed;
+    bool first_traced = true;
     for (int segment = 0, crossings = 0; segment < kMaxCameraSegments;) {
         ++counter.rays;
         // One traversal past the interfaces it can skip: they split the ray into legs, each
-        // in the medium the last one leads into. The first may be traced already.
-        const bool hit = first ? first->hit : scene.intersect_surface_passing(*ray, si, passed);
-        first = nullptr;
+        // in the medium the last one leads into. The first is traced already (`first`).
+        const bool hit =
+            first_traced ? first.hit : scene.intersect_surface_passing(*ray, si, passed);
+        first_traced = false;
         const float t_end = hit ? si.t : kInfinity;
         // The light each leg gathers in its medium, and its transmittance.
         walk_legs(scene, *ray, passed, t_end, medium, [&](const Ray& leg, float length) {
@@ -538,7 +540,7 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                     if (awaits) awaits->waiting = false;
                     rest.L = camera_sample_in_media(
                         scene, film.origin() + Vec2i(x, y), rays[lane], samplers[lane], arena,
-                        counter, cache, m_preview.fog_interleave ? &leg : nullptr, &first, awaits);
+                        counter, cache, m_preview.fog_interleave ? &leg : nullptr, first, awaits);
                     if (awaits && awaits->waiting) waiting |= 1u << lane;
                     rest.hero_only = wavelengths != nullptr && secondary_wavelengths_terminated();
                 });
