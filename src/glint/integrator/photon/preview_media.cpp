@@ -583,9 +583,21 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
         // Its own stream: the camera sample's draws are spent.
         PassSampler sampler;
         sampler.set_seed(mix_bits(m_settings.seed ^ 0x666f67ull));
+        // A row's estimating pixels are listed first, so that each one's leg (a cache line
+        // of its own, written a sweep earlier and long evicted) is fetched a few estimates
+        // ahead: read when needed, the wait for it was a fifth of this sweep.
+        constexpr int kAhead = 4;
+        std::vector<int> estimating(static_cast<size_t>(w));
         for (int y = rows.begin(); y < rows.end(); ++y) {
-            for (int x = 0; x < w; ++x) {
-                if (!m_fog.estimates(x, y)) continue;
+            int count = 0;
+            for (int x = 0; x < w; ++x)
+                if (m_fog.estimates(x, y)) estimating[static_cast<size_t>(count++)] = x;
+            for (int k = 0; k < std::min(kAhead, count); ++k)
+                __builtin_prefetch(&m_fog.leg(estimating[static_cast<size_t>(k)], y));
+            for (int k = 0; k < count; ++k) {
+                if (k + kAhead < count)
+                    __builtin_prefetch(&m_fog.leg(estimating[static_cast<size_t>(k + kAhead)], y));
+                const int x = estimating[static_cast<size_t>(k)];
                 const DeferredLeg& leg = m_fog.leg(x, y);
                 sampler.start_pixel_sample(film.origin() + Vec2i(x, y), pass);
                 Rng rng(stream_seed(sampler.get_1d()));
