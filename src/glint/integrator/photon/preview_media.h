@@ -83,6 +83,10 @@ private:
     std::vector<Seen> m_photons;
     std::vector<uint32_t> m_bin_start;  // tile t's photons: m_bin_photons[start[t], start[t+1])
     std::vector<uint32_t> m_bin_photons;
+    // Each bin entry's photon position, coordinate by coordinate (parallel to
+    // m_bin_photons, padded by 3 so that four can always be loaded): a pixel tests four
+    // photons against its ray at once, reading them in a row instead of through the index.
+    std::vector<float> m_bin_x, m_bin_y, m_bin_z;
     Vec2i m_origin{0}, m_tiles{0};
     float m_radius2 = 0.0f;
 };
