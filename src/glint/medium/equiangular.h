@@ -53,8 +53,8 @@ struct Equiangular {
     }
 
     /// A distance for u in [0, 1); within [0, t_end] up to rounding (the caller clamps).
-    /// At the far end of an infinite segment it may come out infinite or negative (past
-    /// the angle's pole): clamping gives t_end there.
+    /// At the far end of an infinite segment rounding can carry the angle past pi/2, where
+    /// the formula turns negative: that comes out infinite, which clamping makes t_end.
     float sample(float u) const {
         const float tan_phi = std::tan(u * spread);
         const float t = tan_phi * distance2 / (D + delta * tan_phi);
