@@ -164,8 +164,9 @@ TEST(InterleavedFog, LegsAreAlikeWithinFivePercent) {
 
 // estimates() and reconstruct() against their definitions, neighbour by neighbour, on
 // random windows (odd sizes, so that blocks at the edges are cut), random picks and legs of
-// two media, none, and lengths that jump: the fast paths (the blocks' picked pixels only,
-// the estimated flags first) must give the same answers and the same bits.
+// two media, none, and lengths that jump: estimates(), which looks only at the picked
+// pixels of the blocks round a pixel, and reconstruct() must give the same answers and
+// the same bits.
 TEST(InterleavedFog, FastPathsAgreeWithTheDefinitions) {
     Rng rng(0x6f67u);
     const Medium* media[3] = {fog_medium(), smoke_medium(), nullptr};

@@ -73,19 +73,12 @@ void InterleavedFog::set_estimate(int x, int y, const Spectrum& value) {
 Spectrum InterleavedFog::reconstruct(int x, int y) const {
     const Key& own = m_keys[index(x, y)];
     if (!own.medium) return Spectrum(0.0f);
-    const int x0 = std::max(x - 1, 0), x1 = std::min(x + 1, m_size.x - 1);
-    const int y0 = std::max(y - 1, 0), y1 = std::min(y + 1, m_size.y - 1);
     Spectrum sum(0.0f);
     int count = 0;
-    // Row by row, left to right (the order of the sum). The flags of a row's three pixels
-    // are tested first: about a quarter of the pixels estimate, so most are skipped unread.
-    for (int ny = y0; ny <= y1; ++ny) {
-        const size_t row = static_cast<size_t>(ny) * static_cast<size_t>(m_size.x);
-        const uint8_t* flags = m_estimated.data() + row;
-        for (int nx = x0; nx <= x1; ++nx) {
-            if (!flags[nx]) continue;
-            const size_t i = row + static_cast<size_t>(nx);
-            if (!alike(own, m_keys[i])) continue;
+    for (int ny = std::max(y - 1, 0); ny <= std::min(y + 1, m_size.y - 1); ++ny) {
+        for (int nx = std::max(x - 1, 0); nx <= std::min(x + 1, m_size.x - 1); ++nx) {
+            const size_t i = index(nx, ny);
+            if (!estimated(i) || !alike(own, m_keys[i])) continue;
             sum += m_estimates[i];
             ++count;
         }

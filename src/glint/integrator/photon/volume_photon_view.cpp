@@ -90,7 +90,8 @@ void VolumePhotonView::build(const Scene& scene, const Medium* camera_medium,
     }
     for (size_t t = 0; t < tile_count; ++t) m_bin_start[t + 1] += m_bin_start[t];
     m_bin_photons.resize(m_bin_start[tile_count]);
-    // Positions padded with points no ray reaches (NaN fails every test).
+    // Padded by 3 so that the last bin's last four loads stay in bounds (lanes past a bin's
+    // end are masked off; the NaNs would fail every test anyway).
     const size_t padded = m_bin_start[tile_count] + 3;
     m_bin_x.assign(padded, std::numeric_limits<float>::quiet_NaN());
     m_bin_y.assign(padded, std::numeric_limits<float>::quiet_NaN());
