@@ -1,6 +1,7 @@
 #include <glint/core/error.h>
 #include <glint/geometry/sphere.h>
 #include <glint/geometry/user_geometry.h>
+#include <glint/math/arctangent.h>
 #include <glint/math/warp.h>
 
 namespace glint {
@@ -114,7 +115,7 @@ RTCGeometry Sphere::create_embree_geometry(RTCDevice device) const {
 void Sphere::fill_interaction(const Ray& ray, const HitRecord& hit, SurfaceInteraction& si) const {
     Vec3 p_object = Vec3(m_to_parent.inverse_matrix() * Vec4(ray.at(hit.t), 1.0f));
     p_object = glm::normalize(p_object);  // back onto the surface, removing the hit's error
-    const float phi_raw = std::atan2(p_object.z, p_object.x);
+    const float phi_raw = atan2_finite(p_object.z, p_object.x);
     const float phi = phi_raw < 0.0f ? phi_raw + 2.0f * kPi : phi_raw;
     const float theta = std::acos(std::clamp(p_object.y, -1.0f, 1.0f));
     // y is the pole; u runs around it, v from the south pole (0) up to the north pole (1),

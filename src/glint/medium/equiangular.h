@@ -17,6 +17,7 @@
 // One arc tangent fewer per point than the angles themselves, and no difference of two
 // angles near pi / 2 (a light far behind the ray's start), which loses the spread's digits.
 #include <glint/core/ray.h>
+#include <glint/math/arctangent.h>
 
 #include <cmath>
 #include <optional>
@@ -46,8 +47,8 @@ struct Equiangular {
         // tan(theta_b - theta_a) = t_end D / (D^2 - delta (t_end - delta)); towards an
         // infinite end, D / -delta.
         e.spread = std::isinf(t_end)
-                       ? std::atan2(e.D, -e.delta)
-                       : std::atan2(t_end * e.D, e.D * e.D - e.delta * (t_end - e.delta));
+                       ? atan2_finite(e.D, -e.delta)
+                       : atan2_finite(t_end * e.D, e.D * e.D - e.delta * (t_end - e.delta));
         if (!(e.spread > 0.0f)) return std::nullopt;
         return e;
     }
