@@ -210,6 +210,10 @@ private:
     float m_tan_half_fov;
     float m_aspect;
     Vec2 m_resolution;
+    // Per camera ray, products rather than divisions: 2 / resolution (film to screen
+    // coordinates), and a pixel's height on the plane at distance 1, 2 tan(fov / 2) / height.
+    Vec2 m_screen_per_pixel;
+    float m_pixel_height;
     float m_aperture_radius;
     float m_focus_distance;
     float m_image_area;  // A_image: the frame's area on the plane at distance 1

@@ -15,6 +15,8 @@ PerspectiveCamera::PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const
       m_tan_half_fov(std::tan(glm::radians(fov_y_degrees) * 0.5f)),
       m_aspect(static_cast<float>(resolution.x) / static_cast<float>(resolution.y)),
       m_resolution(resolution),
+      m_screen_per_pixel(2.0f / m_resolution.x, 2.0f / m_resolution.y),
+      m_pixel_height(2.0f * m_tan_half_fov / m_resolution.y),
       m_aperture_radius(aperture_radius),
       m_focus_distance(focus_distance),
       m_image_area(4.0f * m_tan_half_fov * m_tan_half_fov * m_aspect) {
@@ -25,15 +27,15 @@ PerspectiveCamera::PerspectiveCamera(const Vec3& eye, const Vec3& look_at, const
 Vec3 PerspectiveCamera::pinhole_direction(const Vec2& film) const {
     // Screen coordinates in [-1, 1], y up. Not normalised: its component along the
     // forward axis is exactly 1, which the thin lens below relies on.
-    const float sx = 2.0f * film.x / m_resolution.x - 1.0f;
-    const float sy = 1.0f - 2.0f * film.y / m_resolution.y;
+    const float sx = film.x * m_screen_per_pixel.x - 1.0f;
+    const float sy = 1.0f - film.y * m_screen_per_pixel.y;
     return m_forward + (sx * m_tan_half_fov * m_aspect) * m_right + (sy * m_tan_half_fov) * m_up;
 }
 
 Ray PerspectiveCamera::generate_ray(const Vec2& film, const Vec2& lens) const {
     const Vec3 direction = pinhole_direction(film);
     // One pixel to the right and one down, scaled by the footprint scale.
-    const float pixel = 2.0f * m_tan_half_fov / m_resolution.y * m_footprint_scale;
+    const float pixel = m_pixel_height * m_footprint_scale;
     const Vec3 step_x = pixel * m_right, step_y = -pixel * m_up;
     Ray ray;
     ray.has_differentials = true;
@@ -150,7 +152,7 @@ void PerspectiveCamera::approximate_footprint(const Vec3& p, const Vec3& n, Vec3
     dpdx = dpdy = Vec3(0.0f);
     if (!(distance > 0.0f)) return;
     const Vec3 d = to_p / distance;
-    const float pixel_angle = 2.0f * m_tan_half_fov / m_resolution.y * m_footprint_scale;
+    const float pixel_angle = m_pixel_height * m_footprint_scale;
     const float d_dot_n = glm::dot(d, n);
     auto on_plane = [&](const Vec3& step) {
         const Vec3 dir = d + pixel_angle * step;

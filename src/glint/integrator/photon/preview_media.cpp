@@ -297,8 +297,7 @@ Spectrum PreviewIntegrator::in_scattering(const Scene& scene, const Ray& ray, fl
 // (in_scattering) and takes on the transmittance; the primary ray, up to the first surface
 // that is not an interface, gathers the volume photons. Direct light at the surface sees
 // the media its shadow ray crosses. The draws come from a PassSampler: their number varies.
-// `camera_ray` comes with a unit direction: normalised here, just before the walk read it,
-// the direction's stores stalled the loads that followed (2 % of the frame).
+// `camera_ray` comes with a unit direction, as Camera::generate_ray makes them.
 Spectrum PreviewIntegrator::camera_sample_in_media(const Scene& scene, Vec2i pixel,
                                                    const Ray& camera_ray, Sampler& sampler,
                                                    Arena& arena, RayCounter& counter,
@@ -514,11 +513,6 @@ void PreviewIntegrator::render_media_pass(const Scene& scene, Film& film, int pa
                     si_of[lane] = &surfaces[lane];
                     active |= 1u << lane;
                 }
-                // Traced with the unit direction camera_sample_in_media() takes; normalised
-                // once every lane's ray is made, for the same reason.
-                for_each_lane(active, [&](int lane) {
-                    rays[lane].direction = glm::normalize(rays[lane].direction);
-                });
                 const uint32_t hit =
                     scene.intersect_surface_packet_passing(ray_of, active, si_of, passed, true);
                 // The lanes' BSDFs live until their shadow rays are traced, after the loop.
