@@ -161,6 +161,36 @@ TEST(HashGrid, StorageNumberingFollowsTheOrder) {
     }
 }
 
+// Queries that walk in small steps, as a row of pixels does, so that the cache meets each
+// cell again and again, beside the ones it holds (along every axis, both ways, and turning
+// back): each query gets the visits, in the order, that a query with a fresh cache gets.
+TEST(HashGrid, WalkingQueriesGetTheVisitsOfAFreshCache) {
+    Rng rng(777);
+    std::vector<Vec3> points = mixed_points(rng, 6000);
+    // A dense cloud round the walks, so that most cells they pass hold points.
+    for (int i = 0; i < 6000; ++i)
+        points.emplace_back(0.4f * rng.next_float() - 0.2f, 0.4f * rng.next_float() - 0.2f,
+                            0.4f * rng.next_float() - 0.2f);
+    const float radius = 0.03f;
+    HashGrid grid;
+    grid.build(points, radius);
+    HashGrid::Cache walking;
+    int slid = 0, queries = 0;
+    const Vec3 steps[] = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+    for (const Vec3& step : steps) {
+        Vec3 x(-0.15f, -0.12f, -0.1f);
+        for (int k = 0; k < 40; ++k, ++queries) {
+            // Forward, then a few back: the cache meets centres on either side of it.
+            x += (k % 10 < 7 ? 0.41f : -0.41f) * radius * step;
+            HashGrid::Cache fresh;
+            const std::vector<uint32_t> expected = visits(grid, points, x, fresh);
+            EXPECT_EQ(visits(grid, points, x, walking), expected) << "step " << k;
+            slid += expected.empty() ? 0 : 1;
+        }
+    }
+    EXPECT_GT(slid, queries / 2);  // the walks pass through points
+}
+
 // A rebuild with other points: a cache filled before it notices and forgets what it knew.
 TEST(HashGrid, CacheNoticesARebuild) {
     Rng rng(4242);
