@@ -5,23 +5,6 @@
 #include <cmath>
 
 namespace glint {
-namespace {
-
-// The density as a function of cos_theta = dot(wo, wi): with wo pointing away, forward
-// scattering is cos_theta = -1, where the denominator 1 + g^2 + 2 g cos_theta is smallest
-// for g > 0.
-float hg_density(float cos_theta, float g) {
-    const float denominator = 1.0f + g * g + 2.0f * g * cos_theta;
-    return kInv4Pi * (1.0f - g * g) / (denominator * std::sqrt(std::max(denominator, 1e-12f)));
-}
-
-}  // namespace
-
-HenyeyGreenstein::HenyeyGreenstein(float g) : m_g(std::clamp(g, -0.999f, 0.999f)) {}
-
-float HenyeyGreenstein::eval(const Vec3& wo, const Vec3& wi) const {
-    return hg_density(glm::dot(wo, wi), m_g);
-}
 
 PhaseSample HenyeyGreenstein::sample(const Vec3& wo, const Vec2& u) const {
     // Inverting the cumulative distribution of cos_theta (in the convention above); near
@@ -39,7 +22,7 @@ PhaseSample HenyeyGreenstein::sample(const Vec3& wo, const Vec2& u) const {
     const Frame frame = Frame::from_normal(wo);
     const Vec3 wi = glm::normalize(
         frame.to_world(Vec3(sin_theta * std::cos(phi), sin_theta * std::sin(phi), cos_theta)));
-    return PhaseSample{wi, hg_density(cos_theta, m_g)};
+    return PhaseSample{wi, density(cos_theta)};
 }
 
 }  // namespace glint
