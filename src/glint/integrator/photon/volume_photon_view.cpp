@@ -142,9 +142,16 @@ Spectrum VolumePhotonView::estimate(Vec2i pixel, const Vec3& origin, const Vec3&
         const Float4 along = vx * dx + vy * dy + vz * dz;
         const Float4 off2 = vx * vx + vy * vy + vz * vz - along * along;
         const Int4 within = (along > 0.0f) & (along < t_end) & (off2 < m_radius2);
+        // Bit i set where lane i passed (one movmskps where SSE is there: GCC made four
+        // extractions of the loop).
+#if defined(__SSE__)
+        uint32_t lanes =
+            static_cast<uint32_t>(__builtin_ia32_movmskps(reinterpret_cast<Float4>(within)));
+#else
         uint32_t lanes = 0;
         for (int lane = 0; lane < 4; ++lane)
             lanes |= static_cast<uint32_t>(within[lane] & 1) << lane;
+#endif
         if (end - k < 4) lanes &= (1u << (end - k)) - 1u;  // past the bin's end
         for (; lanes != 0; lanes &= lanes - 1) {
             const Seen& photon =
