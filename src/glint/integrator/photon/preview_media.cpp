@@ -166,29 +166,36 @@ void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonE
             bool specular_only = true;
             int bounces = 0, crossings = 0;
             SurfaceInteraction si;
+            PassedSurfaces passed;
             while (bounces <= max_bounces && crossings <= kMaxCrossings) {
                 arena.reset();
                 ++chunk_rays;
-                const bool hit = scene.intersect_surface(ray, si);
-                if (medium) {
-                    Spectrum weight;
-                    float t_scatter = 0.0f, sigma_t = 0.0f;
-                    const SegmentEnd segment =
-                        through_medium(*medium, ray, hit ? si.t : kInfinity, hero, rng, weight, r_u,
-                                       t_scatter, sigma_t);
-                    beta *= weight;
-                    if (segment == SegmentEnd::kAbsorbed) break;
-                    if (segment == SegmentEnd::kScattered) {
-                        const float mean = r_u.average();
-                        if (specular_only && bounces > 0 && mean > 0.0f) {
-                            sink.volume.push_back({ray.at(t_scatter),
-                                                   -glm::normalize(ray.direction), beta / mean,
-                                                   medium->phase_asymmetry(), set});
-                        }
-                        break;
-                    }
-                }
-                if (!hit) break;
+                // One traversal past the interfaces it can skip (the fog box's face before
+                // the floor took a traversal of its own), then the legs between them.
+                const bool hit = scene.intersect_surface_passing(ray, si, passed);
+                crossings += passed.count;
+                bool ended = false;  // absorbed, or scattered in a leg
+                walk_legs(scene, ray, passed, hit ? si.t : kInfinity, medium,
+                          [&](const Ray& leg, float length) {
+                              Spectrum weight;
+                              float t_scatter = 0.0f, sigma_t = 0.0f;
+                              const SegmentEnd segment = through_medium(
+                                  *medium, leg, length, hero, rng, weight, r_u, t_scatter, sigma_t);
+                              beta *= weight;
+                              if (segment == SegmentEnd::kAbsorbed) {
+                                  ended = true;
+                              } else if (segment == SegmentEnd::kScattered) {
+                                  const float mean = r_u.average();
+                                  if (specular_only && bounces > 0 && mean > 0.0f) {
+                                      sink.volume.push_back(
+                                          {leg.at(t_scatter), -glm::normalize(leg.direction),
+                                           beta / mean, medium->phase_asymmetry(), set});
+                                  }
+                                  ended = true;
+                              }
+                              return !ended;
+                          });
+                if (ended || !hit) break;
                 if (si.material->is_interface()) {
                     medium = medium_beyond(si, ray.direction, medium);
                     ray = spawn_ray(si, ray.direction);
