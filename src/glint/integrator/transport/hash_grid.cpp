@@ -67,6 +67,15 @@ void HashGrid::build(std::span<const Vec3> points, float radius, Numbering numbe
             m_slots[slot] = c;
         }
     }
+    const uint32_t occupied_bits = std::bit_ceil(
+        std::clamp<uint32_t>(16 * static_cast<uint32_t>(std::min<size_t>(m_cells.size(), 1u << 20)),
+                             1u << 12, 1u << 20));
+    m_occupied_shift = 32 - std::countr_zero(occupied_bits);
+    m_occupied.assign(occupied_bits / 64, 0);
+    for (const Cell& cell : m_cells) {
+        const uint32_t bit = hash_cell(cell.key) >> m_occupied_shift;
+        m_occupied[bit >> 6] |= uint64_t{1} << (bit & 63);
+    }
     uint32_t offset = 0;
     for (Cell& cell : m_cells) {
         cell.begin = offset;

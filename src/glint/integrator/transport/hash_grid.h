@@ -109,9 +109,16 @@ private:
     }
     // The occupied cells around `centre`, from `cache` or looked up into it.
     const Cache::Neighbourhood& neighbourhood(Cache& cache, const glm::ivec3& centre) const;
-    // The index into m_cells of cell `c`, or kNoCell when no point lies in it.
+    // The index into m_cells of cell `c`, or kNoCell when no point lies in it. A cell whose
+    // bit in m_occupied is clear is empty without a look at the table: a query's 27 cells
+    // are mostly empty, and the table's slots, pushed out of the nearer caches by the
+    // renderer's other work between queries, cost a wait each (two thirds of the preview's
+    // caustic estimates went on them); the bits are few enough to stay.
     uint32_t find_cell(const glm::ivec3& c) const {
-        for (uint32_t slot = hash_cell(c) & m_mask;; slot = (slot + 1) & m_mask) {
+        const uint32_t hash = hash_cell(c);
+        const uint32_t bit = hash >> m_occupied_shift;
+        if (!((m_occupied[bit >> 6] >> (bit & 63)) & 1u)) return kNoCell;
+        for (uint32_t slot = hash & m_mask;; slot = (slot + 1) & m_mask) {
             const uint32_t index = m_slots[slot];
             if (index == kNoCell || m_cells[index].key == c) return index;
         }
@@ -149,7 +156,11 @@ private:
     std::vector<Vec3> m_positions;    // the points' positions, cell by cell
     std::vector<uint32_t> m_indices;  // what a visit reports of each, in the same order
     std::vector<uint32_t> m_order;    // the given index of each, in the same order
-    std::vector<uint64_t> m_coarse;   // m_coarse_mask + 1 bits: coarse cells within r of a point
+    // A bit per occupied cell, at the top bits of its hash_cell() (the slot takes the
+    // bottom ones): 16 bits per cell, from 4 Kbit up to 1 Mbit.
+    std::vector<uint64_t> m_occupied;
+    int m_occupied_shift = 32;
+    std::vector<uint64_t> m_coarse;  // m_coarse_mask + 1 bits: coarse cells within r of a point
     uint32_t m_coarse_mask = 0;
 };
 
