@@ -37,6 +37,11 @@ public:
     void fill_interaction(const Ray& ray, const HitRecord& hit,
                           SurfaceInteraction& si) const override;
     Vec3 geometric_normal(const Ray& ray, const HitRecord& hit) const override;
+    // Embree's normal is the winding's, as geometric_normal() is unless vertex normals turn
+    // it (or the mesh deforms).
+    bool hit_normal_sides_as_geometric() const override {
+        return m_data.normals.empty() && m_data.position_keys.empty();
+    }
     std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const override;
 
     const MeshData& data() const { return m_data; }

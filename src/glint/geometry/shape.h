@@ -103,6 +103,10 @@ public:
         fill_interaction(ray, hit, si);
         return si.ng;
     }
+    // Whether the normal in this shape's hit records (Embree's, not unit) always lies on the
+    // side of geometric_normal(): a walk that asks only which side it crosses to may then
+    // read it from the record.
+    virtual bool hit_normal_sides_as_geometric() const { return false; }
 
     // Sampling of this shape placed in the world by `to_world`, for area lights.
     virtual std::unique_ptr<ShapeSampler> make_sampler(const Transform& to_world) const = 0;

@@ -168,6 +168,7 @@ private:
                 m_scene->m_interfaces_skippable = false;
             Scene::WorldEntry& entry = world_entry(id);
             entry.geometry = {use.shape, use.materials};
+            entry.side_from_hit = use.shape->hit_normal_sides_as_geometric();
             note_deformation(use, "");
             entry.light = make_area_light(use, Transform());
             count_shape(use, Transform());

@@ -69,8 +69,7 @@ bool walk_legs(const Scene& scene, const Ray& traced, const PassedSurfaces& pass
         if (i == passed.count) break;
         const Scene::Crossing crossing = scene.passed_crossing(traced, passed.hits[i]);
         const MediumInterface media = crossing.material->medium_interface();
-        if (media.is_transition())
-            medium = media.leaving(glm::dot(traced.direction, crossing.ng) > 0.0f);
+        if (media.is_transition()) medium = media.leaving(crossing.along_normal);
         t_start = t_leg_end;
     }
     return true;
