@@ -12,8 +12,9 @@
 // table of 32-bit slots (linear probing, at most half full) that points into a dense array
 // of cells; each cell's points are contiguous, their positions in an array of their own
 // (12 bytes a point: all a query reads of a point it rejects), their indices in a parallel
-// array read only on a hit. An empty cell thus costs a hash and one slot (usually); an
-// occupied one a key compare and a linear walk of positions. Most queries of a caustic are
+// array read only on a hit. An empty cell thus costs a hash and one bit of a small set
+// of the occupied cells (usually; find_cell); an occupied one a slot, a key compare and a
+// linear walk of positions. Most queries of a caustic are
 // far from every point: a bit set over coarser cells (2r, hashed) marks the cells some
 // point's r-ball reaches, and a query whose coarse cell is unmarked ends after one bit,
 // without touching the table. The set has 256 bits per point, from 64 Kbit (8 KB) up to
