@@ -139,6 +139,7 @@ void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonE
         std::optional<WavelengthScope> scope;
         if (wavelengths != nullptr) scope.emplace(*wavelengths);
         Arena arena;
+        PassedSurfaces passed;  // each traversal's crossings (one record per chunk, not photon)
         uint64_t chunk_rays = 0;
         MediaPhotonChunk& sink = found[chunk];
         const uint64_t end = std::min(count, (chunk + 1) * kChunk);
@@ -166,7 +167,6 @@ void PreviewIntegrator::trace_photons_in_media(const Scene& scene, const PhotonE
             bool specular_only = true;
             int bounces = 0, crossings = 0;
             SurfaceInteraction si;
-            PassedSurfaces passed;
             while (bounces <= max_bounces && crossings <= kMaxCrossings) {
                 arena.reset();
                 ++chunk_rays;
