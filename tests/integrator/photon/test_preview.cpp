@@ -16,6 +16,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 using namespace glint;
@@ -188,11 +189,15 @@ TEST(PreviewSlow, MirrorCeilingCausticMatchesClosedForm) {
 // sky, a visible area light (an emitter without a BSDF), a glass sphere and a mirror (lanes
 // that go on alone through specular chains, some escaping), a diffuse floor lit by a spot
 // and an area light with shadows, and caustic photons. The film is 63 x 47, so the last
-// column and row of blocks are partly outside it.
-TEST(Preview, PacketsGiveTheOneRayImageBitForBit) {
-    BuiltScene b = build_scene(R"(
+// column and row of blocks are partly outside it. With ReSTIR the first stage's camera rays
+// and visibility reuse's shadow rays go in packets the same way, and the reservoirs it hands
+// to the next pass and to the second stage must be the same too.
+class PreviewPackets : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(PreviewPackets, GiveTheOneRayImageBitForBit) {
+    BuiltScene b = build_scene(std::string(R"(
         glint.render{ width = 63, height = 47, integrator = 'preview', preview_photons = 4000,
-                      preview_restir = 'off' }
+                      )") + GetParam() + R"( }
         glint.camera{ eye = {0, 1.4, 4}, look_at = {0, 0.7, 0}, fov = 50 }
         glint.background{ radiance = 0.2 }
         glint.quad{ vertices = {{-4, 0, 4}, {4, 0, 4}, {4, 0, -4}, {-4, 0, -4}},
@@ -225,3 +230,8 @@ TEST(Preview, PacketsGiveTheOneRayImageBitForBit) {
     EXPECT_EQ(differing, 0u);
     EXPECT_GT(lit, images[0].pixels.size() / 2);
 }
+
+INSTANTIATE_TEST_SUITE_P(Modes, PreviewPackets,
+                         ::testing::Values("preview_restir = 'off'",
+                                           "preview_restir = 'unbiased', preview_bounces = 1",
+                                           "preview_restir = 'biased'"));

@@ -125,6 +125,7 @@ private:
     static constexpr int kBlockWidth = 4, kBlockHeight = 2;
     static_assert(kBlockWidth * kBlockHeight == kPacketWidth);
     struct RestirState;  // preview_restir.h: ReSTIR's buffers and the arenas its BSDFs live in
+    struct RestirLanes;  // preview_restir.cpp: the per-lane state of a block's first stage
     // Mirrors and glass a camera path follows before its first diffuse surface, at most.
     static constexpr int kMaxCameraSegments = 16;
     void restart(const Scene& scene);
@@ -189,6 +190,14 @@ private:
                             RayCounter& counter, HashGrid::Cache& cache) const;
     void render_media_pass(const Scene& scene, Film& film, int pass, uint64_t& rays);
     void render_restir_pass(const Scene& scene, Film& film, int pass, RenderStats& stats);
+    // ReSTIR's first stage for the pixels of one row, one at a time, and for one block of
+    // 4 x 2 pixels in packets: the same reservoirs and sums bit for bit.
+    void restir_first_stage_row(const Scene& scene, const Film& film, int y, int pass,
+                                RestirState& state, PassSampler& sampler, Arena& arena,
+                                Arena& scratch, RayCounter& counter, HashGrid::Cache& cache) const;
+    void restir_first_stage_block(const Scene& scene, const Film& film, Vec2i corner, int pass,
+                                  RestirState& state, RestirLanes& lanes, Arena& arena,
+                                  Arena& scratch, RayCounter& counter) const;
     Spectrum camera_sample(const Scene& scene, const Ray& ray, Sampler& sampler, Arena& arena,
                            RayCounter& counter, HashGrid::Cache& cache) const;
     void render_block(const Scene& scene, Film& film, Vec2i corner, int pass, CameraLanes& lanes,

@@ -21,6 +21,13 @@ constexpr int kMaxNeighbours = 16;
 constexpr float kDepthTolerance = 0.1f;
 constexpr float kNormalCosine = 0.906f;
 
+// std::lround's rounding (halves away from zero) without its call: v - trunc(v) is exact.
+int round_half_away(float v) {
+    const int whole = static_cast<int>(v);
+    const float fraction = v - static_cast<float>(whole);
+    return whole + (fraction >= 0.5f) - (fraction <= -0.5f);
+}
+
 // A light point as next-event estimation sampled it, as a candidate that can move between
 // pixels, and the density with which it was chosen in the candidates' measure (see
 // restir_di.h). False when it carries nothing.
@@ -144,11 +151,15 @@ bool RestirDi::similar(const ReuseSurface& a, const ReuseSurface& b) const {
            glm::dot(a.shading.n(), b.shading.n()) >= kNormalCosine;
 }
 
+Scene::ShadowRay RestirDi::shadow_ray_to(const ReuseSurface& surface, const Vec3& target) {
+    const Vec3 origin = offset_ray_origin(surface.p, surface.ng, target - surface.p);
+    return Scene::ShadowRay{origin, target - origin, surface.time};
+}
+
 Spectrum RestirDi::transmittance_to(const Scene& scene, const ReuseSurface& surface,
                                     const Vec3& target, RayCounter& counter) const {
     ++counter.rays;
-    const Vec3 origin = offset_ray_origin(surface.p, surface.ng, target - surface.p);
-    return transmittance(scene, Scene::ShadowRay{origin, target - origin, surface.time});
+    return transmittance(scene, shadow_ray_to(surface, target));
 }
 
 RestirDi::LightReservoir RestirDi::combine(const Scene& scene, const LightReservoir* const* inputs,
@@ -214,13 +225,24 @@ RestirDi::LightReservoir RestirDi::combine(const Scene& scene, const LightReserv
 }
 
 void RestirDi::generate(const Scene& scene, int x, int y, Sampler& sampler, RayCounter& counter) {
+    const std::optional<Scene::ShadowRay> shadow = draw_candidates(scene, x, y, sampler);
+    Spectrum visible(0.0f);
+    if (shadow) {
+        ++counter.rays;
+        visible = transmittance(scene, *shadow);
+    }
+    reuse_history(scene, x, y, visible, sampler, counter);
+}
+
+std::optional<Scene::ShadowRay> RestirDi::draw_candidates(const Scene& scene, int x, int y,
+                                                          Sampler& sampler) {
     const size_t i = index(x, y);
     const ReuseSurface& s = m_surfaces[m_current][i];
-    LightReservoir& out = m_temporal[i];
-    out = LightReservoir{};
-    if (!s.bsdf) return;
+    LightReservoir& r = m_temporal[i];
+    r = LightReservoir{};
+    if (!s.bsdf) return std::nullopt;
     const Vec3 n = s.shading.n();
-    LightReservoir r;
+    Vec3 chosen_target(0.0f);
     for (int c = 0; c < m_settings.candidates; ++c) {
         // Next-event estimation's draws, then the reservoir's.
         const Vec2 u = sampler.get_2d();
@@ -237,18 +259,23 @@ void RestirDi::generate(const Scene& scene, int x, int y, Sampler& sampler, RayC
         Arrival arrival;
         if (!make_candidate(point, s.p, candidate, pdf) || !arrive(s, candidate, arrival)) continue;
         const float target = target_of(arrival.contribution);
-        r.update(candidate, target / pdf, target, u_keep);
+        if (r.update(candidate, target / pdf, target, u_keep)) chosen_target = arrival.target;
     }
     r.finish_uniform();
-    // Visibility reuse: a sample that does not reach the surface is dropped here, before it
-    // spreads (the candidates still count).
-    if (r.has_sample()) {
-        Arrival arrival;
-        if (!arrive(s, r.sample, arrival) ||
-            transmittance_to(scene, s, arrival.target, counter).is_black())
-            r.W = 0.0f;
-    }
+    // Visibility reuse: a sample that does not reach the surface is dropped (by
+    // reuse_history) before it spreads; the candidates still count.
+    if (!r.has_sample()) return std::nullopt;
+    return shadow_ray_to(s, chosen_target);
+}
 
+void RestirDi::reuse_history(const Scene& scene, int x, int y, const Spectrum& visible,
+                             Sampler& sampler, RayCounter& counter) {
+    const size_t i = index(x, y);
+    const ReuseSurface& s = m_surfaces[m_current][i];
+    LightReservoir& out = m_temporal[i];
+    if (!s.bsdf) return;
+    LightReservoir r = out;
+    if (r.has_sample() && visible.is_black()) r.W = 0.0f;
     if (m_history && s.seen_directly) {
         const int previous = m_current ^ 1;
         const std::optional<FilmProjection> projected =
@@ -279,6 +306,34 @@ void RestirDi::generate(const Scene& scene, int x, int y, Sampler& sampler, RayC
     out = r;
 }
 
+int RestirDi::pick_neighbours(int x, int y, Rng& rng, size_t* neighbours) const {
+    int picked = 0;
+    for (int k = 0; k < std::min(m_settings.spatial, kMaxNeighbours); ++k) {
+        const float u0 = rng.next_float();
+        const Vec2 offset =
+            warp::square_to_uniform_disk_concentric(Vec2(u0, rng.next_float())) * m_radius;
+        const int nx = x + round_half_away(offset.x);
+        const int ny = y + round_half_away(offset.y);
+        if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height || (nx == x && ny == y)) continue;
+        neighbours[picked++] = index(nx, ny);
+    }
+    return picked;
+}
+
+void RestirDi::prefetch_neighbours(int x, int y, uint64_t key) const {
+    if (m_settings.spatial <= 0 || x < 0 || y < 0 || x >= m_width || y >= m_height) return;
+    Rng rng(key);
+    size_t neighbours[kMaxNeighbours];
+    const int picked = pick_neighbours(x, y, rng, neighbours);
+    for (int k = 0; k < picked; ++k) {
+        // A surface spans two cache lines, and the test of similarity reads both.
+        const char* surface = reinterpret_cast<const char*>(&m_surfaces[m_current][neighbours[k]]);
+        __builtin_prefetch(surface);
+        __builtin_prefetch(surface + sizeof(ReuseSurface) - 1);
+        __builtin_prefetch(&m_temporal[neighbours[k]]);
+    }
+}
+
 Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCounter& counter) {
     const size_t i = index(x, y);
     const ReuseSurface& s = m_surfaces[m_current][i];
@@ -295,20 +350,7 @@ Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCoun
         // The neighbours first, then their data: the loads of all of them are under way
         // together (they lie rows apart, mostly outside the caches).
         size_t neighbours[kMaxNeighbours];
-        int candidates = 0;
-        for (int k = 0; k < std::min(m_settings.spatial, kMaxNeighbours); ++k) {
-            const float u0 = rng.next_float();
-            const Vec2 offset =
-                warp::square_to_uniform_disk_concentric(Vec2(u0, rng.next_float())) * m_radius;
-            const int nx = x + static_cast<int>(std::lround(offset.x));
-            const int ny = y + static_cast<int>(std::lround(offset.y));
-            if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height || (nx == x && ny == y))
-                continue;
-            const size_t j = index(nx, ny);
-            __builtin_prefetch(&m_surfaces[m_current][j]);
-            __builtin_prefetch(&m_temporal[j]);
-            neighbours[candidates++] = j;
-        }
+        const int candidates = pick_neighbours(x, y, rng, neighbours);
         for (int k = 0; k < candidates; ++k) {
             const size_t j = neighbours[k];
             const ReuseSurface& ns = m_surfaces[m_current][j];

@@ -112,10 +112,23 @@ public:
     /// reuse). Draws from `sampler` (its order: per candidate a 2D value and two 1D values as
     /// next-event estimation draws them, then a 1D value deciding).
     void generate(const Scene& scene, int x, int y, Sampler& sampler, RayCounter& counter);
+    /// generate() in two parts, so that a caller can trace the shadow rays of several pixels
+    /// together (the preview traces a block's as one packet): draw_candidates() takes the
+    /// draws of the M candidates and returns the shadow ray of visibility reuse (none when
+    /// the candidates left nothing to check); reuse_history() takes what that ray let
+    /// through (ignored when there was none) and merges the previous pass's reservoir. The
+    /// two together draw, trace and give what generate() does, bit for bit.
+    std::optional<Scene::ShadowRay> draw_candidates(const Scene& scene, int x, int y,
+                                                    Sampler& sampler);
+    void reuse_history(const Scene& scene, int x, int y, const Spectrum& visible, Sampler& sampler,
+                       RayCounter& counter);
     /// Second stage, per pixel after every pixel's first stage: spatial reuse, then the
     /// direct light reflected towards wo from the final sample, with its shadow ray.
     /// `key` seeds the neighbours' choice (the same for any thread count).
     Spectrum shade(const Scene& scene, int x, int y, uint64_t key, RayCounter& counter);
+    /// Starts loading what shade(x, y, key) will read of its neighbours, which lie rows apart
+    /// and mostly outside the nearer caches: call it a few pixels ahead.
+    void prefetch_neighbours(int x, int y, uint64_t key) const;
 
     /// The target function's value and the point to trace to, for `candidate` at `surface`:
     /// the unshadowed contribution f |cos| Le G (public for the tests).
@@ -133,6 +146,9 @@ private:
         return static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
     }
     bool similar(const ReuseSurface& a, const ReuseSurface& b) const;
+    // Spatial reuse's neighbours of pixel (x, y), drawn from `rng`: their indices, within
+    // the film and not the pixel itself (at most kMaxNeighbours); returns how many.
+    int pick_neighbours(int x, int y, Rng& rng, size_t* neighbours) const;
     // Combines `inputs` (the first is the pixel's own, whose sample is known to reach it)
     // into one reservoir for `surfaces[0]`, and sets `through` to what the path from
     // surfaces[0] to the chosen sample lets through (tracing a shadow ray only when the
@@ -146,6 +162,7 @@ private:
     // interfaces).
     Spectrum transmittance_to(const Scene& scene, const ReuseSurface& surface, const Vec3& target,
                               RayCounter& counter) const;
+    static Scene::ShadowRay shadow_ray_to(const ReuseSurface& surface, const Vec3& target);
 
     RestirSettings m_settings;
     int m_width = 0, m_height = 0;
