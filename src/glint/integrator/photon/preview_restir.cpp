@@ -234,19 +234,21 @@ void PreviewIntegrator::render_restir_pass(const Scene& scene, Film& film, int p
                                     static_cast<uint32_t>(pixel.y);
             return hash_combine(pass_key, packed);
         };
-        // How many pixels ahead the neighbours' loads start.
-        constexpr int kPrefetchDistance = 8;
+        // The neighbours are drawn this many pixels ahead, so that their loads are under way
+        // when the pixel is shaded.
+        constexpr int kAhead = 8;
+        RestirDi::SpatialDraw draws[kAhead];
         for (int y = rows.begin(); y < rows.end(); ++y) {
-            for (int x = 0; x < std::min(w, kPrefetchDistance); ++x)
-                restir.prefetch_neighbours(x, y, key_of(x, y));
+            for (int x = 0; x < std::min(w, kAhead); ++x)
+                restir.draw_neighbours(x, y, key_of(x, y), draws[x]);
             for (int x = 0; x < w; ++x) {
                 const size_t i =
                     static_cast<size_t>(y) * static_cast<size_t>(w) + static_cast<size_t>(x);
                 const Vec2i pixel = film.origin() + Vec2i(x, y);
-                if (x + kPrefetchDistance < w)
-                    restir.prefetch_neighbours(x + kPrefetchDistance, y,
-                                               key_of(x + kPrefetchDistance, y));
-                const Spectrum direct = restir.shade(scene, x, y, key_of(x, y), counter);
+                RestirDi::SpatialDraw& draw = draws[x % kAhead];
+                const Spectrum direct = restir.shade(scene, x, y, draw, counter);
+                if (x + kAhead < w)
+                    restir.draw_neighbours(x + kAhead, y, key_of(x + kAhead, y), draw);
                 film.add_sample(pixel, state.rest[i] + state.beta[i] * direct, 1.0f, nullptr);
             }
         }

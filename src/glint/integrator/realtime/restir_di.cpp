@@ -14,8 +14,6 @@
 namespace glint {
 namespace {
 
-// Spatial reuse merges at most this many neighbours (settings are validated against it).
-constexpr int kMaxNeighbours = 16;
 // Neighbours (and the previous pass's pixel) are rejected when their depth differs by more
 // than this fraction, or their normals by more than 25 degrees (Bitterli et al.'s tests).
 constexpr float kDepthTolerance = 0.1f;
@@ -306,53 +304,48 @@ void RestirDi::reuse_history(const Scene& scene, int x, int y, const Spectrum& v
     out = r;
 }
 
-int RestirDi::pick_neighbours(int x, int y, Rng& rng, size_t* neighbours) const {
-    int picked = 0;
+void RestirDi::draw_neighbours(int x, int y, uint64_t key, SpatialDraw& draw) const {
+    draw.rng = Rng(key);
+    draw.count = 0;
+    if (m_settings.spatial <= 0) return;
     for (int k = 0; k < std::min(m_settings.spatial, kMaxNeighbours); ++k) {
-        const float u0 = rng.next_float();
+        const float u0 = draw.rng.next_float();
         const Vec2 offset =
-            warp::square_to_uniform_disk_concentric(Vec2(u0, rng.next_float())) * m_radius;
+            warp::square_to_uniform_disk_concentric(Vec2(u0, draw.rng.next_float())) * m_radius;
         const int nx = x + round_half_away(offset.x);
         const int ny = y + round_half_away(offset.y);
         if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height || (nx == x && ny == y)) continue;
-        neighbours[picked++] = index(nx, ny);
-    }
-    return picked;
-}
-
-void RestirDi::prefetch_neighbours(int x, int y, uint64_t key) const {
-    if (m_settings.spatial <= 0 || x < 0 || y < 0 || x >= m_width || y >= m_height) return;
-    Rng rng(key);
-    size_t neighbours[kMaxNeighbours];
-    const int picked = pick_neighbours(x, y, rng, neighbours);
-    for (int k = 0; k < picked; ++k) {
+        const size_t j = index(nx, ny);
         // A surface spans two cache lines, and the test of similarity reads both.
-        const char* surface = reinterpret_cast<const char*>(&m_surfaces[m_current][neighbours[k]]);
+        const char* surface = reinterpret_cast<const char*>(&m_surfaces[m_current][j]);
         __builtin_prefetch(surface);
         __builtin_prefetch(surface + sizeof(ReuseSurface) - 1);
-        __builtin_prefetch(&m_temporal[neighbours[k]]);
+        __builtin_prefetch(&m_temporal[j]);
+        draw.neighbours[draw.count++] = j;
     }
 }
 
 Spectrum RestirDi::shade(const Scene& scene, int x, int y, uint64_t key, RayCounter& counter) {
+    SpatialDraw draw;
+    draw_neighbours(x, y, key, draw);
+    return shade(scene, x, y, draw, counter);
+}
+
+Spectrum RestirDi::shade(const Scene& scene, int x, int y, SpatialDraw& draw, RayCounter& counter) {
     const size_t i = index(x, y);
     const ReuseSurface& s = m_surfaces[m_current][i];
     LightReservoir& final = m_final[m_current][i];
     final = m_temporal[i];
     if (!s.bsdf) return Spectrum(0.0f);
     if (m_settings.spatial > 0) {
-        Rng rng(key);
+        Rng& rng = draw.rng;
         const LightReservoir* inputs[1 + kMaxNeighbours];
         const ReuseSurface* surfaces[1 + kMaxNeighbours];
         inputs[0] = &m_temporal[i];
         surfaces[0] = &s;
         int count = 1;
-        // The neighbours first, then their data: the loads of all of them are under way
-        // together (they lie rows apart, mostly outside the caches).
-        size_t neighbours[kMaxNeighbours];
-        const int candidates = pick_neighbours(x, y, rng, neighbours);
-        for (int k = 0; k < candidates; ++k) {
-            const size_t j = neighbours[k];
+        for (int k = 0; k < draw.count; ++k) {
+            const size_t j = draw.neighbours[k];
             const ReuseSurface& ns = m_surfaces[m_current][j];
             if (!similar(s, ns)) continue;
             inputs[count] = &m_temporal[j];

@@ -126,9 +126,21 @@ public:
     /// direct light reflected towards wo from the final sample, with its shadow ray.
     /// `key` seeds the neighbours' choice (the same for any thread count).
     Spectrum shade(const Scene& scene, int x, int y, uint64_t key, RayCounter& counter);
-    /// Starts loading what shade(x, y, key) will read of its neighbours, which lie rows apart
-    /// and mostly outside the nearer caches: call it a few pixels ahead.
-    void prefetch_neighbours(int x, int y, uint64_t key) const;
+
+    /// Spatial reuse merges at most this many neighbours (settings are validated against it).
+    static constexpr int kMaxNeighbours = 16;
+    /// A pixel's spatial neighbours, drawn ahead of its shading: they lie rows apart, mostly
+    /// outside the nearer caches, and drawing them starts their loads.
+    struct SpatialDraw {
+        Rng rng;  ///< drawn the neighbours; shade() draws on from it
+        int count = 0;
+        size_t neighbours[kMaxNeighbours];
+    };
+    /// The neighbours shade(x, y, key) would merge (their loads started).
+    void draw_neighbours(int x, int y, uint64_t key, SpatialDraw& draw) const;
+    /// shade(x, y, key) with its neighbours drawn by draw_neighbours(x, y, key): call that a
+    /// few pixels ahead.
+    Spectrum shade(const Scene& scene, int x, int y, SpatialDraw& draw, RayCounter& counter);
 
     /// The target function's value and the point to trace to, for `candidate` at `surface`:
     /// the unshadowed contribution f |cos| Le G (public for the tests).
@@ -146,9 +158,6 @@ private:
         return static_cast<size_t>(y) * static_cast<size_t>(m_width) + static_cast<size_t>(x);
     }
     bool similar(const ReuseSurface& a, const ReuseSurface& b) const;
-    // Spatial reuse's neighbours of pixel (x, y), drawn from `rng`: their indices, within
-    // the film and not the pixel itself (at most kMaxNeighbours); returns how many.
-    int pick_neighbours(int x, int y, Rng& rng, size_t* neighbours) const;
     // Combines `inputs` (the first is the pixel's own, whose sample is known to reach it)
     // into one reservoir for `surfaces[0]`, and sets `through` to what the path from
     // surfaces[0] to the chosen sample lets through (tracing a shadow ray only when the
