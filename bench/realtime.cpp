@@ -11,12 +11,22 @@
 // take alone on a machine shared with other work); and the two together, a frame while the
 // camera moves with SVGF on. --set overrides a render setting of the scene's (e.g.
 // preview_restir=unbiased, preview_bounces=1: everything on).
+//
+// With --converge, then: one more camera move, after which the camera stays still and
+// frames follow one another as in the viewer (a pass, and with --svgf on SVGF on the shown
+// image, which the time includes); the relative MSE of the shown image against `path`'s at
+// 0.25, 1 and 5 s after the move. path's reference is rendered at that camera with
+// --reference-spp samples (default 256) and max_depth = preview_bounces + 1 (what the
+// preview converges to where the scene has no caustics), or read from --reference FILE
+// when that file exists (and written there otherwise).
 #include "settings_override.h"
 #include "timing.h"
 
 #include <glint/camera/camera.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
+#include <glint/film/image_io.h>
+#include <glint/render/render_job.h>
 #include <glint/scene/lua/lua_loader.h>
 #include <glint/view/camera_controller.h>
 #include <glint/view/geometry_buffer.h>
@@ -24,12 +34,14 @@
 #include <glint/view/reprojection.h>
 
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <tbb/global_control.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <ctime>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -46,9 +58,73 @@ double time_ms(F&& f) {
     return 1e3 * std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+struct ConvergeOptions {
+    bool on = false;
+    bool svgf = false;
+    int reference_spp = 256;
+    std::string reference;  // a file to read path's reference from, or to write it to
+};
+
+// path's image at `camera`: what the preview converges to where the scene has no caustics.
+Image path_reference(const SceneDesc& desc, const Params& table,
+                     const RenderSettings& preview_settings, const Params& camera, int threads,
+                     const ConvergeOptions& options) {
+    if (!options.reference.empty() && std::filesystem::exists(options.reference))
+        return read_image(options.reference);
+    SceneDesc at_camera = desc;
+    at_camera.camera = camera;
+    RenderSettings settings = preview_settings;
+    settings.integrator = "path";
+    settings.spp = options.reference_spp;
+    settings.threads = threads;
+    const int bounces = table.has("preview_bounces") ? table.get_int("preview_bounces", 0) : 0;
+    if (bounces > 0) settings.max_depth = bounces + 1;
+    fmt::print("rendering path's reference: {} spp, max_depth {}\n", settings.spp,
+               settings.max_depth);
+    std::fflush(stdout);
+    Image image = render_image(at_camera, settings).image;
+    if (!options.reference.empty()) write_image(options.reference, image);
+    return image;
+}
+
+// After one more camera move, frames as the viewer makes them with the camera still; the
+// shown image's relative MSE against path's at 0.25, 1 and 5 s after the move.
+void converge(const SceneDesc& desc, const Params& table, const RenderSettings& settings,
+              const SessionOptions& options, int threads, const ConvergeOptions& converge_options) {
+    CameraController controller(desc.camera ? &*desc.camera : nullptr);
+    ProgressiveSession session(desc, settings, options);
+    Progress progress("bench", 1, true);
+    for (int i = 0; i < 3; ++i) session.render_next(progress);  // warm up, as the viewer has
+    controller.orbit(1.0f, 0.2f);
+    const Image reference =
+        path_reference(desc, table, settings, controller.params(), threads, converge_options);
+    session.set_camera(controller.params());
+    const double checkpoints[] = {0.25, 1.0, 5.0};
+    std::vector<std::string> results;
+    double elapsed = 0.0;
+    int frames = 0;
+    for (const double checkpoint : checkpoints) {
+        Image shown;
+        while (elapsed < checkpoint || frames == 0) {
+            const double ms = time_ms([&] {
+                session.render_next(progress);
+                shown = converge_options.svgf ? session.svgf_image() : session.image();
+            });
+            elapsed += 1e-3 * ms;
+            ++frames;
+        }
+        const CompareResult r = compare_images(shown, reference);
+        results.push_back(fmt::format("{:.2f} s: {:.4f} ({} frames)", elapsed, r.rel_mse, frames));
+    }
+    fmt::print("{}x{}, after a camera move, SVGF {}: relative MSE against path's {}\n",
+               settings.width, settings.height, converge_options.svgf ? "on" : "off",
+               fmt::join(results, ", "));
+}
+
 void bench_resolution(const SceneDesc& desc, const std::string& integrator, Vec2i res, int frames,
                       int threads, int svgf_radius,
-                      const std::vector<std::pair<std::string, ParamValue>>& overrides) {
+                      const std::vector<std::pair<std::string, ParamValue>>& overrides,
+                      const ConvergeOptions& converge_options) {
     Params table = desc.render ? *desc.render : Params("render", "render settings");
     for (const auto& [key, value] : overrides) table.set(key, value, "--set");
     table.set("width", static_cast<double>(res.x), "--res");
@@ -97,6 +173,7 @@ void bench_resolution(const SceneDesc& desc, const std::string& integrator, Vec2
         res.x, res.y, threads, frames, median(gbuffer), median(reproject_ms), settings.integrator,
         median(pass), median(first), median(first_cpu), 2 * svgf_radius + 1, 2 * svgf_radius + 1,
         median(svgf), median(svgf_cpu), median(moving), 1e3 / median(moving));
+    if (converge_options.on) converge(desc, table, settings, options, threads, converge_options);
 }
 
 int run(int argc, char** argv) {
@@ -105,6 +182,7 @@ int run(int argc, char** argv) {
     int threads = 2, frames = 20, svgf_radius = 2;
     std::string integrator;
     std::vector<std::pair<std::string, ParamValue>> overrides;
+    ConvergeOptions converge_options;
     for (int i = 1; i < argc; ++i) {
         const std::string arg = argv[i];
         auto next = [&]() -> std::string {
@@ -127,6 +205,16 @@ int run(int argc, char** argv) {
             integrator = next();
         } else if (arg == "--set") {
             overrides.push_back(bench::parse_setting_override(next()));
+        } else if (arg == "--converge") {
+            converge_options.on = true;
+        } else if (arg == "--svgf") {
+            const std::string value = next();
+            if (value != "on" && value != "off") throw Error("--svgf takes on or off");
+            converge_options.svgf = value == "on";
+        } else if (arg == "--reference") {
+            converge_options.reference = next();
+        } else if (arg == "--reference-spp") {
+            converge_options.reference_spp = std::stoi(next());
         } else {
             path = arg;
         }
@@ -137,7 +225,7 @@ int run(int argc, char** argv) {
     fmt::print("{}\n", path);
     for (const Vec2i& res : resolutions)
         bench_resolution(desc, integrator.empty() ? "preview" : integrator, res, frames, threads,
-                         svgf_radius, overrides);
+                         svgf_radius, overrides, converge_options);
     return 0;
 }
 

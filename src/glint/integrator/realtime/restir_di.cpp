@@ -4,7 +4,6 @@
 #include <glint/integrator/transport/transport.h>
 #include <glint/integrator/transport/visibility.h>
 #include <glint/material/bsdf.h>
-#include <glint/math/warp.h>
 
 #include <fmt/format.h>
 
@@ -18,13 +17,6 @@ namespace {
 // than this fraction, or their normals by more than 25 degrees (Bitterli et al.'s tests).
 constexpr float kDepthTolerance = 0.1f;
 constexpr float kNormalCosine = 0.906f;
-
-// std::lround's rounding (halves away from zero) without its call: v - trunc(v) is exact.
-int round_half_away(float v) {
-    const int whole = static_cast<int>(v);
-    const float fraction = v - static_cast<float>(whole);
-    return whole + (fraction >= 0.5f) - (fraction <= -0.5f);
-}
 
 // A light point as next-event estimation sampled it, as a candidate that can move between
 // pixels, and the density with which it was chosen in the candidates' measure (see
@@ -132,8 +124,20 @@ void RestirDi::begin_pass(const Scene& scene, int width, int height, Vec2i origi
     m_history = m_history && keep_history && same_film && m_settings.temporal;
     const float diagonal = std::sqrt(static_cast<float>(width) * static_cast<float>(width) +
                                      static_cast<float>(height) * static_cast<float>(height));
-    m_radius =
+    const float radius =
         m_settings.radius > 0.0f ? m_settings.radius : std::clamp(diagonal / 64.0f, 3.0f, 30.0f);
+    if (radius != m_radius || m_offsets.empty()) {
+        m_radius = radius;
+        // Every pixel offset within the radius but the pixel itself (at least its 8
+        // neighbours, however small the radius), from which spatial reuse draws.
+        const int reach = std::max(1, static_cast<int>(std::min(radius, 1024.0f)));
+        const float limit = std::max(radius * radius, 2.0f);
+        m_offsets.clear();
+        for (int dy = -reach; dy <= reach; ++dy)
+            for (int dx = -reach; dx <= reach; ++dx)
+                if ((dx != 0 || dy != 0) && static_cast<float>(dx * dx + dy * dy) <= limit)
+                    m_offsets.emplace_back(dx, dy);
+    }
     m_previous_camera = std::move(m_camera);
     m_camera = scene.camera().clone();
 }
@@ -309,12 +313,11 @@ void RestirDi::draw_neighbours(int x, int y, uint64_t key, SpatialDraw& draw) co
     draw.count = 0;
     if (m_settings.spatial <= 0) return;
     for (int k = 0; k < std::min(m_settings.spatial, kMaxNeighbours); ++k) {
-        const float u0 = draw.rng.next_float();
-        const Vec2 offset =
-            warp::square_to_uniform_disk_concentric(Vec2(u0, draw.rng.next_float())) * m_radius;
-        const int nx = x + round_half_away(offset.x);
-        const int ny = y + round_half_away(offset.y);
-        if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height || (nx == x && ny == y)) continue;
+        // One of the offsets, uniformly (the high half of a 32 x 32-bit product).
+        const uint64_t pick = (static_cast<uint64_t>(draw.rng.next_u32()) * m_offsets.size()) >> 32;
+        const int nx = x + m_offsets[pick].x;
+        const int ny = y + m_offsets[pick].y;
+        if (nx < 0 || ny < 0 || nx >= m_width || ny >= m_height) continue;
         const size_t j = index(nx, ny);
         // A surface spans two cache lines, and the test of similarity reads both.
         const char* surface = reinterpret_cast<const char*>(&m_surfaces[m_current][j]);

@@ -54,8 +54,9 @@ struct RestirSettings {
     int candidates = 2;
     int spatial = 2;       ///< neighbours merged per pixel (0: no spatial reuse)
     bool temporal = true;  ///< merge the previous pass's reservoir (reprojected)
-    /// Spatial neighbours within this many pixels; 0: a 64th of the film's diagonal, within
-    /// [3, 30] (Bitterli et al. use 30 at 1920 x 1080).
+    /// Spatial neighbours within this many pixels (drawn uniformly from the pixels within it,
+    /// at most 1024); 0: a 64th of the film's diagonal, within [3, 30] (Bitterli et al. use
+    /// 30 at 1920 x 1080).
     float radius = 0.0f;
     /// The previous pass counts at most this many times M. Bitterli et al. use 20 for single
     /// frames; the preview averages its passes, and passes that share much history average
@@ -176,8 +177,9 @@ private:
     RestirSettings m_settings;
     int m_width = 0, m_height = 0;
     Vec2i m_origin{0};
-    float m_far = 1.0f;     // beyond the scene, for the targets of lights at infinity
-    float m_radius = 3.0f;  // of spatial reuse, in pixels
+    float m_far = 1.0f;            // beyond the scene, for the targets of lights at infinity
+    float m_radius = 0.0f;         // of spatial reuse, in pixels
+    std::vector<Vec2i> m_offsets;  // the pixel offsets within m_radius but (0, 0)
     int m_current = 0;
     bool m_history = false;
     // This pass's camera and the previous pass's (copies: the viewer replaces the scene's
