@@ -72,3 +72,40 @@ TEST(MirrorMaterial, UntexturedHandsOutOneBsdfWithItsTint) {
         make_mirror_material, params,
         SpecularReflectionBsdf(uplift(Rgb(0.9f, 0.8f, 0.7f), RgbRole::unbounded)));
 }
+
+// Material::may_scatter_specularly() lets photon methods skip aiming at specular surfaces
+// when a scene has none: it may say false only for materials whose BSDF is never a delta
+// (a wrong false would lose caustics), and must say true for those that hand out one.
+TEST(Materials, MayScatterSpecularlyAgreesWithTheirBsdfs) {
+    using Factory = std::unique_ptr<Material> (*)(const Params&, TextureTable&);
+    const struct {
+        const char* name;
+        Factory make;
+        bool specular;
+    } cases[] = {{"diffuse", make_diffuse_material, false},
+                 {"emissive", make_emissive_material, false},
+                 {"mirror", make_mirror_material, true},
+                 {"dielectric", make_dielectric_material, true}};
+    for (const auto& c : cases) {
+        SCOPED_TRACE(c.name);
+        TextureTable textures(".", true);
+        Params params(c.name, "scene.lua:1");
+        if (c.make == make_emissive_material) params.set("radiance", 1.0);
+        const auto material = c.make(params, textures);
+        EXPECT_EQ(material->may_scatter_specularly(), c.specular);
+        Arena arena;
+        bool delta = false;
+        for (int i = 0; i < 16; ++i) {
+            const Bsdf* bsdf = material->bsdf(hit_at(Vec2(i / 16.0f, 1.0f - i / 16.0f)), arena);
+            delta |= bsdf != nullptr && bsdf->is_delta();
+        }
+        EXPECT_EQ(delta, c.specular);
+    }
+    // Materials that may or may not be smooth (by their roughness or a texture) keep the
+    // conservative default.
+    for (const Factory make : {make_conductor_material, make_plastic_material,
+                               make_principled_material, make_phong_material}) {
+        TextureTable textures(".", true);
+        EXPECT_TRUE(make(Params("material", "scene.lua:1"), textures)->may_scatter_specularly());
+    }
+}

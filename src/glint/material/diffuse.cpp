@@ -18,6 +18,7 @@ public:
         return arena.make<LambertianBsdf>(m_reflectance.eval(si));
     }
     Spectrum albedo(const SurfaceInteraction& si) const override { return m_reflectance.eval(si); }
+    bool may_scatter_specularly() const override { return false; }
 
 private:
     SpectrumInput m_reflectance;

@@ -12,6 +12,7 @@ public:
     const Bsdf* bsdf(const SurfaceInteraction&, Arena&) const override { return nullptr; }
     SceneColor emission() const override { return m_radiance; }
     bool emits_two_sided() const override { return m_two_sided; }
+    bool may_scatter_specularly() const override { return false; }
 
 private:
     SceneColor m_radiance;

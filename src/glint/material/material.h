@@ -48,6 +48,10 @@ public:
     // Whether the surface only bounds media and does not scatter (glint.interface): shadow
     // rays pass through it (transport/visibility.h), and walks cross it straight on.
     virtual bool is_interface() const { return false; }
+    // Whether the surface may scatter through a specular (delta) lobe anywhere, as a mirror
+    // or smooth glass does: without such surfaces a scene has no caustic paths, and photon
+    // methods need not aim at them. True unless the material knows it never does.
+    virtual bool may_scatter_specularly() const { return true; }
 
     // Set by the registry after the factory ran: textures need the pixel footprint.
     void set_uses_textures(bool uses) { m_uses_textures = uses; }

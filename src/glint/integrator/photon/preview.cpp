@@ -159,6 +159,9 @@ void PreviewIntegrator::restart(const Scene& scene) {
         m_preview.volume_radius > 0.0f ? m_preview.volume_radius : diagonal / 100.0f;
     m_volume_radius2 = volume_r0 * volume_r0;
 
+    // Without a surface that scatters specularly no photon can be caustic: none is traced
+    // (a scene of a thousand lamps would otherwise probe a projection map for each).
+    m_specular_surfaces = ProjectionMap::scene_has_specular_surfaces(scene);
     m_projections.assign(scene.lights().size(), std::nullopt);
     // Projection maps only aim photons: with none, many lights would cost seconds for nothing.
     // A projection map aims at where the specular objects stand at one time: in a scene that
@@ -210,7 +213,7 @@ void PreviewIntegrator::trace_photons(const Scene& scene, RenderStats& stats) {
     if (m_media) {
         trace_photons_in_media(scene, emitter, first, count, m_settings.seed + 1, max_bounces,
                                batch, volume_batch, stats.rays);
-    } else {
+    } else if (m_specular_surfaces) {
         PhotonTracer tracer(scene, max_bounces, emitter, true);
         tracer.use_wavelengths(m_settings.spectral ? &m_pass_wavelengths : nullptr);
         const auto sinks = tracer.trace(first, count, m_settings.seed + 1, stats.rays,

@@ -207,6 +207,7 @@ private:
     PreviewSettings m_preview;
     const Scene* m_scene = nullptr;  // the scene the photons were traced in
     std::vector<std::optional<ProjectionMap>> m_projections;  // per light, where supported
+    bool m_specular_surfaces = true;  // whether caustic photons can exist (restart())
     // Ambient radiance per unit albedo, as a colour: spectral mode reads it at each pass's
     // wavelengths.
     Rgb m_ambient{0.0f};

@@ -173,8 +173,14 @@ float ProjectionMap::carrying_fraction(const Light& light) const {
     return static_cast<float>(carrying) / (kSide * kSide);
 }
 
+bool ProjectionMap::scene_has_specular_surfaces(const Scene& scene) {
+    for (const std::unique_ptr<Material>& material : scene.materials())
+        if (material->may_scatter_specularly()) return true;
+    return false;
+}
+
 std::optional<ProjectionMap> ProjectionMap::make_if_useful(const Scene& scene, const Light& light) {
-    if (!supports(light)) return std::nullopt;
+    if (!supports(light) || !scene_has_specular_surfaces(scene)) return std::nullopt;
     ProjectionMap map(scene, light);
     if (map.carrying_fraction(light) < 0.5f) return std::nullopt;
     return map;

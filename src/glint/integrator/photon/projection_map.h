@@ -41,9 +41,14 @@ public:
     // better left to its own emission sampling, whose every photon carries light.
     float carrying_fraction(const Light& light) const;
 
-    // The projection map for `light` when one helps: supported, and at least half of its
-    // photons carry light; nullopt otherwise.
+    // The projection map for `light` when one helps: the scene has a surface that may
+    // scatter specularly, the light is supported, and at least half of its photons carry
+    // light; nullopt otherwise.
     static std::optional<ProjectionMap> make_if_useful(const Scene& scene, const Light& light);
+    // Whether some material of the scene may scatter specularly
+    // (Material::may_scatter_specularly): without one there are no caustic paths to aim at,
+    // and probing (tens of milliseconds a light) would find nothing.
+    static bool scene_has_specular_surfaces(const Scene& scene);
 
 private:
     static constexpr int kThetaCells =
