@@ -15,7 +15,8 @@
 // With --converge, then: one more camera move, after which the camera stays still and
 // frames follow one another as in the viewer (a pass, and with --svgf on SVGF on the shown
 // image, which the time includes); the relative MSE of the shown image against `path`'s at
-// 0.25, 1 and 5 s after the move. path's reference is rendered at that camera with
+// 0.25, 1 and 5 s after the move (and at --converge-until S, when later). path's reference is
+// rendered at that camera with
 // --reference-spp samples (default 256) and max_depth = preview_bounces + 1 (what the
 // preview converges to where the scene has no caustics), or read from --reference FILE
 // when that file exists (and written there otherwise).
@@ -63,6 +64,7 @@ struct ConvergeOptions {
     bool svgf = false;
     int reference_spp = 256;
     std::string reference;  // a file to read path's reference from, or to write it to
+    double until = 0.0;     // one more checkpoint, when later than 5 s
 };
 
 // path's image at `camera`: what the preview converges to where the scene has no caustics.
@@ -99,7 +101,8 @@ void converge(const SceneDesc& desc, const Params& table, const RenderSettings& 
     const Image reference =
         path_reference(desc, table, settings, controller.params(), threads, converge_options);
     session.set_camera(controller.params());
-    const double checkpoints[] = {0.25, 1.0, 5.0};
+    std::vector<double> checkpoints = {0.25, 1.0, 5.0};
+    if (converge_options.until > 5.0) checkpoints.push_back(converge_options.until);
     std::vector<std::string> results;
     double elapsed = 0.0;
     int frames = 0;
@@ -213,6 +216,8 @@ int run(int argc, char** argv) {
             converge_options.svgf = value == "on";
         } else if (arg == "--reference") {
             converge_options.reference = next();
+        } else if (arg == "--converge-until") {
+            converge_options.until = std::stod(next());
         } else if (arg == "--reference-spp") {
             converge_options.reference_spp = std::stoi(next());
         } else {

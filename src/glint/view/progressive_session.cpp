@@ -226,14 +226,23 @@ Image ProgressiveSession::svgf_image() const {
     std::vector<Vec2> moments(pixels);
     std::vector<float> lengths(pixels);
     const float inverse = m_passes > 0 ? 1.0f / static_cast<float>(m_passes) : 0.0f;
+    const float cap = static_cast<float>(m_history.max_length());
     parallel_for_indices(pixels, [&](std::size_t i) {
         const float* rgb = &image.pixels[i * image.channels.size()];
         colour[i] = Rgb(rgb[0], rgb[1], rgb[2]);
         const Vec2 frame_moments = m_moment_sums[i] * inverse;
-        moments[i] =
+        Vec2 m =
             has_history() ? m_history.blend_moments(i, frame_moments, m_passes) : frame_moments;
-        lengths[i] =
-            has_history() ? m_history.blended_length(i, m_passes) : static_cast<float>(m_passes);
+        const float frames =
+            has_history() ? m_history.blended_frames(i, m_passes) : static_cast<float>(m_passes);
+        lengths[i] = std::min(frames, has_history() ? cap : frames);
+        // The moments give one frame's variance, and SVGF's thresholds are set for colours
+        // that average at most a history's worth of frames (the paper's moving average). A
+        // still camera's colour averages ever more frames, whose noise falls as 1 / frames:
+        // the variance the filter sees falls with it beyond the history's length, so that
+        // the filter fades out and the shown image converges to the unfiltered one.
+        if (frames > cap) m.y = m.x * m.x + (m.y - m.x * m.x) * (cap / frames);
+        moments[i] = m;
     });
     SvgfInput input;
     input.width = m_settings.width;

@@ -37,8 +37,12 @@ Vec2 TemporalHistory::blend_moments(std::size_t i, const Vec2& frame_moments, in
 }
 
 float TemporalHistory::blended_length(std::size_t i, int frames) const {
+    return std::min(static_cast<float>(m_max_length), blended_frames(i, frames));
+}
+
+float TemporalHistory::blended_frames(std::size_t i, int frames) const {
     const float w = empty() ? 0.0f : weight(m_length[i], frames);
-    return std::min(static_cast<float>(m_max_length), w + static_cast<float>(frames));
+    return w + static_cast<float>(frames);
 }
 
 void TemporalHistory::move(std::span<const HistoryTaps> taps, std::span<const Rgb> shown,

@@ -41,6 +41,9 @@ public:
     /// How many frames pixel i stands for after blending: w + frames, at most max_length
     /// (the frames since the move alone, when empty()).
     float blended_length(std::size_t i, int frames) const;
+    /// The same without the cap: how many frames the blended colour averages (it grows past
+    /// max_length while the camera stays still).
+    float blended_frames(std::size_t i, int frames) const;
 
     /// The camera moved: the blended image of the old view (`shown`, `moments`, `lengths`:
     /// blend(), blend_moments() and blended_length() of every old pixel) becomes the
