@@ -399,6 +399,30 @@ Ray PreviewIntegrator::pass_camera_ray(const Scene& scene, PassSampler& sampler,
     return scene.camera().sample_ray(film_point, sampler);
 }
 
+// The camera rays of the block whose top-left pixel is `corner` (its lanes inside the film,
+// which it returns) in pass `pass`, traced as one packet into `si`; `hit` receives the lanes
+// that hit something.
+uint32_t PreviewIntegrator::trace_camera_block(const Scene& scene, const Film& film, Vec2i corner,
+                                               int pass, PerLane<PassSampler>& samplers,
+                                               PerLane<Ray>& rays, PerLane<SurfaceInteraction>& si,
+                                               uint32_t& hit, RayCounter& counter) {
+    uint32_t active = 0;
+    PerLane<const Ray*> ray_of{};
+    PerLane<SurfaceInteraction*> si_of{};
+    for (int lane = 0; lane < kPacketWidth; ++lane) {
+        const int x = corner.x + lane % kBlockWidth, y = corner.y + lane / kBlockWidth;
+        if (x >= film.width() || y >= film.height()) continue;
+        // The film may be a window: pixels are named in the full image.
+        rays[lane] = pass_camera_ray(scene, samplers[lane], film.origin() + Vec2i(x, y), pass);
+        ray_of[lane] = &rays[lane];
+        si_of[lane] = &si[lane];
+        active |= 1u << lane;
+    }
+    counter.rays += static_cast<uint64_t>(std::popcount(active));
+    hit = scene.intersect_packet(ray_of, active, si_of, true);
+    return active;
+}
+
 // The packet form: the camera rays of a block of 4 x 2 pixels are traced as one Embree
 // packet, and the shadow rays of their direct-light samples as another; both are coherent
 // (neighbouring pixels, one light), which Embree's packet kernels turn into fewer
@@ -408,24 +432,14 @@ Ray PreviewIntegrator::pass_camera_ray(const Scene& scene, PassSampler& sampler,
 // same draws, so each pixel gets what camera_sample() gives it, bit for bit.
 void PreviewIntegrator::render_block(const Scene& scene, Film& film, Vec2i corner, int pass,
                                      CameraLanes& lanes, Arena& arena, RayCounter& counter) const {
-    const int w = film.width(), h = film.height();
-    uint32_t active = 0;
-    PerLane<const Ray*> ray_of{};
-    PerLane<SurfaceInteraction*> si_of{};
-    for (int lane = 0; lane < kPacketWidth; ++lane) {
-        const int x = corner.x + lane % kBlockWidth, y = corner.y + lane / kBlockWidth;
-        if (x >= w || y >= h) continue;
-        // The film may be a window: pixels are named in the full image.
-        const Vec2i pixel = film.origin() + Vec2i(x, y);
-        lanes.rays[lane] = pass_camera_ray(scene, lanes.samplers[lane], pixel, pass);
-        lanes.pixels[lane] = pixel;
-        ray_of[lane] = &lanes.rays[lane];
-        si_of[lane] = &lanes.si[lane];
-        active |= 1u << lane;
-    }
     arena.reset();
-    counter.rays += static_cast<uint64_t>(std::popcount(active));
-    const uint32_t hit = scene.intersect_packet(ray_of, active, si_of, true);
+    uint32_t hit = 0;
+    const uint32_t active = trace_camera_block(scene, film, corner, pass, lanes.samplers,
+                                               lanes.rays, lanes.si, hit, counter);
+    for_each_lane(active, [&](int lane) {
+        // The film may be a window: pixels are named in the full image.
+        lanes.pixels[lane] = film.origin() + corner + Vec2i(lane % kBlockWidth, lane / kBlockWidth);
+    });
 
     PerLane<Spectrum> emitted, beta, reflected;
     PerLane<const SurfaceInteraction*> surface{};

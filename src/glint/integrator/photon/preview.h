@@ -132,6 +132,10 @@ private:
     // The camera ray of `pixel` (named in the full image) in pass `pass`, with `sampler`
     // started on that pixel sample: its film position, then its lens position.
     static Ray pass_camera_ray(const Scene& scene, PassSampler& sampler, Vec2i pixel, int pass);
+    static uint32_t trace_camera_block(const Scene& scene, const Film& film, Vec2i corner, int pass,
+                                       PerLane<PassSampler>& samplers, PerLane<Ray>& rays,
+                                       PerLane<SurfaceInteraction>& si, uint32_t& hit,
+                                       RayCounter& counter);
     void trace_photons(const Scene& scene, RenderStats& stats);
     Spectrum caustic_estimate(const SurfaceInteraction& si, const Bsdf& bsdf,
                               HashGrid::Cache& cache) const;

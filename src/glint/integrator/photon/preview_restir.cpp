@@ -85,21 +85,10 @@ void PreviewIntegrator::restir_first_stage_block(const Scene& scene, const Film&
                                                  Arena& arena, Arena& scratch,
                                                  RayCounter& counter) const {
     RestirDi& restir = state.restir;
-    const int w = film.width(), h = film.height();
-    uint32_t active = 0;
-    PerLane<const Ray*> ray_of{};
-    PerLane<SurfaceInteraction*> si_of{};
-    for (int lane = 0; lane < kPacketWidth; ++lane) {
-        const int x = corner.x + lane % kBlockWidth, y = corner.y + lane / kBlockWidth;
-        if (x >= w || y >= h) continue;
-        lanes.rays[lane] =
-            pass_camera_ray(scene, lanes.samplers[lane], film.origin() + Vec2i(x, y), pass);
-        ray_of[lane] = &lanes.rays[lane];
-        si_of[lane] = &lanes.si[lane];
-        active |= 1u << lane;
-    }
-    counter.rays += static_cast<uint64_t>(std::popcount(active));
-    const uint32_t hit = scene.intersect_packet(ray_of, active, si_of, true);
+    const int w = film.width();
+    uint32_t hit = 0;
+    const uint32_t active = trace_camera_block(scene, film, corner, pass, lanes.samplers,
+                                               lanes.rays, lanes.si, hit, counter);
 
     PerLane<const SurfaceInteraction*> surface_of{};
     PerLane<const Bsdf*> bsdf_of{};
