@@ -15,7 +15,8 @@
 namespace glint {
 namespace {
 
-void expect_one_ray_per_pixel(const std::string& example, int width, int height) {
+// `emitters` receives how many pixels see a lamp.
+void expect_one_ray_per_pixel(const std::string& example, int width, int height, int& emitters) {
     const std::string code = test::example_with_settings(
         example, "width = " + std::to_string(width) + ", height = " + std::to_string(height));
     const SceneDesc desc = load_scene_string(code, example);
@@ -24,6 +25,7 @@ void expect_one_ray_per_pixel(const std::string& example, int width, int height)
     const GeometryBuffer buffer = trace_geometry_buffer(*scene, camera, width, height);
     ASSERT_EQ(buffer.size(), static_cast<std::size_t>(width) * height);
     int hits = 0;
+    emitters = 0;
     for (int y = 0; y < height; ++y) {
         for (int x = 0; x < width; ++x) {
             const std::size_t i = static_cast<std::size_t>(y) * width + x;
@@ -49,15 +51,20 @@ void expect_one_ray_per_pixel(const std::string& example, int width, int height)
             for (int c = 0; c < 3; ++c) EXPECT_NEAR(buffer.albedo[i][c], albedo[c], 1e-4f) << where;
             const uint32_t local = hit.instanced() ? hit.local_geometry + 1 : 0;
             EXPECT_EQ(buffer.object_id[i], hit.top_geometry ^ (local << 16)) << where;
+            const bool emits = si.material && si.material->is_emissive();
+            EXPECT_EQ(buffer.emitter[i], emits ? 1 : 0) << where;
+            emitters += emits;
         }
     }
     EXPECT_GT(hits, width * height / 4) << example;
 }
 
 TEST(GeometryBuffer, PacketsFindWhatOneRayPerPixelFinds) {
-    expect_one_ray_per_pixel("cornell-box.lua", 37, 23);
-    expect_one_ray_per_pixel("cornell-spheres.lua", 30, 17);
-    expect_one_ray_per_pixel("instancing.lua", 41, 29);
+    int emitters = 0;
+    expect_one_ray_per_pixel("cornell-box.lua", 37, 23, emitters);
+    EXPECT_GT(emitters, 0) << "the ceiling's lamp";
+    expect_one_ray_per_pixel("cornell-spheres.lua", 30, 17, emitters);
+    expect_one_ray_per_pixel("instancing.lua", 41, 29, emitters);
 }
 
 }  // namespace

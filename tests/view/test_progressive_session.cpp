@@ -1,5 +1,6 @@
 // The viewer's progressive loop without a window: N passes equal `glint render --spp N` bit
 // for bit, changes restart accumulation, and a cancelled pass leaves nothing behind.
+#include <glint/camera/camera.h>
 #include <glint/core/error.h>
 #include <glint/core/progress.h>
 #include <glint/denoise/network_denoiser.h>
@@ -400,6 +401,37 @@ TEST(ProgressiveSession, SvgfFadesAsAStillImageConverges) {
                 at_history_length, converged);
     EXPECT_GT(at_history_length, 0.01) << "the filter smooths a noisy image";
     EXPECT_LT(converged, 0.3 * at_history_length) << "0.56 without the fading";
+}
+
+// The lamp seen directly passes through SVGF: its pixels are exact, and so bright that even
+// small weights spread its light into the ceiling around it (the first frame after a move
+// had 17 times the relative MSE against path's: bench/README.md).
+TEST(ProgressiveSession, SvgfLeavesLampsSeenDirectlyAlone) {
+    const std::string code = test::example_with_settings(
+        "cornell-box.lua", "width = 40, height = 40, spp = 64, seed = 3, integrator = 'path'");
+    const SceneDesc desc = load_scene_string(code, "cornell.lua");
+    SessionOptions options;
+    options.realtime = true;
+    options.temporal = true;
+    options.reduced_scale = 1;
+    ProgressiveSession session(desc, parse_render_settings(&*desc.render), options);
+    Progress progress("test", 1, true);
+    for (int pass = 0; pass < 4; ++pass) session.render_next(progress);
+    const Image shown = session.image(), filtered = session.svgf_image();
+    // The lamp's pixels, as the session's geometry buffer sees them (pixel centres).
+    const RenderSettings settings = parse_render_settings(&*desc.render);
+    const auto scene = build_scene(desc, settings);
+    const GeometryBuffer buffer =
+        trace_geometry_buffer(*scene, *make_camera(*desc.camera, Vec2i(40, 40)), 40, 40);
+    int lamp = 0, changed = 0;
+    for (std::size_t i = 0; i < buffer.size(); ++i) {
+        if (!buffer.emitter[i]) continue;
+        ++lamp;
+        for (int c = 0; c < 3; ++c)
+            changed += filtered.pixels[3 * i + c] != shown.pixels[3 * i + c];
+    }
+    EXPECT_GT(lamp, 4);
+    EXPECT_EQ(changed, 0);
 }
 
 TEST(ProgressiveSession, TemporalModeNeedsRealtimeBuffers) {

@@ -39,7 +39,9 @@ struct SvgfInput {
     std::span<const Rgb> colour;   ///< temporally accumulated linear radiance
     std::span<const Rgb> albedo;   ///< first-hit albedo (1 where there is nothing to demodulate)
     std::span<const Vec3> normal;  ///< first-hit world normal
-    std::span<const float> depth;  ///< distance along the camera ray; 0 where the ray escaped
+    /// Distance along the camera ray; 0 where the ray escaped, or wherever the pixel is to
+    /// pass through unfiltered and out of its neighbours' sums (the viewer's lamps).
+    std::span<const float> depth;
     /// Accumulated means of the demodulated luminance Y and of Y^2 (moments()), and how many
     /// frames each pixel's accumulation holds.
     std::span<const Vec2> moments;

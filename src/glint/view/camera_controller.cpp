@@ -17,7 +17,6 @@ Vec3 rotate(const Vec3& v, const Vec3& axis, float radians) {
     return v * c + glm::cross(axis, v) * s + axis * glm::dot(axis, v) * (1.0f - c);
 }
 
-
 // Shortest text that reads back as the same float.
 std::string number(float x) {
     return fmt::format("{}", x);

@@ -22,7 +22,10 @@ void record_hit(GeometryBuffer& buffer, std::size_t i, const Ray& ray, const Sur
     buffer.depth[i] = si.t;
     const Vec3 n = si.shading.n();
     buffer.normal[i] = glm::dot(n, ray.direction) > 0.0f ? -n : n;
-    if (si.material) buffer.albedo[i] = to_rgb(si.material->albedo(si));
+    if (si.material) {
+        buffer.albedo[i] = to_rgb(si.material->albedo(si));
+        buffer.emitter[i] = si.material->is_emissive() ? 1 : 0;
+    }
     // Geometry ids are small: the instance's goes to the high half.
     const uint32_t local = hit.instanced() ? hit.local_geometry + 1 : 0;
     buffer.object_id[i] = hit.top_geometry ^ (local << 16);
@@ -59,6 +62,7 @@ void trace_block(const Scene& scene, const Camera& camera, Vec2i corner, Geometr
         buffer.normal[i] = Vec3(0.0f);
         buffer.albedo[i] = Rgb(1.0f);
         buffer.object_id[i] = GeometryBuffer::kMiss;
+        buffer.emitter[i] = 0;
         active |= 1u << lane;
     }
     const uint32_t hit =
@@ -80,6 +84,7 @@ GeometryBuffer trace_geometry_buffer(const Scene& scene, const Camera& camera, i
     buffer.normal.resize(count);
     buffer.albedo.resize(count);
     buffer.object_id.resize(count);
+    buffer.emitter.resize(count);
     const int block_rows = (height + kBlockHeight - 1) / kBlockHeight;
     tbb::parallel_for(
         tbb::blocked_range<int>(0, block_rows), [&](const tbb::blocked_range<int>& rows) {

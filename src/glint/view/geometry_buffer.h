@@ -27,6 +27,9 @@ struct GeometryBuffer {
     /// Which object was hit (the scene's geometry id, mixed with the instance's), kMiss
     /// on a miss: history from another object is never reused, even at the same depth.
     std::vector<uint32_t> object_id;
+    /// 1 where the surface emits light (a lamp seen directly): its pixels are exact, and far
+    /// brighter than their surroundings, so the denoiser leaves them out.
+    std::vector<uint8_t> emitter;
 
     std::size_t size() const { return static_cast<std::size_t>(width) * height; }
     bool hit(std::size_t i) const { return object_id[i] != kMiss; }

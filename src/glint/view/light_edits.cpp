@@ -8,7 +8,6 @@
 namespace glint {
 namespace {
 
-
 // Scales the spectrum under `key` (1 when the scene left it out).
 void scale_power(Params& params, const std::string& key, float scale) {
     if (scale == 1.0f) return;

@@ -250,7 +250,15 @@ Image ProgressiveSession::svgf_image() const {
     input.colour = colour;
     input.albedo = m_geometry->albedo;
     input.normal = m_geometry->normal;
-    input.depth = m_geometry->depth;
+    // Lamps seen directly pass through, and no pixel takes their light: they are exact, and
+    // so much brighter than the surfaces beside them that even weights near zero spread
+    // their light (a relative MSE of 0.066 against path's in the Cornell box's first frame
+    // after a move, 0.0038 without them). SVGF passes pixels of depth 0 through and leaves
+    // them out of every sum.
+    std::vector<float> depth = m_geometry->depth;
+    for (std::size_t i = 0; i < pixels; ++i)
+        if (!m_geometry->emitter.empty() && m_geometry->emitter[i]) depth[i] = 0.0f;
+    input.depth = depth;
     input.moments = moments;
     input.history_length = lengths;
     const std::vector<Rgb> filtered = svgf_filter(input, m_options.svgf);

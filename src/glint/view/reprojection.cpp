@@ -26,7 +26,8 @@ HistoryTaps taps_of(const GeometryBuffer& current, std::size_t i, const Ray& ray
                     const GeometryBuffer& previous, const Camera& previous_camera,
                     const ReprojectionTolerances& tol) {
     HistoryTaps taps;
-    const Vec3 point = ray.origin + (current.hit(i) ? current.depth[i] : kMissDepth) * ray.direction;
+    const Vec3 point =
+        ray.origin + (current.hit(i) ? current.depth[i] : kMissDepth) * ray.direction;
     const std::optional<FilmProjection> projected = previous_camera.project(point);
     // Off the previous frame there is no history, even where a tap at its edge would reach.
     if (!projected || !(projected->film.x >= 0.0f && projected->film.y >= 0.0f &&
