@@ -367,6 +367,16 @@ TEST(ProgressiveSession, TemporalModeAndSvgfGiveTheSameBitsForOneAndTwoThreads) 
     expect_same_bits(one_svgf, two_svgf);
 }
 
+// A session with the viewer's realtime buffers in temporal mode, full size from the first pass.
+SessionOptions temporal_options(int max_length = 32) {
+    SessionOptions options;
+    options.realtime = true;
+    options.temporal = true;
+    options.temporal_max_length = max_length;
+    options.reduced_scale = 1;
+    return options;
+}
+
 // With the camera still the shown image converges to the film's, and SVGF's must too: its
 // thresholds come from one frame's variance, so beyond the history's length (4 frames here)
 // the variance it sees falls as 1 / frames and the filter fades. Without that it kept
@@ -376,12 +386,8 @@ TEST(ProgressiveSession, SvgfFadesAsAStillImageConverges) {
     const std::string code = test::example_with_settings(
         "cornell-box.lua", "width = 24, height = 18, spp = 1024, seed = 3, integrator = 'path'");
     const SceneDesc desc = load_scene_string(code, "cornell.lua");
-    SessionOptions options;
-    options.realtime = true;
-    options.temporal = true;
-    options.temporal_max_length = 4;
-    options.reduced_scale = 1;
-    ProgressiveSession session(desc, parse_render_settings(&*desc.render), options);
+    ProgressiveSession session(desc, parse_render_settings(&*desc.render),
+                               temporal_options(/*max_length=*/4));
     Progress progress("test", 1, true);
     // How far the filtered image is from the unfiltered one, relative to its brightness.
     auto filtered_change = [&] {
@@ -410,11 +416,7 @@ TEST(ProgressiveSession, SvgfLeavesLampsSeenDirectlyAlone) {
     const std::string code = test::example_with_settings(
         "cornell-box.lua", "width = 40, height = 40, spp = 64, seed = 3, integrator = 'path'");
     const SceneDesc desc = load_scene_string(code, "cornell.lua");
-    SessionOptions options;
-    options.realtime = true;
-    options.temporal = true;
-    options.reduced_scale = 1;
-    ProgressiveSession session(desc, parse_render_settings(&*desc.render), options);
+    ProgressiveSession session(desc, parse_render_settings(&*desc.render), temporal_options());
     Progress progress("test", 1, true);
     for (int pass = 0; pass < 4; ++pass) session.render_next(progress);
     const Image shown = session.image(), filtered = session.svgf_image();
